@@ -1,0 +1,39 @@
+#pragma once
+// Compressed sparse rows: the one container for every variable-length incidence in the library.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace hbc {
+
+template <class T = int32_t>
+struct Csr {
+  std::vector<int32_t> offsets{0};  // size rows()+1, offsets[0] == 0
+  std::vector<T> items;             // size offsets.back()
+
+  size_t rows() const { return offsets.size() - 1; }
+  size_t size() const { return rows(); }
+  int32_t count(size_t r) const { return offsets[r + 1] - offsets[r]; }
+  std::span<const T> operator[](size_t r) const {
+    return {items.data() + offsets[r], static_cast<size_t>(offsets[r + 1] - offsets[r])};
+  }
+  std::span<T> row(size_t r) {
+    return {items.data() + offsets[r], static_cast<size_t>(offsets[r + 1] - offsets[r])};
+  }
+  void clear() {
+    offsets.assign(1, 0);
+    items.clear();
+  }
+  template <class It>
+  void push_row(It first, It last) {
+    items.insert(items.end(), first, last);
+    offsets.push_back(static_cast<int32_t>(items.size()));
+  }
+  void push_row(std::span<const T> r) { push_row(r.begin(), r.end()); }
+};
+
+// Transposes an incidence: rows of `a` hold column ids in [0, ncols); the result has ncols rows,
+// each listing the rows of `a` that name it, in increasing order (stable, hence deterministic).
+Csr<int32_t> transpose(const Csr<int32_t>& a, size_t ncols);
+
+}  // namespace hbc

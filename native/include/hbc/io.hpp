@@ -1,0 +1,40 @@
+#pragma once
+// Readers and writers for the volume mesh formats real hex-dominant meshers write.
+// Every reader parses from memory (so fuzzers and tests need no files) and reports bad input as
+// InputError with the file name and the line (byte offset for binary files).
+#include <string>
+#include <string_view>
+
+#include "hbc/mesh.hpp"
+
+namespace hbc {
+
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra };
+
+// "ovm", "ovmb", "mesh" (or "medit"), "hybrid", "hedra"; case-insensitive. Throws
+// std::invalid_argument for anything else.
+Format format_from_name(std::string_view name);
+// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra. Throws InputError otherwise.
+Format format_from_path(const std::string& path);
+const char* format_name(Format f);
+
+// Format-specific readers. `source` names the file in messages.
+MeshInput read_ovm(std::string_view text, const std::string& source);     // OpenVolumeMesh ASCII
+MeshInput read_ovmb(std::string_view bytes, const std::string& source);   // OpenVolumeMesh binary
+MeshInput read_medit(std::string_view text, const std::string& source);   // MEDIT .mesh
+MeshInput read_hybrid(std::string_view text, const std::string& source);  // Robust Hex-Dominant .HYBRID
+MeshInput read_hedra(std::string_view text, const std::string& source);   // LoopyCuts / cinolib .hedra
+
+// Reads a whole file; throws InputError when it cannot be opened.
+std::string read_file_bytes(const std::string& path);
+MeshInput read_input(const std::string& path, Format format = Format::Auto);
+// read_input + build_mesh.
+Mesh load_mesh(const std::string& path, Format format = Format::Auto);
+
+// Writers. write_medit stores tets, pyramids and prisms as degenerate hexahedra (as At-Most-Hexa
+// does) and throws std::invalid_argument for a general polyhedron, which MEDIT cannot express.
+std::string ovm_text(const Mesh& mesh);
+std::string medit_text(const Mesh& mesh);
+void write_mesh(const Mesh& mesh, const std::string& path, Format format = Format::Auto);
+
+}  // namespace hbc

@@ -1,0 +1,83 @@
+#include "hbc/io.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "text_scanner.hpp"
+
+namespace hbc {
+
+Format format_from_name(std::string_view name) {
+  const std::string n = detail::lower(name);
+  if (n == "ovm") return Format::Ovm;
+  if (n == "ovmb") return Format::Ovmb;
+  if (n == "mesh" || n == "medit") return Format::Medit;
+  if (n == "hybrid") return Format::Hybrid;
+  if (n == "hedra") return Format::Hedra;
+  throw std::invalid_argument("unknown format '" + std::string(name) +
+                              "' (expected ovm, ovmb, mesh, hybrid or hedra)");
+}
+
+Format format_from_path(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    throw InputError(path, {}, "a file name ending in .ovm, .ovmb, .mesh, .HYBRID or .hedra (or --format)");
+  try {
+    return format_from_name(std::string_view(path).substr(dot + 1));
+  } catch (const std::invalid_argument&) {
+    throw InputError(path, {}, "a file name ending in .ovm, .ovmb, .mesh, .HYBRID or .hedra (or --format)");
+  }
+}
+
+const char* format_name(Format f) {
+  switch (f) {
+    case Format::Ovm: return "ovm";
+    case Format::Ovmb: return "ovmb";
+    case Format::Medit: return "mesh";
+    case Format::Hybrid: return "hybrid";
+    case Format::Hedra: return "hedra";
+    case Format::Auto: return "auto";
+  }
+  return "?";
+}
+
+std::string read_file_bytes(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path, {}, "a readable file (cannot open it)");
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  if (f.bad()) throw InputError(path, {}, "a readable file (read failed)");
+  return std::move(ss).str();
+}
+
+MeshInput read_input(const std::string& path, Format format) {
+  if (format == Format::Auto) format = format_from_path(path);
+  const std::string bytes = read_file_bytes(path);
+  switch (format) {
+    case Format::Ovm: return read_ovm(bytes, path);
+    case Format::Ovmb: return read_ovmb(bytes, path);
+    case Format::Medit: return read_medit(bytes, path);
+    case Format::Hybrid: return read_hybrid(bytes, path);
+    case Format::Hedra: return read_hedra(bytes, path);
+    case Format::Auto: break;
+  }
+  throw InputError(path, {}, "a known format");
+}
+
+Mesh load_mesh(const std::string& path, Format format) { return build_mesh(read_input(path, format)); }
+
+void write_mesh(const Mesh& mesh, const std::string& path, Format format) {
+  if (format == Format::Auto) format = format_from_path(path);
+  std::string text;
+  if (format == Format::Ovm) text = ovm_text(mesh);
+  else if (format == Format::Medit) text = medit_text(mesh);
+  else throw std::invalid_argument(std::string("writing ") + format_name(format) + " is not supported (use .ovm or .mesh)");
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f << text;
+  if (!f) throw std::runtime_error("write failed: " + path);
+}
+
+}  // namespace hbc

@@ -1,0 +1,131 @@
+// MEDIT .mesh (INRIA): keyword sections in any order, counts on the same or the next line,
+// 1-based vertex ids, a reference number after each entry. Degenerate hexahedra (repeated ids,
+// as At-Most-Hexa writes prisms, pyramids and tets) become the polyhedron they stand for.
+#include <algorithm>
+#include <array>
+#include <cctype>
+
+#include "hbc/io.hpp"
+#include "text_scanner.hpp"
+
+namespace hbc {
+namespace {
+
+struct Element {
+  int nverts;
+  std::vector<std::vector<int>> faces;  // local vertex loops
+};
+
+// Face templates; loops are outward for elements of positive orientation in MEDIT's convention.
+const Element kTet{4, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+const Element kPyramid{5, {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}};
+const Element kPrism{6, {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}};
+const Element kHex{8, {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+
+const Element* element_of(const std::string& kw) {
+  if (kw == "tetrahedra") return &kTet;
+  if (kw == "pyramids") return &kPyramid;
+  if (kw == "prisms") return &kPrism;
+  if (kw == "hexahedra") return &kHex;
+  return nullptr;
+}
+
+bool looks_like_keyword(std::string_view t) {
+  return !t.empty() && std::isalpha(static_cast<unsigned char>(t[0]));
+}
+
+}  // namespace
+
+MeshInput read_medit(std::string_view text, const std::string& source) {
+  detail::TextScanner s(text, source, true);
+  MeshInput in;
+  in.source = source;
+  int64_t nv = -1;
+  struct Raw {
+    const Element* el;
+    int64_t line;
+    std::array<int64_t, 8> v;
+  };
+  std::vector<Raw> raw;
+  bool seen_version = false, seen_end = false;
+  std::string_view tok;
+  bool have_tok = s.next(tok);
+  while (have_tok) {
+    if (!looks_like_keyword(tok)) s.fail("a MEDIT keyword, found '" + std::string(tok.substr(0, 40)) + "'");
+    const std::string kw = detail::lower(tok);
+    const int64_t kw_line = s.line();
+    if (kw == "meshversionformatted") {
+      s.integer_in(1, 4, "the MEDIT version");
+      seen_version = true;
+    } else if (kw == "dimension") {
+      s.integer_in(3, 3, "dimension 3");
+    } else if (kw == "vertices") {
+      if (nv >= 0) s.fail("one Vertices section, found a second");
+      nv = s.count(8, "the number of vertices");
+      in.points.reserve(static_cast<size_t>(3 * nv));
+      in.vertex_loc.reserve(static_cast<size_t>(nv));
+      for (int64_t i = 0; i < nv; ++i) {
+        const int64_t l = s.next_line();
+        for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
+        s.integer("a vertex reference number");
+        in.vertex_loc.push_back(l);
+      }
+    } else if (const Element* el = element_of(kw)) {
+      const int64_t n = s.count(2 * (el->nverts + 1), (std::string("the number of ") + kw).c_str());
+      raw.reserve(raw.size() + static_cast<size_t>(n));
+      for (int64_t i = 0; i < n; ++i) {
+        Raw r{el, s.next_line(), {}};
+        for (int k = 0; k < el->nverts; ++k) r.v[k] = s.integer("a vertex index");
+        s.integer("an element reference number");
+        raw.push_back(r);
+      }
+    } else if (kw == "end") {
+      seen_end = true;
+      break;
+    } else {
+      // Surface elements and other data are read past: everything up to the next keyword.
+      while ((have_tok = s.next(tok)) && !looks_like_keyword(tok)) {
+      }
+      continue;
+    }
+    (void)kw_line;
+    have_tok = s.next(tok);
+  }
+  (void)seen_end;
+  if (!seen_version && text.size() > 0 && nv < 0) s.fail("a MEDIT file (MeshVersionFormatted, Vertices, ...)");
+  if (nv < 0) s.fail("a Vertices section");
+  if (raw.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
+
+  // Cells: each template face with repeated ids collapsed (first occurrence kept); faces left
+  // with fewer than 3 distinct vertices vanish, a face repeated within the cell is kept once.
+  std::vector<int32_t> loop;
+  std::vector<std::vector<int32_t>> cell_sets;
+  for (const Raw& r : raw) {
+    std::array<int32_t, 8> v{};
+    for (int k = 0; k < r.el->nverts; ++k) {
+      if (r.v[k] < 1 || r.v[k] > nv)
+        s.fail_at(r.line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(r.v[k]));
+      v[k] = static_cast<int32_t>(r.v[k] - 1);
+    }
+    cell_sets.clear();
+    const size_t first_face = in.faces.rows();
+    for (const auto& tf : r.el->faces) {
+      loop.clear();
+      for (int k : tf)
+        if (std::find(loop.begin(), loop.end(), v[k]) == loop.end()) loop.push_back(v[k]);
+      if (loop.size() < 3) continue;
+      std::vector<int32_t> sorted(loop);
+      std::sort(sorted.begin(), sorted.end());
+      if (std::find(cell_sets.begin(), cell_sets.end(), sorted) != cell_sets.end()) continue;
+      cell_sets.push_back(std::move(sorted));
+      in.faces.push_row(loop.begin(), loop.end());
+      in.face_loc.push_back(r.line);
+    }
+    for (size_t f = first_face; f < in.faces.rows(); ++f) in.cells.items.push_back(static_cast<int32_t>(2 * f));
+    in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
+    in.cell_loc.push_back(r.line);
+  }
+  return in;
+}
+
+}  // namespace hbc

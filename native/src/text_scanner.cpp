@@ -1,0 +1,119 @@
+#include "text_scanner.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+namespace hbc::detail {
+
+std::string lower(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return r;
+}
+
+void TextScanner::skip_space() {
+  while (pos_ < text_.size()) {
+    char c = text_[pos_];
+    if (c == '\n') {
+      ++line_;
+      ++pos_;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+      ++pos_;
+    } else if (hash_comments_ && c == '#') {
+      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    } else {
+      break;
+    }
+  }
+}
+
+bool TextScanner::next(std::string_view& tok) {
+  skip_space();
+  if (pos_ >= text_.size()) {
+    tok_line_ = line_;
+    return false;
+  }
+  size_t start = pos_;
+  while (pos_ < text_.size()) {
+    char c = text_[pos_];
+    if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') break;
+    if (hash_comments_ && c == '#') break;
+    ++pos_;
+  }
+  tok_line_ = line_;
+  tok = text_.substr(start, pos_ - start);
+  last_ = tok;
+  return true;
+}
+
+bool TextScanner::at_end() {
+  skip_space();
+  return pos_ >= text_.size();
+}
+
+int64_t TextScanner::next_line() {
+  skip_space();
+  return line_;
+}
+
+void TextScanner::fail(const std::string& expected) const { fail_at(tok_line_, expected); }
+
+void TextScanner::fail_at(int64_t line, const std::string& expected) const {
+  throw InputError(source_, SourceLoc::at_line(line), "expected " + expected);
+}
+
+std::string_view TextScanner::word(const char* expected) {
+  std::string_view t;
+  if (!next(t)) fail(std::string(expected) + ", found the end of the file");
+  return t;
+}
+
+static std::string shown(std::string_view t) {
+  std::string s(t.substr(0, 40));
+  return "'" + s + (t.size() > 40 ? "...'" : "'");
+}
+
+int64_t TextScanner::integer(const char* expected) {
+  std::string_view t = word(expected);
+  int64_t v = 0;
+  const char* b = t.data();
+  const char* e = t.data() + t.size();
+  if (b != e && *b == '+') ++b;
+  auto r = std::from_chars(b, e, v);
+  if (r.ec != std::errc() || r.ptr != e) fail(std::string(expected) + " (an integer), found " + shown(t));
+  return v;
+}
+
+double TextScanner::real(const char* expected) {
+  std::string_view t = word(expected);
+  double v = 0;
+  const char* b = t.data();
+  const char* e = t.data() + t.size();
+  if (b != e && *b == '+') ++b;
+  auto r = std::from_chars(b, e, v);
+  if (r.ec == std::errc::result_out_of_range) fail(std::string(expected) + " (a finite number), found " + shown(t));
+  if (r.ec != std::errc() || r.ptr != e) fail(std::string(expected) + " (a number), found " + shown(t));
+  if (!std::isfinite(v)) fail(std::string(expected) + " (a finite number), found " + shown(t));
+  return v;
+}
+
+int64_t TextScanner::integer_in(int64_t lo, int64_t hi, const char* expected) {
+  int64_t v = integer(expected);
+  if (v < lo || v > hi)
+    fail(std::string(expected) + " in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+         "], found " + std::to_string(v));
+  return v;
+}
+
+int64_t TextScanner::count(int64_t min_bytes, const char* expected) {
+  int64_t n = integer(expected);
+  if (n < 0) fail(std::string(expected) + " (a count >= 0), found " + std::to_string(n));
+  const int64_t room = static_cast<int64_t>(remaining_bytes()) / std::max<int64_t>(min_bytes, 1) + 1;
+  if (n > room)
+    fail(std::string(expected) + " that the rest of the file can hold (at most " +
+         std::to_string(room) + "), found " + std::to_string(n));
+  return n;
+}
+
+}  // namespace hbc::detail

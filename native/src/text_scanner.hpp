@@ -1,0 +1,53 @@
+#pragma once
+// Token scanner shared by the text readers: whitespace-separated tokens, optional '#' comments,
+// line tracking for messages, and checks that a declared count fits in what is left of the file.
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "hbc/error.hpp"
+
+namespace hbc::detail {
+
+class TextScanner {
+ public:
+  TextScanner(std::string_view text, std::string source, bool hash_comments)
+      : text_(text), source_(std::move(source)), hash_comments_(hash_comments) {}
+
+  // Next token, or false at the end of the text.
+  bool next(std::string_view& tok);
+  bool at_end();
+  // Line of the last token returned (1-based), or of the end of the text.
+  int64_t line() const { return tok_line_; }
+  // The line the next token starts on (skips whitespace and comments).
+  int64_t next_line();
+
+  std::string_view word(const char* expected);
+  int64_t integer(const char* expected);
+  double real(const char* expected);
+  // An integer in [lo, hi].
+  int64_t integer_in(int64_t lo, int64_t hi, const char* expected);
+  // A count of elements each needing at least `min_bytes` of text: rejects counts the rest of the
+  // file cannot hold, so that a tiny file cannot make us allocate gigabytes.
+  int64_t count(int64_t min_bytes, const char* expected);
+  size_t remaining_bytes() const { return text_.size() - pos_; }
+  const std::string& source() const { return source_; }
+
+  [[noreturn]] void fail(const std::string& expected) const;
+  [[noreturn]] void fail_at(int64_t line, const std::string& expected) const;
+
+ private:
+  void skip_space();
+  std::string_view text_;
+  std::string source_;
+  bool hash_comments_;
+  size_t pos_ = 0;
+  int64_t line_ = 1;      // line at pos_
+  int64_t tok_line_ = 1;  // line of the last token
+  std::string_view last_;
+};
+
+// Lower-case copy for case-insensitive keywords.
+std::string lower(std::string_view s);
+
+}  // namespace hbc::detail

@@ -1,0 +1,26 @@
+#pragma once
+// The hbc command's subcommands, one file each. Each returns the process exit status:
+// 0 success, 1 usage error, 2 bad input (message on stderr naming file and line).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hbc/io.hpp"
+
+namespace hbc::cli {
+
+using Args = std::vector<std::string>;
+
+int cmd_info(const Args& args);
+int cmd_generate(const Args& args);
+int cmd_export_surface(const Args& args);
+int cmd_analyze(const Args& args);
+
+// Small shared helpers for argument handling.
+bool take_flag(Args& args, const std::string& flag);                       // removes it if present
+std::optional<std::string> take_option(Args& args, const std::string& opt);  // "--opt value"
+Format take_format(Args& args);                                            // --format NAME or Auto
+// Loads a mesh and prints its warnings on stderr.
+Mesh load_for_cli(const std::string& path, Format format, double* seconds = nullptr);
+
+}  // namespace hbc::cli
