@@ -478,6 +478,7 @@ Mesh build_mesh(MeshInput in) {
     }
     if (groups != 1) m.vert_non_manifold[v] = 1;
   }
+  m.points = std::move(in.points);
   return m;
 }
 
