@@ -1,0 +1,250 @@
+#include "hbc/base_complex.hpp"
+
+#include <algorithm>
+
+namespace hbc {
+
+const char* component_kind_name(ComponentKind k) {
+  switch (k) {
+    case ComponentKind::Cube: return "cube";
+    case ComponentKind::Ring: return "ring";
+    case ComponentKind::Other: return "other";
+    case ComponentKind::NonHex: return "non-hex";
+  }
+  return "?";
+}
+
+size_t BaseComplex::num_hex_components() const {
+  return static_cast<size_t>(std::count(component_kind.begin(), component_kind.end(), ComponentKind::Cube));
+}
+size_t BaseComplex::num_non_hex_components() const {
+  return static_cast<size_t>(std::count(component_kind.begin(), component_kind.end(), ComponentKind::NonHex));
+}
+
+int32_t fan_position(const Mesh& m, int32_t e, int32_t f) {
+  auto faces = m.edge_faces[e];
+  for (size_t i = 0; i < faces.size(); ++i)
+    if (faces[i] == f) return static_cast<int32_t>(i);
+  return -1;
+}
+
+int32_t straight_face(const Mesh& m, int32_t e, int32_t f) {
+  if (!m.edge_fan_ok[e]) return -1;
+  const auto fc = m.face_cells[f];
+  int32_t found = -1;
+  for (int32_t g : m.edge_faces[e]) {
+    if (g == f) continue;
+    const auto gc = m.face_cells[g];
+    bool shares = false;
+    for (int32_t a : fc)
+      for (int32_t b : gc) shares = shares || (a >= 0 && a == b);
+    if (shares) continue;
+    if (found >= 0) return -1;  // not unique: no straight continuation
+    found = g;
+  }
+  return found;
+}
+
+namespace {
+
+// Sorted distinct values of `v`, appended to `out` as one row.
+void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  out.push_row(v.begin(), v.end());
+}
+
+// Separation faces: boundary faces, and the surfaces traced straight from every face around an
+// edge of the hybrid singularity graph until they reach another such edge or the boundary.
+std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) {
+  const size_t nf = m.num_faces();
+  std::vector<uint8_t> sep(nf, 0);
+  std::vector<int32_t> queue;
+  queue.reserve(nf);
+  for (size_t f = 0; f < nf; ++f) sep[f] = m.face_boundary[f];
+  for (size_t e = 0; e < m.num_edges(); ++e) {
+    if (!g.is_structural(static_cast<int32_t>(e))) continue;
+    for (int32_t f : m.edge_faces[e])
+      if (!sep[f]) {
+        sep[f] = 1;
+        queue.push_back(f);
+      }
+  }
+  for (size_t q = 0; q < queue.size(); ++q) {
+    const int32_t f = queue[q];
+    for (int32_t e : m.face_edges[f]) {
+      if (g.is_structural(e) || m.edge_boundary[e]) continue;
+      const int32_t next = straight_face(m, e, f);
+      if (next >= 0 && !sep[next]) {
+        sep[next] = 1;
+        queue.push_back(next);
+      }
+    }
+  }
+  return sep;
+}
+
+}  // namespace
+
+BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
+  BaseComplex bc;
+  const size_t nc = m.num_cells(), nf = m.num_faces(), ne = m.num_edges(), nv = m.num_vertices();
+  bc.face_separation = separation_faces(m, g);
+  const auto& sep = bc.face_separation;
+
+  // Components: cells joined across faces that do not separate, numbered by their lowest cell.
+  bc.cell_component.assign(nc, -1);
+  std::vector<int32_t> stack, members;
+  for (size_t c0 = 0; c0 < nc; ++c0) {
+    if (bc.cell_component[c0] >= 0) continue;
+    const int32_t id = static_cast<int32_t>(bc.component_cells.rows());
+    members.clear();
+    stack.assign(1, static_cast<int32_t>(c0));
+    bc.cell_component[c0] = id;
+    while (!stack.empty()) {
+      const int32_t c = stack.back();
+      stack.pop_back();
+      members.push_back(c);
+      for (int32_t f : m.cell_faces[c]) {
+        if (sep[f]) continue;
+        const int32_t d = m.face_cells[f][0] == c ? m.face_cells[f][1] : m.face_cells[f][0];
+        if (d >= 0 && bc.cell_component[d] < 0) {
+          bc.cell_component[d] = id;
+          stack.push_back(d);
+        }
+      }
+    }
+    push_unique_row(members, bc.component_cells);
+  }
+  const size_t ncomp = bc.component_cells.rows();
+
+  // Curves and corners.
+  bc.edge_complex.assign(ne, 0);
+  for (size_t e = 0; e < ne; ++e) {
+    bool all = true;
+    for (int32_t f : m.edge_faces[e]) all = all && sep[f];
+    bc.edge_complex[e] = all;
+  }
+  bc.vert_corner.assign(nv, 0);
+  for (size_t v = 0; v < nv; ++v) {
+    bool all = !m.vert_edges[v].empty();
+    for (int32_t e : m.vert_edges[v]) all = all && bc.edge_complex[e];
+    bc.vert_corner[v] = all;
+    if (all) bc.corners.push_back(static_cast<int32_t>(v));
+  }
+  {
+    std::vector<int32_t> zero(ne, 0);
+    chain_edges(m, bc.edge_complex, zero, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
+  }
+  bc.edge_curve.assign(ne, -1);
+  for (size_t k = 0; k < bc.curve_edges.rows(); ++k)
+    for (int32_t e : bc.curve_edges[k]) bc.edge_curve[e] = static_cast<int32_t>(k);
+
+  // Patches: separation faces joined straight across edges that are not curves.
+  bc.face_patch.assign(nf, -1);
+  for (size_t f0 = 0; f0 < nf; ++f0) {
+    if (!sep[f0] || bc.face_patch[f0] >= 0) continue;
+    const int32_t id = static_cast<int32_t>(bc.patch_faces.rows());
+    members.clear();
+    stack.assign(1, static_cast<int32_t>(f0));
+    bc.face_patch[f0] = id;
+    while (!stack.empty()) {
+      const int32_t f = stack.back();
+      stack.pop_back();
+      members.push_back(f);
+      for (int32_t e : m.face_edges[f]) {
+        if (bc.edge_complex[e]) continue;
+        const int32_t h = straight_face(m, e, f);
+        if (h >= 0 && sep[h] && bc.face_patch[h] < 0) {
+          bc.face_patch[h] = id;
+          stack.push_back(h);
+        }
+      }
+    }
+    push_unique_row(members, bc.patch_faces);
+    const auto fc = m.face_cells[f0];
+    bc.patch_components.push_back({bc.cell_component[fc[0]], fc[1] >= 0 ? bc.cell_component[fc[1]] : -1});
+  }
+  const size_t npatch = bc.patch_faces.rows();
+  std::vector<int32_t> buf;
+  bc.patch_corner_count.resize(npatch);
+  bc.patch_curve_count.resize(npatch);
+  for (size_t p = 0; p < npatch; ++p) {
+    buf.clear();
+    for (int32_t f : bc.patch_faces[p])
+      for (int32_t v : m.face_verts[f])
+        if (bc.vert_corner[v]) buf.push_back(v);
+    std::sort(buf.begin(), buf.end());
+    bc.patch_corner_count[p] = static_cast<int32_t>(std::unique(buf.begin(), buf.end()) - buf.begin());
+    buf.clear();
+    for (int32_t f : bc.patch_faces[p])
+      for (int32_t e : m.face_edges[f])
+        if (bc.edge_curve[e] >= 0) buf.push_back(bc.edge_curve[e]);
+    std::sort(buf.begin(), buf.end());
+    bc.patch_curve_count[p] = static_cast<int32_t>(std::unique(buf.begin(), buf.end()) - buf.begin());
+  }
+
+  // Per component: patches, curves, corners; adjacency; faces with the component on both sides.
+  std::vector<std::pair<int32_t, int32_t>> adjacent;
+  for (size_t f = 0; f < nf; ++f) {
+    if (!sep[f] || m.face_cells[f][1] < 0) continue;
+    const int32_t a = bc.cell_component[m.face_cells[f][0]], b = bc.cell_component[m.face_cells[f][1]];
+    if (a == b) bc.self_adjacent_faces.push_back(static_cast<int32_t>(f));
+    else adjacent.push_back({std::min(a, b), std::max(a, b)});
+  }
+  std::sort(adjacent.begin(), adjacent.end());
+  adjacent.erase(std::unique(adjacent.begin(), adjacent.end()), adjacent.end());
+  {
+    Csr<int32_t> pairs;
+    for (auto [a, b] : adjacent) {
+      const int32_t row[2] = {a, b};
+      pairs.push_row(row, row + 2);
+    }
+    bc.component_adjacency = transpose(pairs, ncomp);
+    // transpose lists pair indices; map them to the other component.
+    for (size_t k = 0; k < ncomp; ++k)
+      for (int32_t& x : bc.component_adjacency.row(k)) {
+        const auto [a, b] = adjacent[static_cast<size_t>(x)];
+        x = a == static_cast<int32_t>(k) ? b : a;
+      }
+    for (size_t k = 0; k < ncomp; ++k) {
+      auto r = bc.component_adjacency.row(k);
+      std::sort(r.begin(), r.end());
+    }
+  }
+
+  std::vector<uint8_t> self_cut(ncomp, 0);
+  for (int32_t f : bc.self_adjacent_faces) self_cut[bc.cell_component[m.face_cells[f][0]]] = 1;
+  bc.component_kind.assign(ncomp, ComponentKind::Other);
+  for (size_t k = 0; k < ncomp; ++k) {
+    auto cells = bc.component_cells[k];
+    buf.clear();
+    for (int32_t c : cells)
+      for (int32_t f : m.cell_faces[c])
+        if (sep[f]) buf.push_back(bc.face_patch[f]);
+    push_unique_row(buf, bc.component_patches);
+    buf.clear();
+    for (int32_t c : cells)
+      for (int32_t e : m.cell_edges[c])
+        if (bc.edge_curve[e] >= 0) buf.push_back(bc.edge_curve[e]);
+    push_unique_row(buf, bc.component_curves);
+    buf.clear();
+    for (int32_t c : cells)
+      for (int32_t v : m.cell_verts[c])
+        if (bc.vert_corner[v]) buf.push_back(v);
+    push_unique_row(buf, bc.component_corners);
+
+    if (cells.size() == 1 && !m.is_hex(cells[0])) {
+      bc.component_kind[k] = ComponentKind::NonHex;
+      continue;
+    }
+    bool cube = !self_cut[k] && bc.component_patches.count(k) == 6 && bc.component_curves.count(k) == 12 &&
+                bc.component_corners.count(k) == 8;
+    for (int32_t p : bc.component_patches[k])
+      cube = cube && bc.patch_curve_count[p] == 4 && bc.patch_corner_count[p] == 4;
+    bc.component_kind[k] = cube ? ComponentKind::Cube : self_cut[k] ? ComponentKind::Ring : ComponentKind::Other;
+  }
+  return bc;
+}
+
+}  // namespace hbc
