@@ -167,21 +167,17 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
   }
   const size_t npatch = bc.patch_faces.rows();
   std::vector<int32_t> buf;
-  bc.patch_corner_count.resize(npatch);
-  bc.patch_curve_count.resize(npatch);
   for (size_t p = 0; p < npatch; ++p) {
     buf.clear();
     for (int32_t f : bc.patch_faces[p])
       for (int32_t v : m.face_verts[f])
         if (bc.vert_corner[v]) buf.push_back(v);
-    std::sort(buf.begin(), buf.end());
-    bc.patch_corner_count[p] = static_cast<int32_t>(std::unique(buf.begin(), buf.end()) - buf.begin());
+    push_unique_row(buf, bc.patch_corners);
     buf.clear();
     for (int32_t f : bc.patch_faces[p])
       for (int32_t e : m.face_edges[f])
         if (bc.edge_curve[e] >= 0) buf.push_back(bc.edge_curve[e]);
-    std::sort(buf.begin(), buf.end());
-    bc.patch_curve_count[p] = static_cast<int32_t>(std::unique(buf.begin(), buf.end()) - buf.begin());
+    push_unique_row(buf, bc.patch_curves);
   }
 
   // Per component: patches, curves, corners; adjacency; faces with the component on both sides.
@@ -241,7 +237,7 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
     bool cube = !self_cut[k] && bc.component_patches.count(k) == 6 && bc.component_curves.count(k) == 12 &&
                 bc.component_corners.count(k) == 8;
     for (int32_t p : bc.component_patches[k])
-      cube = cube && bc.patch_curve_count[p] == 4 && bc.patch_corner_count[p] == 4;
+      cube = cube && bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
     bc.component_kind[k] = cube ? ComponentKind::Cube : self_cut[k] ? ComponentKind::Ring : ComponentKind::Other;
   }
   return bc;

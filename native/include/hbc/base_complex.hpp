@@ -35,8 +35,8 @@ struct BaseComplex {
   std::vector<int32_t> face_patch;       // nf: patch of a separation face, else -1
   Csr<int32_t> patch_faces;              // npatch rows, sorted face ids
   std::vector<std::array<int32_t, 2>> patch_components;  // components on its two sides (-1: boundary)
-  std::vector<int32_t> patch_corner_count;  // corners on the patch
-  std::vector<int32_t> patch_curve_count;   // curves bounding the patch
+  Csr<int32_t> patch_corners;            // npatch rows: corners on the patch, sorted
+  Csr<int32_t> patch_curves;             // npatch rows: curves bounding the patch, sorted
 
   // Curves E_B: complex edges chained through vertices that are not corners.
   std::vector<int32_t> edge_curve;       // ne: curve of a complex edge, else -1

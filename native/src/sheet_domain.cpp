@@ -1,0 +1,133 @@
+// The unit / curve structure sheets are computed on, at the base complex level or the mesh level.
+#include <algorithm>
+
+#include "hbc/sheets.hpp"
+
+namespace hbc {
+namespace {
+
+void push_sorted_unique(std::vector<int32_t>& v, Csr<int32_t>& out) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  out.push_row(v.begin(), v.end());
+}
+
+bool share_end(const std::array<int32_t, 2>& a, const std::array<int32_t, 2>& b) {
+  if (a[0] < 0 || b[0] < 0) return false;
+  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+}
+
+// Parallel pairs of every quad (4 curves, no shared end within a pair); `quads` rows list the
+// curves of each quad.
+Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<std::array<int32_t, 2>>& ends,
+                                  size_t ncurves) {
+  std::vector<std::pair<int32_t, int32_t>> pairs;
+  for (size_t q = 0; q < quads.rows(); ++q) {
+    auto c = quads[q];
+    if (c.size() != 4) continue;
+    for (size_t i = 0; i < 4; ++i)
+      for (size_t j = i + 1; j < 4; ++j) {
+        if (ends[c[i]][0] < 0 || ends[c[j]][0] < 0 || share_end(ends[c[i]], ends[c[j]])) continue;
+        pairs.push_back({c[i], c[j]});
+        pairs.push_back({c[j], c[i]});
+      }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  Csr<int32_t> out;
+  out.offsets.assign(ncurves + 1, 0);
+  for (auto [a, b] : pairs) ++out.offsets[a + 1];
+  for (size_t i = 0; i < ncurves; ++i) out.offsets[i + 1] += out.offsets[i];
+  out.items.reserve(pairs.size());
+  for (auto [a, b] : pairs) out.items.push_back(b);
+  return out;
+}
+
+}  // namespace
+
+SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, SheetLevel level) {
+  SheetDomain d;
+  d.level = level;
+  const size_t nc = m.num_cells(), nf = m.num_faces();
+  d.cell_unit.assign(nc, -1);
+  d.face_joins.assign(nf, 0);
+  std::vector<int32_t> buf;
+
+  if (level == SheetLevel::Complex) {
+    std::vector<int32_t> comp_unit(bc.num_components(), -1);
+    for (size_t k = 0; k < bc.num_components(); ++k) {
+      if (bc.component_kind[k] == ComponentKind::NonHex) continue;
+      comp_unit[k] = static_cast<int32_t>(d.unit_component.size());
+      d.unit_component.push_back(static_cast<int32_t>(k));
+      d.unit_cells.push_row(bc.component_cells[k]);
+    }
+    for (size_t c = 0; c < nc; ++c) d.cell_unit[c] = m.is_hex(c) ? comp_unit[bc.cell_component[c]] : -1;
+    for (int32_t k : d.unit_component) {
+      buf.clear();
+      for (int32_t j : bc.component_adjacency[k])
+        if (comp_unit[j] >= 0) buf.push_back(comp_unit[j]);
+      push_sorted_unique(buf, d.unit_adjacency);
+    }
+    d.curve_edges = bc.curve_edges;
+    for (size_t k = 0; k < bc.curve_verts.rows(); ++k) {
+      auto vs = bc.curve_verts[k];
+      d.curve_ends.push_back(bc.curve_closed[k] ? std::array<int32_t, 2>{-1, -1}
+                                                : std::array<int32_t, 2>{vs.front(), vs.back()});
+    }
+    for (size_t f = 0; f < nf; ++f) {
+      const auto fc = m.face_cells[f];
+      d.face_joins[f] = !bc.face_separation[f] && fc[1] >= 0 && m.is_hex(fc[0]) && m.is_hex(fc[1]);
+    }
+    d.curve_parallels = parallels_from_quads(bc.patch_curves, d.curve_ends, d.curve_edges.rows());
+  } else {
+    for (size_t c = 0; c < nc; ++c) {
+      if (!m.is_hex(c)) continue;
+      d.cell_unit[c] = static_cast<int32_t>(d.unit_component.size());
+      d.unit_component.push_back(bc.cell_component[c]);
+      const int32_t row[1] = {static_cast<int32_t>(c)};
+      d.unit_cells.push_row(row, row + 1);
+    }
+    for (size_t u = 0; u < d.unit_cells.rows(); ++u) {
+      const int32_t c = d.unit_cells[u][0];
+      buf.clear();
+      for (int32_t f : m.cell_faces[c]) {
+        const auto fc = m.face_cells[f];
+        const int32_t o = fc[0] == c ? fc[1] : fc[0];
+        if (o >= 0 && d.cell_unit[o] >= 0) buf.push_back(d.cell_unit[o]);
+      }
+      push_sorted_unique(buf, d.unit_adjacency);
+    }
+    for (size_t e = 0; e < m.num_edges(); ++e) {
+      const int32_t row[1] = {static_cast<int32_t>(e)};
+      d.curve_edges.push_row(row, row + 1);
+      d.curve_ends.push_back(m.edge_verts[e]);
+    }
+    // Quads: faces of hex cells, with their edges as the curves.
+    Csr<int32_t> quads;
+    for (size_t f = 0; f < nf; ++f) {
+      const auto fc = m.face_cells[f];
+      const bool hex_face = m.is_hex(fc[0]) || (fc[1] >= 0 && m.is_hex(fc[1]));
+      if (hex_face && m.face_verts.count(f) == 4) quads.push_row(m.face_edges[f]);
+    }
+    d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges());
+  }
+
+  // Units holding each curve, and non-hex cells touching it.
+  const size_t ncurves = d.curve_edges.rows();
+  for (size_t k = 0; k < ncurves; ++k) {
+    buf.clear();
+    for (int32_t e : d.curve_edges[k])
+      for (int32_t c : m.edge_cells[e])
+        if (d.cell_unit[c] >= 0) buf.push_back(d.cell_unit[c]);
+    push_sorted_unique(buf, d.curve_units);
+    buf.clear();
+    for (int32_t e : d.curve_edges[k])
+      for (int32_t c : m.edge_cells[e])
+        if (!m.is_hex(c)) buf.push_back(c);
+    push_sorted_unique(buf, d.curve_non_hex_cells);
+  }
+  d.unit_curves = transpose(d.curve_units, d.unit_cells.rows());
+  return d;
+}
+
+}  // namespace hbc
