@@ -245,7 +245,6 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
   out.sheet = sheet;
   auto curves = sheets.sheet_curves[sheet];
   auto units = sheets.sheet_units[sheet];
-  const std::vector<int32_t> unit_list(units.begin(), units.end());
   auto in_sheet = [&](int32_t c) { return std::binary_search(curves.begin(), curves.end(), c); };
   auto in_units = [&](int32_t u) { return std::binary_search(units.begin(), units.end(), u); };
   // Two curves conflict when they share an end inside one unit of the sheet.
@@ -261,12 +260,26 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
   auto index_of = [&](int32_t c) {
     return static_cast<size_t>(std::lower_bound(curves.begin(), curves.end(), c) - curves.begin());
   };
-  std::vector<int32_t> taken, queue, buf;
-  for (size_t i0 = 0; i0 < curves.size(); ++i0) {
-    if (used[i0]) continue;
-    taken.assign(1, curves[i0]);
-    used[i0] = 1;
-    queue.assign(1, curves[i0]);
+  auto emit = [&](const std::vector<int32_t>& kept, const std::vector<int32_t>& subunits) {
+    out.curves.push_row(kept.begin(), kept.end());
+    out.units.push_row(subunits.begin(), subunits.end());
+    std::vector<int32_t> cells;
+    for (int32_t u : subunits)
+      for (int32_t c : d.unit_cells[u]) cells.push_back(c);
+    sort_unique(cells);
+    out.cells.push_row(cells.begin(), cells.end());
+    out.classes.push_back(classify_sheet(d, kept, subunits));
+  };
+  std::vector<int32_t> taken, queue, banned, subunits, kept;
+  size_t next_seed = 0;
+  for (;;) {
+    while (next_seed < curves.size() && used[next_seed]) ++next_seed;
+    if (next_seed == curves.size()) break;
+    const int32_t seed = curves[next_seed];
+    taken.assign(1, seed);
+    used[next_seed] = 1;
+    queue.assign(1, seed);
+    banned.clear();
     for (size_t q = 0; q < queue.size(); ++q) {
       for (int32_t b : d.curve_parallels[queue[q]]) {
         if (!in_sheet(b) || used[index_of(b)]) continue;
@@ -276,36 +289,45 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
             ok = false;
             break;
           }
-        if (!ok) continue;
+        if (!ok) {
+          // The sheet turns here: the units around the rejected curve belong to another subsheet.
+          for (int32_t u : d.curve_units[b])
+            if (in_units(u)) banned.push_back(u);
+          continue;
+        }
         used[index_of(b)] = 1;
         taken.push_back(b);
         queue.push_back(b);
       }
     }
     sort_unique(taken);
-    // Units touched by the subsheet's curves are its cells; curves touching none are dropped.
-    buf.clear();
-    for (int32_t c : taken)
-      for (int32_t u : d.curve_units[c])
-        if (in_units(u)) buf.push_back(u);
-    sort_unique(buf);
-    std::vector<int32_t> kept;
+    sort_unique(banned);
+    // Cells: units touched by the subsheet's curves, less those where it turned. Curves left
+    // touching none are dropped back into the pool (they seed a later subsheet).
+    subunits.clear();
+    kept.clear();
     for (int32_t c : taken) {
       bool any = false;
-      for (int32_t u : d.curve_units[c]) any = any || std::binary_search(buf.begin(), buf.end(), u);
+      for (int32_t u : d.curve_units[c])
+        if (in_units(u) && !std::binary_search(banned.begin(), banned.end(), u)) {
+          subunits.push_back(u);
+          any = true;
+        }
       if (any) kept.push_back(c);
+      else if (c != seed) used[index_of(c)] = 0;
     }
-    if (kept.empty()) continue;
-    out.curves.push_row(kept.begin(), kept.end());
-    out.units.push_row(buf.begin(), buf.end());
-    std::vector<int32_t> cells;
-    for (int32_t u : buf)
-      for (int32_t c : d.unit_cells[u]) cells.push_back(c);
-    sort_unique(cells);
-    out.cells.push_row(cells.begin(), cells.end());
-    out.classes.push_back(classify_sheet(d, kept, buf));
+    sort_unique(subunits);
+    if (kept.empty()) {
+      // Every unit of the seed was taken out: the seed stands alone so that each curve lands in
+      // some subsheet and the loop always progresses.
+      kept.assign(1, seed);
+      for (int32_t u : d.curve_units[seed])
+        if (in_units(u)) subunits.push_back(u);
+      sort_unique(subunits);
+    }
+    emit(kept, subunits);
+    next_seed = 0;
   }
-  (void)unit_list;
   return out;
 }
 
