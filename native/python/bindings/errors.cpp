@@ -1,0 +1,41 @@
+// hbc::InputError becomes hbc.MeshFormatError, a ValueError carrying where the problem is.
+// Other C++ exceptions keep pybind11's default translation (std::invalid_argument -> ValueError,
+// std::bad_alloc -> MemoryError, any other std::exception -> RuntimeError).
+#include "hbc/error.hpp"
+
+#include "bindings.hpp"
+
+namespace hbc::python {
+
+namespace {
+
+py::object optional_int(int64_t v) { return v >= 0 ? py::object(py::int_(v)) : py::object(py::none()); }
+
+void translate(std::exception_ptr p) {
+  try {
+    if (p) std::rethrow_exception(p);
+  } catch (const InputError& e) {
+    // The type is looked up through the module rather than kept in a static, so no state lives
+    // outside the module object.
+    py::object type = py::module_::import("hbc._core").attr("MeshFormatError");
+    py::object err = type(e.what());
+    err.attr("file") = e.file();
+    err.attr("line") = optional_int(e.loc().line);
+    err.attr("byte_offset") = optional_int(e.loc().byte_offset);
+    err.attr("detail") = e.detail();
+    PyErr_SetObject(type.ptr(), err.ptr());
+  }
+}
+
+}  // namespace
+
+void bind_errors(py::module_& m) {
+  py::object type = py::exception<InputError>(m, "MeshFormatError", PyExc_ValueError);
+  type.attr("__doc__") =
+      "A mesh file (or arrays) that is not a valid mesh. str(err) is 'file:line: expected ...'; "
+      "the attributes file, line (None for binary files), byte_offset (None for text files) and "
+      "detail (the message without the location) give the parts.";
+  py::register_local_exception_translator(translate);
+}
+
+}  // namespace hbc::python

@@ -1,0 +1,33 @@
+// hbc.load(): reads a mesh file into an hbc.Mesh.
+#include "hbc/io.hpp"
+
+#include <string>
+
+#include "bindings.hpp"
+
+namespace hbc::python {
+
+namespace {
+
+PyMeshPtr load(const py::object& path, const py::object& format) {
+  // os.fspath accepts str, bytes and path-likes (pathlib.Path) and raises TypeError for the rest.
+  const std::string file = py::module_::import("os").attr("fspath")(path).cast<std::string>();
+  const Format fmt = format.is_none() ? Format::Auto : format_from_name(format.cast<std::string>());
+  auto out = std::make_shared<PyMesh>();
+  {
+    py::gil_scoped_release unlocked;  // reading and building touch no Python objects
+    out->mesh = load_mesh(file, fmt);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_io(py::module_& m) {
+  m.def("load", &load, py::arg("path"), py::arg("format") = py::none(),
+        "Reads a volume mesh. format: 'ovm', 'ovmb', 'mesh', 'hybrid', 'hedra' or None to choose by "
+        "the file extension. Raises MeshFormatError (a ValueError) naming file and line on bad "
+        "input, ValueError for an unknown format name.");
+}
+
+}  // namespace hbc::python

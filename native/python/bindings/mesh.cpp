@@ -1,0 +1,181 @@
+// hbc.Mesh: read-only numpy views of the flat topology arrays of a built mesh.
+// Every array property is a view into the C++ mesh (no copy) whose numpy base is the Mesh object,
+// so the arrays stay valid after the Mesh goes out of scope in Python. Exceptions (copies):
+// `points` (float32 conversion, made once and cached) and `edge_valence` (derived).
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "bindings.hpp"
+
+namespace hbc::python {
+
+namespace {
+
+static_assert(sizeof(CellType) == 1, "cell_types is exposed as uint8");
+static_assert(sizeof(std::array<int32_t, 2>) == 2 * sizeof(int32_t), "pairs are exposed as (n, 2)");
+
+using Cls = py::class_<PyMesh, PyMeshPtr>;
+
+py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
+
+py::array points32(py::object self) {
+  PyMesh& pm = self.cast<PyMesh&>();
+  if (pm.points32.size() != pm.mesh.points.size())
+    pm.points32.assign(pm.mesh.points.begin(), pm.mesh.points.end());
+  return view(pm.points32.data(), {ssize(pm.mesh.num_vertices()), 3}, self);
+}
+
+// A property returning a view of an int32 vector.
+template <class Get>
+void int_view(Cls& cls, const char* name, Get get, const char* doc) {
+  cls.def_property_readonly(
+      name,
+      [get](py::object self) {
+        const auto& v = get(self.cast<const PyMesh&>().mesh);
+        return view(v.data(), {ssize(v.size())}, self);
+      },
+      doc);
+}
+
+// A property returning a view of a std::vector<uint8_t> of 0/1 flags as numpy bool.
+template <class Get>
+void bool_view(Cls& cls, const char* name, Get get, const char* doc) {
+  cls.def_property_readonly(
+      name,
+      [get](py::object self) {
+        const std::vector<uint8_t>& v = get(self.cast<const PyMesh&>().mesh);
+        return view(v.data(), {ssize(v.size())}, self, py::dtype::of<bool>());
+      },
+      doc);
+}
+
+py::dict info(const Mesh& m) {
+  int64_t types[5] = {0, 0, 0, 0, 0};
+  for (CellType t : m.cell_type) ++types[static_cast<int>(t)];
+  const auto count = [](const std::vector<uint8_t>& flags) {
+    return static_cast<int64_t>(std::count(flags.begin(), flags.end(), uint8_t{1}));
+  };
+  const int64_t nc = static_cast<int64_t>(m.num_cells());
+  py::dict by_type;
+  for (int t = 0; t < 5; ++t) by_type[cell_type_name(static_cast<CellType>(t))] = types[t];
+  py::dict d;
+  d["vertices"] = m.num_vertices();
+  d["edges"] = m.num_edges();
+  d["faces"] = m.num_faces();
+  d["cells"] = nc;
+  d["hex_cells"] = types[0];
+  d["hex_ratio"] = nc ? static_cast<double>(types[0]) / static_cast<double>(nc) : 0.0;
+  d["cell_types"] = by_type;
+  d["boundary_faces"] = count(m.face_boundary);
+  d["non_manifold_vertices"] = count(m.vert_non_manifold);
+  d["dropped_faces"] = m.dropped_faces;
+  d["dropped_edges"] = m.dropped_edges;
+  return d;
+}
+
+std::string repr(const Mesh& m) {
+  return "<hbc.Mesh '" + m.source + "': " + std::to_string(m.num_vertices()) + " vertices, " +
+         std::to_string(m.num_cells()) + " cells (" + std::to_string(m.num_hex_cells()) + " hex)>";
+}
+
+}  // namespace
+
+void bind_mesh(py::module_& mod) {
+  Cls cls(mod, "Mesh",
+          "A conforming polyhedral volume mesh (vertices, edges, faces, cells) with its topology. "
+          "Array properties are read-only numpy views sharing memory with the mesh. "
+          "Create with hbc.load() or Mesh.from_arrays().");
+
+  cls.def_property_readonly("source", [](const PyMesh& p) { return p.mesh.source; },
+                            "The file (or '<arrays>') the mesh was built from.");
+  cls.def_property_readonly("warnings", [](const PyMesh& p) {
+                              py::list out;
+                              for (const std::string& w : p.mesh.warnings) out.append(w);
+                              return out;
+                            },
+                            "list[str]: what was repaired while building (dropped faces/edges).");
+  cls.def_property_readonly("num_vertices", [](const PyMesh& p) { return p.mesh.num_vertices(); });
+  cls.def_property_readonly("num_edges", [](const PyMesh& p) { return p.mesh.num_edges(); });
+  cls.def_property_readonly("num_faces", [](const PyMesh& p) { return p.mesh.num_faces(); });
+  cls.def_property_readonly("num_cells", [](const PyMesh& p) { return p.mesh.num_cells(); });
+
+  cls.def_property_readonly("points", &points32,
+                            "float32 (nv, 3): vertex positions (a cached float32 copy).");
+  cls.def_property_readonly(
+      "points64",
+      [](py::object self) {
+        const Mesh& m = self.cast<const PyMesh&>().mesh;
+        return view(m.points.data(), {ssize(m.num_vertices()), 3}, self);
+      },
+      "float64 (nv, 3): vertex positions as stored (no copy).");
+  cls.def_property_readonly(
+      "edges",
+      [](py::object self) {
+        const Mesh& m = self.cast<const PyMesh&>().mesh;
+        return view(reinterpret_cast<const int32_t*>(m.edge_verts.data()), {ssize(m.num_edges()), 2}, self);
+      },
+      "int32 (ne, 2): edge end vertices, lower id first.");
+
+  int_view(cls, "face_offsets", [](const Mesh& m) -> auto& { return m.face_verts.offsets; },
+           "int32 (nf + 1,): face f has vertices face_vertices[face_offsets[f]:face_offsets[f+1]].");
+  int_view(cls, "face_vertices", [](const Mesh& m) -> auto& { return m.face_verts.items; },
+           "int32 (face_offsets[-1],): vertex loop of each face.");
+  int_view(cls, "face_edges", [](const Mesh& m) -> auto& { return m.face_edges.items; },
+           "int32 (face_offsets[-1],): aligned with face_vertices; entry i of a face is the edge "
+           "joining its loop vertices i and i+1.");
+  cls.def_property_readonly(
+      "face_cells",
+      [](py::object self) {
+        const Mesh& m = self.cast<const PyMesh&>().mesh;
+        return view(reinterpret_cast<const int32_t*>(m.face_cells.data()), {ssize(m.num_faces()), 2}, self);
+      },
+      "int32 (nf, 2): the cells on both sides of each face; column 1 is -1 on the boundary.");
+  int_view(cls, "cell_offsets", [](const Mesh& m) -> auto& { return m.cell_faces.offsets; },
+           "int32 (nc + 1,): cell c has faces cell_faces[cell_offsets[c]:cell_offsets[c+1]].");
+  int_view(cls, "cell_faces", [](const Mesh& m) -> auto& { return m.cell_faces.items; },
+           "int32 (cell_offsets[-1],): face ids of each cell.");
+  cls.def_property_readonly(
+      "cell_face_flip",
+      [](py::object self) {
+        const auto& v = self.cast<const PyMesh&>().mesh.cell_face_flip;
+        return view(v.data(), {ssize(v.size())}, self);
+      },
+      "uint8 (cell_offsets[-1],): aligned with cell_faces; 1 when the cell sees the face loop "
+      "reversed.");
+  cls.def_property_readonly(
+      "cell_types",
+      [](py::object self) {
+        const auto& v = self.cast<const PyMesh&>().mesh.cell_type;
+        return view(reinterpret_cast<const uint8_t*>(v.data()), {ssize(v.size())}, self);
+      },
+      "uint8 (nc,): 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron.");
+
+  bool_view(cls, "face_boundary", [](const Mesh& m) -> auto& { return m.face_boundary; },
+            "bool (nf,): face has a cell on one side only.");
+  bool_view(cls, "edge_boundary", [](const Mesh& m) -> auto& { return m.edge_boundary; },
+            "bool (ne,): edge lies on a boundary face.");
+  bool_view(cls, "vertex_boundary", [](const Mesh& m) -> auto& { return m.vert_boundary; },
+            "bool (nv,): vertex lies on a boundary face.");
+  bool_view(cls, "vertex_non_manifold", [](const Mesh& m) -> auto& { return m.vert_non_manifold; },
+            "bool (nv,): vertex whose neighbourhood is not a ball or half-ball (SPEC section 1).");
+
+  cls.def_property_readonly(
+      "edge_valence",
+      [](const PyMesh& p) {
+        const Mesh& m = p.mesh;
+        py::array_t<int32_t> a(ssize(m.num_edges()));
+        int32_t* out = a.mutable_data();
+        for (size_t e = 0; e < m.num_edges(); ++e) out[e] = m.edge_valence(e);
+        return a;
+      },
+      "int32 (ne,): number of cells around each edge (a new array each call).");
+
+  cls.def("info", [](const PyMesh& p) { return info(p.mesh); },
+          "The summary `hbc info --json` prints, as a dict (without 'file').");
+  cls.def("__repr__", [](const PyMesh& p) { return repr(p.mesh); });
+
+  bind_from_arrays(cls);
+}
+
+}  // namespace hbc::python

@@ -1,0 +1,43 @@
+"""Runs pytest inside Blender's embedded Python, in background mode.
+
+    blender -b --factory-startup --python-exit-code 1 \
+        --python tests/blender/run_pytest_in_blender.py -- <pytest args>
+
+Blender exits with pytest's status (5, "no tests collected", is non-zero, hence a failure).
+Point BLENDER_USER_CONFIG and BLENDER_USER_SCRIPTS at a temporary folder before starting Blender so
+no user configuration is read or written; Blender reads them at start-up, too early for this script.
+"""
+
+import os
+import site
+import sys
+
+
+def pytest_args(argv):
+    """The arguments after Blender's '--' separator."""
+    return argv[argv.index("--") + 1:] if "--" in argv else []
+
+
+def ensure_system_site_packages():
+    # Debian's python3-pytest and numpy live in dist-packages; a Blender build with its own
+    # Python may not list them, and this runner needs pytest importable.
+    for path in site.getsitepackages() + ["/usr/lib/python3/dist-packages"]:
+        if os.path.isdir(path) and path not in sys.path:
+            sys.path.append(path)
+
+
+def main():
+    ensure_system_site_packages()
+    for name in ("BLENDER_USER_CONFIG", "BLENDER_USER_SCRIPTS"):
+        if name not in os.environ:
+            print(f"run_pytest_in_blender: warning: {name} is not set; Blender may use the user's folders",
+                  file=sys.stderr)
+    import pytest
+
+    # Blender's own sys.argv would confuse anything reading it; give pytest a plain one.
+    args = pytest_args(sys.argv)
+    sys.argv = ["pytest", *args]
+    sys.exit(pytest.main(args))
+
+
+main()

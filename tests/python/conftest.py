@@ -1,0 +1,55 @@
+"""Shared fixtures of the binding tests.
+
+Environment (set by ctest, see CMakeLists.txt here): PYTHONPATH holds the built package,
+HBC_DATA_DIR the shared real meshes, HBC_CLI the `hbc` command whose output the binding must match.
+A missing variable makes the tests that need it fail, never skip: a silent skip would pass CI.
+"""
+
+import os
+import pathlib
+
+import pytest
+
+# File endings the readers support (the .HYBRID ending is matched case-insensitively like the CLI).
+MESH_SUFFIXES = (".ovm", ".ovmb", ".mesh", ".hybrid", ".hedra")
+
+
+def data_dir():
+    value = os.environ.get("HBC_DATA_DIR")
+    return pathlib.Path(value) if value else None
+
+
+def shared_meshes():
+    """Every mesh file under HBC_DATA_DIR the readers support, in a stable order."""
+    root = data_dir()
+    if root is None or not root.is_dir():
+        return []
+    return sorted(p for p in root.rglob("*") if p.is_file() and p.suffix.lower() in MESH_SUFFIXES)
+
+
+def pytest_generate_tests(metafunc):
+    # A test asking for `shared_mesh` runs once per shared file, named by its path under the data dir.
+    if "shared_mesh" in metafunc.fixturenames:
+        files = shared_meshes()
+        root = data_dir()
+        metafunc.parametrize("shared_mesh", files, ids=[str(p.relative_to(root)) for p in files])
+
+
+@pytest.fixture(scope="session")
+def shared_data_dir():
+    root = data_dir()
+    if root is None:
+        pytest.fail("HBC_DATA_DIR is not set")
+    if not root.is_dir():
+        pytest.fail(f"HBC_DATA_DIR={root} is not a folder")
+    return root
+
+
+@pytest.fixture(scope="session")
+def hbc_cli():
+    value = os.environ.get("HBC_CLI")
+    if not value:
+        pytest.fail("HBC_CLI is not set (path of the built `hbc` command)")
+    if not os.access(value, os.X_OK):
+        pytest.fail(f"HBC_CLI={value} is not an executable")
+    return value
