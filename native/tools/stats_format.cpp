@@ -1,0 +1,102 @@
+#include "stats_format.hpp"
+
+#include <cstdio>
+
+namespace hbc::cli {
+namespace {
+
+// One list of (key, value) so that JSON, CSV and the table cannot drift apart.
+struct Field {
+  const char* key;
+  bool real;
+  int64_t i;
+  double d;
+};
+
+std::vector<Field> fields(const Stats& s) {
+  return {
+      {"cells", false, s.cells, 0},
+      {"hex_ratio", true, 0, s.hex_ratio},
+      {"singular_edges", false, s.singular_edges, 0},
+      {"singularities", false, s.singularities, 0},
+      {"pseudo_singular_edges", false, s.pseudo_singular_edges, 0},
+      {"non_manifold_edges", false, s.non_manifold_edges, 0},
+      {"singular_vertices", false, s.singular_vertices, 0},
+      {"components", false, s.components, 0},
+      {"hex_components", false, s.hex_components, 0},
+      {"hex_component_ratio", true, 0, s.hex_component_ratio},
+      {"patches", false, s.patches, 0},
+      {"curves", false, s.curves, 0},
+      {"corners", false, s.corners, 0},
+      {"self_adjacent_faces", false, s.self_adjacent_faces, 0},
+      {"sheets", false, s.sheets, 0},
+      {"sheets_perfect", false, s.sheets_perfect, 0},
+      {"sheets_type1", false, s.sheets_type1, 0},
+      {"sheets_type2", false, s.sheets_type2, 0},
+      {"sheets_type3", false, s.sheets_type3, 0},
+      {"subsheets_of_largest_self_intersecting", false, s.subsheets_of_largest_self_intersecting, 0},
+      {"vsg_edges", false, s.vsg_edges, 0},
+      {"wireframe_edges", false, s.wireframe_edges, 0},
+      {"wireframe_edges_simplified", false, s.wireframe_edges_simplified, 0},
+  };
+}
+
+std::vector<std::pair<const char*, double>> timing_fields(const Timings& t) {
+  return {{"load", t.load},
+          {"singularity_graph", t.singularity_graph},
+          {"base_complex", t.base_complex},
+          {"sheets", t.sheets},
+          {"subsheets", t.subsheets},
+          {"vsg_wireframe", t.vsg_wireframe}};
+}
+
+std::string fmt_real(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+}  // namespace
+
+void write_stats_json(JsonWriter& w, const Stats& s) {
+  for (const Field& f : fields(s)) {
+    if (f.real) w.real(f.key, f.d);
+    else if (f.i < 0) continue;  // stage not run: key left out rather than a fake number
+    else w.num(f.key, f.i);
+  }
+  w.begin("timings");
+  for (auto [k, v] : timing_fields(s.timings)) w.real(k, v, 6);
+  w.end();
+}
+
+std::string stats_csv_header() {
+  std::string h = "mesh";
+  for (const Field& f : fields(Stats{})) h += std::string(",") + f.key;
+  for (auto [k, v] : timing_fields(Timings{})) h += std::string(",t_") + k;
+  return h;
+}
+
+std::string stats_csv_row(const std::string& name, const Stats& s) {
+  std::string r = name;
+  for (const Field& f : fields(s)) r += "," + (f.real ? fmt_real(f.d, 4) : f.i < 0 ? std::string() : std::to_string(f.i));
+  for (auto [k, v] : timing_fields(s.timings)) r += "," + fmt_real(v, 6);
+  return r;
+}
+
+std::string stats_table(const std::string& name, const Stats& s) {
+  std::string out = name + "\n";
+  char buf[160];
+  for (const Field& f : fields(s)) {
+    if (!f.real && f.i < 0) continue;
+    if (f.real) std::snprintf(buf, sizeof buf, "  %-40s %.4f\n", f.key, f.d);
+    else std::snprintf(buf, sizeof buf, "  %-40s %lld\n", f.key, static_cast<long long>(f.i));
+    out += buf;
+  }
+  for (auto [k, v] : timing_fields(s.timings)) {
+    std::snprintf(buf, sizeof buf, "  time %-35s %.3f ms\n", k, v * 1e3);
+    out += buf;
+  }
+  return out;
+}
+
+}  // namespace hbc::cli
