@@ -146,6 +146,14 @@ def test_repr_source_warnings(shared_data_dir):
     assert repr(m) == f"<hbc.Mesh '{path}': 64 vertices, 24 cells (21 hex)>"
 
 
+def test_dropped_elements_are_reported(shared_data_dir):
+    # NonManifold.ovm(b) carry a face in no cell and edges in no face (SOURCES.md).
+    for name in ("NonManifold.ovm", "NonManifold.ovmb"):
+        m = hbc.load(shared_data_dir / "openvolumemesh" / name)
+        assert m.info()["dropped_faces"] == 1 and m.info()["dropped_edges"] == 4
+        assert m.warnings == ["1 face(s) used by no cell dropped", "4 edge(s) used by no face dropped"]
+
+
 def test_load_accepts_path_and_format(shared_data_dir):
     path = shared_data_dir / "hybrid-base-complex" / "twistcube_s.mesh"
     a = hbc.load(path)

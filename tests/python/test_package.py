@@ -1,0 +1,62 @@
+"""The package layout: hbc re-exports hbc._core, and the type stub matches the compiled module, so
+that a binding added later without its stub entry (or the reverse) is caught."""
+
+import ast
+import pathlib
+
+import pytest
+
+import hbc
+from hbc import _core
+
+
+def stub_tree():
+    path = pathlib.Path(hbc.__file__).with_name("_core.pyi")
+    assert path.is_file(), "the build must copy _core.pyi next to the module"
+    assert path.with_name("py.typed").is_file()
+    return ast.parse(path.read_text())
+
+
+def defined_names(body):
+    names = set()
+    for node in body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, ast.AnnAssign):
+            names.add(node.target.id)
+        elif isinstance(node, ast.Assign):
+            names.update(t.id for t in node.targets)
+    return names
+
+
+def public(names):
+    return {n for n in names if not n.startswith("_")}
+
+
+def test_package_reexports_core():
+    assert set(hbc.__all__) == {"Mesh", "MeshFormatError", "load", "__version__"}
+    for name in hbc.__all__:
+        assert getattr(hbc, name) is getattr(_core, name)
+    assert issubclass(hbc.MeshFormatError, ValueError)
+
+
+def test_stub_matches_module():
+    tree = stub_tree()
+    stub_top = defined_names(tree.body)
+    # Helper types that exist only for typing (TypedDicts, aliases) are not in the module.
+    typing_only = {"Format", "CellTypeCounts", "MeshInfo"}
+    assert public(stub_top) - typing_only == public(dir(_core))
+    assert "__version__" in stub_top
+
+    for cls in (node for node in tree.body if isinstance(node, ast.ClassDef)):
+        if cls.name in typing_only:
+            continue
+        runtime = getattr(_core, cls.name)
+        members = public(defined_names(cls.body))
+        if issubclass(runtime, BaseException):
+            # Attributes set per instance by the translator; check them on a real error.
+            with pytest.raises(runtime) as info:
+                hbc.load("/nonexistent/x.mesh")
+            assert members and all(hasattr(info.value, m) for m in members), members
+        else:
+            assert members == public(vars(runtime)), cls.name
