@@ -8,10 +8,25 @@ namespace hbc {
 void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, const std::vector<int32_t>& value,
                  const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
                  std::vector<uint8_t>& closed) {
+  chain_edges(m.edge_verts, m.vert_edges, member, value, stop, verts, edges, closed);
+}
+
+void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
+                 const std::vector<uint8_t>& member, const std::vector<int32_t>& value,
+                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
+                 std::vector<uint8_t>& closed) {
   verts.clear();
   edges.clear();
   closed.clear();
-  const size_t ne = m.num_edges();
+  const size_t ne = edge_verts.size();
+  // Named like the Mesh members so that the walk below reads the same for both callers.
+  struct {
+    std::span<const std::array<int32_t, 2>> edge_verts;
+    const Csr<int32_t>& vert_edges;
+    int32_t other_vertex(int32_t e, int32_t v) const {
+      return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0];
+    }
+  } m{edge_verts, vert_edges};
   // The member edge at v other than e, when v lets a chain pass (else -1).
   auto pass = [&](int32_t v, int32_t e) -> int32_t {
     if (stop[v]) return -1;

@@ -31,7 +31,8 @@ void TextScanner::skip_space() {
 bool TextScanner::next(std::string_view& tok) {
   skip_space();
   if (pos_ >= text_.size()) {
-    tok_line_ = line_;
+    // "Found the end of the file" points at the last line, not the empty one after its newline.
+    tok_line_ = (line_ > 1 && text_.back() == '\n') ? line_ - 1 : line_;
     return false;
   }
   size_t start = pos_;

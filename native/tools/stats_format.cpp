@@ -71,20 +71,25 @@ void write_stats_json(JsonWriter& w, const Stats& s) {
 
 std::string stats_csv_header() {
   std::string h = "mesh";
-  for (const Field& f : fields(Stats{})) h += std::string(",") + f.key;
-  for (auto [k, v] : timing_fields(Timings{})) h += std::string(",t_") + k;
+  for (const Field& f : fields(Stats{})) h.append(",").append(f.key);
+  for (auto [k, v] : timing_fields(Timings{})) h.append(",t_").append(k);
   return h;
 }
 
 std::string stats_csv_row(const std::string& name, const Stats& s) {
   std::string r = name;
-  for (const Field& f : fields(s)) r += "," + (f.real ? fmt_real(f.d, 4) : f.i < 0 ? std::string() : std::to_string(f.i));
-  for (auto [k, v] : timing_fields(s.timings)) r += "," + fmt_real(v, 6);
+  for (const Field& f : fields(s)) {
+    r.push_back(',');
+    if (f.real) r.append(fmt_real(f.d, 4));
+    else if (f.i >= 0) r.append(std::to_string(f.i));
+  }
+  for (auto [k, v] : timing_fields(s.timings)) r.append(",").append(fmt_real(v, 6));
   return r;
 }
 
 std::string stats_table(const std::string& name, const Stats& s) {
-  std::string out = name + "\n";
+  std::string out = name;
+  out.push_back('\n');
   char buf[160];
   for (const Field& f : fields(s)) {
     if (!f.real && f.i < 0) continue;

@@ -2,7 +2,9 @@
 // The hybrid singularity graph G_S (paper §3.2, SPEC §1): singular edges chained into
 // singularities, pseudo-singular edges (touching a non-hex cell), non-manifold edges (touching a
 // non-manifold vertex), and the vertices where they end.
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "hbc/csr.hpp"
@@ -54,5 +56,11 @@ SingularityGraph singularity_graph(const Mesh& mesh);
 void chain_edges(const Mesh& mesh, const std::vector<uint8_t>& member,
                  const std::vector<int32_t>& edge_value, const std::vector<uint8_t>& stop,
                  Csr<int32_t>& verts, Csr<int32_t>& edges, std::vector<uint8_t>& closed);
+// The same on any edge graph given by its end vertices (ne pairs) and the edges at each vertex
+// (nv rows); the VSG chains the edges of a CellComplex with it.
+void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
+                 const std::vector<uint8_t>& member, const std::vector<int32_t>& edge_value,
+                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
+                 std::vector<uint8_t>& closed);
 
 }  // namespace hbc
