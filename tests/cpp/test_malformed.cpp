@@ -1,0 +1,441 @@
+// A corpus of malformed files for every reader: each must raise InputError naming the file, the
+// line (byte offset for .ovmb) and what was expected. Text cases are a valid one-tetrahedron file
+// with one line changed; binary cases corrupt the bytes of a real .ovmb or of a small file
+// encoded here field by field.
+#include <sys/wait.h>
+
+#include <bit>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <unistd.h>
+
+#include "test_support.hpp"
+
+namespace hbc {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Text helpers: valid files and single-line edits.
+
+const char* kOvmTet =
+    "OVM ASCII\n"          // 1
+    "Vertices\n"           // 2
+    "4\n"                  // 3
+    "0 0 0\n"              // 4
+    "1 0 0\n"              // 5
+    "0 1 0\n"              // 6
+    "0 0 1\n"              // 7
+    "Edges\n"              // 8
+    "6\n"                  // 9
+    "0 1\n"                // 10  edge 0
+    "1 2\n"                // 11  edge 1
+    "2 0\n"                // 12  edge 2
+    "0 3\n"                // 13  edge 3
+    "1 3\n"                // 14  edge 4
+    "2 3\n"                // 15  edge 5
+    "Faces\n"              // 16
+    "4\n"                  // 17
+    "3 0 2 4\n"            // 18  0 1 2
+    "3 0 8 7\n"            // 19  0 1 3
+    "3 2 10 9\n"           // 20  1 2 3
+    "3 4 6 11\n"           // 21  2 0 3
+    "Polyhedra\n"          // 22
+    "1\n"                  // 23
+    "4 1 2 4 6\n"          // 24
+    "VProp double \"w\"\n"  // 25
+    "0.5\n"                // 26
+    "1.5\n"                // 27
+    "2.5\n"                // 28
+    "3.5\n";               // 29
+
+const char* kMeditTet =
+    "MeshVersionFormatted 1\n"  // 1
+    "Dimension 3\n"             // 2
+    "Vertices\n"                // 3
+    "4\n"                       // 4
+    "0 0 0 0\n"                 // 5
+    "1 0 0 0\n"                 // 6
+    "0 1 0 0\n"                 // 7
+    "0 0 1 0\n"                 // 8
+    "Tetrahedra\n"              // 9
+    "1\n"                       // 10
+    "1 2 3 4 0\n"               // 11
+    "End\n";                    // 12
+
+const char* kHybridTet =
+    "4 4 3\n"     // 1
+    "0 0 0\n"     // 2
+    "1 0 0\n"     // 3
+    "0 1 0\n"     // 4
+    "0 0 1\n"     // 5
+    "3 0 1 2\n"   // 6
+    "3 0 1 3\n"   // 7
+    "3 1 2 3\n"   // 8
+    "3 2 0 3\n"   // 9
+    "4 0 1 2 3\n" // 10 faces of the cell
+    "4 1 0 0 0\n" // 11 their orientation flags
+    "0\n";        // 12 cell orientation flag
+
+const char* kHedraTet =
+    "4 4 1\n"        // 1
+    "0 0 0\n"        // 2
+    "1 0 0\n"        // 3
+    "0 1 0\n"        // 4
+    "0 0 1\n"        // 5
+    "3 1 2 3\n"      // 6
+    "3 1 2 4\n"      // 7
+    "3 2 3 4\n"      // 8
+    "3 3 1 4\n"      // 9
+    "4 -1 2 3 4\n";  // 10
+
+// The text with its 1-based line `n` replaced by `by` (which may hold several lines).
+std::string with_line(const std::string& text, int n, const std::string& by) {
+  size_t start = 0;
+  for (int i = 1; i < n; ++i) start = text.find('\n', start) + 1;
+  const size_t end = text.find('\n', start);
+  return text.substr(0, start) + by + text.substr(end);
+}
+
+// The first n lines of the text.
+std::string first_lines(const std::string& text, int n) {
+  size_t end = 0;
+  for (int i = 0; i < n; ++i) end = text.find('\n', end) + 1;
+  return text.substr(0, end);
+}
+
+MeshInput read_as(Format f, std::string_view bytes, const std::string& name) {
+  switch (f) {
+    case Format::Ovm: return read_ovm(bytes, name);
+    case Format::Ovmb: return read_ovmb(bytes, name);
+    case Format::Medit: return read_medit(bytes, name);
+    case Format::Hybrid: return read_hybrid(bytes, name);
+    case Format::Hedra: return read_hedra(bytes, name);
+    case Format::Auto: break;
+  }
+  throw std::logic_error("no reader");
+}
+
+struct Case {
+  std::string name;
+  std::string bytes;
+  int64_t where;        // line, or byte offset for .ovmb
+  std::string keyword;  // a piece of the expected-what text
+};
+
+// Reads and builds each case; each must fail at the stated place with the stated reason.
+void expect_all_rejected(Format f, const std::vector<Case>& cases) {
+  const bool binary = f == Format::Ovmb;
+  for (const Case& c : cases) {
+    const std::string file = "bad_" + c.name + "." + format_name(f);
+    SCOPED_TRACE(file);
+    try {
+      build_mesh(read_as(f, c.bytes, file));
+      ADD_FAILURE() << "accepted a malformed file";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(e.file(), file);
+      if (binary) {
+        EXPECT_EQ(e.loc().byte_offset, c.where) << what;
+        EXPECT_EQ(e.loc().line, -1) << what;
+        EXPECT_EQ(what.rfind(file + ": byte " + std::to_string(c.where) + ": ", 0), 0u) << what;
+      } else {
+        EXPECT_EQ(e.loc().line, c.where) << what;
+        EXPECT_EQ(what.rfind(file + ":" + std::to_string(c.where) + ": ", 0), 0u) << what;
+      }
+      EXPECT_NE(e.detail().find(c.keyword), std::string::npos) << "'" << c.keyword << "' not in: " << what;
+    }
+  }
+}
+
+// The base files are valid: the cases below differ from them only in what they break.
+TEST(Malformed, BaseFilesAreValidTetrahedra) {
+  for (auto [f, text] : {std::pair{Format::Ovm, kOvmTet}, std::pair{Format::Medit, kMeditTet},
+                         std::pair{Format::Hybrid, kHybridTet}, std::pair{Format::Hedra, kHedraTet}}) {
+    SCOPED_TRACE(format_name(f));
+    const Mesh m = build_mesh(read_as(f, text, "tet"));
+    ASSERT_EQ(m.num_cells(), 1u);
+    EXPECT_EQ(m.cell_type[0], CellType::Tet);
+    EXPECT_EQ(m.num_faces(), 4u);
+    EXPECT_EQ(m.num_edges(), 6u);
+  }
+}
+
+TEST(Malformed, Ovm) {
+  const std::string t = kOvmTet;
+  const std::string three_cells = with_line(with_line(t, 23, "3"), 24, "4 1 2 4 6\n4 1 2 4 6\n4 1 2 4 6");
+  expect_all_rejected(Format::Ovm, {
+      {"empty", "", 1, "header line 'OVM ASCII', found the end of the file"},
+      {"header", with_line(t, 1, "OFF"), 1, "header line 'OVM ASCII'"},
+      {"binary_header", with_line(t, 1, "OVM BINARY"), 1, "ASCII"},
+      // Cut short: a count the rest cannot hold, a cut inside a line, a cut between lines.
+      {"truncated", first_lines(t, 5), 3, "number of vertices that the rest of the file can hold"},
+      {"truncated_line", first_lines(t, 6) + "0 0", 7, "coordinates of vertex 3"},
+      {"truncated_cells", first_lines(t, 23), 23, "polyhedron 0 of 1, found the end of the file"},
+      {"count_edges", with_line(t, 9, "7"), 16, "two vertices of edge 6"},
+      {"count_faces", with_line(t, 17, "3"), 21, "section keyword Polyhedra"},
+      {"count_words", with_line(t, 3, "four"), 3, "number of vertices (an integer)"},
+      {"range_vertex", with_line(t, 15, "2 4"), 15, "vertex index in [0, 3], found 4"},
+      {"range_half_edge", with_line(t, 20, "3 2 10 12"), 20, "half-edge index in [0, 11], found 12"},
+      {"range_half_face", with_line(t, 24, "4 1 2 4 8"), 24, "half-face index in [0, 7], found 8"},
+      {"negative_vertex", with_line(t, 13, "0 -3"), 13, "found -3"},
+      {"negative_half_edge", with_line(t, 19, "3 0 -8 7"), 19, "half-edge index in [0, 11], found -8"},
+      {"negative_count", with_line(t, 17, "-4"), 17, "count >= 0"},
+      {"non_numeric", with_line(t, 6, "0 one 0"), 6, "(a number), found 'one'"},
+      {"non_numeric_index", with_line(t, 21, "3 4 six 11"), 21, "(an integer), found 'six'"},
+      {"nan", with_line(t, 7, "0 nan 1"), 7, "finite"},
+      {"inf", with_line(t, 5, "inf 0 0"), 5, "finite"},
+      {"overflow", with_line(t, 5, "1e999 0 0"), 5, "finite"},
+      {"two_half_edges", with_line(t, 18, "2 0 1"), 18, "half-edges of face 0 in [3,"},
+      {"repeated_vertex", with_line(t, 18, "4 0 1 0 1"), 18, "distinct vertices in face 0"},
+      {"broken_chain", with_line(t, 19, "3 0 10 7"), 19, "chain end to start"},
+      {"open_loop", with_line(t, 19, "3 0 8 9"), 19, "closed loop of half-edges"},
+      {"extra_token", with_line(t, 19, "3 0 8 7 5"), 19, "half-edges of face 1"},
+      {"cell_not_closed", with_line(t, 24, "3 1 2 4"), 24, "closed cell"},
+      {"face_in_three_cells", three_cells, 26, "at most 2 cells"},
+      {"face_twice_in_cell", with_line(t, 24, "4 1 1 4 6"), 24, "each face once per cell"},
+      {"huge_count", "OVM ASCII\nVertices\n2000000000\n0 0 0\n", 3, "rest of the file can hold"},
+      {"huge_faces", with_line(t, 17, "99999999999"), 17, "rest of the file can hold"},
+      {"prop_too_few", first_lines(t, 28), 28, "4 values of property \"w\", found 3 before the end"},
+      {"prop_too_few_next", with_line(t, 29, "EProp int \"e\""), 29, "found 3 before the next property block"},
+      {"prop_too_many", t + "4.5\n", 30, "after the 4 values of property \"w\""},
+      {"prop_bad_value", with_line(t, 27, "x"), 27, "double value of property \"w\""},
+      {"prop_bad_kind", t + "ZProp int \"z\"\n", 30, "property block header"},
+      {"prop_no_name", t + "EProp int e\n", 30, "quoted property name"},
+  });
+}
+
+TEST(Malformed, Medit) {
+  const std::string t = kMeditTet;
+  const std::string three = with_line(with_line(t, 10, "3"), 11, "1 2 3 4 0\n1 2 3 4 0\n1 2 3 4 0");
+  expect_all_rejected(Format::Medit, {
+      {"empty", "", 1, "a Vertices section"},
+      {"truncated", first_lines(t, 6), 4, "number of vertices that the rest of the file can hold"},
+      {"truncated_vertex", first_lines(t, 7) + "0 0", 8, "vertex coordinate, found the end of the file"},
+      {"truncated_cells", first_lines(t, 10), 10, "vertex index, found the end"},
+      {"count_cells", with_line(t, 10, "2"), 12, "vertex index (an integer), found 'End'"},
+      {"count_vertices", with_line(t, 4, "5"), 9, "found 'Tetrahedra'"},
+      {"range", with_line(t, 11, "1 2 3 5 0"), 11, "vertex index in [1, 4], found 5"},
+      {"negative", with_line(t, 11, "1 2 -3 4 0"), 11, "found -3"},
+      {"non_numeric", with_line(t, 7, "0 1 zero 0"), 7, "(a number), found 'zero'"},
+      {"nan", with_line(t, 8, "0 0 NaN 0"), 8, "finite"},
+      {"inf", with_line(t, 6, "inf 0 0 0"), 6, "finite"},
+      {"degenerate", with_line(t, 11, "1 1 2 3 0"), 11, "at least 2 faces"},
+      {"cell_not_closed", with_line(with_line(t, 9, "Hexahedra"), 11, "1 1 1 1 2 3 2 4 0"), 11, "closed cell"},
+      {"face_in_three_cells", three, 13, "at most 2 cells"},
+      {"huge_count", with_line(t, 4, "99999999"), 4, "rest of the file can hold"},
+      {"dimension", with_line(t, 2, "Dimension 2"), 2, "dimension 3"},
+  });
+}
+
+TEST(Malformed, Hybrid) {
+  const std::string t = kHybridTet;
+  // Three copies of the cell: lines 10/11, 12/13, 14/15, then three cell flags.
+  const std::string three = with_line(first_lines(t, 9), 1, "4 4 9") +
+                            "4 0 1 2 3\n4 1 0 0 0\n4 0 1 2 3\n4 1 0 0 0\n4 0 1 2 3\n4 1 0 0 0\n0\n0\n0\n";
+  expect_all_rejected(Format::Hybrid, {
+      {"empty", "", 1, "number of vertices, found the end of the file"},
+      {"truncated", first_lines(t, 8), 8, "vertices of a face, found the end"},
+      {"truncated_flags", first_lines(t, 11), 11, "cell orientation flag"},
+      {"count_not_3", with_line(t, 1, "4 4 4"), 1, "multiple of 3"},
+      {"count_flags", with_line(t, 11, "3 1 0 0"), 11, "as many face orientation flags as faces (4), found 3"},
+      {"range_face", with_line(t, 10, "4 0 1 2 4"), 10, "face index (0-based) in [0, 3], found 4"},
+      {"range_vertex", with_line(t, 8, "3 1 2 4"), 8, "vertex index (0-based) in [0, 3], found 4"},
+      {"negative", with_line(t, 7, "3 0 -1 3"), 7, "found -1"},
+      {"non_numeric", with_line(t, 3, "1 0 O"), 3, "(a number), found 'O'"},
+      {"nan", with_line(t, 4, "nan 1 0"), 4, "finite"},
+      {"two_vertices", with_line(t, 9, "2 0 1"), 9, "vertices of a face in [3,"},
+      {"repeated_vertex", with_line(t, 9, "3 2 2 3"), 9, "distinct vertices in face 3"},
+      {"cell_not_closed", with_line(with_line(t, 10, "3 0 1 2"), 11, "3 1 0 0"), 10, "closed cell"},
+      {"face_in_three_cells", three, 14, "at most 2 cells"},
+      {"flag_value", with_line(t, 12, "2"), 12, "cell orientation flag (0 or 1)"},
+      {"trailing", t + "7\n", 13, "end of the file"},
+      {"huge_count", with_line(t, 1, "99999999 4 3"), 1, "rest of the file can hold"},
+  });
+}
+
+TEST(Malformed, Hedra) {
+  const std::string t = kHedraTet;
+  const std::string three = with_line(with_line(t, 1, "4 4 3"), 10, "4 -1 2 3 4\n4 -1 2 3 4\n4 -1 2 3 4");
+  expect_all_rejected(Format::Hedra, {
+      {"empty", "", 1, "number of vertices, found the end of the file"},
+      {"truncated", first_lines(t, 9), 9, "faces of a cell, found the end"},
+      {"count_cells", with_line(t, 1, "4 4 2"), 10, "faces of a cell, found the end"},
+      {"count_faces", with_line(t, 1, "4 5 1"), 10, "vertex index (1-based) in [1, 4], found -1"},
+      {"range", with_line(t, 10, "4 -1 2 3 5"), 10, "face index (1-based) in [-4, 4], found 5"},
+      {"negative_vertex", with_line(t, 7, "3 1 -2 4"), 7, "found -2"},
+      {"zero_face", with_line(t, 10, "4 -1 0 3 4"), 10, "never 0"},
+      {"non_numeric", with_line(t, 2, "0 0 z"), 2, "(a number), found 'z'"},
+      {"nan", with_line(t, 5, "0 0 nan"), 5, "finite"},
+      {"repeated_vertex", with_line(t, 8, "3 2 2 4"), 8, "distinct vertices in face 2"},
+      {"cell_not_closed", with_line(t, 10, "3 -1 2 3"), 10, "closed cell"},
+      {"face_in_three_cells", three, 12, "at most 2 cells"},
+      {"huge_count", with_line(t, 1, "4 4 99999999"), 1, "rest of the file can hold"},
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// OVMB: a small encoder (independent of the reader) and byte-level corruption.
+
+class OvmbEncoder {
+ public:
+  std::string bytes;
+  std::vector<size_t> cell_at;  // where each cell's half-faces start
+
+  void u8(uint64_t v) { bytes.push_back(static_cast<char>(v & 0xff)); }
+  void u32(uint64_t v) {
+    for (int k = 0; k < 4; ++k) u8(v >> (8 * k));
+  }
+  void u64(uint64_t v) {
+    for (int k = 0; k < 8; ++k) u8(v >> (8 * k));
+  }
+  // Chunk header, payload written by `body`, padding to 8 bytes.
+  void chunk(const char* type, const std::function<void()>& body) {
+    bytes.append(type, 4);
+    const size_t head = bytes.size();
+    for (int k = 0; k < 12; ++k) u8(0);
+    const size_t start = bytes.size();
+    body();
+    const size_t len = bytes.size() - start, pad = (8 - len % 8) % 8;
+    bytes.append(pad, '\0');
+    bytes[head + 1] = static_cast<char>(pad);  // version 0, padding, compression 0, flags 1
+    bytes[head + 3] = 1;
+    for (int k = 0; k < 8; ++k) bytes[head + 4 + k] = static_cast<char>(((len + pad) >> (8 * k)) & 0xff);
+  }
+
+  // A polyhedral mesh: u32 handles, u8 valences for faces and cells.
+  OvmbEncoder(const std::vector<double>& pts, const std::vector<uint32_t>& edges,
+              const std::vector<std::vector<uint32_t>>& faces, const std::vector<std::vector<uint32_t>>& cells) {
+    bytes.append("OVMB\n\r\n\xff", 8);
+    u8(1), u8(1), u8(3), u8(0), u32(0);
+    u64(pts.size() / 3), u64(edges.size() / 2), u64(faces.size()), u64(cells.size());
+    chunk("VERT", [&] {
+      u64(0), u32(pts.size() / 3), u8(2), u8(0), u8(0), u8(0);
+      for (double x : pts) u64(std::bit_cast<uint64_t>(x));
+    });
+    auto topo = [&](uint8_t entity, uint8_t valence, uint64_t count) {
+      u64(0), u32(count), u8(entity), u8(valence), u8(valence ? 0 : 1), u8(4), u64(0);
+    };
+    chunk("TOPO", [&] {
+      topo(1, 2, edges.size() / 2);
+      for (uint32_t v : edges) u32(v);
+    });
+    for (const auto* list : {&faces, &cells}) {
+      chunk("TOPO", [&] {
+        topo(list == &faces ? 2 : 3, 0, list->size());
+        for (const auto& row : *list) u8(row.size());
+        for (const auto& row : *list) {
+          if (list == &cells) cell_at.push_back(bytes.size());
+          for (uint32_t h : row) u32(h);
+        }
+      });
+    }
+    chunk("EOF ", [] {});
+  }
+};
+
+const std::vector<double> kTetPoints{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+const std::vector<uint32_t> kTetEdges{0, 1, 1, 2, 2, 0, 0, 3, 1, 3, 2, 3};
+const std::vector<std::vector<uint32_t>> kTetFaces{{0, 2, 4}, {0, 8, 7}, {2, 10, 9}, {4, 6, 11}};
+
+TEST(Malformed, OvmbEncoderMatchesTheTextFile) {
+  const OvmbEncoder enc(kTetPoints, kTetEdges, kTetFaces, {{1, 2, 4, 6}});
+  const Mesh a = build_mesh(read_ovmb(enc.bytes, "tet.ovmb"));
+  const Mesh b = build_mesh(read_ovm(kOvmTet, "tet.ovm"));
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.face_verts.items, b.face_verts.items);
+  EXPECT_EQ(a.cell_face_flip, b.cell_face_flip);
+  EXPECT_EQ(a.cell_type[0], CellType::Tet);
+}
+
+std::string real_ovmb(const char* name) {
+  return read_file_bytes(test::data_path(std::string("openvolumemesh/") + name));
+}
+
+std::string patched(std::string b, size_t at, std::initializer_list<uint8_t> v) {
+  for (uint8_t x : v) b.at(at++) = static_cast<char>(x);
+  return b;
+}
+
+std::string patched_u64(std::string b, size_t at, uint64_t v) {
+  for (int k = 0; k < 8; ++k) b.at(at + k) = static_cast<char>((v >> (8 * k)) & 0xff);
+  return b;
+}
+
+TEST(Malformed, Ovmb) {
+  HBC_REQUIRE_DATA("openvolumemesh/Cube_with_props.ovmb");
+  HBC_REQUIRE_DATA("openvolumemesh/NonManifold.ovmb");
+  // Cube_with_props.ovmb (880 bytes): header 0..48 (counts at 16, 24, 32, 40); DIRP at 0x30;
+  // VERT at 0xc0 (length at 0xc8, payload 0xd0: encoding at 0xdc, coordinates from 0xe0);
+  // TOPO edges at 0x1a0 (payload 0x1b0: entity 0x1bc, handle offset 0x1c0, handles 0x1c8);
+  // TOPO faces at 0x1e0 (handles 0x208); TOPO cells at 0x220 (handles 0x248); PROP chunks;
+  // EOF at 0x360.
+  const std::string cube = real_ovmb("Cube_with_props.ovmb");
+  ASSERT_EQ(cube.size(), 880u);
+  // NonManifold.ovmb: cells chunk payload at 0x230, valences 6 5 at 0x248, half-faces from
+  // 0x24a: 1 2 5 6 8 11 (hex) | 15 17 19 21 7 (pyramid). Face 6 is the dangling quad.
+  const std::string nm = real_ovmb("NonManifold.ovmb");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const OvmbEncoder three(kTetPoints, kTetEdges, kTetFaces, {{1, 2, 4, 6}, {1, 2, 4, 6}, {1, 2, 4, 6}});
+  ASSERT_EQ(three.cell_at.size(), 3u);
+
+  expect_all_rejected(Format::Ovmb, {
+      {"empty", "", 0, "magic"},
+      {"magic", patched(cube, 0, {'X'}), 0, "magic"},
+      {"version", patched(cube, 8, {7}), 8, "file version 1"},
+      {"truncated_header", cube.substr(0, 20), 16, "number of vertices (8 bytes), found only 4 before the end"},
+      {"truncated_chunk", cube.substr(0, 300), 0xc8, "chunk length within"},
+      {"truncated_chunk_header", cube.substr(0, 0xc4), 0xc4, "chunk version (1 bytes), found only 0"},
+      {"truncated_before_eof", cube.substr(0, 0x360), 0x360, "EOF chunk"},
+      {"count_cells", patched_u64(cube, 40, 2), 880, "2 cells as the header declares, found 1"},
+      {"count_vertices", patched_u64(cube, 16, 7), 0xd0 + 8, "at most 7 more vertices"},
+      {"range_vertex", patched(cube, 0x1c8, {8}), 0x1c8, "vertex index below 8, found 8"},
+      {"range_half_edge", patched(cube, 0x209, {24}), 0x209, "half-edge index below 24, found 24"},
+      {"range_half_face", patched(cube, 0x24a, {12}), 0x24a, "half-face index below 12, found 12"},
+      {"negative_offset", patched_u64(cube, 0x1c0, ~uint64_t{0}), 0x1c8, "+ offset 18446744073709551615"},
+      {"vertex_encoding", patched(cube, 0xdc, {7}), 0xdc, "vertex encoding 1 (float) or 2 (double), found 7"},
+      {"topo_entity", patched(cube, 0x1bc, {9}), 0x1bc, "topology entity"},
+      {"handle_encoding", patched(cube, 0x1bf, {3}), 0x1bf, "handle encoding 1, 2 or 4, found 3"},
+      {"hex_valence", patched(cube, 0x1fd, {5}), 0x1fd, "valence 4 in a hexahedral file, found 5"},
+      {"nan", patched_u64(cube, 0xe0 + 3 * 24 + 8, std::bit_cast<uint64_t>(nan)), 0xe0 + 3 * 24,
+       "finite coordinate for vertex 3"},
+      {"inf", patched_u64(cube, 0xe0, std::bit_cast<uint64_t>(-inf)), 0xe0, "finite coordinate for vertex 0"},
+      {"repeated_vertex", patched(cube, 0x208, {0, 1, 0, 1}), 0x208, "distinct vertices in face 0"},
+      {"broken_chain", patched(cube, 0x208, {0, 2, 4, 8}), 0x20b, "chain end to start"},
+      {"cell_not_closed", patched(nm, 0x24f, {12}), 0x24a, "closed cell"},
+      {"face_in_three_cells", three.bytes, static_cast<int64_t>(three.cell_at[2]), "at most 2 cells"},
+      {"huge_vertices", patched_u64(cube, 16, uint64_t{1} << 40), 16, "that the file can hold"},
+      {"huge_faces", patched_u64(cube, 32, uint64_t{1} << 31), 32, "that the file can hold"},
+      {"huge_chunk", patched_u64(cube, 0xc8, uint64_t{1} << 62), 0xc8, "chunk length within"},
+      {"unknown_chunk", patched(cube, 0x30, {'A', 'B', 'C', 'D'}), 0x30, "known chunk type"},
+      {"after_eof", cube + std::string(16, '\0'), 880, "after the EOF chunk"},
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+
+TEST(Malformed, CliExitsWithStatus2AndTheMessageOnStderr) {
+  ASSERT_TRUE(std::filesystem::exists(HBC_CLI)) << "build the hbc_cli target: " << HBC_CLI;
+  const auto dir = std::filesystem::temp_directory_path() / ("hbc_bad_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto bad = dir / "bad.ovm";
+  {
+    std::ofstream f(bad, std::ios::binary);
+    f << with_line(kOvmTet, 19, "3 0 10 7");
+  }
+  const auto err = dir / "stderr.txt";
+  const std::string cmd = std::string("'") + HBC_CLI + "' info '" + bad.string() + "' >/dev/null 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(raw != -1 && WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 2);
+  std::ifstream e(err);
+  const std::string msg{std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>()};
+  EXPECT_NE(msg.find(bad.string() + ":19: "), std::string::npos) << msg;
+  EXPECT_NE(msg.find("chain"), std::string::npos) << msg;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace hbc
