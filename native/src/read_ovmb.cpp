@@ -121,7 +121,7 @@ class OvmbReader {
  private:
   void read_header() {
     static constexpr char kMagic[8] = {'O', 'V', 'M', 'B', '\n', '\r', '\n', '\xff'};
-    if (in_.left() < 8 || std::memcmp(in_.raw(std::min<size_t>(8, in_.left()), "").data(), kMagic, 8) != 0)
+    if (in_.left() < 8 || std::memcmp(in_.raw(8, "the OVMB magic").data(), kMagic, 8) != 0)
       in_.fail_at(0, "the OVMB magic bytes 'OVMB\\n\\r\\n\\xff'");
     const uint8_t file_version = in_.u8("the file version");
     const uint8_t header_version = in_.u8("the header version");
@@ -133,23 +133,23 @@ class OvmbReader {
     h_.topo_type = in_.u8("the topology type");
     if (h_.topo_type > 2) in_.fail_at(11, "topology type 0, 1 or 2, found " + std::to_string(h_.topo_type));
     in_.raw(4, "4 reserved header bytes");
+    for (int k = 0; k < 4; ++k) h_.n[k] = in_.u64(std::string("the number of ") + kEntity[k]);
     // Smallest encodings: a float vertex is 12 bytes, an edge 2, a face 3 and a cell 2 handles
     // of one byte. Counts the rest of the file cannot hold are rejected before any allocation.
     const uint64_t min_bytes[4] = {12, 2, 3, 2};
+    const uint64_t left = in_.left();
+    constexpr uint64_t kMax = std::numeric_limits<int32_t>::max() / 2;
     uint64_t total = 0;
     for (int k = 0; k < 4; ++k) {
-      const size_t at = in_.pos();
-      h_.n[k] = in_.u64(std::string("the number of ") + kEntity[k]);
-      const uint64_t room = (in_.left() + 32) / min_bytes[k];
-      if (h_.n[k] > room || h_.n[k] > static_cast<uint64_t>(std::numeric_limits<int32_t>::max() / 2))
-        in_.fail_at(at, std::string("a number of ") + kEntity[k] + " that the file can hold (at most " +
-                            std::to_string(std::min<uint64_t>(room, std::numeric_limits<int32_t>::max() / 2)) +
-                            "), found " + std::to_string(h_.n[k]));
+      const uint64_t room = std::min(left / min_bytes[k], kMax);
+      if (h_.n[k] > room)
+        in_.fail_at(16 + 8 * k, std::string("a number of ") + kEntity[k] + " that the file can hold (at most " +
+                                    std::to_string(room) + "), found " + std::to_string(h_.n[k]));
       total += h_.n[k] * min_bytes[k];
     }
-    if (total > in_.left()) in_.fail_at(16, "entity counts that fit in the " + std::to_string(in_.left()) +
-                                                " bytes after the header, found counts needing " +
-                                                std::to_string(total));
+    if (total > left)
+      in_.fail_at(16, "entity counts that fit in the " + std::to_string(left) +
+                          " bytes after the header, found counts needing " + std::to_string(total));
   }
 
   // Reads one chunk; true for the EOF chunk.

@@ -1,8 +1,11 @@
 // MEDIT .mesh writer: Hexahedra, Tetrahedra, Prisms and Pyramids in MEDIT's vertex order, which
 // is rebuilt from each cell's faces. The order matches the face templates of read_medit.cpp
 // (hex bottom 0 3 2 1 and top 4 5 6 7, tet 0 2 1 + apex 3, prism 0 2 1 / 3 4 5, pyramid base
-// 0 3 2 1 + apex 4), so reading the text back gives every cell the same faces, each seen the same
-// way round. MEDIT has no general polyhedra: such a cell is a std::invalid_argument.
+// 0 3 2 1 + apex 4), so reading the text back gives every cell the same faces. The element's
+// handedness follows the cell's view of the face used as its base: a cell whose faces are seen
+// consistently (each edge run once each way) comes back with every face seen the same way round;
+// files that carry no orientation (test_2.HYBRID, teapot.hedra) give elements of either
+// handedness. MEDIT has no general polyhedra: such a cell is a std::invalid_argument.
 #include <algorithm>
 #include <array>
 #include <charconv>
