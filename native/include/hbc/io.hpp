@@ -31,8 +31,10 @@ MeshInput read_input(const std::string& path, Format format = Format::Auto);
 // read_input + build_mesh.
 Mesh load_mesh(const std::string& path, Format format = Format::Auto);
 
-// Writers. write_medit stores tets, pyramids and prisms as degenerate hexahedra (as At-Most-Hexa
-// does) and throws std::invalid_argument for a general polyhedron, which MEDIT cannot express.
+// Writers. ovm_text keeps the mesh's numbering and each cell's view of its faces (read_ovm +
+// build_mesh give back the same arrays). medit_text writes Hexahedra, Tetrahedra, Prisms and
+// Pyramids sections in MEDIT's vertex order (cells grouped by type) and throws
+// std::invalid_argument naming the cell for a general polyhedron, which MEDIT cannot express.
 std::string ovm_text(const Mesh& mesh);
 std::string medit_text(const Mesh& mesh);
 void write_mesh(const Mesh& mesh, const std::string& path, Format format = Format::Auto);
