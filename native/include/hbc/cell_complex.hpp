@@ -1,0 +1,88 @@
+#pragma once
+// A mesh-like view (vertices, edges, faces, cells) that the valence singularity graph and its
+// wireframe (SPEC §4) are computed on, at one of two levels:
+//  - Mesh: the fine mesh as it is (edges are mesh edges, cells mesh cells);
+//  - Complex: the hybrid base complex seen as a coarse mesh (SPEC §4 "Level"): vertices are the
+//    corners that end curves, edges the curves (each carrying its polyline of mesh vertices),
+//    faces the patches, cells the components.
+// Either view may be restricted to a region (a subset of cells, e.g. a sheet's components plus its
+// adjacent non-hex components): only elements touching a region cell exist, valences count region
+// cells only, and a face with a region cell on one side only is a boundary face.
+// Element ids are compact (0..n-1) and ordered like the ids they come from, so results are
+// deterministic and follow the numbering of the mesh / base complex.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "hbc/base_complex.hpp"
+#include "hbc/csr.hpp"
+#include "hbc/mesh.hpp"
+
+namespace hbc {
+
+enum class ComplexLevel : uint8_t { Mesh = 0, Complex = 1 };
+const char* complex_level_name(ComplexLevel level);
+
+struct CellComplex {
+  ComplexLevel level = ComplexLevel::Mesh;
+
+  // Vertices (nv).
+  std::vector<int32_t> vert_mesh;         // nv: mesh vertex id
+  std::vector<uint8_t> vert_boundary;     // nv: on a (region) boundary face
+  std::vector<int32_t> vert_cell_count;   // nv: distinct region cells around it
+  std::vector<uint8_t> vert_all_quad;     // nv: every region face around it is a quad
+  Csr<int32_t> vert_edges;                // nv rows: incident edges, sorted, each once
+
+  // Edges (ne).
+  std::vector<std::array<int32_t, 2>> edge_verts;  // ne: end vertices; {-1,-1} for a closed curve
+  // ne rows: mesh vertices from edge_verts[e][0] to edge_verts[e][1]; a closed curve lists its
+  // first vertex again at the end. Mesh level: the two ends.
+  Csr<int32_t> edge_points;
+  Csr<int32_t> edge_cells;                // ne rows: distinct region cells around it, sorted
+  std::vector<int32_t> edge_valence;      // ne: region mesh cells around (a mesh edge of) it
+  std::vector<uint8_t> edge_boundary;     // ne: on a (region) boundary face
+  std::vector<uint8_t> edge_non_hex;      // ne: some cell around it is non-hex
+  std::vector<uint8_t> edge_all_quad;     // ne: every region face around it is a quad
+  Csr<int32_t> edge_faces;                // ne rows: region faces around it, sorted
+  std::vector<int32_t> edge_source;       // ne: mesh edge / curve id
+
+  // Faces (nf): mesh faces / patches with a region cell on at least one side.
+  Csr<int32_t> face_edges;                // nf rows: bounding edges, sorted
+  std::vector<uint8_t> face_quad;         // nf: 4 edges and 4 vertices (a topological quad)
+  std::vector<int32_t> face_source;       // nf: mesh face / patch id
+
+  // Cells (nc): mesh cells / components in the region.
+  std::vector<uint8_t> cell_non_hex;      // nc: non-hex cell / non-hex component
+  std::vector<int32_t> cell_source;       // nc: mesh cell / component id
+
+  size_t num_vertices() const { return vert_mesh.size(); }
+  size_t num_edges() const { return edge_verts.size(); }
+  size_t num_faces() const { return face_source.size(); }
+  size_t num_cells() const { return cell_source.size(); }
+  // Interior valence other than 4, boundary valence other than 2 (SPEC §0).
+  bool irregular(size_t e) const {
+    return edge_boundary[e] ? edge_valence[e] != 2 : edge_valence[e] != 4;
+  }
+  bool closed(size_t e) const { return edge_verts[e][0] < 0; }
+  // The other end of edge e at vertex v (v itself for a loop through one corner).
+  int32_t other_vertex(int32_t e, int32_t v) const {
+    return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0];
+  }
+};
+
+// The fine mesh. `region_cells` (mesh cell ids, any order, repeats ignored) restricts the view;
+// without it every cell is in.
+CellComplex complex_from_mesh(const Mesh& mesh);
+CellComplex complex_from_mesh(const Mesh& mesh, std::span<const int32_t> region_cells);
+
+// The base complex as a coarse mesh. `region_components` (component ids) restricts the view.
+CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc);
+CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc,
+                              std::span<const int32_t> region_components);
+
+// The components holding the given mesh cells, sorted and distinct (to turn a sheet's cells into a
+// complex-level region).
+std::vector<int32_t> components_of_cells(const BaseComplex& bc, std::span<const int32_t> cells);
+
+}  // namespace hbc

@@ -1,0 +1,294 @@
+#include "hbc/cell_complex.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace hbc {
+
+const char* complex_level_name(ComplexLevel level) {
+  return level == ComplexLevel::Mesh ? "mesh" : "complex";
+}
+
+namespace {
+
+// Which mesh faces / edges / vertices lie on the boundary of the region of mesh cells flagged in
+// `in_cell`: a face is a boundary face when exactly one of its cells is in the region, so the
+// mesh boundary and the seams to cells outside the region are treated alike.
+struct RegionBoundary {
+  std::vector<uint8_t> face_in, face_boundary, edge_boundary, vert_boundary;
+};
+
+RegionBoundary region_boundary(const Mesh& m, const std::vector<uint8_t>& in_cell) {
+  RegionBoundary r;
+  const size_t nf = m.num_faces();
+  r.face_in.assign(nf, 0);
+  r.face_boundary.assign(nf, 0);
+  r.edge_boundary.assign(m.num_edges(), 0);
+  r.vert_boundary.assign(m.num_vertices(), 0);
+  for (size_t f = 0; f < nf; ++f) {
+    const auto [a, b] = m.face_cells[f];
+    const int n = in_cell[a] + (b >= 0 ? in_cell[b] : 0);
+    r.face_in[f] = n > 0;
+    if (n != 1) continue;
+    r.face_boundary[f] = 1;
+    for (int32_t e : m.face_edges[f]) r.edge_boundary[e] = 1;
+    for (int32_t v : m.face_verts[f]) r.vert_boundary[v] = 1;
+  }
+  return r;
+}
+
+std::vector<uint8_t> flags_of(std::span<const int32_t> ids, size_t n, const char* what) {
+  std::vector<uint8_t> in(n, 0);
+  for (int32_t i : ids) {
+    if (i < 0 || static_cast<size_t>(i) >= n)
+      throw std::invalid_argument(std::string("region ") + what + " id out of range: " +
+                                  std::to_string(i));
+    in[i] = 1;
+  }
+  return in;
+}
+
+// Compact ids for the flagged entries, in increasing order of the original ids.
+std::vector<int32_t> compact(const std::vector<uint8_t>& keep, std::vector<int32_t>& source) {
+  std::vector<int32_t> map(keep.size(), -1);
+  source.clear();
+  for (size_t i = 0; i < keep.size(); ++i)
+    if (keep[i]) {
+      map[i] = static_cast<int32_t>(source.size());
+      source.push_back(static_cast<int32_t>(i));
+    }
+  return map;
+}
+
+void sort_unique_row(std::vector<int32_t>& buf, Csr<int32_t>& out) {
+  std::sort(buf.begin(), buf.end());
+  buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
+  out.push_row(buf.begin(), buf.end());
+}
+
+// vert_edges from edge_verts (closed edges have no vertices); self-loops appear once.
+void build_vert_edges(CellComplex& cx) {
+  Csr<int32_t> ev;
+  for (const auto& ab : cx.edge_verts) {
+    if (ab[0] < 0) {
+      ev.push_row(ab.begin(), ab.begin());
+    } else if (ab[0] == ab[1]) {
+      ev.push_row(ab.begin(), ab.begin() + 1);
+    } else {
+      ev.push_row(ab.begin(), ab.end());
+    }
+  }
+  cx.vert_edges = transpose(ev, cx.num_vertices());
+}
+
+}  // namespace
+
+CellComplex complex_from_mesh(const Mesh& m) {
+  std::vector<int32_t> all(m.num_cells());
+  for (size_t c = 0; c < all.size(); ++c) all[c] = static_cast<int32_t>(c);
+  return complex_from_mesh(m, all);
+}
+
+CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cells) {
+  CellComplex cx;
+  cx.level = ComplexLevel::Mesh;
+  const std::vector<uint8_t> in_cell = flags_of(region_cells, m.num_cells(), "cell");
+  const RegionBoundary rb = region_boundary(m, in_cell);
+  const size_t ne = m.num_edges(), nv = m.num_vertices();
+
+  const std::vector<int32_t> cmap = compact(in_cell, cx.cell_source);
+  const std::vector<int32_t> fmap = compact(rb.face_in, cx.face_source);
+  std::vector<uint8_t> edge_in(ne, 0), vert_in(nv, 0);
+  for (size_t e = 0; e < ne; ++e) {
+    for (int32_t c : m.edge_cells[e]) edge_in[e] = edge_in[e] || in_cell[c];
+    if (edge_in[e]) vert_in[m.edge_verts[e][0]] = vert_in[m.edge_verts[e][1]] = 1;
+  }
+  const std::vector<int32_t> emap = compact(edge_in, cx.edge_source);
+  const std::vector<int32_t> vmap = compact(vert_in, cx.vert_mesh);
+
+  cx.cell_non_hex.resize(cx.num_cells());
+  for (size_t i = 0; i < cx.num_cells(); ++i) cx.cell_non_hex[i] = !m.is_hex(cx.cell_source[i]);
+
+  std::vector<int32_t> buf;
+  cx.face_quad.resize(cx.num_faces());
+  for (size_t i = 0; i < cx.num_faces(); ++i) {
+    const int32_t f = cx.face_source[i];
+    buf.clear();
+    for (int32_t e : m.face_edges[f]) buf.push_back(emap[e]);
+    sort_unique_row(buf, cx.face_edges);
+    cx.face_quad[i] = m.face_verts.count(f) == 4;
+  }
+
+  const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
+  cx.edge_verts.resize(nx);
+  cx.edge_valence.resize(nx);
+  cx.edge_boundary.resize(nx);
+  cx.edge_non_hex.assign(nx, 0);
+  cx.edge_all_quad.assign(nx, 1);
+  cx.edge_points.items.reserve(2 * nx);
+  for (size_t i = 0; i < nx; ++i) {
+    const int32_t e = cx.edge_source[i];
+    const auto [a, b] = m.edge_verts[e];
+    cx.edge_verts[i] = {vmap[a], vmap[b]};
+    const int32_t pts[2] = {a, b};
+    cx.edge_points.push_row(pts, pts + 2);
+    buf.clear();
+    for (int32_t c : m.edge_cells[e]) {
+      if (!in_cell[c]) continue;
+      buf.push_back(cmap[c]);
+      cx.edge_non_hex[i] = cx.edge_non_hex[i] || !m.is_hex(c);
+    }
+    sort_unique_row(buf, cx.edge_cells);
+    cx.edge_valence[i] = cx.edge_cells.count(i);
+    cx.edge_boundary[i] = rb.edge_boundary[e];
+    buf.clear();
+    for (int32_t f : m.edge_faces[e]) {
+      if (!rb.face_in[f]) continue;
+      buf.push_back(fmap[f]);
+      cx.edge_all_quad[i] = cx.edge_all_quad[i] && m.face_verts.count(f) == 4;
+    }
+    sort_unique_row(buf, cx.edge_faces);
+  }
+
+  const size_t nvx = cx.num_vertices();
+  cx.vert_boundary.resize(nvx);
+  cx.vert_cell_count.assign(nvx, 0);
+  cx.vert_all_quad.assign(nvx, 1);
+  for (size_t i = 0; i < nvx; ++i) {
+    const int32_t v = cx.vert_mesh[i];
+    cx.vert_boundary[i] = rb.vert_boundary[v];
+    for (int32_t c : m.vert_cells[v]) cx.vert_cell_count[i] += in_cell[c];
+    for (int32_t f : m.vert_faces[v])
+      if (rb.face_in[f] && m.face_verts.count(f) != 4) cx.vert_all_quad[i] = 0;
+  }
+  build_vert_edges(cx);
+  return cx;
+}
+
+CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc) {
+  std::vector<int32_t> all(bc.num_components());
+  for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int32_t>(k);
+  return complex_from_base(m, bc, all);
+}
+
+CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
+                              std::span<const int32_t> region_components) {
+  CellComplex cx;
+  cx.level = ComplexLevel::Complex;
+  const std::vector<uint8_t> in_comp = flags_of(region_components, bc.num_components(), "component");
+  std::vector<uint8_t> in_cell(m.num_cells());
+  for (size_t c = 0; c < in_cell.size(); ++c) in_cell[c] = in_comp[bc.cell_component[c]];
+  const RegionBoundary rb = region_boundary(m, in_cell);
+  const size_t npatch = bc.num_patches(), ncurve = bc.num_curves();
+
+  const std::vector<int32_t> kmap = compact(in_comp, cx.cell_source);
+  cx.cell_non_hex.resize(cx.num_cells());
+  for (size_t i = 0; i < cx.num_cells(); ++i)
+    cx.cell_non_hex[i] = bc.component_kind[cx.cell_source[i]] == ComponentKind::NonHex;
+
+  // A patch is in the region when its faces are; all its faces have the same two components.
+  std::vector<uint8_t> patch_in(npatch, 0);
+  for (size_t p = 0; p < npatch; ++p) patch_in[p] = rb.face_in[bc.patch_faces[p][0]];
+  const std::vector<int32_t> pmap = compact(patch_in, cx.face_source);
+  std::vector<uint8_t> patch_quad(npatch);
+  for (size_t p = 0; p < npatch; ++p)
+    patch_quad[p] = bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
+
+  std::vector<uint8_t> curve_in(ncurve, 0);
+  for (size_t k = 0; k < ncurve; ++k)
+    for (int32_t c : m.edge_cells[bc.curve_edges[k][0]]) curve_in[k] = curve_in[k] || in_cell[c];
+  const std::vector<int32_t> emap = compact(curve_in, cx.edge_source);
+  std::vector<uint8_t> corner_in(m.num_vertices(), 0);
+  for (int32_t k : cx.edge_source) {
+    if (bc.curve_closed[k]) continue;
+    const auto vs = bc.curve_verts[k];
+    corner_in[vs.front()] = corner_in[vs.back()] = 1;
+  }
+  const std::vector<int32_t> vmap = compact(corner_in, cx.vert_mesh);
+
+  std::vector<int32_t> buf;
+  cx.face_quad.resize(cx.num_faces());
+  for (size_t i = 0; i < cx.num_faces(); ++i) {
+    const int32_t p = cx.face_source[i];
+    buf.clear();
+    for (int32_t f : bc.patch_faces[p])
+      for (int32_t e : m.face_edges[f])
+        if (bc.edge_curve[e] >= 0) buf.push_back(emap[bc.edge_curve[e]]);
+    sort_unique_row(buf, cx.face_edges);
+    cx.face_quad[i] = patch_quad[p];
+  }
+
+  const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
+  cx.edge_verts.resize(nx);
+  cx.edge_valence.resize(nx);
+  cx.edge_boundary.assign(nx, 0);
+  cx.edge_non_hex.assign(nx, 0);
+  cx.edge_all_quad.assign(nx, 1);
+  std::vector<int32_t> fbuf;
+  for (size_t i = 0; i < nx; ++i) {
+    const int32_t k = cx.edge_source[i];
+    const auto vs = bc.curve_verts[k];
+    if (bc.curve_closed[k]) {
+      cx.edge_verts[i] = {-1, -1};
+      cx.edge_points.push_row(vs.begin(), vs.end());
+      cx.edge_points.items.push_back(vs.front());
+      cx.edge_points.offsets.back() += 1;
+    } else {
+      cx.edge_verts[i] = {vmap[vs.front()], vmap[vs.back()]};
+      cx.edge_points.push_row(vs.begin(), vs.end());
+    }
+    // The valence is that of the curve's first mesh edge: every face around a curve separates,
+    // so each mesh cell there is a corner of a different coarse cell.
+    const auto es = bc.curve_edges[k];
+    int32_t valence = 0;
+    for (int32_t c : m.edge_cells[es[0]]) valence += in_cell[c];
+    cx.edge_valence[i] = valence;
+    buf.clear();
+    fbuf.clear();
+    for (int32_t e : es) {
+      cx.edge_boundary[i] = cx.edge_boundary[i] || rb.edge_boundary[e];
+      for (int32_t c : m.edge_cells[e])
+        if (in_cell[c]) buf.push_back(kmap[bc.cell_component[c]]);
+      for (int32_t f : m.edge_faces[e])
+        if (rb.face_in[f] && bc.face_patch[f] >= 0) fbuf.push_back(pmap[bc.face_patch[f]]);
+    }
+    sort_unique_row(buf, cx.edge_cells);
+    for (int32_t x : cx.edge_cells[i]) cx.edge_non_hex[i] = cx.edge_non_hex[i] || cx.cell_non_hex[x];
+    sort_unique_row(fbuf, cx.edge_faces);
+    for (int32_t f : cx.edge_faces[i]) cx.edge_all_quad[i] = cx.edge_all_quad[i] && cx.face_quad[f];
+  }
+
+  const size_t nvx = cx.num_vertices();
+  cx.vert_boundary.resize(nvx);
+  cx.vert_cell_count.resize(nvx);
+  cx.vert_all_quad.assign(nvx, 1);
+  for (size_t i = 0; i < nvx; ++i) {
+    const int32_t v = cx.vert_mesh[i];
+    cx.vert_boundary[i] = rb.vert_boundary[v];
+    buf.clear();
+    for (int32_t c : m.vert_cells[v])
+      if (in_cell[c]) buf.push_back(bc.cell_component[c]);
+    std::sort(buf.begin(), buf.end());
+    cx.vert_cell_count[i] = static_cast<int32_t>(std::unique(buf.begin(), buf.end()) - buf.begin());
+    for (int32_t f : m.vert_faces[v])
+      if (rb.face_in[f] && bc.face_patch[f] >= 0 && !patch_quad[bc.face_patch[f]]) cx.vert_all_quad[i] = 0;
+  }
+  build_vert_edges(cx);
+  return cx;
+}
+
+std::vector<int32_t> components_of_cells(const BaseComplex& bc, std::span<const int32_t> cells) {
+  std::vector<int32_t> out;
+  out.reserve(cells.size());
+  for (int32_t c : cells) {
+    if (c < 0 || static_cast<size_t>(c) >= bc.cell_component.size())
+      throw std::invalid_argument("cell id out of range: " + std::to_string(c));
+    out.push_back(bc.cell_component[c]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace hbc
