@@ -1,0 +1,339 @@
+// Synthetic meshes: counts derived by hand (in the comments), edge valences, orientation,
+// determinism. Every mesh here goes through build_mesh, which checks conformity.
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <map>
+#include <set>
+
+#include "hbc/generate.hpp"
+#include "test_support.hpp"
+
+namespace hbc {
+namespace {
+
+// Signed volume of a cell from its face loops as the cell sees them (fan triangles, origin at
+// the first vertex of the cell): positive when the loops point outward.
+double cell_volume(const Mesh& m, size_t c) {
+  const double* o = &m.points[3 * static_cast<size_t>(m.cell_verts[c][0])];
+  double vol = 0;
+  for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i) {
+    auto loop = m.face_verts[m.cell_faces.items[i]];
+    const bool rev = m.cell_face_flip[i] != 0;
+    const size_t n = loop.size();
+    auto p = [&](size_t k, int d) {
+      const int32_t v = rev ? loop[(n - k) % n] : loop[k];
+      return m.points[3 * static_cast<size_t>(v) + d] - o[d];
+    };
+    for (size_t k = 1; k + 1 < n; ++k) {
+      vol += p(0, 0) * (p(k, 1) * p(k + 1, 2) - p(k, 2) * p(k + 1, 1)) -
+             p(0, 1) * (p(k, 0) * p(k + 1, 2) - p(k, 2) * p(k + 1, 0)) +
+             p(0, 2) * (p(k, 0) * p(k + 1, 1) - p(k, 1) * p(k + 1, 0));
+    }
+  }
+  return vol / 6.0;
+}
+
+struct Counts {
+  size_t v, e, f, c, boundary;
+};
+
+Counts counts(const Mesh& m) {
+  size_t b = 0;
+  for (uint8_t x : m.face_boundary) b += x;
+  return {m.num_vertices(), m.num_edges(), m.num_faces(), m.num_cells(), b};
+}
+
+void expect_counts(const Mesh& m, Counts want) {
+  const Counts got = counts(m);
+  EXPECT_EQ(got.v, want.v);
+  EXPECT_EQ(got.e, want.e);
+  EXPECT_EQ(got.f, want.f);
+  EXPECT_EQ(got.c, want.c);
+  EXPECT_EQ(got.boundary, want.boundary);
+  // A solid ball: V - E + F - C = 1.
+  EXPECT_EQ(static_cast<int64_t>(got.v) - static_cast<int64_t>(got.e) + static_cast<int64_t>(got.f) -
+                static_cast<int64_t>(got.c),
+            1);
+}
+
+std::map<CellType, size_t> types(const Mesh& m) {
+  std::map<CellType, size_t> t;
+  for (CellType x : m.cell_type) ++t[x];
+  return t;
+}
+
+// Every cell positively oriented; returns the total volume.
+double expect_positive(const Mesh& m) {
+  double total = 0;
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    const double v = cell_volume(m, c);
+    EXPECT_GT(v, 1e-9) << "cell " << c << " of " << m.source << " is inside-out or flat";
+    total += v;
+  }
+  return total;
+}
+
+void expect_no_non_manifold(const Mesh& m) {
+  for (size_t v = 0; v < m.num_vertices(); ++v) ASSERT_FALSE(m.vert_non_manifold[v]) << m.source << " vertex " << v;
+  for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok[e]) << m.source << " edge " << e;
+}
+
+void expect_same(const MeshInput& a, const MeshInput& b) {
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.faces.offsets, b.faces.offsets);
+  EXPECT_EQ(a.faces.items, b.faces.items);
+  EXPECT_EQ(a.cells.offsets, b.cells.offsets);
+  EXPECT_EQ(a.cells.items, b.cells.items);
+}
+
+TEST(Generate, GridCountsAndValences) {
+  // 2x3x4: V = 3*4*5 = 60; E = 2*4*5 + 3*3*5 + 3*4*4 = 133; F = 3*3*4 + 2*4*4 + 2*3*5 = 98;
+  // C = 24; boundary 2(3*4 + 2*4 + 2*3) = 52.
+  const Mesh m = build_mesh(generate_grid(2, 3, 4));
+  expect_counts(m, {60, 133, 98, 24, 52});
+  EXPECT_EQ(m.num_hex_cells(), 24u);
+  // Interior edges valence 4; boundary edges 2, except the box's 12 edges cut into 4(2+3+4) = 36
+  // edges of valence 1. Interior edges: E - boundary edges; boundary edges of a closed quad
+  // surface with 52 faces: 2*52 = 104. So 29 interior edges.
+  size_t interior = 0, v1 = 0;
+  for (size_t e = 0; e < m.num_edges(); ++e) {
+    if (!m.edge_boundary[e]) {
+      ++interior;
+      EXPECT_EQ(m.edge_valence(e), 4);
+    } else {
+      EXPECT_TRUE(m.edge_valence(e) == 1 || m.edge_valence(e) == 2);
+      v1 += m.edge_valence(e) == 1;
+    }
+  }
+  EXPECT_EQ(interior, 29u);
+  EXPECT_EQ(v1, 36u);
+  EXPECT_NEAR(expect_positive(m), 24.0, 1e-9);
+  expect_no_non_manifold(m);
+}
+
+TEST(Generate, GridNumberingAndSpacing) {
+  const MeshInput in = generate_grid(3, 2, 2, 0.5);
+  // Vertex (i,j,l) = i + 4(j + 3l): vertex (1,2,1) is 1 + 4*(2 + 3) = 21 at (0.5, 1, 0.5).
+  EXPECT_DOUBLE_EQ(in.points[3 * 21 + 0], 0.5);
+  EXPECT_DOUBLE_EQ(in.points[3 * 21 + 1], 1.0);
+  EXPECT_DOUBLE_EQ(in.points[3 * 21 + 2], 0.5);
+  const Mesh m = build_mesh(in);
+  // Cell (i,j,l) = i + 3(j + 2l): cell 10 = (1,1,1) spans vertices with x in {0.5,1}, y in {0.5,1}.
+  for (int32_t v : m.cell_verts[10]) {
+    const double x = m.points[3 * v], y = m.points[3 * v + 1], z = m.points[3 * v + 2];
+    EXPECT_TRUE(x == 0.5 || x == 1.0);
+    EXPECT_TRUE(y == 0.5 || y == 1.0);
+    EXPECT_TRUE(z == 0.5 || z == 1.0);
+  }
+  EXPECT_NEAR(expect_positive(m), 12 * 0.125, 1e-12);
+}
+
+TEST(Generate, MillionCellGridIsFast) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const MeshInput in = generate_grid(100, 100, 100);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(in.cells.rows(), 1000000u);
+  EXPECT_EQ(in.points.size(), 3u * 101 * 101 * 101);
+  // F = 3 * 101 * 100 * 100.
+  EXPECT_EQ(in.faces.rows(), 3030000u);
+#if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)
+  GTEST_SKIP() << "timing checked in optimised builds only (took " << s << " s)";
+#else
+  EXPECT_LT(s, 1.0) << "generating 10^6 hexes took " << s << " s";
+#endif
+}
+
+TEST(Generate, SplitPyramidsKeepsNeighboursHex) {
+  // 3x3x3 grid: V 64, E 3*3*4*4 = 144, F 3*4*3*3 = 108, C 27, boundary 54. The centre cell
+  // becomes 6 pyramids: +1 vertex (centre), +8 edges (centre to corners), +12 triangles (one per
+  // hex edge), +5 cells. Its quads stay, so the 26 other cells stay hexes.
+  const std::array<int32_t, 3> centre{1, 1, 1};
+  const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Pyramids, {&centre, 1}));
+  expect_counts(m, {65, 152, 120, 32, 54});
+  auto t = types(m);
+  EXPECT_EQ(t[CellType::Pyramid], 6u);
+  EXPECT_EQ(t[CellType::Hex], 26u);
+  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
+  expect_no_non_manifold(m);
+  // The 12 hex edges of the split cell now have 4 + 1 cells around them (interior edges).
+  size_t five = 0;
+  for (size_t e = 0; e < m.num_edges(); ++e) five += !m.edge_boundary[e] && m.edge_valence(e) == 5;
+  EXPECT_EQ(five, 12u);
+}
+
+TEST(Generate, SplitPrismsSplitsTheColumn) {
+  // Column (1,1,*) of a 3x3x3 grid along z: 3 hexes -> 6 prisms (+3 cells); the 4 horizontal quads
+  // of the column become 2 triangles each (+4 faces), plus 3 diagonal quads (+3 faces); the 4
+  // diagonals are new edges (+4). Top and bottom quads are on the boundary: +2 boundary faces.
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::array<int32_t, 3> cell{1, 1, 1};
+    const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Prisms, {&cell, 1}, axis));
+    SCOPED_TRACE(axis);
+    expect_counts(m, {64, 148, 115, 30, 56});
+    auto t = types(m);
+    EXPECT_EQ(t[CellType::Prism], 6u);
+    EXPECT_EQ(t[CellType::Hex], 24u);
+    EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
+    expect_no_non_manifold(m);
+  }
+  // Two columns from cells of one column give the same mesh as one.
+  const std::array<int32_t, 3> two[2] = {{0, 2, 0}, {0, 2, 3}};
+  const Mesh m2 = build_mesh(generate_split(2, 3, 4, SplitKind::Prisms, two));
+  EXPECT_EQ(types(m2)[CellType::Prism], 8u);
+}
+
+TEST(Generate, SplitTetsMakesNeighboursPolyhedra) {
+  // Centre of 3x3x3 into 6 Kuhn tets: each of its 6 quads becomes 2 triangles (+6 faces) and 6
+  // triangles lie inside (+6); 6 face diagonals and the body diagonal are new edges (+7); +5
+  // cells. The 6 face neighbours see 2 triangles instead of a quad: 7-face polyhedra.
+  const std::array<int32_t, 3> centre{1, 1, 1};
+  const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Tets, {&centre, 1}));
+  expect_counts(m, {64, 151, 120, 32, 54});
+  auto t = types(m);
+  EXPECT_EQ(t[CellType::Tet], 6u);
+  EXPECT_EQ(t[CellType::Polyhedron], 6u);
+  EXPECT_EQ(t[CellType::Hex], 20u);
+  for (size_t c = 0; c < m.num_cells(); ++c)
+    if (m.cell_type[c] == CellType::Polyhedron) EXPECT_EQ(m.cell_faces.count(c), 7);
+  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
+  expect_no_non_manifold(m);
+
+  // Corner cell of 2x2x2 (V 27, E 54, F 36, C 8, boundary 24): same increments, and its 3
+  // boundary quads become 6 triangles (+3 boundary faces); 3 neighbours become polyhedra.
+  const std::array<int32_t, 3> corner{0, 0, 0};
+  const Mesh mc = build_mesh(generate_split(2, 2, 2, SplitKind::Tets, {&corner, 1}));
+  expect_counts(mc, {27, 61, 48, 13, 27});
+  EXPECT_EQ(types(mc)[CellType::Polyhedron], 3u);
+  EXPECT_NEAR(expect_positive(mc), 8.0, 1e-9);
+
+  // Two adjacent split cells agree on their shared face: 2x1x1 (V 12, E 20, F 11, C 2, boundary
+  // 10): all 11 quads split (+11 faces, +11 edges), 6 inner triangles each (+12), 2 body
+  // diagonals; the 10 boundary quads become 20 triangles.
+  const std::array<int32_t, 3> both[2] = {{0, 0, 0}, {1, 0, 0}};
+  const Mesh mb = build_mesh(generate_split(2, 1, 1, SplitKind::Tets, both));
+  expect_counts(mb, {12, 33, 34, 12, 20});
+  EXPECT_EQ(types(mb)[CellType::Tet], 12u);
+  EXPECT_NEAR(expect_positive(mb), 2.0, 1e-9);
+}
+
+TEST(Generate, RandomCellsAreDistinctAndReproducible) {
+  const auto a = random_cells(5, 4, 3, 20, 7);
+  const auto b = random_cells(5, 4, 3, 20, 7);
+  const auto c = random_cells(5, 4, 3, 20, 8);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  std::set<std::array<int32_t, 3>> s(a.begin(), a.end());
+  EXPECT_EQ(s.size(), 20u);
+  for (const auto& x : a) {
+    EXPECT_TRUE(x[0] >= 0 && x[0] < 5 && x[1] >= 0 && x[1] < 4 && x[2] >= 0 && x[2] < 3);
+  }
+  // The first draw of std::mt19937(7) is fixed by the standard's algorithm: slot 0 swaps with
+  // draw mod 60, so the first cell is that id.
+  std::mt19937 g(7);
+  const int32_t first = static_cast<int32_t>(g() % 60);
+  EXPECT_EQ(a[0], (std::array<int32_t, 3>{first % 5, (first / 5) % 4, first / 20}));
+  // All cells: a permutation.
+  EXPECT_EQ(random_cells(2, 2, 2, 8, 1).size(), 8u);
+  EXPECT_THROW(random_cells(2, 2, 2, 9, 1), std::invalid_argument);
+
+  const auto ten = random_cells(5, 5, 5, 10, 3);
+  const Mesh m = build_mesh(generate_split(5, 5, 5, SplitKind::Pyramids, ten));
+  EXPECT_EQ(m.num_vertices(), 216u + 10);
+  EXPECT_EQ(types(m)[CellType::Pyramid], 60u);
+  expect_positive(m);
+  const Mesh mt = build_mesh(generate_split(5, 5, 5, SplitKind::Tets, ten));
+  EXPECT_EQ(types(mt)[CellType::Tet], 60u);
+  EXPECT_NEAR(expect_positive(mt), 125.0, 1e-9);
+  expect_no_non_manifold(mt);
+}
+
+TEST(Generate, SectorHasOneSingularChain) {
+  // N=3, R=2, L=3: V2 = 1 + 6 + 12 = 19, Q2 = 12, E2 = 6 + 24 = 30; V = 19*4 = 76, C = 36,
+  // E = 30*4 + 19*3 = 177, F = 12*4 + 30*3 = 138, boundary 2*12 + 2*3*2*3 = 60.
+  const Mesh m = build_mesh(generate_sector(3, 2, 3));
+  expect_counts(m, {76, 177, 138, 36, 60});
+  EXPECT_EQ(m.num_hex_cells(), 36u);
+  expect_no_non_manifold(m);
+  // Cross-section area 3 parallelograms of area sin(120°), height L/R = 1.5.
+  EXPECT_NEAR(expect_positive(m), 3 * std::sin(2 * std::numbers::pi / 3) * 1.5, 1e-9);
+  for (int valence : {3, 5, 6}) {
+    const Mesh s = build_mesh(generate_sector(valence, 2, 3));
+    SCOPED_TRACE(valence);
+    expect_positive(s);
+    // The irregular interior edges are exactly the 3 axis edges (vertex 0 of each layer up).
+    std::vector<size_t> irregular;
+    for (size_t e = 0; e < s.num_edges(); ++e)
+      if (!s.edge_boundary[e] && s.edge_valence(e) != 4) irregular.push_back(e);
+    ASSERT_EQ(irregular.size(), 3u);
+    for (size_t e : irregular) {
+      EXPECT_EQ(s.edge_valence(e), valence);
+      const auto ev = s.edge_verts[e];
+      const size_t nv2 = 1 + valence * 2 + valence * 4;
+      EXPECT_EQ(ev[0] % nv2, 0u);
+      EXPECT_EQ(ev[1], ev[0] + nv2);
+    }
+  }
+  // Valence 4 is a (2R)x(2R)xL grid: counts as generate_grid(2, 2, 1).
+  const Mesh g = build_mesh(generate_sector(4, 1, 1));
+  const Counts want = counts(build_mesh(generate_grid(2, 2, 1)));
+  expect_counts(g, want);
+  for (size_t e = 0; e < g.num_edges(); ++e)
+    if (!g.edge_boundary[e]) EXPECT_EQ(g.edge_valence(e), 4);
+}
+
+TEST(Generate, CylinderIsHexDominantWithPrismColumns) {
+  // radius 2: core 2x2 (9 vertices, 4 quads, 12 edges, boundary ring of 8); one circular ring of
+  // radius 2 with 4*round(4π/4) = 12 vertices: 8 quads + 4 triangles, 12 ring edges and 12
+  // spokes. Cross-section V2 = 21, P2 = 16, E2 = 36. With L = 3: V = 84, C = 48 (36 hex, 12
+  // prisms), E = 36*4 + 21*3 = 207, F = 16*4 + 36*3 = 172, boundary 2*16 + 12*3 = 68.
+  const Mesh m = build_mesh(generate_cylinder(2, 3));
+  expect_counts(m, {84, 207, 172, 48, 68});
+  auto t = types(m);
+  EXPECT_EQ(t[CellType::Hex], 36u);
+  EXPECT_EQ(t[CellType::Prism], 12u);
+  expect_positive(m);
+  expect_no_non_manifold(m);
+
+  const Mesh big = build_mesh(generate_cylinder(8, 4));
+  auto tb = types(big);
+  EXPECT_EQ(tb[CellType::Hex] + tb[CellType::Prism], big.num_cells());
+  EXPECT_GT(tb[CellType::Prism], 0u);
+  EXPECT_GT(static_cast<double>(tb[CellType::Hex]) / big.num_cells(), 0.8);
+  const double vol = expect_positive(big);
+  // Radius 8 (the last ring is a circle of radius a + rings = 8), height 4; the polygon inscribed
+  // in the circle is a little smaller.
+  EXPECT_LT(vol, std::numbers::pi * 64 * 4);
+  EXPECT_GT(vol, 0.95 * std::numbers::pi * 64 * 4);
+  expect_no_non_manifold(big);
+  // Prisms stack in columns: every prism's top or bottom triangle is shared with a prism or on
+  // the boundary.
+  for (size_t f = 0; f < big.num_faces(); ++f) {
+    if (big.face_verts.count(f) != 3 || big.face_boundary[f]) continue;
+    EXPECT_EQ(big.cell_type[big.face_cells[f][0]], CellType::Prism);
+    EXPECT_EQ(big.cell_type[big.face_cells[f][1]], CellType::Prism);
+  }
+}
+
+TEST(Generate, Deterministic) {
+  expect_same(generate_grid(4, 3, 2, 0.25), generate_grid(4, 3, 2, 0.25));
+  const auto cells = random_cells(4, 4, 4, 5, 42);
+  for (SplitKind k : {SplitKind::Pyramids, SplitKind::Prisms, SplitKind::Tets})
+    expect_same(generate_split(4, 4, 4, k, cells), generate_split(4, 4, 4, k, random_cells(4, 4, 4, 5, 42)));
+  expect_same(generate_sector(5, 3, 2), generate_sector(5, 3, 2));
+  expect_same(generate_cylinder(6, 2), generate_cylinder(6, 2));
+}
+
+TEST(Generate, BadArgumentsThrow) {
+  EXPECT_THROW(generate_grid(0, 1, 1), std::invalid_argument);
+  EXPECT_THROW(generate_grid(1, 1, 1, -1.0), std::invalid_argument);
+  EXPECT_THROW(generate_grid(100000, 100000, 100000), std::invalid_argument);
+  const std::array<int32_t, 3> outside{3, 0, 0};
+  EXPECT_THROW(generate_split(3, 3, 3, SplitKind::Tets, {&outside, 1}), std::invalid_argument);
+  EXPECT_THROW(generate_sector(2, 1, 1), std::invalid_argument);
+  EXPECT_THROW(generate_cylinder(0, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hbc
