@@ -1,0 +1,91 @@
+// Load + topology build (read_input + build_mesh) of real and generated MEDIT files.
+// Counters: cells, cells_per_second, parse_s / build_s (mean per iteration), peak_rss_MB
+// (getrusage ru_maxrss of the whole process: run one benchmark per process, as scripts/bench.sh
+// does, and have the grid files written beforehand, or the peak includes writing them:
+// grid_written_here = 1 says so).
+// Grid files go to $HBC_BENCH_DIR (default: the system temporary folder) as
+// hbc_bench_grid_<cells>.mesh and are reused when present.
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "hbc/generate.hpp"
+#include "hbc/io.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;  // Linux reports kilobytes
+}
+
+fs::path bench_dir() {
+  const char* d = std::getenv("HBC_BENCH_DIR");
+  return d && *d ? fs::path(d) : fs::temp_directory_path();
+}
+
+void load_file(benchmark::State& state, const std::string& path, bool written_here) {
+  if (!fs::exists(path)) {
+    state.SkipWithError(("missing " + path).c_str());
+    return;
+  }
+  double parse_s = 0, build_s = 0;
+  size_t cells = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    hbc::MeshInput in = hbc::read_input(path);
+    const auto t1 = std::chrono::steady_clock::now();
+    hbc::Mesh m = hbc::build_mesh(std::move(in));
+    const auto t2 = std::chrono::steady_clock::now();
+    parse_s += std::chrono::duration<double>(t1 - t0).count();
+    build_s += std::chrono::duration<double>(t2 - t1).count();
+    cells = m.num_cells();
+    benchmark::DoNotOptimize(m.edge_cells.items.data());
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["cells"] = static_cast<double>(cells);
+  state.counters["cells_per_second"] =
+      benchmark::Counter(static_cast<double>(cells), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["parse_s"] = parse_s / n;
+  state.counters["build_s"] = build_s / n;
+  state.counters["file_MB"] = static_cast<double>(fs::file_size(path)) / (1024.0 * 1024.0);
+  state.counters["peak_rss_MB"] = peak_rss_mb();
+  state.counters["grid_written_here"] = written_here ? 1 : 0;
+}
+
+void BM_LoadArmadillo(benchmark::State& state) {
+  load_file(state, std::string(HBC_DATA_DIR) + "/hexalab-edge-cone-rectification/armadillo_out.mesh", false);
+}
+
+// arg = number of cells: 10^4 = 25x20x20, 10^5 = 50x50x40, 10^6 = 100x100x100.
+void BM_LoadGrid(benchmark::State& state) {
+  const int64_t cells = state.range(0);
+  int n = 25, m = 20, k = 20;
+  if (cells == 100000) n = 50, m = 50, k = 40;
+  else if (cells == 1000000) n = m = k = 100;
+  else if (cells != 10000) {
+    state.SkipWithError("grid sizes: 10000, 100000, 1000000");
+    return;
+  }
+  const fs::path path = bench_dir() / ("hbc_bench_grid_" + std::to_string(cells) + ".mesh");
+  bool written_here = false;
+  if (!fs::exists(path)) {
+    hbc::write_mesh(hbc::build_mesh(hbc::generate_grid(n, m, k)), path.string());
+    written_here = true;
+  }
+  load_file(state, path.string(), written_here);
+}
+
+BENCHMARK(BM_LoadArmadillo)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LoadGrid)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
