@@ -15,6 +15,7 @@ int cmd_info(const Args& args);
 int cmd_generate(const Args& args);
 int cmd_export_surface(const Args& args);
 int cmd_analyze(const Args& args);
+int cmd_wireframe(const Args& args);
 
 // Small shared helpers for argument handling.
 bool take_flag(Args& args, const std::string& flag);                       // removes it if present

@@ -15,6 +15,8 @@ const char* kUsage =
     "  analyze FILE [--json] [--csv] [--format F] hybrid singularity graph and base complex\n"
     "  generate KIND [options] -o FILE            synthetic meshes with known structure\n"
     "  export-surface FILE -o OUT.obj|.ply|.off   boundary surface through OpenMesh\n"
+    "  wireframe FILE [--level complex|mesh] [--rho R] [--sheet N] [--json|--obj] [-o OUT]\n"
+    "                                             VSG wireframe (SPEC §4)\n"
     "formats: ovm, ovmb, mesh, hybrid, hedra (chosen by extension unless --format is given)\n";
 
 }  // namespace
@@ -30,6 +32,7 @@ int main(int argc, char** argv) {
   try {
     if (cmd == "info") return cmd_info(args);
     if (cmd == "analyze") return cmd_analyze(args);
+    if (cmd == "wireframe") return cmd_wireframe(args);
     if (cmd == "generate") return cmd_generate(args);
     if (cmd == "export-surface") return cmd_export_surface(args);
     if (cmd == "-h" || cmd == "--help" || cmd == "help") {

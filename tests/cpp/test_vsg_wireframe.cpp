@@ -2,6 +2,7 @@
 // and on a grid with a "Y" non-hex column, the three simplification criteria on hand-made
 // complexes, reactivation, determinism under renumbering, and invariants on every real mesh.
 #include <algorithm>
+#include <cstdio>
 #include <array>
 #include <map>
 #include <numeric>
@@ -217,6 +218,48 @@ TEST(VsgWireframe, YColumnSameGeometryAtBothLevels) {
   EXPECT_EQ(a.traces, b.traces);
   EXPECT_EQ(a.hidden, b.hidden);
   EXPECT_EQ(coarse.wireframe_edges_simplified(), fine.wireframe_edges_simplified());
+}
+
+// test_2.HYBRID is the paper's Fig. 5 mesh: a 3×3×3 cube whose bottom holds a "Y" of three
+// prisms around a boundary line of valence 5 (x = 1.5, z = 1, from y = 0 to y = 3). Fig. 5e/f:
+// the box edges are non-important (blue, criterion 1: both ends are all-quad boundary corners);
+// at each end of the valence-5 line, the two traces running along the boundary to the box edges
+// x = 0 and x = 3 are a mutually unique pair (the purple e_i, e_j, criterion 2); the trace down to
+// the bottom and the two up the Y's arms to the top stay. Everything shown is joined through the
+// valence-5 line, so nothing is reactivated (the paper shows two more top segments because its
+// wireframe splits the box edges where traces end; SPEC §4 cuts chains at branch points only).
+TEST(VsgWireframe, PaperFigure5) {
+  HBC_REQUIRE_DATA("hybrid-base-complex/test_2.HYBRID");
+  const Mesh m = test::load_data("hybrid-base-complex/test_2.HYBRID");
+  const BaseComplex bc = base_complex(m, singularity_graph(m));
+  for (const CellComplex& cx : {complex_from_mesh(m), complex_from_base(m, bc)}) {
+    SCOPED_TRACE(complex_level_name(cx.level));
+    const VsgWireframe w = vsg_wireframe(cx);
+    EXPECT_EQ(w.vsg_chains, 13);
+    ASSERT_EQ(w.wireframe_edges(), 23);
+    int box = 0, line5 = 0, pairs = 0, kept = 0;
+    for (size_t i = 0; i < w.size(); ++i) {
+      const auto poly = w.polylines[i];
+      const auto a = m.points.begin() + 3 * poly.front(), b = m.points.begin() + 3 * poly.back();
+      if (w.kind[i] == WireKind::Vsg) {
+        if (w.valence[i] == 1) box += w.non_important[i] == 1;
+        else line5 += w.valence[i] == 5 && w.non_important[i] == 0;
+        continue;
+      }
+      EXPECT_EQ(a[0], 1.5);
+      EXPECT_EQ(a[2], 1.0);
+      const bool horizontal = b[2] == 1.0 && (b[0] == 0.0 || b[0] == 3.0);
+      pairs += horizontal && w.non_important[i] == 2;
+      kept += !horizontal && w.non_important[i] == 0;
+    }
+    EXPECT_EQ(box, 12);
+    EXPECT_EQ(line5, 1);
+    EXPECT_EQ(pairs, 4);
+    EXPECT_EQ(kept, 6);
+    EXPECT_EQ(w.wireframe_edges_simplified(), 7);
+    EXPECT_EQ(std::count(w.reactivated.begin(), w.reactivated.end(), 1), 0);
+    EXPECT_EQ(w.shown_components, 1);
+  }
 }
 
 // A hand-made complex: singular vertex 0 at the end of an irregular edge 0 (0 -> 1, interior
@@ -440,6 +483,38 @@ TEST(VsgWireframe, ColoursSeparateAdjacentClasses) {
   EXPECT_GT(adjacent, 0);
   // Greedy colouring with 8 colours: a clash only where a class already has 8+ coloured neighbours.
   EXPECT_LE(conflicts, adjacent / 20) << conflicts << " of " << adjacent;
+}
+
+std::string run_cli(const std::string& args, int* status) {
+  std::string out;
+  FILE* p = popen((std::string(HBC_CLI) + " " + args + " 2>&1").c_str(), "r");
+  if (!p) return out;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+  *status = pclose(p);
+  return out;
+}
+
+TEST(VsgWireframe, CommandLine) {
+  HBC_REQUIRE_DATA("hybrid-base-complex/test_2.HYBRID");
+  const std::string file = test::data_path("hybrid-base-complex/test_2.HYBRID");
+  int status = -1;
+  std::string out = run_cli("wireframe " + file + " --json", &status);
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("\"wireframe_edges\": 23,"), std::string::npos) << out.substr(0, 600);
+  EXPECT_NE(out.find("\"wireframe_edges_simplified\": 7,"), std::string::npos);
+  EXPECT_NE(out.find("\"level\": \"complex\""), std::string::npos);
+  out = run_cli("wireframe " + file + " --obj --level mesh", &status);
+  EXPECT_EQ(status, 0) << out;
+  size_t lines = 0;
+  for (size_t k = out.find("\nl "); k != std::string::npos; k = out.find("\nl ", k + 1)) ++lines;
+  EXPECT_EQ(lines, 7u);
+  out = run_cli("wireframe " + file + " --level coarse", &status);
+  EXPECT_NE(status, 0);
+  out = run_cli("wireframe " + file + " --sheet 9999", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(out.find("sheets"), std::string::npos) << out;
 }
 
 }  // namespace
