@@ -54,6 +54,19 @@ int32_t orthogonal_edge(const Mesh& m, int32_t c, int32_t f) {
   return -1;
 }
 
+// Membership of units in the current sheet without a search per query: a stamp per unit.
+struct UnitMask {
+  std::vector<int32_t> stamp;
+  int32_t current = 0;
+  explicit UnitMask(size_t nunits) : stamp(nunits, 0) {}
+  template <class Range>
+  void set(const Range& units) {
+    ++current;
+    for (int32_t u : units) stamp[u] = current;
+  }
+  bool operator()(int32_t u) const { return stamp[u] == current; }
+};
+
 void sort_unique(std::vector<int32_t>& v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -61,8 +74,9 @@ void sort_unique(std::vector<int32_t>& v) {
 
 }  // namespace
 
-SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curves,
-                          const std::vector<int32_t>& units) {
+namespace {
+
+SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const UnitMask& in_units) {
   SheetClass k;
   // (end vertex, curve) for every open curve.
   std::vector<std::pair<int32_t, int32_t>> ends;
@@ -73,7 +87,6 @@ SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curv
     if (b != a) ends.push_back({b, c});
   }
   std::sort(ends.begin(), ends.end());
-  auto in_units = [&](int32_t u) { return std::binary_search(units.begin(), units.end(), u); };
   for (size_t i = 0; i < ends.size();) {
     size_t j = i;
     while (j < ends.size() && ends[j].first == ends[i].first) ++j;
@@ -134,10 +147,19 @@ SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curv
   return k;
 }
 
+}  // namespace
+
+SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curves,
+                          const std::vector<int32_t>& units) {
+  UnitMask mask(d.unit_cells.rows());
+  mask.set(units);
+  return classify(d, curves, mask);
+}
+
 Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
   Sheets s;
   s.level = d.level;
-  const size_t nc = m.num_cells(), ne = m.num_edges();
+  const size_t nc = m.num_cells(), ne = m.num_edges(), nunits = d.unit_cells.rows();
   // Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
   // orthogonal directions of two hex cells across a joining face.
   UnionFind uf(ne);
@@ -155,60 +177,97 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
     uf.unite(orthogonal_edge(m, fc[0], static_cast<int32_t>(f)), orthogonal_edge(m, fc[1], static_cast<int32_t>(f)));
   }
 
-  // (class root, unit) and (class root, curve) pairs.
-  std::vector<std::pair<int32_t, int32_t>> class_units, class_curves;
+  // Dense class ids in order of first appearance over the cells; a hex cell's three directions
+  // are the classes of its first face's two edge directions and of the edge across that face.
+  std::vector<int32_t> class_of_root(ne, -1);
+  int32_t nclass = 0;
+  Csr<int32_t> cell_classes;  // (class, unit) pairs as a CSR keyed by class after the transpose
+  std::vector<std::array<int32_t, 3>> dirs(nc, {-1, -1, -1});
   for (size_t c = 0; c < nc; ++c) {
-    const int32_t u = d.cell_unit[c];
-    if (u < 0) continue;
-    for (int32_t e : m.cell_edges[c]) class_units.push_back({uf.find(e), u});
+    if (d.cell_unit[c] < 0) continue;
+    const int32_t f = m.cell_faces[c][0];
+    const int32_t reps[3] = {m.face_edges[f][0], m.face_edges[f][1], orthogonal_edge(m, static_cast<int32_t>(c), f)};
+    for (int k = 0; k < 3; ++k) {
+      const int32_t r = uf.find(reps[k]);
+      if (class_of_root[r] < 0) class_of_root[r] = nclass++;
+      dirs[c][k] = class_of_root[r];
+    }
   }
-  std::sort(class_units.begin(), class_units.end());
-  class_units.erase(std::unique(class_units.begin(), class_units.end()), class_units.end());
-  for (size_t k = 0; k < d.curve_edges.rows(); ++k) class_curves.push_back({uf.find(d.curve_edges[k][0]), static_cast<int32_t>(k)});
-  std::sort(class_curves.begin(), class_curves.end());
+  // Units of each class (sorted, distinct) by counting sort.
+  Csr<int32_t> class_units;
+  class_units.offsets.assign(static_cast<size_t>(nclass) + 1, 0);
+  for (size_t c = 0; c < nc; ++c)
+    if (dirs[c][0] >= 0)
+      for (int32_t k : dirs[c]) ++class_units.offsets[k + 1];
+  for (int32_t k = 0; k < nclass; ++k) class_units.offsets[k + 1] += class_units.offsets[k];
+  class_units.items.resize(class_units.offsets.back());
+  {
+    std::vector<int32_t> fill(class_units.offsets.begin(), class_units.offsets.end() - 1);
+    for (size_t c = 0; c < nc; ++c)
+      if (dirs[c][0] >= 0)
+        for (int32_t k : dirs[c]) class_units.items[fill[k]++] = d.cell_unit[c];
+  }
+  // Curves of each class.
+  Csr<int32_t> class_curves;
+  {
+    Csr<int32_t> curve_class;
+    for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
+      const int32_t cls = class_of_root[uf.find(d.curve_edges[k][0])];
+      if (cls >= 0) curve_class.items.push_back(cls);
+      curve_class.offsets.push_back(static_cast<int32_t>(curve_class.items.size()));
+    }
+    class_curves = transpose(curve_class, static_cast<size_t>(nclass));
+  }
 
   // Each class split into face-connected groups of units: one sheet per group.
   struct Group {
     std::vector<int32_t> units, curves;
   };
   std::vector<Group> groups;
-  const size_t nunits = d.unit_cells.rows();
   std::vector<int32_t> stamp(nunits, -1), seen(nunits, -1), stack;
-  size_t cc = 0;
-  for (size_t i = 0; i < class_units.size();) {
-    size_t j = i;
-    const int32_t root = class_units[i].first;
-    while (j < class_units.size() && class_units[j].first == root) ++j;
-    for (size_t p = i; p < j; ++p) stamp[class_units[p].second] = root;
-    auto lo = std::lower_bound(class_curves.begin(), class_curves.end(), std::make_pair(root, int32_t{-1}));
-    for (size_t p = i; p < j; ++p) {
-      const int32_t u0 = class_units[p].second;
-      if (seen[u0] == root) continue;
+  std::vector<size_t> class_groups(static_cast<size_t>(nclass) + 1, 0);  // groups of class k: [k], [k+1])
+  for (int32_t k = 0; k < nclass; ++k) {
+    class_groups[k] = groups.size();
+    for (int32_t u : class_units[k]) stamp[u] = k;
+    for (int32_t u0 : class_units[k]) {
+      if (seen[u0] == k) continue;
       Group g;
       stack.assign(1, u0);
-      seen[u0] = root;
+      seen[u0] = k;
       while (!stack.empty()) {
         const int32_t u = stack.back();
         stack.pop_back();
         g.units.push_back(u);
         for (int32_t w : d.unit_adjacency[u])
-          if (stamp[w] == root && seen[w] != root) {
-            seen[w] = root;
+          if (stamp[w] == k && seen[w] != k) {
+            seen[w] = k;
             stack.push_back(w);
           }
       }
       std::sort(g.units.begin(), g.units.end());
-      for (auto it = lo; it != class_curves.end() && it->first == root; ++it) {
-        for (int32_t u : d.curve_units[it->second])
-          if (std::binary_search(g.units.begin(), g.units.end(), u)) {
-            g.curves.push_back(it->second);
-            break;
-          }
-      }
       groups.push_back(std::move(g));
     }
-    i = j;
-    ++cc;
+  }
+  class_groups[nclass] = groups.size();
+  // Curves of a class go to the groups of the units holding them (group of a unit per class).
+  {
+    std::vector<int32_t> unit_group(nunits, -1);
+    for (int32_t k = 0; k < nclass; ++k) {
+      for (size_t g = class_groups[k]; g < class_groups[k + 1]; ++g)
+        for (int32_t u : groups[g].units) unit_group[u] = static_cast<int32_t>(g);
+      for (int32_t u : class_units[k]) stamp[u] = k;
+      for (int32_t curve : class_curves[k]) {
+        int32_t last = -1;
+        for (int32_t u : d.curve_units[curve]) {
+          const int32_t g = stamp[u] == k ? unit_group[u] : -1;
+          if (g >= 0 && g != last) {
+            auto& cv = groups[static_cast<size_t>(g)].curves;
+            if (cv.empty() || cv.back() != curve) cv.push_back(curve);
+            last = g;
+          }
+        }
+      }
+    }
   }
   std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
     if (a.units[0] != b.units[0]) return a.units[0] < b.units[0];
@@ -216,8 +275,10 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
     return ca < cb;
   });
 
+  UnitMask mask(nunits);
   std::vector<int32_t> buf;
-  for (const Group& g : groups) {
+  for (Group& g : groups) {
+    sort_unique(g.curves);
     s.sheet_units.push_row(g.units.begin(), g.units.end());
     buf.clear();
     for (int32_t u : g.units)
@@ -235,7 +296,8 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
       for (int32_t c : d.curve_non_hex_cells[k]) buf.push_back(c);
     sort_unique(buf);
     s.sheet_non_hex_cells.push_row(buf.begin(), buf.end());
-    s.classes.push_back(classify_sheet(d, g.curves, g.units));
+    mask.set(g.units);
+    s.classes.push_back(classify(d, g.curves, mask));
   }
   return s;
 }
@@ -244,62 +306,71 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
   Subsheets out;
   out.sheet = sheet;
   auto curves = sheets.sheet_curves[sheet];
-  auto units = sheets.sheet_units[sheet];
-  auto in_sheet = [&](int32_t c) { return std::binary_search(curves.begin(), curves.end(), c); };
-  auto in_units = [&](int32_t u) { return std::binary_search(units.begin(), units.end(), u); };
+  const size_t n = curves.size();
+  UnitMask in_units(d.unit_cells.rows()), in_sub(d.unit_cells.rows());
+  in_units.set(sheets.sheet_units[sheet]);
+  auto index_of = [&](int32_t c) -> int32_t {
+    auto it = std::lower_bound(curves.begin(), curves.end(), c);
+    return (it != curves.end() && *it == c) ? static_cast<int32_t>(it - curves.begin()) : -1;
+  };
+  // Curve ends as local vertex ids, and per local vertex the taken curves ending there.
+  std::vector<int32_t> verts;
+  for (int32_t c : curves)
+    if (d.curve_ends[c][0] >= 0) {
+      verts.push_back(d.curve_ends[c][0]);
+      verts.push_back(d.curve_ends[c][1]);
+    }
+  sort_unique(verts);
+  auto local = [&](int32_t v) {
+    return static_cast<size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
+  };
+  std::vector<std::vector<int32_t>> taken_at(verts.size());
   // Two curves conflict when they share an end inside one unit of the sheet.
-  auto conflict = [&](int32_t a, int32_t b) {
-    const auto ea = d.curve_ends[a], eb = d.curve_ends[b];
-    if (ea[0] < 0 || eb[0] < 0) return false;
-    if (!(ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1])) return false;
-    for (int32_t u : d.curve_units[a])
-      if (in_units(u) && contains(d.curve_units[b], u)) return true;
+  auto conflicts = [&](int32_t b) {
+    const auto eb = d.curve_ends[b];
+    if (eb[0] < 0) return false;
+    for (int32_t v : {eb[0], eb[1]})
+      for (int32_t c : taken_at[local(v)])
+        for (int32_t u : d.curve_units[b])
+          if (in_units(u) && contains(d.curve_units[c], u)) return true;
     return false;
   };
-  std::vector<uint8_t> used(curves.size(), 0);
-  auto index_of = [&](int32_t c) {
-    return static_cast<size_t>(std::lower_bound(curves.begin(), curves.end(), c) - curves.begin());
-  };
-  auto emit = [&](const std::vector<int32_t>& kept, const std::vector<int32_t>& subunits) {
-    out.curves.push_row(kept.begin(), kept.end());
-    out.units.push_row(subunits.begin(), subunits.end());
-    std::vector<int32_t> cells;
-    for (int32_t u : subunits)
-      for (int32_t c : d.unit_cells[u]) cells.push_back(c);
-    sort_unique(cells);
-    out.cells.push_row(cells.begin(), cells.end());
-    out.classes.push_back(classify_sheet(d, kept, subunits));
-  };
+  std::vector<uint8_t> used(n, 0);
   std::vector<int32_t> taken, queue, banned, subunits, kept;
   size_t next_seed = 0;
   for (;;) {
-    while (next_seed < curves.size() && used[next_seed]) ++next_seed;
-    if (next_seed == curves.size()) break;
+    while (next_seed < n && used[next_seed]) ++next_seed;
+    if (next_seed == n) break;
     const int32_t seed = curves[next_seed];
-    taken.assign(1, seed);
-    used[next_seed] = 1;
+    taken.clear();
     queue.assign(1, seed);
     banned.clear();
+    auto take = [&](int32_t c) {
+      used[static_cast<size_t>(index_of(c))] = 1;
+      taken.push_back(c);
+      if (d.curve_ends[c][0] >= 0) {
+        taken_at[local(d.curve_ends[c][0])].push_back(c);
+        if (d.curve_ends[c][1] != d.curve_ends[c][0]) taken_at[local(d.curve_ends[c][1])].push_back(c);
+      }
+    };
+    take(seed);
     for (size_t q = 0; q < queue.size(); ++q) {
       for (int32_t b : d.curve_parallels[queue[q]]) {
-        if (!in_sheet(b) || used[index_of(b)]) continue;
-        bool ok = true;
-        for (int32_t c : taken)
-          if (conflict(b, c)) {
-            ok = false;
-            break;
-          }
-        if (!ok) {
+        const int32_t ib = index_of(b);
+        if (ib < 0 || used[static_cast<size_t>(ib)]) continue;
+        if (conflicts(b)) {
           // The sheet turns here: the units around the rejected curve belong to another subsheet.
           for (int32_t u : d.curve_units[b])
             if (in_units(u)) banned.push_back(u);
           continue;
         }
-        used[index_of(b)] = 1;
-        taken.push_back(b);
+        take(b);
         queue.push_back(b);
       }
     }
+    for (int32_t c : taken)
+      if (d.curve_ends[c][0] >= 0)
+        for (int32_t v : {d.curve_ends[c][0], d.curve_ends[c][1]}) taken_at[local(v)].clear();
     sort_unique(taken);
     sort_unique(banned);
     // Cells: units touched by the subsheet's curves, less those where it turned. Curves left
@@ -314,7 +385,7 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
           any = true;
         }
       if (any) kept.push_back(c);
-      else if (c != seed) used[index_of(c)] = 0;
+      else if (c != seed) used[static_cast<size_t>(index_of(c))] = 0;
     }
     sort_unique(subunits);
     if (kept.empty()) {
@@ -325,7 +396,15 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
         if (in_units(u)) subunits.push_back(u);
       sort_unique(subunits);
     }
-    emit(kept, subunits);
+    out.curves.push_row(kept.begin(), kept.end());
+    out.units.push_row(subunits.begin(), subunits.end());
+    std::vector<int32_t> cells;
+    for (int32_t u : subunits)
+      for (int32_t c : d.unit_cells[u]) cells.push_back(c);
+    sort_unique(cells);
+    out.cells.push_row(cells.begin(), cells.end());
+    in_sub.set(subunits);
+    out.classes.push_back(classify(d, kept, in_sub));
     next_seed = 0;
   }
   return out;
