@@ -42,6 +42,14 @@ Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
       a.has_subsheets = true;
     }
   }
+  if (opt.wireframe) {
+    t = std::chrono::steady_clock::now();
+    a.wire_complex = opt.wireframe_level == ComplexLevel::Complex ? complex_from_base(mesh, a.complex)
+                                                                  : complex_from_mesh(mesh);
+    a.wireframe = vsg_wireframe(a.wire_complex, opt.wireframe_options);
+    a.timings.vsg_wireframe = since(t);
+    a.has_wireframe = true;
+  }
   return a;
 }
 
@@ -70,6 +78,11 @@ Stats compute_stats(const Mesh& m, const Analysis& a) {
     s.sheets_type3 = static_cast<int64_t>(a.sheets.count(SheetType::Type3));
     const Subsheets* big = a.subsheets_of(a.largest_self_intersecting);
     if (a.has_subsheets) s.subsheets_of_largest_self_intersecting = big ? static_cast<int64_t>(big->size()) : 0;
+  }
+  if (a.has_wireframe) {
+    s.vsg_edges = a.wireframe.vsg_edges;
+    s.wireframe_edges = a.wireframe.wireframe_edges();
+    s.wireframe_edges_simplified = a.wireframe.wireframe_edges_simplified();
   }
   s.timings = a.timings;
   return s;

@@ -125,24 +125,40 @@ SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, co
   k.type = k.type3 ? SheetType::Type3 : k.type2 ? SheetType::Type2 : k.type1 ? SheetType::Type1 : SheetType::Perfect;
 
   // Maximum cardinality matching (Edmonds) on (curve ends, curves): the ends it leaves uncovered
-  // are what the figures highlight.
+  // are what the figures highlight. Only the connected pieces of that graph holding a shared end
+  // can leave an end uncovered (any other piece is a single curve), so only those go to Boost.
   if (k.type != SheetType::Perfect) {
     std::vector<int32_t> verts;
     for (auto [v, c] : ends) verts.push_back(v);
     sort_unique(verts);
-    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
-    Graph g(verts.size());
     auto local = [&](int32_t v) {
       return static_cast<size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
     };
+    UnionFind pieces(verts.size());
     for (int32_t c : curves) {
       const auto [a, b] = d.curve_ends[c];
-      if (a >= 0 && a != b) boost::add_edge(local(a), local(b), g);
+      if (a >= 0 && a != b) pieces.unite(static_cast<int32_t>(local(a)), static_cast<int32_t>(local(b)));
     }
-    std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(verts.size());
-    boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
+    std::vector<uint8_t> shared_piece(verts.size(), 0);
+    for (int32_t v : k.shared_vertices) shared_piece[pieces.find(static_cast<int32_t>(local(v)))] = 1;
+    std::vector<int32_t> gid(verts.size(), -1), gverts;
     for (size_t i = 0; i < verts.size(); ++i)
-      if (mate[i] == boost::graph_traits<Graph>::null_vertex()) k.unmatched_vertices.push_back(verts[i]);
+      if (shared_piece[pieces.find(static_cast<int32_t>(i))]) {
+        gid[i] = static_cast<int32_t>(gverts.size());
+        gverts.push_back(verts[i]);
+      }
+    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+    Graph g(gverts.size());
+    for (int32_t c : curves) {
+      const auto [a, b] = d.curve_ends[c];
+      if (a < 0 || a == b) continue;
+      const int32_t la = gid[local(a)], lb = gid[local(b)];
+      if (la >= 0) boost::add_edge(static_cast<size_t>(la), static_cast<size_t>(lb), g);
+    }
+    std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(gverts.size());
+    if (!gverts.empty()) boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
+    for (size_t i = 0; i < gverts.size(); ++i)
+      if (mate[i] == boost::graph_traits<Graph>::null_vertex()) k.unmatched_vertices.push_back(gverts[i]);
   }
   return k;
 }

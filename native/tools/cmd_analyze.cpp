@@ -13,13 +13,18 @@ int cmd_analyze(const Args& args_in) {
   const bool csv = take_flag(args, "--csv");
   AnalysisOptions opt;
   if (take_flag(args, "--no-sheets")) opt.sheets = false;
+  if (take_flag(args, "--no-wireframe")) opt.wireframe = false;
+  if (auto rho = take_option(args, "--rho")) opt.wireframe_options.rho = std::stod(*rho);
   if (auto level = take_option(args, "--level")) {
-    if (*level == "mesh") opt.sheet_level = SheetLevel::Mesh;
+    if (*level == "mesh") {
+      opt.sheet_level = SheetLevel::Mesh;
+      opt.wireframe_level = ComplexLevel::Mesh;
+    }
     else if (*level != "complex") throw std::invalid_argument("--level takes complex or mesh");
   }
   const Format format = take_format(args);
   if (args.size() != 1)
-    throw std::invalid_argument("usage: hbc analyze FILE [--json] [--csv] [--level complex|mesh] [--no-sheets] [--format F]");
+    throw std::invalid_argument("usage: hbc analyze FILE [--json] [--csv] [--level complex|mesh] [--rho R] [--no-sheets] [--no-wireframe] [--format F]");
   double t_load = 0;
   const Mesh m = load_for_cli(args[0], format, &t_load);
   Analysis a = analyze(m, opt);

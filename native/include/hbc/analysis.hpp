@@ -5,9 +5,11 @@
 #include <vector>
 
 #include "hbc/base_complex.hpp"
+#include "hbc/cell_complex.hpp"
 #include "hbc/mesh.hpp"
 #include "hbc/sheets.hpp"
 #include "hbc/singularity_graph.hpp"
+#include "hbc/vsg_wireframe.hpp"
 
 namespace hbc {
 
@@ -15,6 +17,9 @@ struct AnalysisOptions {
   bool sheets = true;     // sheets and their classification
   bool subsheets = true;  // decomposition of every self-intersecting sheet (needs sheets)
   SheetLevel sheet_level = SheetLevel::Complex;
+  bool wireframe = true;  // whole-mesh VSG wireframe
+  ComplexLevel wireframe_level = ComplexLevel::Complex;
+  WireframeOptions wireframe_options;
 };
 
 // Wall-clock seconds per stage; `load` is filled by whoever loaded the mesh.
@@ -29,9 +34,12 @@ struct Analysis {
   Sheets sheets;
   std::vector<Subsheets> subsheets;        // one per self-intersecting sheet, in sheet order
   int32_t largest_self_intersecting = -1;  // sheet id, or -1
+  CellComplex wire_complex;                // the view the whole-mesh wireframe was computed on
+  VsgWireframe wireframe;
   Timings timings;
   bool has_sheets = false;     // the sheet stage ran
   bool has_subsheets = false;  // the subsheet stage ran
+  bool has_wireframe = false;  // the wireframe stage ran
 
   // The decomposition of sheet s, or nullptr when s is not self-intersecting.
   const Subsheets* subsheets_of(int32_t s) const;
