@@ -1,6 +1,11 @@
 // Synthetic meshes: counts derived by hand (in the comments), edge valences, orientation,
 // determinism. Every mesh here goes through build_mesh, which checks conformity.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -333,6 +338,52 @@ TEST(Generate, BadArgumentsThrow) {
   EXPECT_THROW(generate_split(3, 3, 3, SplitKind::Tets, {&outside, 1}), std::invalid_argument);
   EXPECT_THROW(generate_sector(2, 1, 1), std::invalid_argument);
   EXPECT_THROW(generate_cylinder(0, 1), std::invalid_argument);
+}
+
+
+// Runs `hbc ARGS` quietly; returns the exit status.
+int run_cli(const std::string& args) {
+  const std::string cmd = std::string("'") + HBC_CLI + "' " + args + " >/dev/null 2>&1";
+  const int raw = std::system(cmd.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
+  ASSERT_TRUE(std::filesystem::exists(HBC_CLI)) << HBC_CLI;
+  const auto dir = std::filesystem::temp_directory_path() / ("hbc_gen_cli_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string d = dir.string();
+
+  ASSERT_EQ(run_cli("generate grid --size 2 3 4 --spacing 0.5 -o '" + d + "/g.mesh'"), 0);
+  const Mesh g = load_mesh(d + "/g.mesh");
+  expect_counts(g, {60, 133, 98, 24, 52});
+  EXPECT_NEAR(expect_positive(g), 24 * 0.125, 1e-9);
+
+  // Tets make 7-face polyhedra, which only OVM can hold; MEDIT refuses them (exit 2).
+  ASSERT_EQ(run_cli("generate split --size 4 4 4 --split tets --random 5 --seed 9 -o '" + d + "/t.ovm'"), 0);
+  const Mesh t = load_mesh(d + "/t.ovm");
+  const Mesh want = build_mesh(generate_split(4, 4, 4, SplitKind::Tets, random_cells(4, 4, 4, 5, 9)));
+  expect_counts(t, counts(want));
+  EXPECT_EQ(types(t), types(want));
+  EXPECT_EQ(run_cli("generate split --size 3 3 3 --split tets --cells 1,1,1 -o '" + d + "/t.mesh'"), 1);
+
+  ASSERT_EQ(run_cli("generate split --size 3 3 3 --split prisms --axis y --cells '0,0,0;2,2,2' -o '" + d + "/p.mesh'"), 0);
+  EXPECT_EQ(types(load_mesh(d + "/p.mesh"))[CellType::Prism], 12u);
+  ASSERT_EQ(run_cli("generate sector --valence 5 --rings 2 --layers 2 -o '" + d + "/s.mesh'"), 0);
+  expect_counts(load_mesh(d + "/s.mesh"), counts(build_mesh(generate_sector(5, 2, 2))));
+  ASSERT_EQ(run_cli("generate cylinder --radius-cells 3 --layers 2 -o '" + d + "/c.ovm'"), 0);
+  EXPECT_EQ(types(load_mesh(d + "/c.ovm")), types(build_mesh(generate_cylinder(3, 2))));
+
+  // Usage errors: exit 1.
+  EXPECT_EQ(run_cli("generate grid --size 2 3 -o '" + d + "/x.mesh'"), 1);
+  EXPECT_EQ(run_cli("generate grid --size 2 3 4"), 1);
+  EXPECT_EQ(run_cli("generate blob -o '" + d + "/x.mesh'"), 1);
+  EXPECT_EQ(run_cli("generate split --size 3 3 3 --split cubes --cells 1,1,1 -o '" + d + "/x.mesh'"), 1);
+  EXPECT_EQ(run_cli("generate split --size 3 3 3 --split tets --cells 3,0,0 -o '" + d + "/x.mesh'"), 1);
+  EXPECT_EQ(run_cli("generate split --size 3 3 3 --split tets -o '" + d + "/x.mesh'"), 1);
+  EXPECT_EQ(run_cli("generate sector --valence 2 --rings 1 --layers 1 -o '" + d + "/x.mesh'"), 1);
+  EXPECT_FALSE(std::filesystem::exists(d + "/x.mesh"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

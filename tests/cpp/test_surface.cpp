@@ -2,6 +2,7 @@
 // round trip through the files OpenMesh writes.
 #include <OpenMesh/Core/IO/MeshIO.hh>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -152,6 +153,34 @@ TEST(Surface, RejectsUnknownExtension) {
   FaceSelection bad = boundary_selection(m);
   bad.ids.pop_back();
   EXPECT_THROW(build_surface(m, bad), std::invalid_argument);
+}
+
+
+TEST(SurfaceCli, ExportsTheBoundary) {
+  ASSERT_TRUE(fs::exists(HBC_CLI)) << HBC_CLI;
+  const fs::path dir = temp_dir();
+  write_mesh(build_mesh(generate_grid(2, 3, 4)), (dir / "g.mesh").string());
+  auto run = [&](const std::string& args) {
+    const std::string cmd = std::string("'") + HBC_CLI + "' " + args + " >/dev/null 2>&1";
+    const int raw = std::system(cmd.c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  };
+  const std::string in = "'" + (dir / "g.mesh").string() + "'";
+  ASSERT_EQ(run("export-surface " + in + " -o '" + (dir / "g.ply").string() + "' --what boundary"), 0);
+  const SurfaceMesh r = read_back(dir / "g.ply", true);
+  EXPECT_EQ(r.n_faces(), 52u);
+  EXPECT_EQ(r.n_vertices(), 54u);
+  expect_closed(r);
+  EXPECT_NEAR(enclosed_volume(r), 24.0, 1e-4);
+  const auto hex = palette_color(static_cast<int>(CellType::Hex));
+  for (auto fh : r.faces()) EXPECT_EQ(r.color(fh), SurfaceMesh::Color(hex[0], hex[1], hex[2]));
+
+  EXPECT_EQ(run("export-surface " + in + " -o '" + (dir / "x.off").string() + "' --what sheets"), 1);
+  EXPECT_EQ(run("export-surface " + in + " -o '" + (dir / "x.stl").string() + "'"), 1);
+  EXPECT_EQ(run("export-surface " + in), 1);
+  EXPECT_EQ(run("export-surface '" + (dir / "missing.mesh").string() + "' -o '" + (dir / "x.off").string() + "'"), 2);
+  EXPECT_FALSE(fs::exists(dir / "x.off"));
+  fs::remove_all(dir);
 }
 
 }  // namespace
