@@ -32,18 +32,19 @@ done
 
 /usr/bin/python3 - "${results[@]}" <<'PY'
 import json, sys
-print("| benchmark | cells | load+build (s) | parse (s) | build (s) | cells/s | peak RSS (MB) | file (MB) |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|")
+print("| benchmark | cells | load+build wall (s) | CPU (s) | parse wall (s) | build wall (s) | cells/s (CPU) | peak RSS (MB) | file (MB) |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
 for path in sys.argv[1:]:
     data = json.load(open(path))
     for b in data["benchmarks"]:
         if b.get("error_occurred"):
-            print(f"| {b['name']} | error: {b.get('error_message', '?')} |||||||")
+            print(f"| {b['name']} | error: {b.get('error_message', '?')} ||||||||")
             continue
         scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b["time_unit"]]
-        print(f"| {b['name']} | {int(b['cells'])} | {b['real_time'] * scale:.3f} | {b['parse_s']:.3f} | "
+        print(f"| {b['name']} | {int(b['cells'])} | {b['real_time'] * scale:.3f} | {b['cpu_time'] * scale:.3f} | {b['parse_s']:.3f} | "
               f"{b['build_s']:.3f} | {b['cells_per_second']:.3g} | {b['peak_rss_MB']:.0f} | {b['file_MB']:.1f} |")
 print()
 print(f"host: {data['context'].get('host_name', '?')}, {data['context'].get('num_cpus', '?')} CPUs, "
-      f"single-threaded load; peak RSS per process (one case per process).")
+      f"load average {open('/proc/loadavg').read().split()[0]}; single-threaded load; wall times grow when other "
+      f"processes share the cores, CPU time less so; peak RSS per process (one case per process).")
 PY
