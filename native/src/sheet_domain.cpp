@@ -21,26 +21,37 @@ bool share_end(const std::array<int32_t, 2>& a, const std::array<int32_t, 2>& b)
 // curves of each quad.
 Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<std::array<int32_t, 2>>& ends,
                                   size_t ncurves) {
-  std::vector<std::pair<int32_t, int32_t>> pairs;
-  for (size_t q = 0; q < quads.rows(); ++q) {
-    auto c = quads[q];
-    if (c.size() != 4) continue;
-    for (size_t i = 0; i < 4; ++i)
-      for (size_t j = i + 1; j < 4; ++j) {
-        if (ends[c[i]][0] < 0 || ends[c[j]][0] < 0 || share_end(ends[c[i]], ends[c[j]])) continue;
-        pairs.push_back({c[i], c[j]});
-        pairs.push_back({c[j], c[i]});
-      }
-  }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  // Count, fill, then sort and dedupe each (short) row: no global sort of all pairs.
+  auto for_each_pair = [&](auto&& fn) {
+    for (size_t q = 0; q < quads.rows(); ++q) {
+      auto c = quads[q];
+      if (c.size() != 4) continue;
+      for (size_t i = 0; i < 4; ++i)
+        for (size_t j = i + 1; j < 4; ++j) {
+          if (ends[c[i]][0] < 0 || ends[c[j]][0] < 0 || share_end(ends[c[i]], ends[c[j]])) continue;
+          fn(c[i], c[j]);
+          fn(c[j], c[i]);
+        }
+    }
+  };
   Csr<int32_t> out;
   out.offsets.assign(ncurves + 1, 0);
-  for (auto [a, b] : pairs) ++out.offsets[a + 1];
+  for_each_pair([&](int32_t a, int32_t) { ++out.offsets[a + 1]; });
   for (size_t i = 0; i < ncurves; ++i) out.offsets[i + 1] += out.offsets[i];
-  out.items.reserve(pairs.size());
-  for (auto [a, b] : pairs) out.items.push_back(b);
-  return out;
+  out.items.resize(out.offsets.back());
+  std::vector<int32_t> fill(out.offsets.begin(), out.offsets.end() - 1);
+  for_each_pair([&](int32_t a, int32_t b) { out.items[fill[a]++] = b; });
+  // Dedupe rows in place, then compact.
+  Csr<int32_t> packed;
+  packed.offsets.reserve(ncurves + 1);
+  packed.items.reserve(out.items.size());
+  for (size_t k = 0; k < ncurves; ++k) {
+    auto r = out.row(k);
+    std::sort(r.begin(), r.end());
+    auto last = std::unique(r.begin(), r.end());
+    packed.push_row(std::span<const int32_t>(r.data(), static_cast<size_t>(last - r.begin())));
+  }
+  return packed;
 }
 
 }  // namespace

@@ -156,7 +156,12 @@ SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, co
       if (la >= 0) boost::add_edge(static_cast<size_t>(la), static_cast<size_t>(lb), g);
     }
     std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(gverts.size());
-    if (!gverts.empty()) boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
+    // Edmonds' augmenting paths from Boost's extra-greedy start, without its optional self-check (it
+    // re-runs a search per call and the result is covered by tests instead).
+    if (!gverts.empty())
+      boost::matching<Graph, decltype(&mate[0]), boost::property_map<Graph, boost::vertex_index_t>::type,
+                      boost::edmonds_augmenting_path_finder, boost::extra_greedy_matching, boost::no_matching_verifier>(
+          g, &mate[0], boost::get(boost::vertex_index, g));
     for (size_t i = 0; i < gverts.size(); ++i)
       if (mate[i] == boost::graph_traits<Graph>::null_vertex()) k.unmatched_vertices.push_back(gverts[i]);
   }
