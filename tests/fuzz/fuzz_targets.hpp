@@ -1,0 +1,88 @@
+#pragma once
+// The code paths the fuzzers drive, shared with tests/cpp/test_fuzz_regressions.cpp so that every
+// kept crash input is replayed through exactly what crashed. Each function accepts any bytes; the
+// only exception allowed out is hbc::InputError (the readers' verdict on bad input). Anything else
+// (another exception, a crash, UB, a leak) is a finding: the fuzzers turn it into an abort.
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "hbc/analysis.hpp"
+#include "hbc/io.hpp"
+#include "hbc/mesh.hpp"
+
+namespace hbc::fuzz {
+
+inline MeshInput read_as(Format f, std::string_view bytes) {
+  switch (f) {
+    case Format::Ovm: return read_ovm(bytes, "fuzz");
+    case Format::Ovmb: return read_ovmb(bytes, "fuzz");
+    case Format::Medit: return read_medit(bytes, "fuzz");
+    case Format::Hybrid: return read_hybrid(bytes, "fuzz");
+    case Format::Hedra: return read_hedra(bytes, "fuzz");
+    case Format::Auto: break;
+  }
+  std::abort();
+}
+
+// The analyze harness's first byte picks the reader, so one corpus mixes all five formats.
+inline Format format_of_selector(uint8_t b) {
+  constexpr Format kFormats[5] = {Format::Ovm, Format::Ovmb, Format::Medit, Format::Hybrid, Format::Hedra};
+  return kFormats[b % 5];
+}
+
+// A failed invariant on a mesh that was accepted: abort so the fuzzer records the input.
+inline void check(bool ok) {
+  if (!ok) std::abort();
+}
+
+// read_X + build_mesh. Returns true when the bytes were accepted.
+inline bool read_and_build(Format f, std::string_view bytes) {
+  try {
+    Mesh m = build_mesh(read_as(f, bytes));
+    // What build_mesh promises about an accepted mesh, cheap enough to check on every input.
+    check(m.face_cells.size() == m.num_faces() && m.cell_type.size() == m.num_cells());
+    for (const auto& fc : m.face_cells)
+      check(fc[0] >= 0 && static_cast<size_t>(fc[0]) < m.num_cells() && fc[1] < static_cast<int32_t>(m.num_cells()));
+    for (const auto& e : m.edge_verts)
+      check(e[0] >= 0 && e[0] < e[1] && static_cast<size_t>(e[1]) < m.num_vertices());
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// Selector byte, then a file; the whole pipeline on whatever parses, plus the SPEC invariants that
+// hold for every mesh (every cell in exactly one component, non-hex cells alone).
+inline bool load_and_analyze(std::string_view data) {
+  if (data.empty()) return false;
+  const Format f = format_of_selector(static_cast<uint8_t>(data[0]));
+  Mesh m;
+  try {
+    m = build_mesh(read_as(f, data.substr(1)));
+  } catch (const InputError&) {
+    return false;
+  }
+  const Analysis a = analyze(m);
+  const BaseComplex& bc = a.complex;
+  const size_t nc = m.num_cells();
+  check(bc.cell_component.size() == nc);
+  size_t listed = 0;
+  for (size_t k = 0; k < bc.num_components(); ++k) {
+    for (int32_t c : bc.component_cells[k]) {
+      check(c >= 0 && static_cast<size_t>(c) < nc && bc.cell_component[c] == static_cast<int32_t>(k));
+      check(m.is_hex(c) == (bc.component_kind[k] != ComponentKind::NonHex));
+      ++listed;
+    }
+    if (bc.component_kind[k] == ComponentKind::NonHex) check(bc.component_cells.count(k) == 1);
+  }
+  check(listed == nc);
+  for (size_t c = 0; c < nc; ++c)
+    if (!m.is_hex(c)) check(bc.component_kind[bc.cell_component[c]] == ComponentKind::NonHex);
+  const Stats s = compute_stats(m, a);
+  check(s.cells == static_cast<int64_t>(nc) && s.components == static_cast<int64_t>(bc.num_components()));
+  return true;
+}
+
+}  // namespace hbc::fuzz

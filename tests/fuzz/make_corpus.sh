@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Seed corpora for the fuzzers: the small real meshes (< 100 KB) from the shared data folder plus
+# small meshes written by `hbc generate`, one folder per harness. Never writes into the repository.
+# usage: tests/fuzz/make_corpus.sh HBC_BINARY OUT_DIR [DATA_DIR]
+set -euo pipefail
+HBC=$1
+OUT=$2
+DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
+HERE=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,analyze}
+GEN=$(mktemp -d)
+trap 'rm -rf "$GEN"' EXIT
+
+# Real files, by extension, when small enough to mutate quickly.
+while IFS= read -r f; do
+  case "${f,,}" in
+    *.ovmb) dir=ovmb ;;
+    *.ovm) dir=ovm ;;
+    *.mesh) dir=medit ;;
+    *.hybrid) dir=hybrid ;;
+    *.hedra) dir=hedra ;;
+    *) continue ;;
+  esac
+  cp "$f" "$OUT/$dir/real_$(basename "$f")"
+done < <(find "$DATA" -type f -size -100k | sort)
+
+# Generated meshes: every generator, every split kind, sizes that stay a few KB. Grids and
+# pyramid/prism splits go to MEDIT and OVM; tet splits hold 7-face polyhedra MEDIT cannot express.
+gen() {  # name ext args...
+  local name=$1 ext=$2
+  shift 2
+  "$HBC" generate "$@" -o "$GEN/$name.$ext" >/dev/null
+}
+for ext in mesh ovm; do
+  gen grid111 $ext grid --size 1 1 1
+  gen grid222 $ext grid --size 2 2 2
+  gen grid321 $ext grid --size 3 2 1
+  gen pyr $ext split --size 2 2 2 --split pyramids --random 2 --seed 1
+  gen prism $ext split --size 3 2 2 --split prisms --axis x --random 2 --seed 2
+  gen sector3 $ext sector --valence 3 --rings 1 --layers 2
+  gen sector5 $ext sector --valence 5 --rings 1 --layers 1
+  gen cyl $ext cylinder --radius-cells 2 --layers 1
+done
+gen tets ovm split --size 2 2 2 --split tets --random 2 --seed 3
+gen tets1 ovm split --size 1 1 2 --split tets --cells "0,0,0"
+for f in "$GEN"/*.mesh; do cp "$f" "$OUT/medit/gen_$(basename "$f")"; done
+for f in "$GEN"/*.ovm; do
+  b=$(basename "$f" .ovm)
+  cp "$f" "$OUT/ovm/gen_$b.ovm"
+  /usr/bin/python3 "$HERE/ovm_convert.py" "$f" "$OUT/hedra/gen_$b.hedra"
+  /usr/bin/python3 "$HERE/ovm_convert.py" "$f" "$OUT/hybrid/gen_$b.HYBRID"
+done
+
+# The analyze harness reads a selector byte (index of the reader, see fuzz_targets.hpp) and a file.
+sel=0
+for dir in ovm ovmb medit hybrid hedra; do
+  for f in "$OUT/$dir"/*; do
+    { printf "\\x$(printf %02x $sel)"; cat "$f"; } > "$OUT/analyze/$dir-$(basename "$f")"
+  done
+  sel=$((sel + 1))
+done
+for dir in ovm ovmb medit hybrid hedra analyze; do
+  echo "corpus $dir: $(ls "$OUT/$dir" | wc -l) files, $(du -sk "$OUT/$dir" | cut -f1) KB"
+done
