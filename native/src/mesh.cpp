@@ -25,65 +25,29 @@ size_t Mesh::num_hex_cells() const {
 
 namespace {
 
-uint64_t mix(uint64_t h) {
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdULL;
-  h ^= h >> 33;
-  h *= 0xc4ceb9fe1a85ec53ULL;
-  h ^= h >> 33;
-  return h;
-}
-
-// Open addressing table from a hash to an id; equality is decided by the caller, so the same table
-// serves faces (sorted vertex lists) and edges (vertex pairs) without per-key allocations.
-class IdTable {
+// Ids of merged elements (faces, edges) filed under their lowest vertex. The capacity of each
+// vertex's bucket is known from a counting pass, so lookups scan a few neighbouring entries
+// instead of probing a hash table spread over the whole memory: large meshes stay cache friendly.
+class VertexBuckets {
  public:
-  explicit IdTable(size_t expected) {
-    size_t cap = 16;
-    while (cap < expected * 2) cap <<= 1;
-    slots_.assign(cap, -1);
-    hashes_.assign(cap, 0);
+  // counts[v] = how many elements may be filed under v (an upper bound).
+  explicit VertexBuckets(const std::vector<int32_t>& counts) : offsets_(counts.size() + 1, 0) {
+    for (size_t v = 0; v < counts.size(); ++v) offsets_[v + 1] = offsets_[v] + counts[v];
+    fill_.assign(offsets_.begin(), offsets_.end() - 1);
+    ids_.resize(static_cast<size_t>(offsets_.back()));
   }
   template <class Eq>
-  int32_t find(uint64_t h, Eq&& eq) const {
-    size_t mask = slots_.size() - 1;
-    for (size_t i = h & mask;; i = (i + 1) & mask) {
-      if (slots_[i] < 0) return -1;
-      if (hashes_[i] == h && eq(slots_[i])) return slots_[i];
-    }
+  int32_t find(int32_t v, Eq&& eq) const {
+    for (int64_t i = offsets_[v]; i < fill_[v]; ++i)
+      if (eq(ids_[i])) return ids_[i];
+    return -1;
   }
-  void insert(uint64_t h, int32_t id) {
-    if ((count_ + 1) * 2 > slots_.size()) grow();
-    place(h, id);
-    ++count_;
-  }
+  void insert(int32_t v, int32_t id) { ids_[fill_[v]++] = id; }
 
  private:
-  void place(uint64_t h, int32_t id) {
-    size_t mask = slots_.size() - 1;
-    size_t i = h & mask;
-    while (slots_[i] >= 0) i = (i + 1) & mask;
-    slots_[i] = id;
-    hashes_[i] = h;
-  }
-  void grow() {
-    std::vector<int32_t> s = std::move(slots_);
-    std::vector<uint64_t> h = std::move(hashes_);
-    slots_.assign(s.size() * 2, -1);
-    hashes_.assign(s.size() * 2, 0);
-    for (size_t i = 0; i < s.size(); ++i)
-      if (s[i] >= 0) place(h[i], s[i]);
-  }
-  std::vector<int32_t> slots_;
-  std::vector<uint64_t> hashes_;
-  size_t count_ = 0;
+  std::vector<int64_t> offsets_, fill_;
+  std::vector<int32_t> ids_;
 };
-
-uint64_t hash_sorted(const std::vector<int32_t>& s) {
-  uint64_t h = 0x9e3779b97f4a7c15ULL ^ s.size();
-  for (int32_t v : s) h = mix(h ^ static_cast<uint32_t>(v)) + 0x9e3779b97f4a7c15ULL;
-  return h;
-}
 
 uint64_t edge_key(int32_t a, int32_t b) {
   if (a > b) std::swap(a, b);
@@ -166,18 +130,28 @@ Mesh build_mesh(MeshInput in) {
 
   // --- faces: merge copies with the same vertex set, in order of first use by a cell ---------
   std::vector<int32_t> face_map(nf_in, -1);
-  std::vector<uint64_t> face_hash(nf_in, 0);
   Csr<int32_t> sorted_unique;  // canonical key of each kept face
-  IdTable face_table(nf_in);
   std::vector<int32_t> key;
+  std::vector<int32_t> bucket_count(nv, 0);
+  for (size_t f = 0; f < nf_in; ++f) {
+    auto loop = in.faces[f];
+    ++bucket_count[*std::min_element(loop.begin(), loop.end())];
+  }
+  VertexBuckets face_table(bucket_count);
   auto canonical = [&](size_t f) {
     auto loop = in.faces[f];
     key.assign(loop.begin(), loop.end());
-    std::sort(key.begin(), key.end());
-    return hash_sorted(key);
+    if (key.size() <= 8) {
+      // Insertion sort: faces are short, and this runs once per face use.
+      for (size_t i = 1; i < key.size(); ++i)
+        for (size_t j = i; j > 0 && key[j - 1] > key[j]; --j) std::swap(key[j - 1], key[j]);
+    } else {
+      std::sort(key.begin(), key.end());
+    }
+    return key[0];
   };
-  auto find_face = [&](uint64_t h) {
-    return face_table.find(h, [&](int32_t u) {
+  auto find_face = [&](int32_t lowest) {
+    return face_table.find(lowest, [&](int32_t u) {
       auto s = sorted_unique[u];
       return s.size() == key.size() && std::equal(s.begin(), s.end(), key.begin());
     });
@@ -192,13 +166,13 @@ Mesh build_mesh(MeshInput in) {
       const size_t f = static_cast<size_t>(r >> 1);
       int32_t u = face_map[f];
       if (u < 0) {
-        face_hash[f] = canonical(f);
-        u = find_face(face_hash[f]);
+        const int32_t lowest = canonical(f);
+        u = find_face(lowest);
         if (u < 0) {
           u = static_cast<int32_t>(m.face_verts.rows());
           m.face_verts.push_row(in.faces[f]);
           sorted_unique.push_row(key.begin(), key.end());
-          face_table.insert(face_hash[f], u);
+          face_table.insert(lowest, u);
           m.face_cells.push_back({-1, -1});
         }
         face_map[f] = u;
@@ -235,22 +209,26 @@ Mesh build_mesh(MeshInput in) {
   // The input's polygon soup and the merge tables are not needed from here on; releasing them
   // (clear() would keep the capacity) lowers the peak memory by about a quarter on large grids.
   sorted_unique = Csr<int32_t>{};
-  face_table = IdTable(0);
+  face_table = VertexBuckets({});
   std::vector<int32_t>().swap(face_map);
-  std::vector<uint64_t>().swap(face_hash);
   in.faces = Csr<int32_t>{};
   in.cells = Csr<int32_t>{};
 
   const size_t nf = m.face_verts.rows();
 
   // --- edges, in order of first appearance along the face loops ------------------------------
-  IdTable edge_table(m.face_verts.items.size() / 2 + 16);
+  std::fill(bucket_count.begin(), bucket_count.end(), 0);
+  for (size_t f = 0; f < nf; ++f) {
+    auto loop = m.face_verts[f];
+    for (size_t i = 0; i < loop.size(); ++i) ++bucket_count[std::min(loop[i], loop[(i + 1) % loop.size()])];
+  }
+  VertexBuckets edge_table(bucket_count);
+  std::vector<int32_t>().swap(bucket_count);
   m.face_edges.offsets = m.face_verts.offsets;
   m.face_edges.items.resize(m.face_verts.items.size());
   auto find_edge = [&](uint64_t k) {
-    return edge_table.find(mix(k), [&](int32_t e) {
-      return edge_key(m.edge_verts[e][0], m.edge_verts[e][1]) == k;
-    });
+    const int32_t lo = static_cast<int32_t>(k >> 32), hi = static_cast<int32_t>(k & 0xffffffffu);
+    return edge_table.find(lo, [&](int32_t e) { return m.edge_verts[e][1] == hi; });
   };
   for (size_t f = 0; f < nf; ++f) {
     auto loop = m.face_verts[f];
@@ -262,7 +240,7 @@ Mesh build_mesh(MeshInput in) {
       if (e < 0) {
         e = static_cast<int32_t>(m.edge_verts.size());
         m.edge_verts.push_back({std::min(a, b), std::max(a, b)});
-        edge_table.insert(mix(k), e);
+        edge_table.insert(std::min(a, b), e);
       }
       m.face_edges.items[m.face_edges.offsets[f] + i] = e;
     }
@@ -274,7 +252,7 @@ Mesh build_mesh(MeshInput in) {
   }
   if (m.dropped_edges > 0)
     m.warnings.push_back(std::to_string(m.dropped_edges) + " edge(s) used by no face dropped");
-  edge_table = IdTable(0);  // edges are all known; release the table before the fan arrays
+  edge_table = VertexBuckets({});  // edges are all known; release the table before the fan arrays
   const size_t ne = m.edge_verts.size();
 
   // --- per cell: closedness, vertices, edges, and the two faces of the cell at each edge -----
@@ -283,39 +261,51 @@ Mesh build_mesh(MeshInput in) {
   std::vector<int32_t> partner(2 * m.face_edges.items.size(), -1);
   m.cell_verts.offsets.reserve(nc + 1);
   m.cell_edges.offsets.reserve(nc + 1);
-  std::vector<std::pair<int32_t, int32_t>> ce;  // (edge, slot*2+side)
-  std::vector<int32_t> cv;
+  // Stamps instead of a sort per cell: an edge's first slot in the current cell waits for its
+  // second; anything but exactly two slots means the cell is not closed.
+  std::vector<int32_t> edge_stamp(ne, -1), edge_first(ne, -1), edge_count(ne, 0), vert_stamp(nv, -1);
+  std::vector<int32_t> ce, cv;
   for (size_t c = 0; c < nc; ++c) {
+    const int32_t ci = static_cast<int32_t>(c);
     ce.clear();
     cv.clear();
     for (int32_t f : m.cell_faces[c]) {
-      const int32_t side = m.face_cells[f][0] == static_cast<int32_t>(c) ? 0 : 1;
-      for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k)
-        ce.push_back({m.face_edges.items[k], 2 * k + side});
-      for (int32_t v : m.face_verts[f]) cv.push_back(v);
+      const int32_t side = m.face_cells[f][0] == ci ? 0 : 1;
+      for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k) {
+        const int32_t e = m.face_edges.items[k], slot = 2 * k + side;
+        if (edge_stamp[e] != ci) {
+          edge_stamp[e] = ci;
+          edge_first[e] = slot;
+          edge_count[e] = 1;
+          ce.push_back(e);
+        } else if (++edge_count[e] == 2) {
+          partner[edge_first[e]] = slot;
+          partner[slot] = edge_first[e];
+        }
+      }
+      for (int32_t v : m.face_verts[f])
+        if (vert_stamp[v] != ci) {
+          vert_stamp[v] = ci;
+          cv.push_back(v);
+        }
     }
     std::sort(ce.begin(), ce.end());
-    for (size_t i = 0; i < ce.size();) {
-      size_t j = i;
-      while (j < ce.size() && ce[j].first == ce[i].first) ++j;
-      if (j - i != 2) {
-        auto ev = m.edge_verts[ce[i].first];
-        throw InputError(file, in.loc_of(in.cell_loc, c),
-                         "a closed cell (each edge in exactly 2 of its faces), cell " +
-                             std::to_string(c) + " has edge (" + std::to_string(ev[0]) + " " +
-                             std::to_string(ev[1]) + ") in " + std::to_string(j - i));
-      }
-      const int32_t s0 = ce[i].second, s1 = ce[i + 1].second;
-      partner[s0] = s1;
-      partner[s1] = s0;
-      m.cell_edges.items.push_back(ce[i].first);
-      i = j;
+    for (int32_t e : ce) {
+      if (edge_count[e] == 2) continue;
+      auto ev = m.edge_verts[e];
+      throw InputError(file, in.loc_of(in.cell_loc, c),
+                       "a closed cell (each edge in exactly 2 of its faces), cell " + std::to_string(c) +
+                           " has edge (" + std::to_string(ev[0]) + " " + std::to_string(ev[1]) + ") in " +
+                           std::to_string(edge_count[e]));
     }
-    m.cell_edges.offsets.push_back(static_cast<int32_t>(m.cell_edges.items.size()));
+    m.cell_edges.push_row(ce.begin(), ce.end());
     std::sort(cv.begin(), cv.end());
-    cv.erase(std::unique(cv.begin(), cv.end()), cv.end());
     m.cell_verts.push_row(cv.begin(), cv.end());
   }
+  std::vector<int32_t>().swap(edge_stamp);
+  std::vector<int32_t>().swap(edge_first);
+  std::vector<int32_t>().swap(edge_count);
+  std::vector<int32_t>().swap(vert_stamp);
   // slot -> face lookup for partner slots
   std::vector<int32_t> slot_face(m.face_edges.items.size());
   for (size_t f = 0; f < nf; ++f)
@@ -366,6 +356,7 @@ Mesh build_mesh(MeshInput in) {
   m.edge_cells.items.reserve(edge_slots.items.size());
   m.edge_fan_ok.assign(ne, 0);
   std::vector<int32_t> fan_faces, fan_cells;
+  std::vector<int32_t> face_stamp(nf, -1);
   for (size_t e = 0; e < ne; ++e) {
     auto slots = edge_slots[e];
     fan_faces.clear();
@@ -401,11 +392,10 @@ Mesh build_mesh(MeshInput in) {
     }
     if (ok) {
       ok = fan_faces.size() == slots.size();
-      if (ok) {
-        // Each face once: the walk may have closed early in a pinched fan.
-        std::vector<int32_t> chk(fan_faces);
-        std::sort(chk.begin(), chk.end());
-        ok = std::adjacent_find(chk.begin(), chk.end()) == chk.end();
+      // Each face once: the walk may have closed early in a pinched fan.
+      for (size_t i = 0; ok && i < fan_faces.size(); ++i) {
+        ok = face_stamp[fan_faces[i]] != static_cast<int32_t>(e);
+        face_stamp[fan_faces[i]] = static_cast<int32_t>(e);
       }
     }
     int32_t* out = m.edge_faces.items.data() + m.edge_faces.offsets[e];

@@ -3,6 +3,7 @@
 // as At-Most-Hexa writes prisms, pyramids and tets) become the polyhedron they stand for.
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cctype>
 
 #include "hbc/io.hpp"
@@ -41,12 +42,11 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
   MeshInput in;
   in.source = source;
   int64_t nv = -1;
-  struct Raw {
-    const Element* el;
-    int64_t line;
-    std::array<int64_t, 8> v;
-  };
-  std::vector<Raw> raw;
+  // Elements as read, validated once the vertex count is known (sections come in any order).
+  std::vector<const Element*> raw_el;
+  std::vector<int64_t> raw_line;
+  std::vector<int32_t> raw_ids;  // 1-based as in the file; 0 stands for anything outside int32
+  int64_t wide_line = -1, wide_value = 0;  // the first id too large for int32, for the message
   bool seen_version = false, seen_end = false;
   std::string_view tok;
   bool have_tok = s.next(tok);
@@ -72,12 +72,22 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
       }
     } else if (const Element* el = element_of(kw)) {
       const int64_t n = s.count(2 * (el->nverts + 1), (std::string("the number of ") + kw).c_str());
-      raw.reserve(raw.size() + static_cast<size_t>(n));
+      raw_el.reserve(raw_el.size() + static_cast<size_t>(n));
+      raw_line.reserve(raw_line.size() + static_cast<size_t>(n));
+      raw_ids.reserve(raw_ids.size() + static_cast<size_t>(n * el->nverts));
       for (int64_t i = 0; i < n; ++i) {
-        Raw r{el, s.next_line(), {}};
-        for (int k = 0; k < el->nverts; ++k) r.v[k] = s.integer("a vertex index");
+        raw_el.push_back(el);
+        raw_line.push_back(s.next_line());
+        for (int k = 0; k < el->nverts; ++k) {
+          const int64_t id = s.integer("a vertex index");
+          const bool fits = id >= 1 && id <= INT32_MAX;
+          if (!fits && wide_line < 0) {
+            wide_line = raw_line.back();
+            wide_value = id;
+          }
+          raw_ids.push_back(fits ? static_cast<int32_t>(id) : 0);
+        }
         s.integer("an element reference number");
-        raw.push_back(r);
       }
     } else if (kw == "end") {
       seen_end = true;
@@ -94,36 +104,62 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
   (void)seen_end;
   if (!seen_version && text.size() > 0 && nv < 0) s.fail("a MEDIT file (MeshVersionFormatted, Vertices, ...)");
   if (nv < 0) s.fail("a Vertices section");
-  if (raw.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
+  if (raw_el.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
 
   // Cells: each template face with repeated ids collapsed (first occurrence kept); faces left
   // with fewer than 3 distinct vertices vanish, a face repeated within the cell is kept once.
+  size_t corners = 0;
+  for (const Element* el : raw_el)
+    for (const auto& tf : el->faces) corners += tf.size();
+  in.faces.offsets.reserve(raw_el.size() * 6 + 1);
+  in.faces.items.reserve(corners);
+  in.cells.offsets.reserve(raw_el.size() + 1);
+  in.cells.items.reserve(raw_el.size() * 6);
+  in.cell_loc.reserve(raw_el.size());
   std::vector<int32_t> loop;
-  std::vector<std::vector<int32_t>> cell_sets;
-  for (const Raw& r : raw) {
+  std::vector<std::array<int32_t, 8>> cell_sets;  // sorted distinct ids of each kept face, padded
+  size_t next_id = 0;
+  for (size_t e = 0; e < raw_el.size(); ++e) {
+    const Element& el = *raw_el[e];
+    const int64_t line = raw_line[e];
     std::array<int32_t, 8> v{};
-    for (int k = 0; k < r.el->nverts; ++k) {
-      if (r.v[k] < 1 || r.v[k] > nv)
-        s.fail_at(r.line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(r.v[k]));
-      v[k] = static_cast<int32_t>(r.v[k] - 1);
+    bool distinct = true;
+    for (int k = 0; k < el.nverts; ++k) {
+      const int64_t id = raw_ids[next_id++];
+      if (id < 1 || id > nv) {
+        const int64_t shown = (id == 0 && line == wide_line) ? wide_value : id;
+        s.fail_at(line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(shown));
+      }
+      v[k] = static_cast<int32_t>(id - 1);
+      for (int j = 0; j < k; ++j) distinct = distinct && v[j] != v[k];
     }
-    cell_sets.clear();
     const size_t first_face = in.faces.rows();
-    for (const auto& tf : r.el->faces) {
-      loop.clear();
-      for (int k : tf)
-        if (std::find(loop.begin(), loop.end(), v[k]) == loop.end()) loop.push_back(v[k]);
-      if (loop.size() < 3) continue;
-      std::vector<int32_t> sorted(loop);
-      std::sort(sorted.begin(), sorted.end());
-      if (std::find(cell_sets.begin(), cell_sets.end(), sorted) != cell_sets.end()) continue;
-      cell_sets.push_back(std::move(sorted));
-      in.faces.push_row(loop.begin(), loop.end());
-      in.face_loc.push_back(r.line);
+    if (distinct) {
+      // The common case: the template as it is.
+      for (const auto& tf : el.faces) {
+        for (int k : tf) in.faces.items.push_back(v[k]);
+        in.faces.offsets.push_back(static_cast<int32_t>(in.faces.items.size()));
+      }
+    } else {
+      cell_sets.clear();
+      for (const auto& tf : el.faces) {
+        loop.clear();
+        for (int k : tf)
+          if (std::find(loop.begin(), loop.end(), v[k]) == loop.end()) loop.push_back(v[k]);
+        if (loop.size() < 3) continue;
+        std::array<int32_t, 8> sorted;
+        sorted.fill(-1);
+        std::copy(loop.begin(), loop.end(), sorted.begin());
+        for (size_t i = 1; i < loop.size(); ++i)  // at most 4 ids: insertion sort
+          for (size_t j = i; j > 0 && sorted[j - 1] > sorted[j]; --j) std::swap(sorted[j - 1], sorted[j]);
+        if (std::find(cell_sets.begin(), cell_sets.end(), sorted) != cell_sets.end()) continue;
+        cell_sets.push_back(sorted);
+        in.faces.push_row(loop.begin(), loop.end());
+      }
     }
     for (size_t f = first_face; f < in.faces.rows(); ++f) in.cells.items.push_back(static_cast<int32_t>(2 * f));
     in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
-    in.cell_loc.push_back(r.line);
+    in.cell_loc.push_back(line);
   }
   return in;
 }

@@ -76,6 +76,25 @@ static std::string shown(std::string_view t) {
 }
 
 int64_t TextScanner::integer(const char* expected) {
+  // Fast path for the common plain decimal token; anything unusual takes the checked path below.
+  skip_space();
+  {
+    size_t p = pos_;
+    const bool neg = p < text_.size() && text_[p] == '-';
+    if (neg || (p < text_.size() && text_[p] == '+')) ++p;
+    const size_t digits_start = p;
+    uint64_t v = 0;
+    while (p < text_.size() && p - digits_start < 18 && text_[p] >= '0' && text_[p] <= '9')
+      v = v * 10 + static_cast<uint64_t>(text_[p++] - '0');
+    const bool ended = p == text_.size() || text_[p] == ' ' || text_[p] == '\n' || text_[p] == '\t' ||
+                       text_[p] == '\r' || (hash_comments_ && text_[p] == '#');
+    if (p > digits_start && ended) {
+      tok_line_ = line_;
+      last_ = text_.substr(pos_, p - pos_);
+      pos_ = p;
+      return neg ? -static_cast<int64_t>(v) : static_cast<int64_t>(v);
+    }
+  }
   std::string_view t = word(expected);
   int64_t v = 0;
   const char* b = t.data();
