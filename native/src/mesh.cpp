@@ -117,6 +117,69 @@ bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
   return a[(p + 1) % n] == b[1];
 }
 
+// Files disagree on how cells see their faces (some list every face the same way round), so
+// each cell's face loops are made consistent (neighbouring faces walk their shared edge in
+// opposite directions) and then turned outward (positive signed volume). A cell that cannot be
+// oriented keeps what the file said.
+void orient_cells(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face) {
+  std::vector<int32_t> state, queue;
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    const int32_t begin = m.cell_faces.offsets[c];
+    auto faces = m.cell_faces[c];
+    const size_t n = faces.size();
+    auto local = [&](int32_t f) {
+      return static_cast<size_t>(std::find(faces.begin(), faces.end(), f) - faces.begin());
+    };
+    state.assign(n, -1);
+    state[0] = m.cell_face_flip[begin];
+    queue.assign(1, 0);
+    bool orientable = true;
+    for (size_t q = 0; q < queue.size() && orientable; ++q) {
+      const size_t i = static_cast<size_t>(queue[q]);
+      const int32_t f = faces[i];
+      const int32_t side = m.face_cells[f][0] == static_cast<int32_t>(c) ? 0 : 1;
+      for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k) {
+        const int32_t p = partner[2 * k + side];
+        if (p < 0) continue;
+        const int32_t k2 = p >> 1;
+        const size_t j = local(slot_face[k2]);
+        // Same stored direction along the shared edge -> the two faces need opposite flips.
+        const int32_t want = state[i] ^ (m.face_verts.items[k] == m.face_verts.items[k2] ? 1 : 0);
+        if (state[j] < 0) {
+          state[j] = want;
+          queue.push_back(static_cast<int32_t>(j));
+        } else if (state[j] != want) {
+          orientable = false;
+          break;
+        }
+      }
+    }
+    if (!orientable || std::find(state.begin(), state.end(), -1) != state.end()) continue;
+    // Signed volume of the cell as its faces are now seen (fans around each face's first vertex,
+    // relative to the cell's first vertex for precision).
+    const double* o = &m.points[3 * static_cast<size_t>(m.face_verts[faces[0]][0])];
+    double vol = 0;
+    for (size_t i = 0; i < n; ++i) {
+      auto loop = m.face_verts[faces[i]];
+      const size_t L = loop.size();
+      auto pt = [&](size_t idx, double* out) {
+        const size_t v = static_cast<size_t>(loop[state[i] ? (L - idx) % L : idx]);
+        for (int a = 0; a < 3; ++a) out[a] = m.points[3 * v + a] - o[a];
+      };
+      double p0[3], p1[3], p2[3];
+      pt(0, p0);
+      for (size_t t = 1; t + 1 < L; ++t) {
+        pt(t, p1);
+        pt(t + 1, p2);
+        vol += p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) - p0[1] * (p1[0] * p2[2] - p1[2] * p2[0]) +
+               p0[2] * (p1[0] * p2[1] - p1[1] * p2[0]);
+      }
+    }
+    const int32_t turn = vol < 0 ? 1 : 0;
+    for (size_t i = 0; i < n; ++i) m.cell_face_flip[begin + static_cast<int32_t>(i)] = static_cast<uint8_t>(state[i] ^ turn);
+  }
+}
+
 }  // namespace
 
 Mesh build_mesh(MeshInput in) {
@@ -127,6 +190,7 @@ Mesh build_mesh(MeshInput in) {
   const size_t nv = in.points.size() / 3;
   const size_t nf_in = in.faces.rows();
   const size_t nc = in.cells.rows();
+  m.points = std::move(in.points);
 
   // --- faces: merge copies with the same vertex set, in order of first use by a cell ---------
   std::vector<int32_t> face_map(nf_in, -1);
@@ -312,6 +376,8 @@ Mesh build_mesh(MeshInput in) {
     for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k)
       slot_face[k] = static_cast<int32_t>(f);
 
+  orient_cells(m, partner, slot_face);
+
   // --- boundary flags ----------------------------------------------------------------------
   m.face_boundary.assign(nf, 0);
   m.edge_boundary.assign(ne, 0);
@@ -476,7 +542,6 @@ Mesh build_mesh(MeshInput in) {
     }
     if (groups != 1) m.vert_non_manifold[v] = 1;
   }
-  m.points = std::move(in.points);
   return m;
 }
 

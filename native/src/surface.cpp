@@ -60,20 +60,33 @@ SurfaceMesh build_surface(const Mesh& mesh, const FaceSelection& sel, SurfaceSta
 
   // Mesh vertex -> surface vertex, created on first use so the surface holds only what it shows.
   std::vector<int32_t> vmap(mesh.num_vertices(), -1);
+  // With separate ids, a mesh vertex mapped while an earlier id was current is mapped anew.
+  std::vector<int32_t> vmap_owner(sel.separate_ids ? mesh.num_vertices() : 0, 0);
+  size_t owner = 0;
   auto point = [&](int32_t v) {
     const double* p = &mesh.points[3 * static_cast<size_t>(v)];
     return SurfaceMesh::Point(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
   };
   std::vector<SurfaceMesh::VertexHandle> loop;
   SurfaceStats st;
+  // OpenMesh logs every face it refuses; those are counted in the stats instead.
+  struct QuietOmerr {
+    QuietOmerr() { omerr().disable(); }
+    ~QuietOmerr() { omerr().enable(); }
+  } quiet;
   for (size_t i = 0; i < n; ++i) {
     const int32_t f = sel.faces[i];
     if (f < 0 || static_cast<size_t>(f) >= mesh.num_faces())
       throw std::invalid_argument("face selection: face id " + std::to_string(f) + " out of range");
     auto verts = mesh.face_verts[static_cast<size_t>(f)];
+    if (sel.separate_ids && (i == 0 || sel.ids[i] != sel.ids[i - 1])) ++owner;
     loop.clear();
     for (int32_t v : verts) {
       int32_t& sv = vmap[static_cast<size_t>(v)];
+      if (sel.separate_ids && vmap_owner[static_cast<size_t>(v)] != static_cast<int32_t>(owner)) {
+        vmap_owner[static_cast<size_t>(v)] = static_cast<int32_t>(owner);
+        sv = -1;
+      }
       if (sv < 0) sv = s.add_vertex(point(v)).idx();
       loop.push_back(SurfaceMesh::VertexHandle(sv));
     }

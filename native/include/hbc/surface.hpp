@@ -26,6 +26,9 @@ struct FaceSelection {
   std::vector<int32_t> faces;
   std::vector<uint8_t> reversed;
   std::vector<int32_t> ids;
+  // Weld vertices only between faces of the same id, so that each id (a patch, a component, a
+  // sheet) is its own piece; faces of one id must then be consecutive.
+  bool separate_ids = false;
 };
 
 // Whether face f's stored loop must be reversed to point out of `cell` (a cell of f): cells see
