@@ -13,8 +13,11 @@ const char* kUsage =
     "commands:\n"
     "  info FILE [--json] [--format F]            counts of the mesh (SPEC §5 keys)\n"
     "  analyze FILE [--json] [--csv] [--format F] hybrid singularity graph and base complex\n"
+    "  sheets FILE [--json] [--level complex|mesh] sheets with type flags, sizes, subsheets\n"
+    "  table FILES|DIRS [--csv|--md|--latex] [-j N] Table 1 for many meshes (one process each)\n"
     "  generate KIND [options] -o FILE            synthetic meshes with known structure\n"
-    "  export-surface FILE -o OUT.obj|.ply|.off   boundary surface through OpenMesh\n"
+    "  export-surface FILE -o OUT.obj|.ply|.off [--what boundary|patches|components|sheets] [--sheet N]\n"
+    "                                             surfaces with per-face ids, through OpenMesh\n"
     "  wireframe FILE [--level complex|mesh] [--rho R] [--sheet N] [--json|--obj] [-o OUT]\n"
     "                                             VSG wireframe (SPEC §4)\n"
     "formats: ovm, ovmb, mesh, hybrid, hedra (chosen by extension unless --format is given)\n";
@@ -33,6 +36,8 @@ int main(int argc, char** argv) {
     if (cmd == "info") return cmd_info(args);
     if (cmd == "analyze") return cmd_analyze(args);
     if (cmd == "wireframe") return cmd_wireframe(args);
+    if (cmd == "sheets") return cmd_sheets(args);
+    if (cmd == "table") return cmd_table(args);
     if (cmd == "generate") return cmd_generate(args);
     if (cmd == "export-surface") return cmd_export_surface(args);
     if (cmd == "-h" || cmd == "--help" || cmd == "help") {
