@@ -1,0 +1,213 @@
+"""One builder per layer: structure arrays -> objects in a (not yet linked) collection.
+
+Each builder takes (tx, coll, structure, settings, name) where settings is the scene's
+HBCSettings (or any object with the same attributes) and name the mesh's root collection name,
+and returns the number of objects it made. `build_layer` wraps a builder in a transaction and
+swaps the result in.
+"""
+
+from __future__ import annotations
+
+import time
+
+import bpy
+import numpy as np
+
+from . import planning as P
+from . import scene as S
+from .structure import concat_soups
+
+
+def _props(name, layer, **extra):
+    d = {"hbc_mesh": name, "hbc_layer": layer}
+    d.update(extra)
+    return d
+
+
+def build_direct(tx, coll, s, st, name):
+    made = 0
+    if st.direct_boundary:
+        soup = s.direct_boundary()
+        alpha = st.boundary_alpha if st.direct_transparent else 1.0
+        mat = S.material(tx, "flat", P.HEX_COLOR, alpha)
+        S.soup_object(tx, coll, f"{name} boundary", soup, None, mat, _props(name, "direct", hbc_part="boundary"))
+        made += 1
+    types = np.asarray(s.mesh.cell_types)
+    if np.any(types != 0):
+        soup = s.non_hex_cells(st.direct_shrink)
+        S.soup_object(tx, coll, f"{name} non-hex cells", soup, s.cell_type_colors(soup.face_owner), None,
+                      _props(name, "direct", hbc_part="non_hex"))
+        made += 1
+    if st.direct_hex_cells and np.any(types == 0):
+        soup = s.direct_cells(hex_cells=True)
+        mat = S.material(tx, "flat", P.HEX_COLOR, 1.0)
+        S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"))
+        made += 1
+    return made
+
+
+def build_graph(tx, coll, s, st, name):
+    radius = st.line_radius * s.length
+    made = 0
+    for group, _color, lines in s.singularity_lines():
+        if lines.positions.size:
+            S.lines_object(tx, coll, f"{name} {group}", lines, radius, _props(name, "graph", hbc_group=group))
+            made += 1
+    return made
+
+
+def build_blocks(tx, coll, s, st, name):
+    soup = s.blocks(st.shrink)
+    colors = s.component_colors()
+    kinds = s.component_kinds()
+
+    def props_of(c):
+        return _props(name, "blocks", hbc_component=c, hbc_kind=P.COMPONENT_KINDS[int(kinds[c])])
+
+    if s.num_components <= st.split_max:
+        return len(S.split_soup_objects(tx, coll, f"{name} block", soup, colors, props_of))
+    S.soup_object(tx, coll, f"{name} blocks", soup, colors[soup.face_owner], None,
+                  _props(name, "blocks", hbc_owner="component"))
+    return 1
+
+
+def build_sheets(tx, coll, s, st, name):
+    n = s.num_sheets
+    if n == 0:
+        return 0
+    colors = P.sheet_colors(n)
+    types = s.sheet_types()
+    if n <= st.split_max:
+        made = 0
+        mat = S.material(tx, "object")
+        for i in range(n):
+            soup = s.sheet_blocks(i, st.shrink)
+            soup.face_owner = np.full(soup.num_faces, i, np.int32)
+            ob = S.soup_object(tx, coll, f"{name} sheet {i}", soup, None, mat,
+                               _props(name, "sheets", hbc_sheet=i, hbc_sheet_type=P.SHEET_TYPES[int(types[i])]))
+            ob.color = tuple(float(c) for c in colors[i])
+            made += 1
+        return made
+    soup = s.all_sheets(st.shrink)
+    S.soup_object(tx, coll, f"{name} sheets", soup, colors[soup.face_owner], None,
+                  _props(name, "sheets", hbc_owner="sheet"))
+    return 1
+
+
+def _dot_radius(s, st):
+    return st.dot_radius * s.length
+
+
+def build_sheet(tx, coll, s, st, name):
+    """The picked sheet with its highlights."""
+    i = st.sheet_index
+    if not (0 <= i < s.num_sheets):
+        raise ValueError(f"no sheet {i} (the mesh has {s.num_sheets})")
+    color = P.sheet_colors(s.num_sheets)[i]
+    t = P.SHEET_TYPES[int(s.sheet_types()[i])]
+    soup = s.sheet_blocks(i, st.shrink)
+    comp_colors = s.component_colors()
+    # The sheet's colour, each block a little lighter or darker so blocks stay visible.
+    shade = 0.8 + 0.2 * ((soup.face_owner * 7) % 3) / 2.0
+    fc = np.tile(color, (soup.num_faces, 1))
+    fc[:, :3] *= shade[:, None]
+    del comp_colors
+    S.soup_object(tx, coll, f"{name} sheet {i}", soup, fc, None,
+                  _props(name, "sheet", hbc_sheet=i, hbc_sheet_type=t, hbc_owner="component"))
+    made = 1
+    unmatched, shared, edges, cells = s.sheet_highlights(i, _dot_radius(s, st))
+    if unmatched.num_faces:
+        S.soup_object(tx, coll, f"{name} sheet {i} unmatched vertices", unmatched,
+                      np.tile(P.UNMATCHED_COLOR, (unmatched.num_faces, 1)), None,
+                      _props(name, "sheet", hbc_sheet=i, hbc_highlight="unmatched", hbc_count=unmatched.num_faces // 8))
+        made += 1
+    if shared.num_faces:
+        S.soup_object(tx, coll, f"{name} sheet {i} shared vertices", shared,
+                      np.tile(P.SHARED_COLOR, (shared.num_faces, 1)), None,
+                      _props(name, "sheet", hbc_sheet=i, hbc_highlight="shared", hbc_count=shared.num_faces // 8))
+        made += 1
+    if edges.positions.size:
+        S.lines_object(tx, coll, f"{name} sheet {i} self-parallel edges", edges, st.line_radius * s.length * 1.5,
+                       _props(name, "sheet", hbc_sheet=i, hbc_highlight="self_parallel"))
+        made += 1
+    if cells.num_faces:
+        S.soup_object(tx, coll, f"{name} sheet {i} self-intersecting cells", cells,
+                      np.tile(P.SELF_INTERSECTING_COLOR, (cells.num_faces, 1)), None,
+                      _props(name, "sheet", hbc_sheet=i, hbc_highlight="self_intersecting"))
+        made += 1
+    return made
+
+
+def build_subsheets(tx, coll, s, st, name):
+    """Subsheets of the picked (self-intersecting) sheet side by side, each with its VSG wireframe
+    beneath it."""
+    i = st.sheet_index
+    if not (0 <= i < s.num_sheets):
+        raise ValueError(f"no sheet {i} (the mesh has {s.num_sheets})")
+    if int(s.sheet_types()[i]) != 3:
+        raise ValueError(f"sheet {i} is not self-intersecting: it has no subsheets")
+    sub = s.subsheets(i)
+    count = int(sub.count)
+    colors = P.sheet_colors(count)
+    made = 0
+    for k in range(count):
+        soup = s.subsheet_blocks(sub, k, st.shrink)
+        offset = np.array(P.spread_translation(k, s.points), np.float32) if st.spread else np.zeros(3, np.float32)
+        soup.positions = soup.positions + offset
+        fc = np.tile(colors[k], (soup.num_faces, 1))
+        S.soup_object(tx, coll, f"{name} sheet {i} subsheet {k}", soup, fc, None,
+                      _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_owner="component"))
+        lines = s.wireframe(i, k, st.opacity_floor, st.simplified)
+        below = np.array(P.spread_translation(k, s.points, below=True), np.float32) if st.spread else offset
+        lines.positions = lines.positions + below
+        if lines.positions.size:
+            S.lines_object(tx, coll, f"{name} sheet {i} subsheet {k} wireframe", lines, st.line_radius * s.length,
+                           _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k))
+            made += 1
+        made += 1
+    return made
+
+
+def build_wireframe(tx, coll, s, st, name):
+    sheet = st.sheet_index if st.wireframe_scope == "SHEET" else None
+    lines = s.wireframe(sheet, None, st.opacity_floor, st.simplified)
+    if not lines.positions.size:
+        return 0
+    S.lines_object(tx, coll, f"{name} wireframe" + (f" sheet {sheet}" if sheet is not None else ""), lines,
+                   st.line_radius * s.length, _props(name, "wireframe", hbc_sheet=-1 if sheet is None else sheet))
+    return 1
+
+
+BUILDERS = {
+    "direct": build_direct,
+    "graph": build_graph,
+    "blocks": build_blocks,
+    "sheets": build_sheets,
+    "sheet": build_sheet,
+    "subsheets": build_subsheets,
+    "wireframe": build_wireframe,
+}
+NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
+
+
+def build_into(tx, root_name, layer, s, st):
+    """Builds a layer into a new unlinked collection (registered in tx); returns it."""
+    coll = tx.collection(P.layer_collection_name(root_name, layer) + " (building)")
+    BUILDERS[layer](tx, coll, s, st, root_name)
+    return coll
+
+
+def build_layer(root, layer, s, st, log=print):
+    """Builds one layer of the mesh under `root`, replacing the old one; all or nothing."""
+    t = time.perf_counter()
+    with S.Transaction() as tx:
+        coll = build_into(tx, root.name, layer, s, st)
+        S.swap_layer(root, layer, coll)
+    log(f"hbc: {root.name}: built {P.LAYER_TITLES[layer]} ({len(coll.all_objects)} objects) "
+        f"in {time.perf_counter() - t:.2f} s")
+    return coll
+
+
+def find_root(name):
+    c = bpy.data.collections.get(name)
+    return c if c is not None and c.get("hbc_source") is not None else None

@@ -1,0 +1,319 @@
+"""Scene building (bpy): planning Soups and Lines into Blender data, in bulk.
+
+- Meshes: vertices.foreach_set("co"), polygons via loop_start (+ loop_total before 4.0) and
+  loops.foreach_set("vertex_index"); colours as a CORNER float colour attribute `hbc_color`
+  (shown by Workbench with colour type Attribute, read by an Attribute node in Cycles/EEVEE);
+  the block a face belongs to as a FACE int attribute `owner`.
+- Lines (singularity graph, wireframes, highlighted edges): a mesh of edges with a POINT colour
+  attribute (alpha = opacity) and a shared geometry-nodes modifier (Mesh to Curve, Curve to Mesh)
+  that makes tubes; the attribute is carried onto the tubes so the shared line material renders
+  the per-point opacity.
+- Every datablock made while building goes through a `Transaction`; on an exception it removes
+  them all, so a failed build leaves the file exactly as it was. Layers are built into an unlinked
+  collection and only swapped in (replacing the old one) at the end.
+"""
+
+from __future__ import annotations
+
+import bpy
+import numpy as np
+
+from . import planning as P
+
+NEW_API = bpy.app.version >= (4, 0, 0)
+EEVEE_NEXT = bpy.app.version >= (4, 2, 0)
+
+COLOR_ATTR = "hbc_color"
+OWNER_ATTR = "owner"
+TUBE_GROUP = "HBC Tube"
+
+
+# ---------------------------------------------------------------------------------------------
+# Transactions
+
+class Transaction:
+    """Records the datablocks it creates; `with Transaction() as tx:` removes them on error."""
+
+    def __init__(self):
+        self.created = []  # (collection name in bpy.data, datablock)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, exc_type, exc, tb):
+        if exc_type is not None:
+            self.rollback()
+        return False
+
+    def add(self, kind, block):
+        self.created.append((kind, block))
+        return block
+
+    def rollback(self):
+        for kind, block in reversed(self.created):
+            try:
+                getattr(bpy.data, kind).remove(block)
+            except (ReferenceError, RuntimeError):
+                pass
+        self.created.clear()
+
+    # factories
+    def collection(self, name):
+        return self.add("collections", bpy.data.collections.new(name))
+
+    def mesh(self, name):
+        return self.add("meshes", bpy.data.meshes.new(name))
+
+    def object(self, name, data, coll):
+        ob = self.add("objects", bpy.data.objects.new(name, data))
+        coll.objects.link(ob)
+        return ob
+
+
+# ---------------------------------------------------------------------------------------------
+# Materials and node groups (shared by every layer and every imported mesh)
+
+def _set_blend(mat, transparent: bool):
+    if EEVEE_NEXT:
+        mat.surface_render_method = "BLENDED" if transparent else "DITHERED"
+    else:
+        mat.blend_method = "BLEND" if transparent else "OPAQUE"
+        if transparent:
+            mat.shadow_method = "NONE"
+    if hasattr(mat, "show_transparent_back"):
+        mat.show_transparent_back = False
+
+
+def _principled(mat):
+    mat.use_nodes = True
+    nt = mat.node_tree
+    bsdf = next(n for n in nt.nodes if n.type == "BSDF_PRINCIPLED")
+    return nt, bsdf
+
+
+def material(tx: Transaction, kind: str, color=(0.8, 0.8, 0.8, 1.0), alpha: float = 1.0):
+    """Shared material by kind:
+    - "attr": base colour and alpha from the `hbc_color` attribute (blocks, lines, dots);
+    - "object": base colour from Object Info > Color (per-block objects);
+    - "flat": one colour with `alpha` (the transparent boundary); named by colour and alpha.
+    """
+    if kind == "flat":
+        name = "HBC Flat %02x%02x%02x a%03d" % (int(color[0] * 255), int(color[1] * 255), int(color[2] * 255),
+                                                 int(alpha * 100))
+    else:
+        name = {"attr": "HBC Attribute Color", "object": "HBC Object Color"}[kind]
+    mat = bpy.data.materials.get(name)
+    if mat is not None and mat.get("hbc_material") == kind:
+        return mat
+    mat = tx.add("materials", bpy.data.materials.new(name))
+    mat["hbc_material"] = kind
+    nt, bsdf = _principled(mat)
+    if kind == "attr":
+        attr = nt.nodes.new("ShaderNodeAttribute")
+        attr.attribute_name = COLOR_ATTR
+        nt.links.new(attr.outputs["Color"], bsdf.inputs["Base Color"])
+        nt.links.new(attr.outputs["Alpha"], bsdf.inputs["Alpha"])
+        _set_blend(mat, True)
+    elif kind == "object":
+        info = nt.nodes.new("ShaderNodeObjectInfo")
+        nt.links.new(info.outputs["Color"], bsdf.inputs["Base Color"])
+        _set_blend(mat, False)
+    else:
+        bsdf.inputs["Base Color"].default_value = tuple(color[:3]) + (1.0,)
+        bsdf.inputs["Alpha"].default_value = alpha
+        mat.diffuse_color = tuple(color[:3]) + (alpha,)
+        _set_blend(mat, alpha < 1.0)
+    return mat
+
+
+def _group_socket(ng, in_out, socket_type, name):
+    if NEW_API:
+        return ng.interface.new_socket(name, in_out=in_out, socket_type=socket_type)
+    return (ng.inputs if in_out == "INPUT" else ng.outputs).new(socket_type, name)
+
+
+def tube_group(tx: Transaction):
+    """Geometry nodes: edges -> curves -> tubes of radius `Radius`, attributes carried along."""
+    ng = bpy.data.node_groups.get(TUBE_GROUP)
+    if ng is not None and ng.get("hbc_group") == 1:
+        return ng
+    ng = tx.add("node_groups", bpy.data.node_groups.new(TUBE_GROUP, "GeometryNodeTree"))
+    ng["hbc_group"] = 1
+    _group_socket(ng, "INPUT", "NodeSocketGeometry", "Geometry")
+    r = _group_socket(ng, "INPUT", "NodeSocketFloat", "Radius")
+    r.default_value = 0.01
+    _group_socket(ng, "INPUT", "NodeSocketInt", "Resolution").default_value = 6
+    _group_socket(ng, "OUTPUT", "NodeSocketGeometry", "Geometry")
+    if hasattr(ng, "is_modifier"):
+        ng.is_modifier = True
+    n = ng.nodes
+    gi, go = n.new("NodeGroupInput"), n.new("NodeGroupOutput")
+    m2c = n.new("GeometryNodeMeshToCurve")
+    c2m = n.new("GeometryNodeCurveToMesh")
+    circ = n.new("GeometryNodeCurvePrimitiveCircle")
+    L = ng.links.new
+    L(gi.outputs["Geometry"], m2c.inputs["Mesh"])
+    L(m2c.outputs["Curve"], c2m.inputs["Curve"])
+    L(gi.outputs["Radius"], circ.inputs["Radius"])
+    L(gi.outputs["Resolution"], circ.inputs["Resolution"])
+    L(circ.outputs["Curve"], c2m.inputs["Profile Curve"])
+    L(c2m.outputs["Mesh"], go.inputs["Geometry"])
+    return ng
+
+
+def _modifier_input(mod, ng, name, value):
+    if NEW_API:
+        ident = next(s.identifier for s in ng.interface.items_tree
+                     if getattr(s, "in_out", None) == "INPUT" and s.name == name)
+    else:
+        ident = ng.inputs[name].identifier
+    mod[ident] = value
+
+
+# ---------------------------------------------------------------------------------------------
+# Geometry
+
+def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
+    me = tx.mesh(name)
+    nv, nf = len(soup.positions), soup.num_faces
+    me.vertices.add(nv)
+    me.vertices.foreach_set("co", np.ascontiguousarray(soup.positions, np.float32).ravel())
+    me.loops.add(len(soup.face_vertices))
+    me.loops.foreach_set("vertex_index", np.ascontiguousarray(soup.face_vertices, np.int32))
+    me.polygons.add(nf)
+    me.polygons.foreach_set("loop_start", soup.loop_starts())
+    if not NEW_API:
+        me.polygons.foreach_set("loop_total", np.ascontiguousarray(soup.face_sizes, np.int32))
+    owner = me.attributes.new(OWNER_ATTR, "INT", "FACE")
+    owner.data.foreach_set("value", np.ascontiguousarray(soup.face_owner, np.int32))
+    if face_colors is not None:
+        fc = np.asarray(face_colors, np.float32).reshape(-1, 4)
+        corner = np.repeat(fc, soup.face_sizes, axis=0) if len(fc) == nf else np.broadcast_to(fc[0], (len(soup.face_vertices), 4))
+        col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "CORNER")
+        col.data.foreach_set("color", np.ascontiguousarray(corner, np.float32).ravel())
+        _make_active_color(me, col)
+    me.update(calc_edges=True)
+    return me
+
+
+def _make_active_color(me, attr):
+    try:
+        me.color_attributes.active_color = attr
+        me.color_attributes.render_color_index = me.color_attributes.active_color_index
+    except (AttributeError, TypeError):
+        pass
+
+
+def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None):
+    me = _mesh_from_soup(tx, name, soup, face_colors)
+    if mat is None:
+        mat = material(tx, "attr")
+    me.materials.append(mat)
+    ob = tx.object(name, me, coll)
+    for k, v in (props or {}).items():
+        ob[k] = v
+    return ob
+
+
+def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of=None):
+    """One object per owner (faces with equal owner), all sharing the Object Info material with
+    ob.color set: for layers with few blocks, so that clicking a block selects it. Relies on
+    block_soup giving each owner a contiguous vertex range (vertex keys sort by owner)."""
+    mat = material(tx, "object")
+    order = np.argsort(soup.face_owner, kind="stable")
+    starts = soup.loop_starts()
+    owners_sorted = soup.face_owner[order]
+    uniq, first = np.unique(owners_sorted, return_index=True)
+    bounds = np.append(first, len(order))
+    objects = []
+    for i, owner in enumerate(uniq):
+        faces = order[bounds[i]: bounds[i + 1]]
+        sizes = soup.face_sizes[faces]
+        loops = P.csr_rows(np.append(starts, len(soup.face_vertices)), soup.face_vertices, faces)
+        lo, hi = int(loops.min()), int(loops.max()) + 1
+        part = P.Soup(soup.positions[lo:hi], sizes, (loops - lo).astype(np.int32), soup.face_owner[faces])
+        name = name_of(int(owner)) if name_of else f"{prefix} {int(owner)}"
+        ob = soup_object(tx, coll, name, part, None, mat, props_of(int(owner)))
+        ob.color = tuple(float(c) for c in colors[int(owner)])
+        objects.append(ob)
+    return objects
+
+
+def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
+    """Tubes along polylines; per-point colour with alpha = opacity."""
+    me = tx.mesh(name)
+    me.vertices.add(len(lines.positions))
+    me.vertices.foreach_set("co", np.ascontiguousarray(lines.positions, np.float32).ravel())
+    me.edges.add(len(lines.edges))
+    me.edges.foreach_set("vertices", np.ascontiguousarray(lines.edges, np.int32).ravel())
+    col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "POINT")
+    col.data.foreach_set("color", np.ascontiguousarray(lines.colors, np.float32).ravel())
+    _make_active_color(me, col)
+    poly = me.attributes.new("polyline", "INT", "POINT")
+    poly.data.foreach_set("value", np.ascontiguousarray(lines.polyline, np.int32))
+    me.update()
+    me.materials.append(material(tx, "attr"))
+    ob = tx.object(name, me, coll)
+    ng = tube_group(tx)
+    mod = ob.modifiers.new("Tubes", "NODES")
+    mod.node_group = ng
+    _modifier_input(mod, ng, "Radius", float(radius))
+    ob["hbc_polylines"] = lines.num_polylines
+    for k, v in (props or {}).items():
+        ob[k] = v
+    return ob
+
+
+# ---------------------------------------------------------------------------------------------
+# Collections
+
+def find_layer(root, layer: str):
+    for c in root.children:
+        if c.get("hbc_layer") == layer:
+            return c
+    return None
+
+
+def remove_collection_tree(coll):
+    """Removes a collection, its child collections, their objects and the objects' own data."""
+    for child in list(coll.children):
+        remove_collection_tree(child)
+    for ob in list(coll.objects):
+        data = ob.data
+        bpy.data.objects.remove(ob)
+        if data is not None and data.users == 0:
+            kind = {"MESH": "meshes", "CURVE": "curves"}.get(getattr(data, "id_type", ""), None)
+            if kind is None:
+                kind = "meshes" if isinstance(data, bpy.types.Mesh) else "curves"
+            getattr(bpy.data, kind).remove(data)
+    bpy.data.collections.remove(coll)
+
+
+def swap_layer(root, layer: str, new_coll):
+    """Puts a freshly built layer collection under root, replacing the old one (never both)."""
+    old = find_layer(root, layer)
+    keep_hidden = (old.hide_viewport, old.hide_render) if old is not None else None
+    final_name = P.layer_collection_name(root.name, layer)
+    if old is not None:
+        remove_collection_tree(old)
+    new_coll["hbc_layer"] = layer
+    new_coll["hbc_mesh"] = root.name
+    root.children.link(new_coll)
+    new_coll.name = final_name
+    if keep_hidden is not None:
+        new_coll.hide_viewport, new_coll.hide_render = keep_hidden
+    return new_coll
+
+
+def remove_layer(root, layer: str) -> bool:
+    old = find_layer(root, layer)
+    if old is None:
+        return False
+    remove_collection_tree(old)
+    return True
+
+
+def datablock_names():
+    """{kind: set of names} of the datablocks the add-on may create (tests compare before/after)."""
+    kinds = ("objects", "meshes", "curves", "materials", "collections", "node_groups")
+    return {k: {b.name for b in getattr(bpy.data, k)} for k in kinds}
