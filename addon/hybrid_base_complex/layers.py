@@ -72,23 +72,19 @@ def build_blocks(tx, coll, s, st, name):
 
 
 def build_sheets(tx, coll, s, st, name):
+    """Every sheet as a large coloured block: one object per sheet (clickable) up to split_max."""
     n = s.num_sheets
     if n == 0:
         return 0
     colors = P.sheet_colors(n)
     types = s.sheet_types()
-    if n <= st.split_max:
-        made = 0
-        mat = S.material(tx, "object")
-        for i in range(n):
-            soup = s.sheet_blocks(i, st.shrink)
-            soup.face_owner = np.full(soup.num_faces, i, np.int32)
-            ob = S.soup_object(tx, coll, f"{name} sheet {i}", soup, None, mat,
-                               _props(name, "sheets", hbc_sheet=i, hbc_sheet_type=P.SHEET_TYPES[int(types[i])]))
-            ob.color = tuple(float(c) for c in colors[i])
-            made += 1
-        return made
     soup = s.all_sheets(st.shrink)
+
+    def props_of(i):
+        return _props(name, "sheets", hbc_sheet=i, hbc_sheet_type=P.SHEET_TYPES[int(types[i])])
+
+    if n <= st.split_max:
+        return len(S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of))
     S.soup_object(tx, coll, f"{name} sheets", soup, colors[soup.face_owner], None,
                   _props(name, "sheets", hbc_owner="sheet"))
     return 1
@@ -106,12 +102,10 @@ def build_sheet(tx, coll, s, st, name):
     color = P.sheet_colors(s.num_sheets)[i]
     t = P.SHEET_TYPES[int(s.sheet_types()[i])]
     soup = s.sheet_blocks(i, st.shrink)
-    comp_colors = s.component_colors()
     # The sheet's colour, each block a little lighter or darker so blocks stay visible.
     shade = 0.8 + 0.2 * ((soup.face_owner * 7) % 3) / 2.0
     fc = np.tile(color, (soup.num_faces, 1))
     fc[:, :3] *= shade[:, None]
-    del comp_colors
     S.soup_object(tx, coll, f"{name} sheet {i}", soup, fc, None,
                   _props(name, "sheet", hbc_sheet=i, hbc_sheet_type=t, hbc_owner="component"))
     made = 1
@@ -150,21 +144,30 @@ def build_subsheets(tx, coll, s, st, name):
     count = int(sub.count)
     colors = P.sheet_colors(count)
     made = 0
+    all_soup = s.subsheet_soup(i, sub, st.shrink)
+    radius = _dot_radius(s, st)
     for k in range(count):
-        soup = s.subsheet_blocks(sub, k, st.shrink)
+        soup = all_soup.select(all_soup.face_owner == k)
         offset = np.array(P.spread_translation(k, s.points), np.float32) if st.spread else np.zeros(3, np.float32)
         soup.positions = soup.positions + offset
         fc = np.tile(colors[k], (soup.num_faces, 1))
         S.soup_object(tx, coll, f"{name} sheet {i} subsheet {k}", soup, fc, None,
-                      _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_owner="component"))
+                      _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_owner="subsheet"))
+        made += 1
+        unmatched = s.subsheet_unmatched(sub, k)
+        if len(unmatched):
+            d = P.dots(s.points[unmatched] + offset, radius, unmatched)
+            S.soup_object(tx, coll, f"{name} sheet {i} subsheet {k} unmatched vertices", d,
+                          np.tile(P.UNMATCHED_COLOR, (d.num_faces, 1)), None,
+                          _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_highlight="unmatched"))
+            made += 1
         lines = s.wireframe(i, k, st.opacity_floor, st.simplified)
         below = np.array(P.spread_translation(k, s.points, below=True), np.float32) if st.spread else offset
         lines.positions = lines.positions + below
         if lines.positions.size:
             S.lines_object(tx, coll, f"{name} sheet {i} subsheet {k} wireframe", lines, st.line_radius * s.length,
-                           _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k))
+                           _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_wireframe=True))
             made += 1
-        made += 1
     return made
 
 

@@ -203,6 +203,7 @@ class Soup:
     face_sizes: np.ndarray
     face_vertices: np.ndarray
     face_owner: np.ndarray
+    face_cell: np.ndarray | None = None  # mesh cell each face was taken from, when known
 
     @property
     def num_faces(self) -> int:
@@ -282,22 +283,7 @@ def block_soup(points, face_offsets, face_vertices, face_cells, cell_offsets, ce
         counts = np.bincount(vgroup).astype(np.float64)
         centroid = np.stack([np.bincount(vgroup, weights=pos[:, i]) for i in range(3)], axis=1) / counts[:, None]
         pos = (centroid[vgroup] + (pos - centroid[vgroup]) * (1.0 - float(shrink))).astype(np.float32)
-    return Soup(pos, sizes, inverse.astype(np.int32), own.astype(np.int32))
-
-
-def cell_surface(points, face_offsets, face_vertices, face_cells, cell_offsets, cell_faces,
-                 cell_face_flip, cell_mask) -> Soup:
-    """Outer surface of the cells where mask holds, owner = cell id of the face's cell (one vertex
-    pool, no shrink): the direct view's pieces."""
-    cell_mask = np.asarray(cell_mask, bool)
-    label = np.where(cell_mask, 0, -1).astype(np.int32)
-    soup = block_soup(points, face_offsets, face_vertices, face_cells, cell_offsets, cell_faces,
-                      cell_face_flip, label)
-    return soup
-
-
-def face_owner_cells(face_cells, selected_faces) -> np.ndarray:
-    return np.asarray(face_cells)[np.asarray(selected_faces), 0]
+    return Soup(pos, sizes, inverse.astype(np.int32), own.astype(np.int32), inc_cell.astype(np.int32))
 
 
 @dataclass
@@ -333,10 +319,12 @@ class Lines:
                      np.concatenate(poly).astype(np.int32))
 
 
-def polylines(points, offsets, vertices, colors=None, alpha=None, keep=None) -> Lines:
+def polylines(points, offsets, vertices, colors=None, alpha=None, keep=None, closed=None) -> Lines:
     """Polylines given by mesh-vertex CSR (offsets, vertices). colors: one RGBA for all, or (k,4)
     per polyline; alpha: optional per point (aligned with vertices). keep: optional bool per
-    polyline. Every polyline gets its own copies of its points."""
+    polyline; closed: optional bool per polyline (an edge joins its last point to its first, the
+    hbc convention for closed chains and curves, which do not repeat their first vertex). Every
+    polyline gets its own copies of its points."""
     points = np.asarray(points, np.float32).reshape(-1, 3)
     offsets = np.asarray(offsets, np.int64)
     vertices = np.asarray(vertices, np.int64)
@@ -360,6 +348,12 @@ def polylines(points, offsets, vertices, colors=None, alpha=None, keep=None) -> 
     same = point_poly[1:] == point_poly[:-1] if len(vertices) else np.zeros(0, bool)
     mask = same & point_mask[:-1]
     edges = np.stack([nxt[mask], nxt[mask] + 1], axis=1) if len(vertices) else np.zeros((0, 2), np.int64)
+    if closed is not None and len(vertices):
+        closed = np.asarray(closed, bool) & (sizes > 2)
+        if keep is not None:
+            closed &= keep
+        rows = np.nonzero(closed)[0]
+        edges = np.concatenate([edges, np.stack([offsets[rows + 1] - 1, offsets[rows]], axis=1)])
     # Drop unused points (filtered polylines) and renumber.
     new_id = np.cumsum(point_mask) - 1
     lines = Lines(points[vertices[point_mask]], new_id[edges].astype(np.int32).reshape(-1, 2),

@@ -231,7 +231,11 @@ def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of
         sizes = soup.face_sizes[faces]
         loops = P.csr_rows(np.append(starts, len(soup.face_vertices)), soup.face_vertices, faces)
         lo, hi = int(loops.min()), int(loops.max()) + 1
-        part = P.Soup(soup.positions[lo:hi], sizes, (loops - lo).astype(np.int32), soup.face_owner[faces])
+        if hi - lo == len(np.unique(loops)):  # the owner's points are one contiguous range
+            part = P.Soup(soup.positions[lo:hi], sizes, (loops - lo).astype(np.int32), soup.face_owner[faces])
+        else:
+            used, inverse = np.unique(loops, return_inverse=True)
+            part = P.Soup(soup.positions[used], sizes, inverse.astype(np.int32), soup.face_owner[faces])
         name = name_of(int(owner)) if name_of else f"{prefix} {int(owner)}"
         ob = soup_object(tx, coll, name, part, None, mat, props_of(int(owner)))
         ob.color = tuple(float(c) for c in colors[int(owner)])

@@ -61,6 +61,23 @@ class Structure:
     def length(self) -> float:
         return P.characteristic_length(self.points)
 
+    def _native_soup(self, what, sheet=-1, shrink=0.0):
+        """hbc.block_soup (native, much faster) as a planning Soup, or None when the module has
+        none; positions scaled like self.points."""
+        if self.analysis is None:
+            return None
+        try:
+            hbc = import_hbc()
+        except ImportError:
+            return None
+        fn = getattr(hbc, "block_soup", None) or getattr(getattr(hbc, "_core", None), "block_soup", None)
+        if fn is None or not isinstance(self.mesh, hbc.Mesh):  # stand-ins in tests: numpy path
+            return None
+        soup = P.Soup.from_dict(fn(self.mesh, self.analysis, what, sheet=int(sheet), shrink=float(shrink)))
+        if self.scale != 1.0:
+            soup.positions = soup.positions * np.float32(self.scale)
+        return soup
+
     def _soup(self, label, shrink=0.0) -> P.Soup:
         m = self.mesh
         return P.block_soup(self.points, m.face_offsets, m.face_vertices, m.face_cells, m.cell_offsets,
@@ -68,16 +85,10 @@ class Structure:
 
     # -- direct view ----------------------------------------------------------------------
     def direct_boundary(self) -> P.Soup:
-        """The mesh's boundary surface, owner = cell of each face."""
-        m = self.mesh
-        fb = np.asarray(m.face_boundary, bool)
-        fo = np.asarray(m.face_offsets, np.int64)
-        sizes = np.diff(fo)[fb].astype(np.int32)
-        faces = np.nonzero(fb)[0]
-        loops = P.csr_rows(fo, m.face_vertices, faces)
-        used, inverse = np.unique(loops, return_inverse=True)
-        owner = np.asarray(m.face_cells)[faces, 0].astype(np.int32)
-        return P.Soup(self.points[used], sizes, inverse.astype(np.int32), owner)
+        """The mesh's boundary surface (outward loops), owner = cell of each face."""
+        soup = self._soup(np.zeros(self.num_cells, np.int32))
+        soup.face_owner = soup.face_cell
+        return soup
 
     def direct_cells(self, hex_cells: bool) -> P.Soup:
         """Surface of the hex (or of the non-hex) region, owner = cell type."""
@@ -90,6 +101,9 @@ class Structure:
 
     def non_hex_cells(self, shrink=0.0) -> P.Soup:
         """Every non-hex cell as its own block, owner = cell id (colour by its type)."""
+        native = self._native_soup("non_hex", shrink=shrink)
+        if native is not None:
+            return native
         types = np.asarray(self.mesh.cell_types, np.int32)
         label = np.where(types != 0, np.arange(len(types)), -1)
         return self._soup(label, shrink)
@@ -105,11 +119,12 @@ class Structure:
         g = self.analysis.graph
         offsets, verts = np.asarray(g.chain_offsets), np.asarray(g.chain_vertices)
         valence = np.asarray(g.chain_valence)
+        closed = getattr(g, "chain_closed", None)
         groups = []
         for v in np.unique(valence):
             keep = valence == v
             color = P.valence_color(v)
-            groups.append((f"Valence {int(v)}", color, P.polylines(self.points, offsets, verts, color, keep=keep)))
+            groups.append((f"Valence {int(v)}", color, P.polylines(self.points, offsets, verts, color, keep=keep, closed=closed)))
         cls = np.asarray(g.edge_class)
         edges = np.asarray(self.mesh.edges).reshape(-1, 2)
         for value, name, color in ((2, "Pseudo-singular", P.PSEUDO_COLOR), (3, "Non-manifold", P.NON_MANIFOLD_COLOR)):
@@ -128,6 +143,9 @@ class Structure:
 
     def blocks(self, shrink: float) -> P.Soup:
         """Every component as a block, owner = component id."""
+        native = self._native_soup("components", shrink=shrink)
+        if native is not None:
+            return native
         label = np.asarray(self.analysis.complex.cell_component, np.int32)
         return self._soup(label, shrink)
 
@@ -162,13 +180,27 @@ class Structure:
         return P.csr_row(off, items, sheet)
 
     def all_sheets(self, shrink: float) -> P.Soup:
-        """Every sheet's blocks (a component in several sheets appears once per sheet), owner =
-        sheet id. Built sheet by sheet since sheets overlap."""
-        parts = [self.sheet_blocks(s, shrink) for s in range(self.num_sheets)]
-        return concat_soups(parts, owners=list(range(self.num_sheets)))
+        """Every sheet as one large block (the boundary of its cell set), owner = sheet id; a cell
+        in two sheets is in both blocks."""
+        native = self._native_soup("sheets", shrink=shrink)
+        if native is not None:
+            return native
+        off, items = _csr(self.analysis, "sheet_cell")
+        return self._cell_sets(off, items, range(self.num_sheets), shrink)
+
+    def _cell_sets(self, off, items, rows, shrink) -> P.Soup:
+        parts = []
+        for r in rows:
+            label = np.full(self.num_cells, -1, np.int32)
+            label[P.csr_row(off, items, r)] = 0
+            parts.append(self._soup(label, shrink))
+        return concat_soups(parts, owners=list(rows))
 
     def sheet_blocks(self, sheet: int, shrink: float) -> P.Soup:
         """One sheet's cells with the component partition kept (its blocks), owner = component."""
+        native = self._native_soup("sheet", sheet, shrink)
+        if native is not None:
+            return native
         cells = self.sheet_cells(sheet)
         label = np.full(self.num_cells, -1, np.int32)
         comp = np.asarray(self.analysis.complex.cell_component, np.int32)
@@ -187,7 +219,10 @@ class Structure:
         curves = P.csr_row(off, items, sheet)
         cx = a.complex
         if len(curves):
-            lines = P.polylines(self.points, *self._curve_subset(cx, curves), P.SELF_PARALLEL_EDGE_COLOR)
+            closed = getattr(cx, "curve_closed", None)
+            closed = None if closed is None else np.asarray(closed, bool)[np.asarray(curves, np.int64)]
+            lines = P.polylines(self.points, *self._curve_subset(cx, curves), P.SELF_PARALLEL_EDGE_COLOR,
+                                closed=closed)
         else:
             lines = P.Lines.concat([])
         off, items = _csr(a, "sheet_self_intersecting")
@@ -213,13 +248,20 @@ class Structure:
     def subsheets(self, sheet: int):
         return self.analysis.subsheets(int(sheet))
 
-    def subsheet_blocks(self, sub, index: int, shrink: float) -> P.Soup:
+    def subsheet_soup(self, sheet: int, sub, shrink: float) -> P.Soup:
+        """Every subsheet of `sheet` (sub = self.subsheets(sheet)) as a block, owner = subsheet."""
+        native = self._native_soup("subsheets", sheet, shrink)
+        if native is not None:
+            return native
         off, items = _csr(sub, "cell")
-        label = np.full(self.num_cells, -1, np.int32)
-        cells = P.csr_row(off, items, index)
-        comp = np.asarray(self.analysis.complex.cell_component, np.int32)
-        label[cells] = comp[cells]
-        return self._soup(label, shrink)
+        return self._cell_sets(off, items, range(int(sub.count)), shrink)
+
+    def subsheet_unmatched(self, sub, index: int) -> np.ndarray:
+        try:
+            off, items = _csr(sub, "unmatched")
+        except AttributeError:
+            return np.zeros(0, np.int32)
+        return P.csr_row(off, items, index)
 
     # -- VSG wireframe ------------------------------------------------------------------------
     def wireframe(self, sheet=None, subsheet=None, floor=0.15, simplified=True) -> P.Lines:

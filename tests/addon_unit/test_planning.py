@@ -117,6 +117,8 @@ def test_polylines_colors_alpha_keep():
     assert lines.polyline.tolist() == [0, 0, 0, 1, 1, 1]
     np.testing.assert_allclose(lines.colors[3, :3], cols[2, :3])
     assert lines.colors[-1, 3] == pytest.approx(1.0)
+    ring = P.polylines(pts, off, verts, closed=[True, False, False])
+    assert ring.edges.tolist() == [[0, 1], [1, 2], [3, 4], [5, 6], [6, 7], [2, 0]]
     both = P.Lines.concat([lines, P.edge_lines(pts, [[0, 9]], (1, 0, 0, 1))])
     assert both.num_polylines == 3 and both.edges[-1].tolist() == [6, 7]
 
@@ -172,7 +174,10 @@ def test_structure_layers_on_fake_analysis():
     assert w.colors[:, 3].min() == pytest.approx(0.3)
     assert s.wireframe(simplified=False).num_polylines == 4
     sub = s.subsheets(1)
-    assert sub.count == 2 and s.subsheet_blocks(sub, 0, 0.0).num_faces > 0
+    assert sub.count == 2
+    subs = s.subsheet_soup(1, sub, 0.0)
+    assert set(subs.face_owner) == {0, 1}
+    assert s.subsheet_unmatched(sub, 0).size == 0
     direct = s.direct_boundary()
     assert direct.num_faces == int(m.face_boundary.sum())
     assert s.non_hex_cells().num_faces == 6

@@ -150,7 +150,7 @@ def build_every_layer_and_check(root, s):
             assert "self_intersecting" in hl
             assert bpy.ops.hbc.build_layer(layer="subsheets") == {"FINISHED"}
             sub = s.subsheets(st.sheet_index)
-            blocks = [o for o in layer_objects(root, "subsheets") if "wireframe" not in o.name]
+            blocks = [o for o in layer_objects(root, "subsheets") if o.get("hbc_owner") == "subsheet"]
             assert len(blocks) == int(sub.count)
     # Rebuilding replaces: same counts, one collection per layer.
     n_objects = len(bpy.data.objects)
