@@ -8,7 +8,9 @@
 #include <memory>
 #include <vector>
 
+#include "hbc/analysis.hpp"
 #include "hbc/mesh.hpp"
+#include "hbc/render_geometry.hpp"
 
 namespace hbc::python {
 
@@ -19,6 +21,7 @@ namespace py = pybind11;
 struct PyMesh {
   Mesh mesh;
   std::vector<float> points32;
+  double load_seconds = 0;  // set by hbc.load(); reported as the analysis' "load" timing
 };
 using PyMeshPtr = std::shared_ptr<PyMesh>;
 
@@ -33,6 +36,38 @@ py::array view(const T* data, std::vector<py::ssize_t> shape, py::handle owner,
   return a;
 }
 
+// A numpy array that takes over `v` without copying: the vector moves to the heap and a capsule,
+// the array's base, deletes it with the array. Writable, since nothing else refers to it.
+template <class T>
+py::array adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape, py::dtype dtype = py::dtype::of<T>()) {
+  auto* heap = new std::vector<T>(std::move(v));
+  py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array(std::move(dtype), std::move(shape), std::vector<py::ssize_t>{}, heap->data(), owner);
+}
+
+// What a Python hbc.Analysis holds: the mesh it was computed on (kept alive), the options (for
+// wireframes computed later on demand), the analysis, and the per-sheet arrays flattened once.
+struct PyAnalysis {
+  PyMeshPtr mesh;
+  AnalysisOptions options;
+  Analysis analysis;
+  ClassArrays sheet_classes;               // per sheet
+  Csr<int32_t> sheet_components;           // per sheet: base-complex components
+  std::vector<int32_t> self_intersecting;  // sheet ids with a decomposition, increasing
+  struct Sub {
+    ClassArrays classes;
+    Csr<int32_t> components;
+  };
+  std::vector<Sub> subsheets;              // aligned with analysis.subsheets
+};
+using PyAnalysisPtr = std::shared_ptr<PyAnalysis>;
+
+// What a Python hbc.Wireframe holds: the whole-mesh wireframe of an analysis (an aliasing pointer
+// that keeps the analysis alive) or one computed on demand for a region (owned alone).
+struct PyWireframe {
+  std::shared_ptr<const VsgWireframe> w;
+};
+
 // A new (owning, writable) 1-D numpy array holding a copy of `v`.
 template <class T>
 py::array_t<T> copy_1d(const std::vector<T>& v) {
@@ -45,5 +80,7 @@ void bind_errors(py::module_& m);  // errors.cpp: MeshFormatError and its transl
 void bind_mesh(py::module_& m);    // mesh.cpp: the Mesh class and its arrays
 void bind_from_arrays(py::class_<PyMesh, PyMeshPtr>& cls);  // from_arrays.cpp, called by bind_mesh
 void bind_io(py::module_& m);      // io.cpp: load()
+void bind_analysis(py::module_& m);  // analysis.cpp: Mesh.analyze and the Analysis classes
+void bind_geometry(py::module_& m);  // geometry.cpp: block_soup(), polylines()
 
 }  // namespace hbc::python

@@ -1,6 +1,7 @@
 // hbc.load(): reads a mesh file into an hbc.Mesh.
 #include "hbc/io.hpp"
 
+#include <chrono>
 #include <string>
 
 #include "bindings.hpp"
@@ -16,7 +17,9 @@ PyMeshPtr load(const py::object& path, const py::object& format) {
   auto out = std::make_shared<PyMesh>();
   {
     py::gil_scoped_release unlocked;  // reading and building touch no Python objects
+    const auto t0 = std::chrono::steady_clock::now();
     out->mesh = load_mesh(file, fmt);
+    out->load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   return out;
 }

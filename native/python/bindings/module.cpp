@@ -13,4 +13,6 @@ PYBIND11_MODULE(_core, m) {
   hp::bind_errors(m);
   hp::bind_mesh(m);
   hp::bind_io(m);
+  hp::bind_analysis(m);  // adds Mesh.analyze, so after bind_mesh
+  hp::bind_geometry(m);
 }

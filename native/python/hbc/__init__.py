@@ -6,8 +6,26 @@ so that user code never imports ``_core`` directly.
     >>> import hbc
     >>> mesh = hbc.load("model.mesh")
     >>> mesh.info()["hex_ratio"]
+    >>> a = mesh.analyze(rho=0.8, level="complex")
+    >>> a.stats["hex_components"], a.num_sheets
+    >>> soup = hbc.block_soup(mesh, a, "components", shrink=0.1)
 """
 
-from ._core import Mesh, MeshFormatError, __version__, load
+from ._core import (
+    Analysis,
+    BaseComplex,
+    Mesh,
+    MeshFormatError,
+    SingularityGraph,
+    Subsheets,
+    Wireframe,
+    __version__,
+    block_soup,
+    load,
+    polylines,
+)
 
-__all__ = ["Mesh", "MeshFormatError", "load", "__version__"]
+__all__ = [
+    "Mesh", "MeshFormatError", "load", "__version__",
+    "Analysis", "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe", "block_soup", "polylines",
+]

@@ -1,0 +1,111 @@
+#pragma once
+// Render-ready data made from a mesh and its analysis, so that a viewer (the Blender add-on, via
+// the Python binding) only copies flat arrays and never loops over elements itself:
+//  - block soups: the faces of a set of "blocks" (cells, components, sheets, ...), each block a
+//    separate piece with its own vertex copies so it can be shrunk toward its own centroid;
+//  - polyline point positions;
+//  - per-sheet / per-subsheet classification flattened to arrays;
+//  - the VSG wireframe of a sheet or subsheet region, computed on demand.
+// Everything is a pure, deterministic function of its arguments.
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "hbc/analysis.hpp"
+#include "hbc/csr.hpp"
+#include "hbc/mesh.hpp"
+
+namespace hbc {
+
+// What the blocks of a soup are; the owner id of each face is given in parentheses.
+enum class SoupKind : uint8_t {
+  Cells,        // every cell, all its faces (cell id)
+  Components,   // every base-complex component, its separation faces, once per side (component id)
+  Sheets,       // every sheet: the boundary faces of its cell set (sheet id); a cell of two
+                // sheets is in both blocks
+  Subsheets,    // the subsheets of one self-intersecting sheet, as Sheets (subsheet id)
+  Sheet,        // one sheet split by component: the boundary faces of the sheet's cells in each
+                // component (component id)
+  SheetNonHex,  // the non-hex cells adjacent to one sheet, all their faces (cell id)
+  NonHex,       // every non-hex cell, all its faces (cell id)
+  Boundary,     // the mesh boundary faces (CellType of the face's cell, as an integer)
+};
+
+// "cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary".
+// Throws std::invalid_argument listing the accepted names for anything else.
+SoupKind soup_kind_from_name(std::string_view name);
+bool soup_kind_needs_sheet(SoupKind kind);
+
+// The faces to draw, one entry per (owner, face) in all three arrays; `reversed` = 1 when the
+// face's stored loop must be walked backwards to point out of the owner's cell.
+struct OwnedFaces {
+  std::vector<int32_t> owner;
+  std::vector<int32_t> face;
+  std::vector<uint8_t> reversed;
+};
+
+// Selects the faces of `kind`. `sheet` is required (a sheet id) for Subsheets, Sheet and
+// SheetNonHex and ignored otherwise. Throws std::invalid_argument when the analysis lacks the
+// stage the kind needs (sheets, subsheets), for a sheet id out of range, and for Subsheets of a
+// sheet that is not self-intersecting.
+OwnedFaces soup_faces(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1);
+
+struct BlockSoup {
+  // Points: each owner has its own copies of the mesh vertices its faces use (shared between
+  // that owner's faces, never between owners).
+  std::vector<float> positions;        // 3 * np: x y z
+  std::vector<int32_t> point_vertex;   // np: the mesh vertex the point copies
+  // Faces, grouped by increasing owner, in selection order within an owner.
+  std::vector<int32_t> face_sizes;     // nf: loop length
+  std::vector<int32_t> face_vertices;  // sum(face_sizes): point ids, loops outward (right-hand rule)
+  std::vector<int32_t> face_owner;     // nf
+  std::vector<int32_t> face_source;    // nf: mesh face id
+
+  size_t num_points() const { return point_vertex.size(); }
+  size_t num_faces() const { return face_sizes.size(); }
+};
+
+// Builds the soup of `faces` (owners >= 0, faces in range). Every point p of an owner is moved to
+// c + (1 - shrink)(p - c), c being the mean of that owner's distinct mesh vertices; shrink must be
+// in [0, 1) (std::invalid_argument otherwise). Computed in double, stored as float.
+BlockSoup build_soup(const Mesh& mesh, const OwnedFaces& faces, double shrink = 0.0);
+
+// soup_faces then build_soup.
+BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1,
+                     double shrink = 0.0);
+
+// float32 positions (3 per entry) of the mesh vertices listed in `vertices`, a CSR row set whose
+// `offsets` must start at 0, not decrease and end at vertices.size(); vertex ids must be in range.
+// Throws std::invalid_argument otherwise.
+std::vector<float> polyline_positions(const Mesh& mesh, std::span<const int32_t> offsets,
+                                      std::span<const int32_t> vertices);
+
+// The classifications of n sheets or subsheets as flat arrays.
+struct ClassArrays {
+  std::vector<uint8_t> type;       // n: SheetType
+  std::vector<uint8_t> flags;      // 3n: type1, type2, type3 configuration present (0/1)
+  Csr<int32_t> unmatched;          // n rows: mesh vertices left unmatched
+  Csr<int32_t> shared;             // n rows: mesh vertices shared by two parallel curves
+  Csr<int32_t> self_parallel;      // n rows: curve ids (SheetDomain curves) of type-2 pairs
+  Csr<int32_t> self_intersecting;  // n rows: base-complex component ids holding type-3 pairs
+};
+ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClass> classes);
+
+// Rows of sheet units (SheetDomain unit ids) as sorted, distinct base-complex component ids (at
+// the complex level a unit is a component; at the mesh level several hex cells share one).
+Csr<int32_t> units_as_components(const SheetDomain& domain, const Csr<int32_t>& units);
+
+// The mesh cells of a region, sorted: the whole mesh's cells when sheet < 0; else the cells of
+// that sheet (subsheet < 0) or of that subsheet of the sheet, plus the non-hex cells adjacent to
+// it (touching one of its curves). Throws std::invalid_argument for ids out of range or a
+// subsheet of a sheet without a decomposition.
+std::vector<int32_t> region_cells(const Mesh& mesh, const Analysis& analysis, int32_t sheet,
+                                  int32_t subsheet = -1);
+
+// The VSG wireframe of that region (whole mesh when sheet < 0) at `level`, as `hbc wireframe`
+// computes it for a sheet.
+VsgWireframe region_wireframe(const Mesh& mesh, const Analysis& analysis, ComplexLevel level,
+                              const WireframeOptions& options, int32_t sheet, int32_t subsheet = -1);
+
+}  // namespace hbc

@@ -1,0 +1,346 @@
+// Mesh.analyze() and what it returns: hbc.Analysis (stats, per-sheet arrays, subsheets(),
+// wireframe()), with its singularity graph (hbc.SingularityGraph) and base complex
+// (hbc.BaseComplex) as views. Every array is a read-only numpy view into the C++ analysis (no
+// copy) whose numpy base is the Python object that returned it; that object keeps the analysis,
+// and the analysis its mesh, alive.
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "bindings.hpp"
+
+namespace hbc::python {
+
+namespace {
+
+static_assert(sizeof(EdgeClass) == 1 && sizeof(ComponentKind) == 1, "enums are exposed as uint8");
+
+py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
+
+// Views of the analysis' parts; each keeps the whole analysis alive.
+struct GraphView {
+  PyAnalysisPtr a;
+};
+struct ComplexView {
+  PyAnalysisPtr a;
+};
+struct SubsheetsView {
+  PyAnalysisPtr a;
+  size_t index;  // into analysis.subsheets
+};
+
+const PyAnalysis& analysis_of(const PyAnalysis& p) { return p; }
+const PyAnalysis& analysis_of(const GraphView& v) { return *v.a; }
+const PyAnalysis& analysis_of(const ComplexView& v) { return *v.a; }
+
+template <class T>
+py::array vec(const std::vector<T>& v, py::handle owner) {
+  return view(v.data(), {ssize(v.size())}, owner);
+}
+// 0/1 bytes as numpy bool.
+py::array flags(const std::vector<uint8_t>& v, py::handle owner) {
+  return view(v.data(), {ssize(v.size())}, owner, py::dtype::of<bool>());
+}
+// One-byte enums as uint8.
+template <class E>
+py::array enums(const std::vector<E>& v, py::handle owner) {
+  return view(reinterpret_cast<const uint8_t*>(v.data()), {ssize(v.size())}, owner);
+}
+
+// A read-only array property of class H computed by f(analysis, self).
+template <class H, class... Opts, class F>
+void prop(py::class_<H, Opts...>& cls, const char* name, F f, const char* doc) {
+  cls.def_property_readonly(
+      name, [f](py::object self) -> py::array { return f(analysis_of(self.cast<const H&>()), self); }, doc);
+}
+
+// The two properties `<offsets_name>` and `<items_name>` of a CSR returned by get(analysis).
+template <class H, class... Opts, class Get>
+void csr(py::class_<H, Opts...>& cls, const char* offsets_name, const char* items_name, Get get, const char* doc) {
+  cls.def_property_readonly(
+      offsets_name, [get](py::object self) -> py::array { return vec(get(analysis_of(self.cast<const H&>())).offsets, self); },
+      (std::string("int32 (n + 1,): row offsets of ") + items_name + ". " + doc).c_str());
+  cls.def_property_readonly(
+      items_name, [get](py::object self) -> py::array { return vec(get(analysis_of(self.cast<const H&>())).items, self); },
+      (std::string("int32: ") + doc).c_str());
+}
+
+// The per-row classification arrays shared by Analysis (prefix "sheet_") and Subsheets (none).
+template <class H, class... Opts, class Get>
+void class_arrays(py::class_<H, Opts...>& cls, const std::string& prefix, Get get) {
+  // pybind11 copies names and docstrings, so temporaries are fine.
+  auto name = [&](const std::string& n) { return prefix + n; };
+  cls.def_property_readonly(name("type").c_str(), [get](py::object self) -> py::array {
+    return vec(get(self.cast<const H&>()).type, self);
+  }, "uint8 (n,): 0 perfect, 1 type 1, 2 type 2 (self-parallel), 3 type 3 (self-intersecting).");
+  cls.def_property_readonly(name("flags").c_str(), [get](py::object self) -> py::array {
+    const auto& f = get(self.cast<const H&>()).flags;
+    return view(f.data(), {ssize(f.size() / 3), 3}, self, py::dtype::of<bool>());
+  }, "bool (n, 3): type-1, type-2, type-3 configurations present.");
+  const std::pair<const char*, Csr<int32_t> ClassArrays::*> rows[] = {
+      {"unmatched", &ClassArrays::unmatched},
+      {"shared", &ClassArrays::shared},
+      {"self_parallel", &ClassArrays::self_parallel},
+      {"self_intersecting", &ClassArrays::self_intersecting}};
+  const char* docs[] = {"mesh vertices left unmatched by a maximum matching",
+                        "mesh vertices shared by two parallel curves",
+                        "curve ids of self-parallel (type-2) pairs",
+                        "base-complex components holding two parallel curves sharing an end (type 3)"};
+  for (size_t i = 0; i < 4; ++i) {
+    auto member = rows[i].second;
+    cls.def_property_readonly(name(std::string(rows[i].first) + "_offsets").c_str(),
+                              [get, member](py::object self) -> py::array { return vec((get(self.cast<const H&>()).*member).offsets, self); },
+                              (std::string("int32 (n + 1,): row offsets of the ") + docs[i] + ".").c_str());
+    cls.def_property_readonly(name(std::string(rows[i].first) + "_items").c_str(),
+                              [get, member](py::object self) -> py::array { return vec((get(self.cast<const H&>()).*member).items, self); },
+                              (std::string("int32: ") + docs[i] + ".").c_str());
+  }
+}
+
+ComplexLevel level_from_name(const std::string& level) {
+  if (level == "complex") return ComplexLevel::Complex;
+  if (level == "mesh") return ComplexLevel::Mesh;
+  throw std::invalid_argument("level must be 'complex' or 'mesh', not '" + level + "'");
+}
+
+PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool sheets, bool subsheets,
+                      bool wireframe) {
+  if (!(rho >= 0.0 && rho <= 1.0)) throw std::invalid_argument("rho must be in [0, 1], not " + std::to_string(rho));
+  auto out = std::make_shared<PyAnalysis>();
+  out->mesh = std::move(mesh);
+  AnalysisOptions& o = out->options;
+  const ComplexLevel lv = level_from_name(level);
+  o.sheet_level = lv == ComplexLevel::Mesh ? SheetLevel::Mesh : SheetLevel::Complex;
+  o.wireframe_level = lv;
+  o.wireframe_options.rho = rho;
+  o.sheets = sheets;
+  o.subsheets = sheets && subsheets;
+  o.wireframe = wireframe;
+  {
+    py::gil_scoped_release unlocked;  // the analysis touches no Python object
+    PyAnalysis& p = *out;
+    p.analysis = hbc::analyze(p.mesh->mesh, o);
+    p.analysis.timings.load = p.mesh->load_seconds;
+    const Analysis& a = p.analysis;
+    p.sheet_classes = flatten_classes(a.domain, a.sheets.classes);
+    p.sheet_components = units_as_components(a.domain, a.sheets.sheet_units);
+    for (const Subsheets& s : a.subsheets) {
+      p.self_intersecting.push_back(s.sheet);
+      p.subsheets.push_back({flatten_classes(a.domain, s.classes), units_as_components(a.domain, s.units)});
+    }
+  }
+  return out;
+}
+
+// The CLI's `hbc analyze --json` object (SPEC §5) without "file": stages not run leave their keys
+// out, as there.
+py::dict stats_dict(const PyAnalysis& p) {
+  const Stats s = compute_stats(p.mesh->mesh, p.analysis);
+  py::dict d;
+  auto count = [&](const char* key, int64_t v) {
+    if (v >= 0) d[key] = v;
+  };
+  count("cells", s.cells);
+  d["hex_ratio"] = s.hex_ratio;
+  count("singular_edges", s.singular_edges);
+  count("singularities", s.singularities);
+  count("pseudo_singular_edges", s.pseudo_singular_edges);
+  count("non_manifold_edges", s.non_manifold_edges);
+  count("singular_vertices", s.singular_vertices);
+  count("components", s.components);
+  count("hex_components", s.hex_components);
+  d["hex_component_ratio"] = s.hex_component_ratio;
+  count("patches", s.patches);
+  count("curves", s.curves);
+  count("corners", s.corners);
+  count("self_adjacent_faces", s.self_adjacent_faces);
+  count("sheets", s.sheets);
+  count("sheets_perfect", s.sheets_perfect);
+  count("sheets_type1", s.sheets_type1);
+  count("sheets_type2", s.sheets_type2);
+  count("sheets_type3", s.sheets_type3);
+  count("subsheets_of_largest_self_intersecting", s.subsheets_of_largest_self_intersecting);
+  count("vsg_edges", s.vsg_edges);
+  count("wireframe_edges", s.wireframe_edges);
+  count("wireframe_edges_simplified", s.wireframe_edges_simplified);
+  py::dict t;
+  t["load"] = s.timings.load;
+  t["singularity_graph"] = s.timings.singularity_graph;
+  t["base_complex"] = s.timings.base_complex;
+  t["sheets"] = s.timings.sheets;
+  t["subsheets"] = s.timings.subsheets;
+  t["vsg_wireframe"] = s.timings.vsg_wireframe;
+  d["timings"] = t;
+  return d;
+}
+
+int32_t optional_id(const py::object& v, const char* what) {
+  if (v.is_none()) return -1;
+  const int64_t i = v.cast<int64_t>();
+  if (i < 0 || i > INT32_MAX) throw std::invalid_argument(std::string(what) + " must be a non-negative id");
+  return static_cast<int32_t>(i);
+}
+
+PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const py::object& subsheet_arg) {
+  const int32_t sheet = optional_id(sheet_arg, "sheet"), subsheet = optional_id(subsheet_arg, "subsheet");
+  if (sheet < 0 && subsheet >= 0) throw std::invalid_argument("a subsheet needs its sheet");
+  if (sheet < 0 && p->analysis.has_wireframe)
+    return {std::shared_ptr<const VsgWireframe>(p, &p->analysis.wireframe)};
+  auto w = std::make_shared<VsgWireframe>();
+  {
+    py::gil_scoped_release unlocked;
+    *w = region_wireframe(p->mesh->mesh, p->analysis, p->options.wireframe_level, p->options.wireframe_options,
+                          sheet, subsheet);
+  }
+  return {std::move(w)};
+}
+
+SubsheetsView subsheets(const PyAnalysisPtr& p, int64_t sheet) {
+  const Analysis& a = p->analysis;
+  if (!a.has_sheets || !a.has_subsheets) throw std::invalid_argument("the analysis was run without subsheets");
+  if (sheet < 0 || static_cast<size_t>(sheet) >= a.sheets.size())
+    throw std::invalid_argument("sheet " + std::to_string(sheet) + " out of range: the mesh has " +
+                                std::to_string(a.sheets.size()) + " sheets");
+  for (size_t i = 0; i < a.subsheets.size(); ++i)
+    if (a.subsheets[i].sheet == sheet) return {p, i};
+  throw std::invalid_argument("sheet " + std::to_string(sheet) + " is not self-intersecting (type 3)");
+}
+
+void bind_graph(py::module_& m) {
+  py::class_<GraphView> g(m, "SingularityGraph",
+                          "The hybrid singularity graph of an Analysis (SPEC section 1); arrays are views.");
+  prop(g, "edge_class", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.graph.edge_class, s); },
+       "uint8 (ne,): 0 regular, 1 singular, 2 pseudo-singular, 3 non-manifold.");
+  prop(g, "edge_irregular", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.edge_irregular, s); },
+       "bool (ne,): valence other than 4 inside / 2 on the boundary.");
+  prop(g, "edge_chain", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.edge_chain, s); },
+       "int32 (ne,): singularity of a singular edge, else -1.");
+  csr(g, "chain_offsets", "chain_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; },
+      "ordered vertices of each singularity (a closed chain does not repeat its first vertex).");
+  csr(g, "chain_edge_offsets", "chain_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; },
+      "ordered edges of each singularity; edge i joins chain vertices i and i+1 (mod n).");
+  prop(g, "chain_valence", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.chain_valence, s); },
+       "int32 (ns,): valence of each singularity.");
+  prop(g, "chain_boundary", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.chain_boundary, s); },
+       "bool (ns,): all its edges on the boundary.");
+  prop(g, "chain_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.chain_closed, s); },
+       "bool (ns,): a closed loop.");
+  prop(g, "singular_vertices", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.singular_vertices, s); },
+       "int32, sorted: singularity ends that are not pseudo-singular.");
+  prop(g, "pseudo_singular_vertices",
+       [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.pseudo_singular_vertices, s); },
+       "int32, sorted: ends of pseudo-singular and non-manifold edges.");
+  prop(g, "pseudo_singular_edges", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.pseudo_singular_edges, s); },
+       "int32, sorted: edges touching a non-hex cell.");
+  prop(g, "non_manifold_edges", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.non_manifold_edges, s); },
+       "int32, sorted: edges touching a non-manifold vertex (neither singular nor pseudo-singular).");
+  g.def_property_readonly("num_singularities", [](const GraphView& v) { return v.a->analysis.graph.num_singularities(); });
+}
+
+void bind_complex(py::module_& m) {
+  py::class_<ComplexView> c(m, "BaseComplex", "The hybrid base complex of an Analysis (SPEC section 2); arrays are views.");
+  prop(c, "cell_component", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.cell_component, s); },
+       "int32 (nc,): component of each cell.");
+  prop(c, "component_kind", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.complex.component_kind, s); },
+       "uint8 (ncomp,): 0 cube, 1 ring, 2 other, 3 non-hex.");
+  csr(c, "component_offsets", "component_cells", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; },
+      "sorted cells of each component.");
+  csr(c, "component_adjacency_offsets", "component_adjacency_items",
+      [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_adjacency; },
+      "sorted components sharing a separation face with each component.");
+  prop(c, "face_separation", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.face_separation, s); },
+       "bool (nf,): separation face.");
+  prop(c, "face_patch", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.face_patch, s); },
+       "int32 (nf,): patch of a separation face, else -1.");
+  csr(c, "patch_offsets", "patch_faces", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; },
+      "sorted mesh faces of each patch.");
+  csr(c, "curve_offsets", "curve_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; },
+      "mesh vertex polyline of each curve (a closed curve does not repeat its first vertex).");
+  csr(c, "curve_edge_offsets", "curve_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; },
+      "ordered mesh edges of each curve.");
+  prop(c, "curve_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.curve_closed, s); },
+       "bool (ncurve,): a closed curve (no corner on it).");
+  prop(c, "edge_curve", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.edge_curve, s); },
+       "int32 (ne,): curve of a complex edge, else -1.");
+  prop(c, "corners", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.corners, s); },
+       "int32, sorted: corner vertices.");
+  prop(c, "self_adjacent_faces", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.self_adjacent_faces, s); },
+       "int32: interior separation faces with one component on both sides.");
+  c.def_property_readonly("num_components", [](const ComplexView& v) { return v.a->analysis.complex.num_components(); });
+  c.def_property_readonly("num_patches", [](const ComplexView& v) { return v.a->analysis.complex.num_patches(); });
+  c.def_property_readonly("num_curves", [](const ComplexView& v) { return v.a->analysis.complex.num_curves(); });
+}
+
+void bind_subsheets(py::module_& m) {
+  py::class_<SubsheetsView> c(m, "Subsheets",
+                              "The subsheets of one self-intersecting sheet (SPEC section 3); arrays are views.");
+  c.def_property_readonly("sheet", [](const SubsheetsView& v) { return v.a->analysis.subsheets[v.index].sheet; });
+  c.def_property_readonly("count", [](const SubsheetsView& v) { return v.a->analysis.subsheets[v.index].size(); });
+  const auto sub = [](const SubsheetsView& v) -> const Subsheets& { return v.a->analysis.subsheets[v.index]; };
+  const auto flat = [](const SubsheetsView& v) -> const PyAnalysis::Sub& { return v.a->subsheets[v.index]; };
+  auto rows = [&](const char* off, const char* items, auto get, const char* doc) {
+    c.def_property_readonly(off, [get](py::object self) -> py::array { return vec(get(self.cast<const SubsheetsView&>()).offsets, self); },
+                            (std::string("int32 (count + 1,): row offsets of ") + items + ".").c_str());
+    c.def_property_readonly(items, [get](py::object self) -> py::array { return vec(get(self.cast<const SubsheetsView&>()).items, self); },
+                            doc);
+  };
+  rows("component_offsets", "component_items", [flat](const SubsheetsView& v) -> auto& { return flat(v).components; },
+       "int32: base-complex components of each subsheet, sorted.");
+  rows("cell_offsets", "cell_items", [sub](const SubsheetsView& v) -> auto& { return sub(v).cells; },
+       "int32: mesh hex cells of each subsheet, sorted.");
+  rows("curve_offsets", "curve_items", [sub](const SubsheetsView& v) -> auto& { return sub(v).curves; },
+       "int32: parallel curves of each subsheet, sorted (complex curves, or mesh edges at level 'mesh').");
+  class_arrays(c, "", [flat](const SubsheetsView& v) -> const ClassArrays& { return flat(v).classes; });
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  bind_graph(m);
+  bind_complex(m);
+  bind_subsheets(m);
+
+  py::class_<PyAnalysis, PyAnalysisPtr> c(m, "Analysis",
+                                          "The structure of a mesh (Mesh.analyze()): singularity graph, base complex, "
+                                          "sheets, subsheets, VSG wireframe. Arrays are read-only views.");
+  c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analysed hbc.Mesh.");
+  c.def_property_readonly("level", [](const PyAnalysis& p) { return complex_level_name(p.options.wireframe_level); });
+  c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; });
+  c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.has_sheets; });
+  c.def_property_readonly("has_subsheets", [](const PyAnalysis& p) { return p.analysis.has_subsheets; });
+  c.def_property_readonly("has_wireframe", [](const PyAnalysis& p) { return p.analysis.has_wireframe; });
+  c.def_property_readonly("stats", &stats_dict,
+                          "dict: the `hbc analyze --json` keys (SPEC section 5), timings in seconds.");
+  c.def_property_readonly("graph", [](const PyAnalysisPtr& p) { return GraphView{p}; });
+  c.def_property_readonly("complex", [](const PyAnalysisPtr& p) { return ComplexView{p}; });
+
+  c.def_property_readonly("num_sheets", [](const PyAnalysis& p) { return p.analysis.sheets.size(); });
+  csr(c, "sheet_component_offsets", "sheet_component_items", [](const PyAnalysis& p) -> auto& { return p.sheet_components; },
+      "base-complex components of each sheet, sorted.");
+  csr(c, "sheet_cell_offsets", "sheet_cell_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_cells; },
+      "mesh hex cells of each sheet, sorted.");
+  csr(c, "sheet_curve_offsets", "sheet_curve_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_curves; },
+      "parallel curves E_P of each sheet, sorted (complex curves, or mesh edges at level 'mesh').");
+  csr(c, "sheet_edge_offsets", "sheet_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_edges; },
+      "mesh edges of each sheet's parallel curves, sorted.");
+  csr(c, "sheet_non_hex_offsets", "sheet_non_hex_items",
+      [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_non_hex_cells; },
+      "non-hex cells adjacent to each sheet, sorted.");
+  class_arrays(c, "sheet_", [](const PyAnalysis& p) -> const ClassArrays& { return p.sheet_classes; });
+  c.def_property_readonly("largest_self_intersecting", [](const PyAnalysis& p) { return p.analysis.largest_self_intersecting; },
+                          "The self-intersecting sheet with most cells, or -1.");
+  prop(c, "self_intersecting_sheets", [](const PyAnalysis& p, py::handle s) { return vec(p.self_intersecting, s); },
+       "int32: the sheets with a subsheet decomposition, increasing.");
+  c.def("subsheets", &subsheets, py::arg("sheet"),
+        "The subsheets of a self-intersecting sheet; ValueError for any other sheet.");
+  c.def("wireframe", &wireframe, py::arg("sheet") = py::none(), py::arg("subsheet") = py::none(),
+        "The VSG wireframe of the whole mesh (no arguments), or of a sheet / subsheet region (its "
+        "cells plus adjacent non-hex cells), computed on demand with the analysis' rho and level.");
+
+  auto mesh_cls = py::reinterpret_borrow<py::class_<PyMesh, PyMeshPtr>>(m.attr("Mesh"));
+  mesh_cls.def("analyze", &analyze, py::arg("rho") = 0.8, py::arg("level") = "complex", py::arg("sheets") = true,
+               py::arg("subsheets") = true, py::arg("wireframe") = true,
+               "Runs the structure analysis (GIL released). level: 'complex' (the paper's) or 'mesh'.");
+}
+
+}  // namespace hbc::python

@@ -1,0 +1,132 @@
+// Render-ready geometry for viewers: hbc.Wireframe (a VSG wireframe's arrays as views),
+// hbc.block_soup() and hbc.polylines(). The geometry is made in C++ (render_geometry.hpp) with the
+// GIL released and handed to numpy without a copy (the vectors move into capsules).
+#include <string>
+#include <type_traits>
+
+#include "bindings.hpp"
+
+namespace hbc::python {
+
+namespace {
+
+static_assert(sizeof(WireKind) == 1 && sizeof(TraceStop) == 1, "enums are exposed as uint8");
+
+py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
+
+using IntArray = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
+
+// A read-only view of a wireframe vector; the Wireframe object is the numpy base.
+template <class Get>
+void wire_prop(py::class_<PyWireframe>& cls, const char* name, Get get, const char* doc, bool as_bool = false) {
+  cls.def_property_readonly(
+      name,
+      [get, as_bool](py::object self) -> py::array {
+        const auto& v = get(*self.cast<const PyWireframe&>().w);
+        using T = typename std::decay_t<decltype(v)>::value_type;
+        if constexpr (sizeof(T) == 1) {
+          const auto* d = reinterpret_cast<const uint8_t*>(v.data());
+          return view(d, {ssize(v.size())}, self, as_bool ? py::dtype::of<bool>() : py::dtype::of<uint8_t>());
+        } else {
+          return view(v.data(), {ssize(v.size())}, self);
+        }
+      },
+      doc);
+}
+
+void bind_wireframe(py::module_& m) {
+  py::class_<PyWireframe> c(m, "Wireframe",
+                            "A VSG wireframe (SPEC section 4): polylines of mesh vertices with per-point "
+                            "opacity and per-polyline kind, simplification flags and colours. Arrays are views.");
+  c.def_property_readonly("count", [](const PyWireframe& p) { return p.w->size(); }, "Number of polylines.");
+  wire_prop(c, "polyline_offsets", [](const VsgWireframe& w) -> auto& { return w.polylines.offsets; },
+            "int32 (count + 1,): row offsets of polyline_vertices.");
+  wire_prop(c, "polyline_vertices", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
+            "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
+  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.point_opacity; },
+            "float32, aligned with polyline_vertices: opacity in [floor, 1].");
+  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 VSG chain, 1 trace.");
+  wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
+            "int32 (count,): chain valence; traces the valence of their regular edges.");
+  wire_prop(c, "stop", [](const VsgWireframe& w) -> auto& { return w.stop; },
+            "uint8 (count,): why a trace ended: 0 not a trace, 1 VSG vertex, 2 boundary, 3 no continuation.");
+  wire_prop(c, "shown", [](const VsgWireframe& w) -> auto& { return w.shown; },
+            "bool (count,): in the simplified wireframe (important or reactivated).", true);
+  wire_prop(c, "non_important", [](const VsgWireframe& w) -> auto& { return w.non_important; },
+            "uint8 (count,): 0 important, else the simplification criterion (1, 2, 3) that hid it.");
+  wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
+            "bool (count,): non-important but shown again to keep the wireframe connected.", true);
+  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.color; }, "int32 (count,): palette index.");
+  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.color_class; },
+            "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
+  c.def_property_readonly(
+      "counts",
+      [](const PyWireframe& p) {
+        const VsgWireframe& w = *p.w;
+        py::dict d;
+        d["vsg_edges"] = w.vsg_edges;
+        d["wireframe_edges"] = w.wireframe_edges();
+        d["wireframe_edges_simplified"] = w.wireframe_edges_simplified();
+        d["vsg_chains"] = w.vsg_chains;
+        d["singular_vertices"] = w.singular_vertices.size();
+        d["reference_components"] = w.reference_components;
+        d["shown_components"] = w.shown_components;
+        return d;
+      },
+      "dict: vsg_edges, wireframe_edges, wireframe_edges_simplified, vsg_chains, singular_vertices, "
+      "reference_components, shown_components.");
+}
+
+py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
+                    double shrink) {
+  if (analysis->mesh.get() != mesh.get())
+    throw std::invalid_argument("block_soup: the analysis was computed on another mesh");
+  const SoupKind kind = soup_kind_from_name(what);
+  BlockSoup s;
+  {
+    py::gil_scoped_release unlocked;
+    s = hbc::block_soup(mesh->mesh, analysis->analysis, kind, sheet, shrink);
+  }
+  const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces()), nfv = ssize(s.face_vertices.size());
+  py::dict d;
+  d["positions"] = adopt(std::move(s.positions), {np, 3});
+  d["face_sizes"] = adopt(std::move(s.face_sizes), {nf});
+  d["face_vertices"] = adopt(std::move(s.face_vertices), {nfv});
+  d["face_owner"] = adopt(std::move(s.face_owner), {nf});
+  d["face_source"] = adopt(std::move(s.face_source), {nf});
+  d["point_vertex"] = adopt(std::move(s.point_vertex), {np});
+  return d;
+}
+
+py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArray& vertices) {
+  if (offsets.ndim() != 1 || vertices.ndim() != 1)
+    throw std::invalid_argument("polylines: offsets and vertices must be 1-D");
+  std::vector<float> pos;
+  {
+    py::gil_scoped_release unlocked;
+    pos = polyline_positions(mesh->mesh, {offsets.data(), static_cast<size_t>(offsets.size())},
+                             {vertices.data(), static_cast<size_t>(vertices.size())});
+  }
+  const py::ssize_t n = ssize(pos.size() / 3);
+  return adopt(std::move(pos), {n, 3});
+}
+
+}  // namespace
+
+void bind_geometry(py::module_& m) {
+  bind_wireframe(m);
+  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis"), py::arg("what"), py::arg("sheet") = -1,
+        py::arg("shrink") = 0.0,
+        "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
+        "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
+        "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
+        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type). Returns a dict: "
+        "positions float32 (np, 3), point_vertex int32 (np,), face_sizes int32 (nf,), face_vertices "
+        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
+        "Loops are outward; faces grouped by increasing owner.");
+  m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("vertices"),
+        "float32 (len(vertices), 3): the positions of the polyline points given as a CSR of mesh "
+        "vertex ids (offsets start at 0 and end at len(vertices)).");
+}
+
+}  // namespace hbc::python

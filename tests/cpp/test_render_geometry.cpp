@@ -1,0 +1,206 @@
+// Render geometry (render_geometry.hpp) on generated meshes whose counts follow from construction:
+// a 2×2×2 grid, and a 3×3×3 grid whose centre cell is split into 6 pyramids.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <map>
+#include <numeric>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include "hbc/analysis.hpp"
+#include "hbc/generate.hpp"
+#include "hbc/render_geometry.hpp"
+
+namespace hbc {
+namespace {
+
+struct Analysed {
+  Mesh mesh;
+  Analysis analysis;
+};
+
+Analysed grid2(SheetLevel level = SheetLevel::Complex) {
+  Analysed r{build_mesh(generate_grid(2, 2, 2)), {}};
+  AnalysisOptions opt;
+  opt.sheet_level = level;
+  r.analysis = analyze(r.mesh, opt);
+  return r;
+}
+
+Analysed split3() {
+  const std::array<int32_t, 3> centre{1, 1, 1};
+  Analysed r{build_mesh(generate_split(3, 3, 3, SplitKind::Pyramids, std::span(&centre, 1))), {}};
+  r.analysis = analyze(r.mesh);
+  return r;
+}
+
+std::set<int32_t> owners(const BlockSoup& s) { return {s.face_owner.begin(), s.face_owner.end()}; }
+
+// Every undirected point pair of an owner's faces, with how many faces use it; and whether each
+// directed pair appears once (a consistently oriented closed surface uses each edge once per way).
+void expect_closed_oriented(const BlockSoup& s, int32_t owner) {
+  std::map<std::pair<int32_t, int32_t>, int> directed;
+  int32_t at = 0;
+  for (size_t f = 0; f < s.num_faces(); ++f) {
+    const int32_t n = s.face_sizes[f];
+    if (s.face_owner[f] == owner)
+      for (int32_t i = 0; i < n; ++i) ++directed[{s.face_vertices[at + i], s.face_vertices[at + (i + 1) % n]}];
+    at += n;
+  }
+  ASSERT_FALSE(directed.empty());
+  for (const auto& [e, count] : directed) {
+    EXPECT_EQ(count, 1);
+    EXPECT_EQ(directed.count({e.second, e.first}), 1u) << "edge used by one face only";
+  }
+}
+
+TEST(RenderGeometry, GridCellsComponentsBoundary) {
+  const Analysed g = grid2();
+  const BlockSoup cells = block_soup(g.mesh, g.analysis, SoupKind::Cells);
+  EXPECT_EQ(cells.num_faces(), 48u);  // 8 cells × 6 quads
+  EXPECT_EQ(cells.num_points(), 64u);  // 8 corners each, not shared between cells
+  EXPECT_EQ(cells.face_vertices.size(), 192u);
+  EXPECT_EQ(owners(cells).size(), 8u);
+  for (int32_t c = 0; c < 8; ++c) expect_closed_oriented(cells, c);
+
+  // One cube component: its 24 boundary quads over the 26 boundary vertices (27 minus the centre).
+  const BlockSoup comps = block_soup(g.mesh, g.analysis, SoupKind::Components);
+  EXPECT_EQ(comps.num_faces(), 24u);
+  EXPECT_EQ(comps.num_points(), 26u);
+  EXPECT_EQ(owners(comps), std::set<int32_t>{0});
+  expect_closed_oriented(comps, 0);
+
+  const BlockSoup boundary = block_soup(g.mesh, g.analysis, SoupKind::Boundary);
+  EXPECT_EQ(boundary.num_faces(), 24u);
+  EXPECT_EQ(boundary.num_points(), 26u);
+  EXPECT_EQ(owners(boundary), std::set<int32_t>{static_cast<int32_t>(CellType::Hex)});
+
+  EXPECT_EQ(block_soup(g.mesh, g.analysis, SoupKind::NonHex).num_faces(), 0u);
+  // shrink = 0 copies the vertices exactly.
+  for (size_t p = 0; p < comps.num_points(); ++p)
+    for (int d = 0; d < 3; ++d)
+      EXPECT_EQ(comps.positions[3 * p + d], static_cast<float>(g.mesh.points[3 * static_cast<size_t>(comps.point_vertex[p]) + d]));
+}
+
+TEST(RenderGeometry, ShrinkTowardOwnerCentroid) {
+  const Analysed g = grid2();
+  // The component's vertex centroid is the grid centre (1,1,1); halfway in, corner (0,0,0) lands at
+  // (0.5,0.5,0.5) and (2,2,2) at (1.5,1.5,1.5).
+  const BlockSoup s = block_soup(g.mesh, g.analysis, SoupKind::Components, -1, 0.5);
+  for (size_t p = 0; p < s.num_points(); ++p)
+    for (int d = 0; d < 3; ++d) {
+      const double x = g.mesh.points[3 * static_cast<size_t>(s.point_vertex[p]) + d];
+      EXPECT_FLOAT_EQ(s.positions[3 * p + d], static_cast<float>(1.0 + 0.5 * (x - 1.0)));
+    }
+  // Cells shrink toward their own centres: cell 0 spans [0,1]^3.
+  const BlockSoup c = block_soup(g.mesh, g.analysis, SoupKind::Cells, -1, 0.5);
+  for (size_t p = 0; p < 8; ++p)
+    for (int d = 0; d < 3; ++d) {
+      const float v = c.positions[3 * p + d];
+      EXPECT_TRUE(v == 0.25f || v == 0.75f) << v;
+    }
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Cells, -1, 1.0), std::invalid_argument);
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Cells, -1, -0.5), std::invalid_argument);
+}
+
+TEST(RenderGeometry, GridSheets) {
+  // Complex level: the single cube component carries 3 sheets, each holding all 8 cells.
+  const Analysed g = grid2();
+  ASSERT_EQ(g.analysis.sheets.size(), 3u);
+  const BlockSoup sheets = block_soup(g.mesh, g.analysis, SoupKind::Sheets);
+  EXPECT_EQ(sheets.num_faces(), 72u);  // 3 × the 24 boundary quads
+  EXPECT_EQ(sheets.num_points(), 78u);
+  EXPECT_EQ(owners(sheets), (std::set<int32_t>{0, 1, 2}));
+  const BlockSoup one = block_soup(g.mesh, g.analysis, SoupKind::Sheet, 1);
+  EXPECT_EQ(one.num_faces(), 24u);
+  EXPECT_EQ(owners(one), std::set<int32_t>{0});  // component 0
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Sheet, 3), std::invalid_argument);
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Subsheets, 0), std::invalid_argument);
+
+  // Mesh level: 6 one-cell-thick slabs of 2×2×1 cells; each slab's boundary has 8 + 8 quads and
+  // 18 vertices, and within the one component it stays one block.
+  const Analysed fine = grid2(SheetLevel::Mesh);
+  ASSERT_EQ(fine.analysis.sheets.size(), 6u);
+  const BlockSoup slabs = block_soup(fine.mesh, fine.analysis, SoupKind::Sheets);
+  EXPECT_EQ(slabs.num_faces(), 96u);
+  EXPECT_EQ(slabs.num_points(), 108u);
+  for (int32_t s = 0; s < 6; ++s) {
+    expect_closed_oriented(slabs, s);
+    const BlockSoup slab = block_soup(fine.mesh, fine.analysis, SoupKind::Sheet, s);
+    EXPECT_EQ(slab.num_faces(), 16u);
+    EXPECT_EQ(owners(slab), std::set<int32_t>{0});
+  }
+}
+
+TEST(RenderGeometry, SplitGrid) {
+  // The split cuts the grid along the planes through the centre cell: 26 one-hex components and
+  // 6 pyramid components; every face is a separation face.
+  const Analysed g = split3();
+  ASSERT_EQ(g.mesh.num_cells(), 32u);
+  ASSERT_EQ(g.analysis.complex.num_components(), 32u);
+  const BlockSoup nonhex = block_soup(g.mesh, g.analysis, SoupKind::NonHex);
+  EXPECT_EQ(nonhex.num_faces(), 30u);   // 6 pyramids × (4 triangles + 1 quad)
+  EXPECT_EQ(nonhex.num_points(), 30u);  // 5 apexes and corners each
+  EXPECT_EQ(owners(nonhex).size(), 6u);
+  for (int32_t o : owners(nonhex)) expect_closed_oriented(nonhex, o);
+  int triangles = 0;
+  for (int32_t n : nonhex.face_sizes) triangles += n == 3;
+  EXPECT_EQ(triangles, 24);
+
+  const BlockSoup comps = block_soup(g.mesh, g.analysis, SoupKind::Components);
+  EXPECT_EQ(comps.num_faces(), 26u * 6 + 30);  // every face of every cell, once per side
+  EXPECT_EQ(comps.num_points(), 26u * 8 + 30);
+  EXPECT_EQ(owners(comps).size(), 32u);
+  for (int32_t o : owners(comps)) expect_closed_oriented(comps, o);
+
+  const BlockSoup boundary = block_soup(g.mesh, g.analysis, SoupKind::Boundary);
+  EXPECT_EQ(boundary.num_faces(), 54u);
+  EXPECT_EQ(boundary.num_points(), 56u);  // 64 grid vertices minus the 8 inside
+
+  // The sheets through the centre are type 1 (their shared corners come from the pyramids) and
+  // have those pyramids as adjacent non-hex cells.
+  size_t with_pyramids = 0;
+  for (size_t s = 0; s < g.analysis.sheets.size(); ++s) {
+    const BlockSoup nh = block_soup(g.mesh, g.analysis, SoupKind::SheetNonHex, static_cast<int32_t>(s));
+    EXPECT_EQ(nh.num_faces(), 5 * g.analysis.sheets.sheet_non_hex_cells.count(s));
+    with_pyramids += nh.num_faces() > 0;
+  }
+  EXPECT_GT(with_pyramids, 0u);
+}
+
+TEST(RenderGeometry, Polylines) {
+  const Analysed g = grid2();
+  const std::vector<int32_t> offsets{0, 2, 5}, verts{0, 1, 26, 25, 24};
+  const std::vector<float> p = polyline_positions(g.mesh, offsets, verts);
+  ASSERT_EQ(p.size(), 15u);
+  EXPECT_EQ(p[6], 2.0f);  // vertex 26 = (2,2,2)
+  EXPECT_EQ(p[12], 0.0f);  // vertex 24 = (0,2,2)
+  EXPECT_EQ(p[13], 2.0f);
+  EXPECT_THROW(polyline_positions(g.mesh, std::vector<int32_t>{0, 6}, verts), std::invalid_argument);
+  EXPECT_THROW(polyline_positions(g.mesh, std::vector<int32_t>{0, 1}, std::vector<int32_t>{27}), std::invalid_argument);
+  EXPECT_THROW(soup_kind_from_name("patches"), std::invalid_argument);
+  EXPECT_EQ(soup_kind_from_name("sheet_non_hex"), SoupKind::SheetNonHex);
+}
+
+TEST(RenderGeometry, RegionsAndClasses) {
+  const Analysed g = grid2();
+  EXPECT_EQ(region_cells(g.mesh, g.analysis, -1).size(), 8u);
+  EXPECT_EQ(region_cells(g.mesh, g.analysis, 0).size(), 8u);
+  EXPECT_THROW(region_cells(g.mesh, g.analysis, 0, 0), std::invalid_argument);  // not type 3
+  const VsgWireframe whole = region_wireframe(g.mesh, g.analysis, ComplexLevel::Complex, {}, -1);
+  EXPECT_EQ(whole.wireframe_edges(), g.analysis.wireframe.wireframe_edges());
+  const ClassArrays k = flatten_classes(g.analysis.domain, g.analysis.sheets.classes);
+  EXPECT_EQ(k.type, std::vector<uint8_t>(3, 0));  // a grid's sheets are perfect
+  EXPECT_EQ(k.flags.size(), 9u);
+  EXPECT_EQ(k.unmatched.rows(), 3u);
+  const Csr<int32_t> comps = units_as_components(g.analysis.domain, g.analysis.sheets.sheet_units);
+  EXPECT_EQ(comps.items, std::vector<int32_t>(3, 0));
+  const Analysed fine = grid2(SheetLevel::Mesh);
+  const Csr<int32_t> fine_comps = units_as_components(fine.analysis.domain, fine.analysis.sheets.sheet_units);
+  EXPECT_EQ(fine_comps.items, std::vector<int32_t>(6, 0));  // 4 cells per slab, one component
+}
+
+}  // namespace
+}  // namespace hbc

@@ -1,0 +1,252 @@
+"""hbc.block_soup() and hbc.polylines(): polygon soups of blocks (cells, components, sheets,
+subsheets, one sheet's blocks, non-hex cells, the boundary) with outward loops, one vertex copy
+per owner, shrinking toward each owner's centroid; and polyline point positions."""
+
+import numpy as np
+import pytest
+
+import hbc
+
+TABLE1 = "hybrid-base-complex/"
+MESHES = [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh", TABLE1 + "cube_twist-comp.obj.HYBRID",
+          TABLE1 + "test_2.HYBRID", "cinolib/eight_voronoi.hedra"]
+
+
+@pytest.fixture(scope="module")
+def analysed(shared_data_dir):
+    out = {}
+    for name in MESHES:
+        m = hbc.load(shared_data_dir / name)
+        out[name] = (m, m.analyze())
+    return out
+
+
+def rows(offsets, items):
+    return [items[offsets[i]:offsets[i + 1]] for i in range(len(offsets) - 1)]
+
+
+def kinds(a):
+    """(what, sheet, number of possible owners) for every block set the analysis allows."""
+    out = [("cells", -1, a.mesh.num_cells), ("components", -1, len(a.complex.component_kind)),
+           ("sheets", -1, a.num_sheets), ("non_hex", -1, a.mesh.num_cells), ("boundary", -1, 5)]
+    for s in range(min(a.num_sheets, 3)):
+        out += [("sheet", s, len(a.complex.component_kind)), ("sheet_non_hex", s, a.mesh.num_cells)]
+    for s in a.self_intersecting_sheets:
+        out.append(("subsheets", int(s), a.subsheets(int(s)).count))
+    return out
+
+
+def check_soup(m, d, owners):
+    """Shapes, ranges, and the point/owner structure every soup has."""
+    pos, pv = d["positions"], d["point_vertex"]
+    sizes, fv, owner, src = d["face_sizes"], d["face_vertices"], d["face_owner"], d["face_source"]
+    npnt, nf = len(pv), len(sizes)
+    assert pos.dtype == np.float32 and pos.shape == (npnt, 3)
+    for arr in (pv, sizes, fv, owner, src):
+        assert arr.dtype == np.int32 and arr.ndim == 1
+    assert owner.shape == src.shape == (nf,)
+    assert int(sizes.sum()) == len(fv)
+    assert np.all(sizes >= 3)
+    assert np.all((fv >= 0) & (fv < npnt))
+    assert np.all((owner >= 0) & (owner < owners))
+    assert np.all(np.diff(owner) >= 0), "faces grouped by increasing owner"
+    assert np.all((pv >= 0) & (pv < m.num_vertices))
+    assert np.all((src >= 0) & (src < m.num_faces))
+    # Each face is the mesh face it comes from, as a loop (either direction, any rotation).
+    starts = np.concatenate(([0], np.cumsum(sizes)))
+    for i in range(0, nf, max(1, nf // 200)):
+        loop = pv[fv[starts[i]:starts[i + 1]]].tolist()
+        f = src[i]
+        mesh_loop = m.face_vertices[m.face_offsets[f]:m.face_offsets[f + 1]].tolist()
+        assert sorted(loop) == sorted(mesh_loop)
+    # Points are not shared between owners, and shared within one (one copy per mesh vertex).
+    point_owner = np.full(npnt, -1)
+    face_of = np.repeat(np.arange(nf), sizes)
+    point_owner[fv] = owner[face_of]
+    assert np.all(point_owner[fv] == owner[face_of]), "a point used by two owners"
+    assert np.all(point_owner >= 0), "a point used by no face"
+    pairs = point_owner.astype(np.int64) * m.num_vertices + pv
+    assert len(np.unique(pairs)) == npnt, "two copies of one vertex in one owner"
+    return point_owner
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_soups_valid_and_shrink(analysed, name):
+    m, a = analysed[name]
+    pts = m.points64
+    for what, sheet, owners in kinds(a):
+        d0 = hbc.block_soup(m, a, what, sheet=sheet)
+        po = check_soup(m, d0, owners)
+        assert np.array_equal(d0["positions"], m.points[d0["point_vertex"]]), what
+        shrink = 0.3
+        d = hbc.block_soup(m, a, what, sheet=sheet, shrink=shrink)
+        for k in ("face_sizes", "face_vertices", "face_owner", "face_source", "point_vertex"):
+            assert np.array_equal(d[k], d0[k]), (what, k)
+        if len(po) == 0:
+            continue
+        n_own = po.max() + 1
+        count = np.bincount(po, minlength=n_own)
+        c = np.zeros((n_own, 3))
+        np.add.at(c, po, pts[d0["point_vertex"]])
+        c = c[po] / count[po, None]
+        p = pts[d0["point_vertex"]]
+        expected = c + (1 - shrink) * (p - c)
+        assert np.allclose(d["positions"], expected, atol=1e-4 * np.ptp(pts)), what
+        before = np.linalg.norm(p - c, axis=1)
+        after = np.linalg.norm(d["positions"] - c, axis=1)
+        assert np.all(after <= before * (1 - shrink) + 1e-4 * np.ptp(pts)), what
+        assert np.all(after[before > 1e-3 * np.ptp(pts)] < before[before > 1e-3 * np.ptp(pts)]), what
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_soup_face_counts(analysed, name):
+    m, a = analysed[name]
+    nfaces = np.diff(m.cell_offsets)
+    hexes = m.cell_types == 0
+    cells = hbc.block_soup(m, a, "cells")
+    assert len(cells["face_sizes"]) == len(m.cell_faces)
+    assert np.array_equal(np.bincount(cells["face_owner"], minlength=m.num_cells), nfaces)
+    non_hex = hbc.block_soup(m, a, "non_hex")
+    assert len(non_hex["face_sizes"]) == nfaces[~hexes].sum()
+    assert set(np.unique(non_hex["face_owner"])) == set(np.flatnonzero(~hexes))
+    boundary = hbc.block_soup(m, a, "boundary")
+    bf = np.flatnonzero(m.face_boundary)
+    assert np.array_equal(np.sort(boundary["face_source"]), bf)
+    order = np.argsort(boundary["face_source"])
+    assert np.array_equal(boundary["face_owner"][order], m.cell_types[m.face_cells[bf, 0]])
+    # Components: separation faces, once per side; interior ones twice.
+    comps = hbc.block_soup(m, a, "components")
+    sep = a.complex.face_separation
+    assert len(comps["face_sizes"]) == int(sep.sum() + (sep & ~m.face_boundary).sum())
+    assert np.all(sep[comps["face_source"]])
+    # Sheets: for each sheet, the faces of its cells with the other side outside the sheet.
+    sheets = hbc.block_soup(m, a, "sheets")
+    for s in range(min(a.num_sheets, 5)):
+        inside = np.zeros(m.num_cells + 1, bool)
+        inside[rows(a.sheet_cell_offsets, a.sheet_cell_items)[s]] = True
+        fc = m.face_cells
+        expected = np.flatnonzero(inside[fc[:, 0]] != inside[fc[:, 1]])
+        assert np.array_equal(np.sort(sheets["face_source"][sheets["face_owner"] == s]), expected)
+        one = hbc.block_soup(m, a, "sheet", sheet=s)
+        owners = np.unique(one["face_owner"])
+        assert np.array_equal(owners, rows(a.sheet_component_offsets, a.sheet_component_items)[s])
+        nh = hbc.block_soup(m, a, "sheet_non_hex", sheet=s)
+        assert np.array_equal(np.unique(nh["face_owner"]), rows(a.sheet_non_hex_offsets, a.sheet_non_hex_items)[s])
+    for s in a.self_intersecting_sheets:
+        sub = a.subsheets(int(s))
+        d = hbc.block_soup(m, a, "subsheets", sheet=int(s))
+        assert np.array_equal(np.unique(d["face_owner"]), np.flatnonzero(np.diff(sub.cell_offsets) > 0))
+
+
+def signed_volume(pos, sizes, fv):
+    """Divergence theorem over fan triangles: positive for a closed surface with outward loops."""
+    starts = np.concatenate(([0], np.cumsum(sizes)))
+    vol = 0.0
+    for i in range(len(sizes)):
+        loop = pos[fv[starts[i]:starts[i + 1]]]
+        for k in range(1, len(loop) - 1):
+            vol += np.dot(loop[0], np.cross(loop[k], loop[k + 1])) / 6
+    return vol
+
+
+def disagreeing_cells(m):
+    """Cells on an interior face that both its cells see with the same loop direction (tangled or
+    inverted cells in the data: each cell is oriented outward on its own)."""
+    seen = np.zeros(m.num_faces, int)
+    np.add.at(seen, m.cell_faces, m.cell_face_flip.astype(int))
+    fc = m.face_cells
+    bad = (fc[:, 1] >= 0) & (seen != 1)
+    return np.unique(fc[bad].ravel())
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_cube_component_blocks_closed_and_outward(analysed, name):
+    m, a = analysed[name]
+    d = hbc.block_soup(m, a, "components")
+    pos = d["positions"].astype(np.float64) - m.points64.mean(axis=0)
+    sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
+    starts = np.concatenate(([0], np.cumsum(sizes)))
+    cubes = np.flatnonzero(a.complex.component_kind == 0)
+    tangled = set(a.complex.cell_component[disagreeing_cells(m)].tolist())
+    assert len(cubes) > 0
+    checked_orientation = 0
+    for k in cubes[:: max(1, len(cubes) // 60)]:
+        faces = np.flatnonzero(owner == k)
+        directed = []
+        for f in faces:
+            loop = fv[starts[f]:starts[f + 1]].tolist()
+            directed += list(zip(loop, loop[1:] + loop[:1]))
+        # Closed: every undirected edge on exactly two faces.
+        undirected = np.sort(np.array(directed), axis=1)
+        _, counts = np.unique(undirected, axis=0, return_counts=True)
+        assert np.all(counts == 2)
+        if k in tangled:
+            continue
+        # Outward: every edge once in each direction and a positive enclosed volume.
+        checked_orientation += 1
+        assert len(set(directed)) == len(directed)
+        assert set(directed) == {(b, a_) for a_, b in directed}
+        assert signed_volume(pos, sizes[faces], np.concatenate([fv[starts[f]:starts[f + 1]] for f in faces])) > 0
+    assert checked_orientation > 0
+
+
+def test_hex_cells_outward(analysed):
+    m, a = analysed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
+    d = hbc.block_soup(m, a, "cells")
+    pos = d["positions"].astype(np.float64)
+    sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
+    starts = np.concatenate(([0], np.cumsum(sizes)))
+    for c in np.flatnonzero(m.cell_types == 0)[::7]:
+        faces = np.flatnonzero(owner == c)
+        loops = np.concatenate([fv[starts[f]:starts[f + 1]] for f in faces])
+        centre = pos[loops].mean(axis=0)
+        assert signed_volume(pos - centre, sizes[faces], loops) > 0
+
+
+def test_soup_errors(analysed):
+    m, a = analysed[TABLE1 + "twistcube_s.mesh"]
+    with pytest.raises(ValueError, match="expected one of"):
+        hbc.block_soup(m, a, "patches")
+    for bad in (-0.1, 1.0, float("nan")):
+        with pytest.raises(ValueError, match="shrink"):
+            hbc.block_soup(m, a, "cells", shrink=bad)
+    with pytest.raises(ValueError, match="out of range"):
+        hbc.block_soup(m, a, "sheet")  # no sheet given
+    with pytest.raises(ValueError, match="out of range"):
+        hbc.block_soup(m, a, "sheet", sheet=a.num_sheets)
+    not_type3 = int(np.flatnonzero(a.sheet_type != 3)[0])
+    with pytest.raises(ValueError, match="not self-intersecting"):
+        hbc.block_soup(m, a, "subsheets", sheet=not_type3)
+    other, _ = analysed[TABLE1 + "test_2.HYBRID"]
+    with pytest.raises(ValueError, match="another mesh"):
+        hbc.block_soup(other, a, "cells")
+    no_sheets = m.analyze(sheets=False, wireframe=False)
+    with pytest.raises(ValueError, match="without sheets"):
+        hbc.block_soup(m, no_sheets, "sheets")
+
+
+def test_soup_arrays_are_owned(analysed):
+    m, a = analysed[TABLE1 + "test_2.HYBRID"]
+    d = hbc.block_soup(m, a, "cells", shrink=0.5)
+    pos = d["positions"]
+    assert not pos.flags.owndata and pos.base is not None  # the C++ vector, moved into a capsule
+    del d, a
+    assert np.isfinite(pos).all()
+
+
+def test_polylines(analysed):
+    m, a = analysed[TABLE1 + "teapot.hedra"]
+    c = a.complex
+    p = hbc.polylines(m, c.curve_offsets, c.curve_vertices)
+    assert p.dtype == np.float32 and p.shape == (len(c.curve_vertices), 3)
+    assert np.array_equal(p, m.points[c.curve_vertices])
+    w = a.wireframe()
+    assert np.array_equal(hbc.polylines(m, w.polyline_offsets, w.polyline_vertices), m.points[w.polyline_vertices])
+    assert hbc.polylines(m, [0, 2, 3], [0, 1, 2]).shape == (3, 3)  # any integer sequence
+    assert hbc.polylines(m, [0], []).shape == (0, 3)
+    with pytest.raises(ValueError, match="offsets"):
+        hbc.polylines(m, [0, 2], [0, 1, 2])
+    with pytest.raises(ValueError, match="decrease"):
+        hbc.polylines(m, [0, 3, 2, 3], [0, 1, 2])
+    with pytest.raises(ValueError, match="out of range"):
+        hbc.polylines(m, [0, 2], [0, m.num_vertices])
