@@ -152,11 +152,13 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
   if (in.owner.size() != n || in.reversed.size() != n)
     throw std::invalid_argument("owned faces: owner, face and reversed differ in length");
   int32_t num_owners = 0;
+  size_t corners = 0;  // face corners: the soup's face_vertices and an upper bound on its points
   for (size_t i = 0; i < n; ++i) {
     if (in.owner[i] < 0) throw std::invalid_argument("owned faces: negative owner");
     if (in.face[i] < 0 || static_cast<size_t>(in.face[i]) >= m.num_faces())
       throw std::invalid_argument("owned faces: face id out of range: " + std::to_string(in.face[i]));
     num_owners = std::max(num_owners, in.owner[i] + 1);
+    corners += static_cast<size_t>(m.face_verts.count(static_cast<size_t>(in.face[i])));
   }
   // Stable counting sort by owner, so each owner's faces form one run in selection order.
   std::vector<int32_t> start(static_cast<size_t>(num_owners) + 1, 0);
@@ -172,10 +174,12 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
   s.face_sizes.reserve(n);
   s.face_owner.reserve(n);
   s.face_source.reserve(n);
+  s.face_vertices.reserve(corners);
+  s.point_vertex.reserve(corners);
+  s.positions.reserve(3 * corners);
   // Mesh vertex -> point of the current owner; `seen` holds the owner that made the point, so the
   // table needs no clearing between owners.
   std::vector<int32_t> point_of(m.num_vertices(), -1), seen(m.num_vertices(), -1);
-  std::vector<double> xyz;  // positions in double until the owner's centroid is known
   for (int32_t o = 0; o < num_owners; ++o) {
     const size_t first_point = s.point_vertex.size();
     for (int32_t k = start[static_cast<size_t>(o)]; k < start[static_cast<size_t>(o) + 1]; ++k) {
