@@ -56,11 +56,17 @@ def _hsv_palette(n: int) -> np.ndarray:
     out = np.empty((n, 4), np.float32)
     for i in range(n):
         h = (i * 0.618033988749895) % 1.0
-        s = 0.75 if i % 2 == 0 else 0.55
-        v = 0.95 if (i // 2) % 2 == 0 else 0.75
-        r, g, b = colorsys.hsv_to_rgb(h, s, v)
-        out[i] = (r, g, b, 1.0)
+        s = 0.85 if i % 2 == 0 else 0.6
+        v = 0.95 if (i // 2) % 2 == 0 else 0.7
+        out[i, :3] = srgb_to_linear(colorsys.hsv_to_rgb(h, s, v))
+        out[i, 3] = 1.0
     return out
+
+
+def srgb_to_linear(c):
+    """Display (sRGB) values to the scene-linear values Blender's colours hold."""
+    c = np.asarray(c, np.float64)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
 PALETTE_SIZE = 24

@@ -33,7 +33,7 @@ class HBCSettings(bpy.types.PropertyGroup):
     sheet_index: IntProperty(name="Sheet", default=0, min=0)
 
     # lines
-    line_radius: FloatProperty(name="Curve radius", default=0.002, min=0.0, max=0.1, precision=4,
+    line_radius: FloatProperty(name="Curve radius", default=0.0035, min=0.0, max=0.1, precision=4,
                                description="Tube radius as a fraction of the model's diagonal")
     dot_radius: FloatProperty(name="Dot radius", default=0.006, min=0.0, max=0.1, precision=4)
 

@@ -135,10 +135,10 @@ def _group_socket(ng, in_out, socket_type, name):
 def tube_group(tx: Transaction):
     """Geometry nodes: edges -> curves -> tubes of radius `Radius`, attributes carried along."""
     ng = bpy.data.node_groups.get(TUBE_GROUP)
-    if ng is not None and ng.get("hbc_group") == 1:
+    if ng is not None and ng.get("hbc_group") == 2:
         return ng
     ng = tx.add("node_groups", bpy.data.node_groups.new(TUBE_GROUP, "GeometryNodeTree"))
-    ng["hbc_group"] = 1
+    ng["hbc_group"] = 2
     _group_socket(ng, "INPUT", "NodeSocketGeometry", "Geometry")
     r = _group_socket(ng, "INPUT", "NodeSocketFloat", "Radius")
     r.default_value = 0.01
@@ -151,13 +151,17 @@ def tube_group(tx: Transaction):
     m2c = n.new("GeometryNodeMeshToCurve")
     c2m = n.new("GeometryNodeCurveToMesh")
     circ = n.new("GeometryNodeCurvePrimitiveCircle")
+    # Mesh to Curve drops the mesh's materials: put the shared attribute material back.
+    setmat = n.new("GeometryNodeSetMaterial")
+    setmat.inputs["Material"].default_value = material(tx, "attr")
     L = ng.links.new
     L(gi.outputs["Geometry"], m2c.inputs["Mesh"])
     L(m2c.outputs["Curve"], c2m.inputs["Curve"])
     L(gi.outputs["Radius"], circ.inputs["Radius"])
     L(gi.outputs["Resolution"], circ.inputs["Resolution"])
     L(circ.outputs["Curve"], c2m.inputs["Profile Curve"])
-    L(c2m.outputs["Mesh"], go.inputs["Geometry"])
+    L(c2m.outputs["Mesh"], setmat.inputs["Geometry"])
+    L(setmat.outputs["Geometry"], go.inputs["Geometry"])
     return ng
 
 
