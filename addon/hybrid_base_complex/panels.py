@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import bpy
 
-from . import layers as L
 from . import planning as P
 from . import scene as S
 from . import session
@@ -107,7 +106,10 @@ class HBC_PT_layers(_Base, bpy.types.Panel):
 
         box = _layer_header(layout, root, "sheets", "Sheets")
         box.template_list("HBC_UL_sheets", "", st, "sheets", st, "sheet_index", rows=5)
-        _layer_header(box, root, "sheet", "Picked sheet + highlights").prop(st, "dot_radius")
+        picked = _layer_header(box, root, "sheet", "Picked sheet + highlights")
+        row = picked.row(align=True)
+        row.prop(st, "auto_show")
+        row.prop(st, "dot_radius")
         sub = _layer_header(box, root, "subsheets", "Subsheets of picked sheet")
         sub.prop(st, "spread")
         if 0 <= st.sheet_index < len(st.sheets) and st.sheets[st.sheet_index].type != 3:

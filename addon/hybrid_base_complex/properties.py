@@ -30,7 +30,9 @@ class HBCSettings(bpy.types.PropertyGroup):
                            description="Up to this many blocks, one object per block (clickable); "
                                        "more: one merged mesh with a face attribute 'owner'")
     sheets: CollectionProperty(type=HBCSheetItem)
-    sheet_index: IntProperty(name="Sheet", default=0, min=0)
+    sheet_index: IntProperty(name="Sheet", default=0, min=0, update=lambda self, context: _sheet_picked(self, context))
+    auto_show: BoolProperty(name="Show on pick", default=True,
+                            description="Rebuild the picked-sheet layer when another sheet is picked in the list")
 
     # lines
     line_radius: FloatProperty(name="Curve radius", default=0.0035, min=0.0, max=0.1, precision=4,
@@ -45,6 +47,23 @@ class HBCSettings(bpy.types.PropertyGroup):
     wireframe_scope: EnumProperty(name="Scope", items=[("MESH", "Whole mesh", ""), ("SHEET", "Picked sheet", "")])
     spread: BoolProperty(name="Side by side", default=True,
                          description="Lay subsheets out side by side with their wireframe beneath")
+
+
+def _sheet_picked(settings, context):
+    """Picking a sheet in the list shows it (when the picked-sheet layer is on and auto_show)."""
+    if not settings.auto_show or not settings.active_mesh:
+        return
+    from . import layers, scene, session
+
+    root = layers.find_root(settings.active_mesh)
+    s = session.get(settings.active_mesh)
+    if root is None or s is None or s.analysis is None or scene.find_layer(root, "sheet") is None:
+        return
+    if 0 <= settings.sheet_index < s.num_sheets:
+        try:
+            layers.build_layer(root, "sheet", s, settings)
+        except Exception as e:  # noqa: BLE001 - an update callback cannot report; the layer stays as it was
+            print(f"hbc: could not show sheet {settings.sheet_index}: {e}")
 
 
 classes = (HBCSheetItem, HBCSettings)

@@ -195,6 +195,11 @@ def test_every_layer_on_fake_analysis(clean_scene, addon):
     dg = bpy.context.evaluated_depsgraph_get()
     ev = wire.evaluated_get(dg)
     assert len(ev.data.polygons) > 0 and "hbc_color" in ev.data.attributes
+    # Picking another sheet in the list shows it at once (the picked-sheet layer exists).
+    st.sheet_index = 2
+    assert {o["hbc_sheet"] for o in layer_objects(root, "sheet")} == {2}
+    st.sheet_index = 0
+    assert {o["hbc_sheet"] for o in layer_objects(root, "sheet")} == {0}
     # Merged blocks when over the split limit; the face owner tells the block.
     st.split_max = 0
     assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
@@ -233,3 +238,51 @@ def test_zip_installs_and_enables(addon, tmp_path):
     assert bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True) == {"FINISHED"}
     installed = os.path.join(bpy.utils.user_resource("SCRIPTS", path="addons"), "hybrid_base_complex", "__init__.py")
     assert os.path.isfile(installed)
+
+
+class _Recorder:
+    """A stand-in UILayout: accepts every call, records the texts, returns another recorder."""
+
+    def __init__(self, log):
+        self._log = log
+
+    def __getattr__(self, name):
+        def call(*args, **kwargs):
+            if name == "prop":
+                data, prop = args[0], args[1]
+                assert hasattr(data, prop) or prop in data.bl_rna.properties, prop
+            if "text" in kwargs:
+                self._log.append(str(kwargs["text"]))
+            return _Recorder(self._log)
+        return call
+
+    def __setattr__(self, name, value):
+        object.__setattr__(self, name, value)
+
+
+def test_panels_draw(clean_scene, data_dir):
+    """Every panel's draw runs (against a recording layout) for an analysed mesh and a picked block."""
+    from types import SimpleNamespace
+
+    from hybrid_base_complex import panels
+
+    path = data_dir / "hybrid-base-complex" / "twistcube_s.mesh"
+    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyse=has_analysis()) == {"FINISHED"}
+    texts = []
+    for cls in (panels.HBC_PT_main, panels.HBC_PT_layers):
+        assert not hasattr(cls, "poll") or cls.poll(bpy.context)
+        cls.draw(SimpleNamespace(layout=_Recorder(texts)), bpy.context)
+    assert "|C|" in texts and "Build" in texts
+    if has_analysis():
+        bpy.context.scene.hbc.split_max = 100000
+        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+        root = roots()[0]
+        ob = layer_objects(root, "blocks")[3]
+        bpy.context.view_layer.objects.active = ob
+        assert panels.HBC_PT_selection.poll(bpy.context)
+        panels.HBC_PT_selection.draw(SimpleNamespace(layout=_Recorder(texts)), bpy.context)
+        assert f"component: {ob['hbc_component']}" in texts
+        assert any(t.startswith("kind: ") for t in texts) and any(t.startswith("sheets: ") for t in texts)
+    item = SimpleNamespace(index=0, type=3, cells=10, components=2)
+    panels.HBC_UL_sheets.draw_item(None, bpy.context, _Recorder(texts), None, item, 0, None, "")
+    assert "type 3 (self-intersecting)" in texts
