@@ -1,0 +1,105 @@
+// Replays every input kept in tests/fuzz/regressions/<harness>/ through the code path of that
+// libFuzzer harness (tests/fuzz/fuzz_targets.hpp): each must be rejected with InputError or
+// accepted with the invariants the harness checks; any other exception fails the test naming the
+// file, and a crash or sanitizer report (scripts/test_sanitized.sh) fails the suite.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "../fuzz/fuzz_targets.hpp"
+#include "test_support.hpp"
+
+namespace hbc {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path regressions_dir() { return fs::path(__FILE__).parent_path().parent_path() / "fuzz" / "regressions"; }
+
+std::string file_bytes(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// Sorted so that the order (and a failure's position) is the same on every machine.
+std::vector<fs::path> inputs_of(const std::string& harness) {
+  std::vector<fs::path> files;
+  const fs::path dir = regressions_dir() / harness;
+  if (fs::is_directory(dir))
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.is_regular_file() && e.path().filename() != "README.md") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+struct Outcome {
+  int accepted = 0, rejected = 0;
+};
+
+template <class Run>
+Outcome replay(const std::string& harness, Run&& run) {
+  Outcome o;
+  for (const fs::path& p : inputs_of(harness)) {
+    SCOPED_TRACE(p.string());
+    try {
+      const bool accepted = run(file_bytes(p));
+      (accepted ? o.accepted : o.rejected) += 1;
+      // bounds_*: a tiny file declaring huge counts or valences; it must be refused (before it
+      // could allocate for them, which the sanitized run would report as an allocation failure).
+      if (p.filename().string().rfind("bounds_", 0) == 0) EXPECT_FALSE(accepted) << p;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << p << ": only InputError may escape, got: " << e.what();
+    }
+  }
+  return o;
+}
+
+Format format_of_harness(const std::string& h) {
+  if (h == "ovm") return Format::Ovm;
+  if (h == "ovmb") return Format::Ovmb;
+  if (h == "medit") return Format::Medit;
+  if (h == "hybrid") return Format::Hybrid;
+  return Format::Hedra;
+}
+
+class ReaderRegressions : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ReaderRegressions, OnlyInputErrorOrAMesh) {
+  const std::string h = GetParam();
+  const Outcome o = replay(h, [&](const std::string& b) { return fuzz::read_and_build(format_of_harness(h), b); });
+  RecordProperty("accepted", o.accepted);
+  RecordProperty("rejected", o.rejected);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fuzz, ReaderRegressions, ::testing::Values("ovm", "ovmb", "medit", "hybrid", "hedra"));
+
+TEST(FuzzRegressions, AnalyzeOnlyInputErrorOrAnAnalysis) {
+  replay("analyze", [](const std::string& b) { return fuzz::load_and_analyze(b); });
+}
+
+// The folder is where the harnesses' findings are kept: make sure the test is not silently looking
+// at an empty or misplaced one.
+TEST(FuzzRegressions, FolderHoldsInputs) {
+  size_t n = 0;
+  for (const char* h : {"ovm", "ovmb", "medit", "hybrid", "hedra", "analyze"}) n += inputs_of(h).size();
+  EXPECT_GT(n, 0u) << "no inputs under " << regressions_dir();
+}
+
+// The harness code path itself must tell the outcomes apart, or the replays above prove nothing.
+TEST(FuzzRegressions, HarnessPathSeesAcceptAndReject) {
+  const std::string tet =
+      "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+      "Tetrahedra\n1\n1 2 3 4 0\nEnd\n";
+  EXPECT_TRUE(fuzz::read_and_build(Format::Medit, tet));
+  EXPECT_FALSE(fuzz::read_and_build(Format::Medit, tet.substr(0, tet.size() - 12)));
+  EXPECT_TRUE(fuzz::load_and_analyze(std::string(1, '\x02') + tet));
+  EXPECT_FALSE(fuzz::load_and_analyze(std::string(1, '\x00') + tet));  // MEDIT text read as OVM
+  EXPECT_FALSE(fuzz::load_and_analyze(""));
+}
+
+}  // namespace
+}  // namespace hbc
