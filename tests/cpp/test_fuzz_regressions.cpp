@@ -50,7 +50,9 @@ Outcome replay(const std::string& harness, Run&& run) {
       (accepted ? o.accepted : o.rejected) += 1;
       // bounds_*: a tiny file declaring huge counts or valences; it must be refused (before it
       // could allocate for them, which the sanitized run would report as an allocation failure).
-      if (p.filename().string().rfind("bounds_", 0) == 0) EXPECT_FALSE(accepted) << p;
+      if (p.filename().string().rfind("bounds_", 0) == 0) {
+        EXPECT_FALSE(accepted) << p;
+      }
     } catch (const std::exception& e) {
       ADD_FAILURE() << p << ": only InputError may escape, got: " << e.what();
     }
