@@ -30,6 +30,20 @@ int32_t fan_position(const Mesh& m, int32_t e, int32_t f) {
 
 int32_t straight_face(const Mesh& m, int32_t e, int32_t f) {
   if (!m.edge_fan_ok[e]) return -1;
+  // Regular fans, by far the most common: the face two steps around an interior 4-fan, the
+  // other end of a boundary 3-fan.
+  const auto faces = m.edge_faces[e];
+  const size_t ncells = static_cast<size_t>(m.edge_cells.count(e));
+  if (faces.size() == 4 && ncells == 4) {
+    for (size_t i = 0; i < 4; ++i)
+      if (faces[i] == f) return faces[(i + 2) & 3];
+    return -1;
+  }
+  if (faces.size() == 3 && ncells == 2) {
+    if (faces[0] == f) return faces[2];
+    if (faces[2] == f) return faces[0];
+    return -1;
+  }
   const auto fc = m.face_cells[f];
   int32_t found = -1;
   for (int32_t g : m.edge_faces[e]) {
@@ -48,6 +62,35 @@ int32_t straight_face(const Mesh& m, int32_t e, int32_t f) {
 namespace {
 
 // Sorted distinct values of `v`, appended to `out` as one row.
+// Distinct ids gathered row by row without sorting the duplicates: a stamp per id marks those
+// already taken for the current row; only the few distinct ids get sorted.
+class RowCollector {
+ public:
+  explicit RowCollector(size_t n) : stamp_(n, -1) {}
+  void begin() {
+    ++current_;
+    row_.clear();
+  }
+  void add(int32_t id) {
+    if (stamp_[id] == current_) return;
+    stamp_[id] = current_;
+    row_.push_back(id);
+  }
+  void end(Csr<int32_t>& out) {
+    if (row_.size() <= 16) {  // the usual case: a handful of ids
+      for (size_t i = 1; i < row_.size(); ++i)
+        for (size_t j = i; j > 0 && row_[j - 1] > row_[j]; --j) std::swap(row_[j - 1], row_[j]);
+    } else {
+      std::sort(row_.begin(), row_.end());
+    }
+    out.push_row(row_.begin(), row_.end());
+  }
+
+ private:
+  std::vector<int32_t> stamp_, row_;
+  int32_t current_ = -1;
+};
+
 void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -166,69 +209,55 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
     bc.patch_components.push_back({bc.cell_component[fc[0]], fc[1] >= 0 ? bc.cell_component[fc[1]] : -1});
   }
   const size_t npatch = bc.patch_faces.rows();
-  std::vector<int32_t> buf;
+  const size_t ncurve = bc.curve_edges.rows();
+  RowCollector by_vertex(nv), by_curve(ncurve), by_patch(npatch), by_component(ncomp);
   for (size_t p = 0; p < npatch; ++p) {
-    buf.clear();
-    for (int32_t f : bc.patch_faces[p])
+    by_vertex.begin();
+    by_curve.begin();
+    for (int32_t f : bc.patch_faces[p]) {
       for (int32_t v : m.face_verts[f])
-        if (bc.vert_corner[v]) buf.push_back(v);
-    push_unique_row(buf, bc.patch_corners);
-    buf.clear();
-    for (int32_t f : bc.patch_faces[p])
+        if (bc.vert_corner[v]) by_vertex.add(v);
       for (int32_t e : m.face_edges[f])
-        if (bc.edge_curve[e] >= 0) buf.push_back(bc.edge_curve[e]);
-    push_unique_row(buf, bc.patch_curves);
+        if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
+    }
+    by_vertex.end(bc.patch_corners);
+    by_curve.end(bc.patch_curves);
   }
 
-  // Per component: patches, curves, corners; adjacency; faces with the component on both sides.
-  std::vector<std::pair<int32_t, int32_t>> adjacent;
+  // Faces with the same component on both sides (reported, never hidden).
   for (size_t f = 0; f < nf; ++f) {
     if (!sep[f] || m.face_cells[f][1] < 0) continue;
-    const int32_t a = bc.cell_component[m.face_cells[f][0]], b = bc.cell_component[m.face_cells[f][1]];
-    if (a == b) bc.self_adjacent_faces.push_back(static_cast<int32_t>(f));
-    else adjacent.push_back({std::min(a, b), std::max(a, b)});
+    if (bc.cell_component[m.face_cells[f][0]] == bc.cell_component[m.face_cells[f][1]])
+      bc.self_adjacent_faces.push_back(static_cast<int32_t>(f));
   }
-  std::sort(adjacent.begin(), adjacent.end());
-  adjacent.erase(std::unique(adjacent.begin(), adjacent.end()), adjacent.end());
-  {
-    Csr<int32_t> pairs;
-    for (auto [a, b] : adjacent) {
-      const int32_t row[2] = {a, b};
-      pairs.push_row(row, row + 2);
-    }
-    bc.component_adjacency = transpose(pairs, ncomp);
-    // transpose lists pair indices; map them to the other component.
-    for (size_t k = 0; k < ncomp; ++k)
-      for (int32_t& x : bc.component_adjacency.row(k)) {
-        const auto [a, b] = adjacent[static_cast<size_t>(x)];
-        x = a == static_cast<int32_t>(k) ? b : a;
-      }
-    for (size_t k = 0; k < ncomp; ++k) {
-      auto r = bc.component_adjacency.row(k);
-      std::sort(r.begin(), r.end());
-    }
-  }
-
   std::vector<uint8_t> self_cut(ncomp, 0);
   for (int32_t f : bc.self_adjacent_faces) self_cut[bc.cell_component[m.face_cells[f][0]]] = 1;
+
+  // Per component: adjacency, patches, curves, corners, and its kind.
   bc.component_kind.assign(ncomp, ComponentKind::Other);
   for (size_t k = 0; k < ncomp; ++k) {
     auto cells = bc.component_cells[k];
-    buf.clear();
-    for (int32_t c : cells)
-      for (int32_t f : m.cell_faces[c])
-        if (sep[f]) buf.push_back(bc.face_patch[f]);
-    push_unique_row(buf, bc.component_patches);
-    buf.clear();
-    for (int32_t c : cells)
+    by_component.begin();
+    by_patch.begin();
+    by_curve.begin();
+    by_vertex.begin();
+    for (int32_t c : cells) {
+      for (int32_t f : m.cell_faces[c]) {
+        if (!sep[f]) continue;
+        by_patch.add(bc.face_patch[f]);
+        const auto fc = m.face_cells[f];
+        const int32_t other = fc[0] == c ? fc[1] : fc[0];
+        if (other >= 0 && bc.cell_component[other] != static_cast<int32_t>(k)) by_component.add(bc.cell_component[other]);
+      }
       for (int32_t e : m.cell_edges[c])
-        if (bc.edge_curve[e] >= 0) buf.push_back(bc.edge_curve[e]);
-    push_unique_row(buf, bc.component_curves);
-    buf.clear();
-    for (int32_t c : cells)
+        if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
       for (int32_t v : m.cell_verts[c])
-        if (bc.vert_corner[v]) buf.push_back(v);
-    push_unique_row(buf, bc.component_corners);
+        if (bc.vert_corner[v]) by_vertex.add(v);
+    }
+    by_component.end(bc.component_adjacency);
+    by_patch.end(bc.component_patches);
+    by_curve.end(bc.component_curves);
+    by_vertex.end(bc.component_corners);
 
     if (cells.size() == 1 && !m.is_hex(cells[0])) {
       bc.component_kind[k] = ComponentKind::NonHex;

@@ -119,42 +119,49 @@ bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
 
 // Files disagree on how cells see their faces (some list every face the same way round), so
 // each cell's face loops are made consistent (neighbouring faces walk their shared edge in
-// opposite directions) and then turned outward (positive signed volume). A cell that cannot be
-// oriented keeps what the file said.
+// opposite directions), then cells are made consistent with each other (two cells see their
+// shared face in opposite directions), and each face-connected group of cells is turned so that
+// its total signed volume is positive. Orienting cell by cell by the sign of its own volume would
+// turn inverted (tangled) cells against their neighbours; this way they keep a negative volume.
+// A cell that cannot be oriented keeps what the file said.
 void orient_cells(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face) {
   std::vector<int32_t> state, queue;
+  std::vector<double> cell_vol(m.num_cells(), 0.0);
+  // Orientation of each face of the current cell, by face id (-1: not yet known); reset per cell.
+  std::vector<int8_t> face_state(m.num_faces(), -1);
   for (size_t c = 0; c < m.num_cells(); ++c) {
     const int32_t begin = m.cell_faces.offsets[c];
     auto faces = m.cell_faces[c];
     const size_t n = faces.size();
-    auto local = [&](int32_t f) {
-      return static_cast<size_t>(std::find(faces.begin(), faces.end(), f) - faces.begin());
-    };
-    state.assign(n, -1);
-    state[0] = m.cell_face_flip[begin];
-    queue.assign(1, 0);
+    face_state[faces[0]] = static_cast<int8_t>(m.cell_face_flip[begin]);
+    queue.assign(1, faces[0]);
     bool orientable = true;
     for (size_t q = 0; q < queue.size() && orientable; ++q) {
-      const size_t i = static_cast<size_t>(queue[q]);
-      const int32_t f = faces[i];
+      const int32_t f = queue[q];
       const int32_t side = m.face_cells[f][0] == static_cast<int32_t>(c) ? 0 : 1;
       for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k) {
         const int32_t p = partner[2 * k + side];
         if (p < 0) continue;
-        const int32_t k2 = p >> 1;
-        const size_t j = local(slot_face[k2]);
+        const int32_t k2 = p >> 1, g = slot_face[k2];
         // Same stored direction along the shared edge -> the two faces need opposite flips.
-        const int32_t want = state[i] ^ (m.face_verts.items[k] == m.face_verts.items[k2] ? 1 : 0);
-        if (state[j] < 0) {
-          state[j] = want;
-          queue.push_back(static_cast<int32_t>(j));
-        } else if (state[j] != want) {
+        const int8_t want = static_cast<int8_t>(face_state[f] ^ (m.face_verts.items[k] == m.face_verts.items[k2] ? 1 : 0));
+        if (face_state[g] < 0) {
+          face_state[g] = want;
+          queue.push_back(g);
+        } else if (face_state[g] != want) {
           orientable = false;
           break;
         }
       }
     }
-    if (!orientable || std::find(state.begin(), state.end(), -1) != state.end()) continue;
+    state.resize(n);
+    bool complete = orientable;
+    for (size_t i = 0; i < n; ++i) {
+      state[i] = face_state[faces[i]];
+      complete = complete && state[i] >= 0;
+      face_state[faces[i]] = -1;
+    }
+    if (!complete) continue;
     // Signed volume of the cell as its faces are now seen (fans around each face's first vertex,
     // relative to the cell's first vertex for precision).
     const double* o = &m.points[3 * static_cast<size_t>(m.face_verts[faces[0]][0])];
@@ -175,8 +182,42 @@ void orient_cells(Mesh& m, const std::vector<int32_t>& partner, const std::vecto
                p0[2] * (p1[0] * p2[1] - p1[1] * p2[0]);
       }
     }
-    const int32_t turn = vol < 0 ? 1 : 0;
-    for (size_t i = 0; i < n; ++i) m.cell_face_flip[begin + static_cast<int32_t>(i)] = static_cast<uint8_t>(state[i] ^ turn);
+    cell_vol[c] = vol;
+    for (size_t i = 0; i < n; ++i) m.cell_face_flip[begin + static_cast<int32_t>(i)] = static_cast<uint8_t>(state[i]);
+  }
+
+  // Across cells, then per face-connected group.
+  const size_t nc = m.num_cells();
+  auto flip_of = [&](size_t c, int32_t f) -> uint8_t& {
+    const int32_t b = m.cell_faces.offsets[c];
+    auto faces = m.cell_faces[c];
+    return m.cell_face_flip[b + (std::find(faces.begin(), faces.end(), f) - faces.begin())];
+  };
+  auto turn = [&](size_t c) {
+    for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i) m.cell_face_flip[i] ^= 1;
+    cell_vol[c] = -cell_vol[c];
+  };
+  std::vector<uint8_t> seen(nc, 0);
+  std::vector<int32_t> group;
+  for (size_t c0 = 0; c0 < nc; ++c0) {
+    if (seen[c0]) continue;
+    seen[c0] = 1;
+    group.assign(1, static_cast<int32_t>(c0));
+    for (size_t q = 0; q < group.size(); ++q) {
+      const size_t c = static_cast<size_t>(group[q]);
+      for (int32_t f : m.cell_faces[c]) {
+        const auto fc = m.face_cells[f];
+        const int32_t d = fc[0] == static_cast<int32_t>(c) ? fc[1] : fc[0];
+        if (d < 0 || seen[d]) continue;
+        seen[d] = 1;
+        if (flip_of(static_cast<size_t>(d), f) == flip_of(c, f)) turn(static_cast<size_t>(d));
+        group.push_back(d);
+      }
+    }
+    double vol = 0;
+    for (int32_t c : group) vol += cell_vol[c];
+    if (vol < 0)
+      for (int32_t c : group) turn(static_cast<size_t>(c));
   }
 }
 

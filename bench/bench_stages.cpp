@@ -1,0 +1,97 @@
+// Timings of the analysis stages (load excluded): hybrid singularity graph + base complex (T_GS +
+// T_GB), sheets (T_GSH), subsheets of every self-intersecting sheet (T_GSH*), on the paper's meshes
+// we hold and on generated hex-dominant meshes of 10^4..10^6 cells (grids with 1% of the cells cut
+// into pyramids), so that growth with the cell count is measured in one run.
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "hbc/analysis.hpp"
+#include "hbc/generate.hpp"
+#include "hbc/io.hpp"
+
+namespace {
+
+using namespace hbc;
+
+// Meshes are loaded once per process and kept for all benchmarks that use them.
+const Mesh& mesh_named(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<Mesh>> cache;
+  auto& slot = cache[name];
+  if (!slot) {
+    if (name.rfind("split", 0) == 0) {
+      const int n = std::stoi(name.substr(5));  // cells per axis
+      const auto cells = random_cells(n, n, n, n * n * n / 100, 1);
+      slot = std::make_unique<Mesh>(build_mesh(generate_split(n, n, n, SplitKind::Pyramids, cells)));
+    } else {
+      slot = std::make_unique<Mesh>(load_mesh(std::string(HBC_DATA_DIR) + "/hybrid-base-complex/" + name));
+    }
+  }
+  return *slot;
+}
+
+void set_counters(benchmark::State& st, const Mesh& m) {
+  st.counters["cells"] = static_cast<double>(m.num_cells());
+  st.counters["cells_per_s"] =
+      benchmark::Counter(static_cast<double>(m.num_cells()), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void BM_GraphAndComplex(benchmark::State& st, const std::string& name) {
+  const Mesh& m = mesh_named(name);
+  for (auto _ : st) {
+    SingularityGraph g = singularity_graph(m);
+    BaseComplex bc = base_complex(m, g);
+    benchmark::DoNotOptimize(bc.cell_component.data());
+  }
+  set_counters(st, m);
+}
+
+void BM_Sheets(benchmark::State& st, const std::string& name) {
+  const Mesh& m = mesh_named(name);
+  const SingularityGraph g = singularity_graph(m);
+  const BaseComplex bc = base_complex(m, g);
+  for (auto _ : st) {
+    SheetDomain d = sheet_domain(m, bc, SheetLevel::Complex);
+    Sheets s = extract_sheets(m, d);
+    benchmark::DoNotOptimize(s.classes.data());
+  }
+  set_counters(st, m);
+}
+
+void BM_Subsheets(benchmark::State& st, const std::string& name) {
+  const Mesh& m = mesh_named(name);
+  const SingularityGraph g = singularity_graph(m);
+  const BaseComplex bc = base_complex(m, g);
+  const SheetDomain d = sheet_domain(m, bc, SheetLevel::Complex);
+  const Sheets s = extract_sheets(m, d);
+  for (auto _ : st) {
+    size_t total = 0;
+    for (size_t i = 0; i < s.size(); ++i)
+      if (s.classes[i].type3) total += decompose_sheet(d, s, static_cast<int32_t>(i)).size();
+    benchmark::DoNotOptimize(total);
+  }
+  set_counters(st, m);
+}
+
+const char* kPaper[] = {"teapot.hedra", "twistcube_s.mesh", "cube_twist-comp.obj.HYBRID"};
+const char* kGenerated[] = {"split22", "split47", "split100"};  // ~1e4, ~1e5, 1e6 cells
+
+int register_all() {
+  for (const char* n : kPaper) {
+    benchmark::RegisterBenchmark((std::string("GraphAndComplex/") + n).c_str(), BM_GraphAndComplex, n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("Sheets/") + n).c_str(), BM_Sheets, n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("Subsheets/") + n).c_str(), BM_Subsheets, n)->Unit(benchmark::kMillisecond);
+  }
+  for (const char* n : kGenerated) {
+    benchmark::RegisterBenchmark((std::string("GraphAndComplex/") + n).c_str(), BM_GraphAndComplex, n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("Sheets/") + n).c_str(), BM_Sheets, n)->Unit(benchmark::kMillisecond);
+  }
+  return 0;
+}
+const int registered = register_all();
+
+}  // namespace
+
+BENCHMARK_MAIN();
