@@ -20,6 +20,9 @@ const Row kTable1[] = {
     {"hybrid-base-complex/cube_twist-comp.obj.HYBRID", 493, 0.963, 221, 203, 19, 8, 0, 0, 0},
 };
 
+// Names the row in test output instead of dumping its bytes.
+void PrintTo(const Row& r, std::ostream* os) { *os << r.file; }
+
 class Table1 : public ::testing::TestWithParam<Row> {};
 
 TEST_P(Table1, MatchesThePaper) {
