@@ -125,45 +125,85 @@ SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, co
   k.type = k.type3 ? SheetType::Type3 : k.type2 ? SheetType::Type2 : k.type1 ? SheetType::Type1 : SheetType::Perfect;
 
   // Maximum cardinality matching (Edmonds) on (curve ends, curves): the ends it leaves uncovered
-  // are what the figures highlight. Only the connected pieces of that graph holding a shared end
-  // can leave an end uncovered (any other piece is a single curve), so only those go to Boost.
+  // are what the figures highlight. Curves ending at a vertex of degree one are matched first (some
+  // maximum matching always holds such a curve), which settles most of the graph cheaply; what is
+  // left, the tangled part around shared ends, goes to Boost's Edmonds.
   if (k.type != SheetType::Perfect) {
+    // `ends` is sorted by vertex: local vertex ids in that order.
     std::vector<int32_t> verts;
-    for (auto [v, c] : ends) verts.push_back(v);
-    sort_unique(verts);
+    for (auto [v, c] : ends)
+      if (verts.empty() || verts.back() != v) verts.push_back(v);
     auto local = [&](int32_t v) {
-      return static_cast<size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
+      return static_cast<int32_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
     };
-    UnionFind pieces(verts.size());
-    for (int32_t c : curves) {
-      const auto [a, b] = d.curve_ends[c];
-      if (a >= 0 && a != b) pieces.unite(static_cast<int32_t>(local(a)), static_cast<int32_t>(local(b)));
-    }
-    std::vector<uint8_t> shared_piece(verts.size(), 0);
-    for (int32_t v : k.shared_vertices) shared_piece[pieces.find(static_cast<int32_t>(local(v)))] = 1;
-    std::vector<int32_t> gid(verts.size(), -1), gverts;
-    for (size_t i = 0; i < verts.size(); ++i)
-      if (shared_piece[pieces.find(static_cast<int32_t>(i))]) {
-        gid[i] = static_cast<int32_t>(gverts.size());
-        gverts.push_back(verts[i]);
-      }
-    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
-    Graph g(gverts.size());
+    std::vector<std::pair<int32_t, int32_t>> edges;
     for (int32_t c : curves) {
       const auto [a, b] = d.curve_ends[c];
       if (a < 0 || a == b) continue;
-      const int32_t la = gid[local(a)], lb = gid[local(b)];
-      if (la >= 0) boost::add_edge(static_cast<size_t>(la), static_cast<size_t>(lb), g);
+      const int32_t la = local(a), lb = local(b);
+      edges.push_back({std::min(la, lb), std::max(la, lb)});
     }
-    std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(gverts.size());
-    // Edmonds' augmenting paths from Boost's extra-greedy start, without its optional self-check (it
-    // re-runs a search per call and the result is covered by tests instead).
-    if (!gverts.empty())
-      boost::matching<Graph, decltype(&mate[0]), boost::property_map<Graph, boost::vertex_index_t>::type,
-                      boost::edmonds_augmenting_path_finder, boost::extra_greedy_matching, boost::no_matching_verifier>(
-          g, &mate[0], boost::get(boost::vertex_index, g));
-    for (size_t i = 0; i < gverts.size(); ++i)
-      if (mate[i] == boost::graph_traits<Graph>::null_vertex()) k.unmatched_vertices.push_back(gverts[i]);
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    const size_t nv = verts.size();
+    Csr<int32_t> adj;
+    adj.offsets.assign(nv + 1, 0);
+    for (auto [a, b] : edges) {
+      ++adj.offsets[a + 1];
+      ++adj.offsets[b + 1];
+    }
+    for (size_t i = 0; i < nv; ++i) adj.offsets[i + 1] += adj.offsets[i];
+    adj.items.resize(adj.offsets.back());
+    {
+      std::vector<int32_t> fill(adj.offsets.begin(), adj.offsets.end() - 1);
+      for (auto [a, b] : edges) {
+        adj.items[fill[a]++] = b;
+        adj.items[fill[b]++] = a;
+      }
+    }
+    std::vector<int32_t> deg(nv), queue;
+    std::vector<uint8_t> alive(nv, 1);
+    for (size_t i = 0; i < nv; ++i) {
+      deg[i] = adj.count(i);
+      if (deg[i] == 1) queue.push_back(static_cast<int32_t>(i));
+    }
+    auto drop = [&](int32_t u) {  // u leaves the graph; its neighbours lose a degree
+      alive[u] = 0;
+      for (int32_t w : adj[u]) {
+        if (!alive[w]) continue;
+        if (--deg[w] == 1) queue.push_back(w);
+        else if (deg[w] == 0) {
+          alive[w] = 0;
+          k.unmatched_vertices.push_back(verts[w]);
+        }
+      }
+    };
+    for (size_t q = 0; q < queue.size(); ++q) {
+      const int32_t v = queue[q];
+      if (!alive[v] || deg[v] != 1) continue;
+      int32_t u = -1;
+      for (int32_t w : adj[v])
+        if (alive[w]) u = w;
+      alive[v] = 0;
+      drop(u);
+    }
+    std::vector<int32_t> rest, gid(nv, -1);
+    for (size_t i = 0; i < nv; ++i)
+      if (alive[i]) {
+        gid[i] = static_cast<int32_t>(rest.size());
+        rest.push_back(static_cast<int32_t>(i));
+      }
+    if (!rest.empty()) {
+      using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+      Graph g(rest.size());
+      for (auto [a, b] : edges)
+        if (gid[a] >= 0 && gid[b] >= 0) boost::add_edge(static_cast<size_t>(gid[a]), static_cast<size_t>(gid[b]), g);
+      std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(rest.size());
+      boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
+      for (size_t i = 0; i < rest.size(); ++i)
+        if (mate[i] == boost::graph_traits<Graph>::null_vertex()) k.unmatched_vertices.push_back(verts[rest[i]]);
+    }
+    std::sort(k.unmatched_vertices.begin(), k.unmatched_vertices.end());
   }
   return k;
 }
