@@ -1,7 +1,7 @@
 // Timings of the analysis stages (load excluded): hybrid singularity graph + base complex (T_GS +
 // T_GB), sheets (T_GSH), subsheets of every self-intersecting sheet (T_GSH*), on the paper's meshes
-// we hold and on generated hex-dominant meshes of 10^4..10^6 cells (grids with 1% of the cells cut
-// into pyramids), so that growth with the cell count is measured in one run.
+// we hold and on generated hex-dominant meshes of 10^4..10^6 cells, so that growth with the cell
+// count is measured in one run.
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -21,7 +21,10 @@ const Mesh& mesh_named(const std::string& name) {
   static std::map<std::string, std::unique_ptr<Mesh>> cache;
   auto& slot = cache[name];
   if (!slot) {
-    if (name.rfind("split", 0) == 0) {
+    if (name.rfind("cyl", 0) == 0) {  // cylR_L: radius R cells, L layers
+      const auto us = name.find('_');
+      slot = std::make_unique<Mesh>(build_mesh(generate_cylinder(std::stoi(name.substr(3, us - 3)), std::stoi(name.substr(us + 1)))));
+    } else if (name.rfind("split", 0) == 0) {
       const int n = std::stoi(name.substr(5));  // cells per axis
       const auto cells = random_cells(n, n, n, n * n * n / 100, 1);
       slot = std::make_unique<Mesh>(build_mesh(generate_split(n, n, n, SplitKind::Pyramids, cells)));
@@ -76,7 +79,10 @@ void BM_Subsheets(benchmark::State& st, const std::string& name) {
 }
 
 const char* kPaper[] = {"teapot.hedra", "twistcube_s.mesh", "cube_twist-comp.obj.HYBRID"};
-const char* kGenerated[] = {"split22", "split47", "split100"};  // ~1e4, ~1e5, 1e6 cells
+// Hex-dominant cylinders with prism columns (like the paper's teaser) of ~1e4, ~1e5, ~1e6 cells,
+// and the worst case for the base complex: grids with 1% of the cells, at random, cut into
+// pyramids, whose separation planes then cut every cell into a component of its own.
+const char* kGenerated[] = {"cyl8_42", "cyl16_107", "cyl40_174", "split22", "split47", "split100"};
 
 int register_all() {
   for (const char* n : kPaper) {

@@ -25,18 +25,19 @@ for b in data["benchmarks"]:
 python = {"teapot.hedra": (3.9, 0.26), "twistcube_s.mesh": (None, 0.5), "cube_twist-comp.obj.HYBRID": (0.5, None)}
 print("| mesh | cells | graph + complex (ms) | sheets (ms) | subsheets (ms) | vs Python: graph + complex | vs Python: sheets + subsheets |")
 print("|---|---:|---:|---:|---:|---:|---:|")
-for mesh in sorted(cells, key=lambda m: (m.startswith("split"), cells[m])):
+for mesh in sorted(cells, key=lambda m: (m.startswith("cyl"), m.startswith("split"), cells[m])):
     gc, sh, sub = cpu.get(("GraphAndComplex", mesh)), cpu.get(("Sheets", mesh)), cpu.get(("Subsheets", mesh))
     py = python.get(mesh, (None, None))
     r1 = f"{py[0] / (gc / 1e3):,.0f}×" if py[0] and gc else ""
     r2 = f"{py[1] / ((sh + (sub or 0)) / 1e3):,.0f}×" if py[1] and sh else ""
     fmt = lambda v: "" if v is None else f"{v:.3f}"
     print(f"| {mesh} | {cells[mesh]:,} | {fmt(gc)} | {fmt(sh)} | {fmt(sub)} | {r1} | {r2} |")
-gen = sorted([m for m in cells if m.startswith("split")], key=lambda m: cells[m])
-for a, b in zip(gen, gen[1:]):
-    for stage in ("GraphAndComplex", "Sheets"):
-        t = cpu[(stage, b)] / cpu[(stage, a)]
-        n = cells[b] / cells[a]
-        print(f"\n{stage}: {cells[a]:,} -> {cells[b]:,} cells ({n:.1f}x) took {t:.1f}x the time", end="")
 print()
+for family in ("cyl", "split"):
+    gen = sorted([m for m in cells if m.startswith(family)], key=lambda m: cells[m])
+    for a, b in zip(gen, gen[1:]):
+        for stage in ("GraphAndComplex", "Sheets"):
+            t = cpu[(stage, b)] / cpu[(stage, a)]
+            n = cells[b] / cells[a]
+            print(f"- {family} {stage}: {cells[a]:,} -> {cells[b]:,} cells ({n:.1f}x) took {t:.1f}x the time")
 PY
