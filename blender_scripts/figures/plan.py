@@ -1,0 +1,316 @@
+"""What the figure script decides without Blender (no ``bpy``; tested with plain pytest):
+command line, the panels and their titles, which sheet and subsheets to show, the camera that
+frames a set of points, and the feature edges that outline blocks.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+#: The paper's pipeline panels (Fig. 1 a-g): key, letter, title.
+PANELS = (
+    ("mesh", "a", "Mesh"),
+    ("graph", "b", "Hybrid singularity graph"),
+    ("complex", "c", "Hybrid base complex"),
+    ("sheet", "d", "Sheet"),
+    ("vsg", "e", "VSG"),
+    ("wireframe", "f", "Simplified VSG wireframe"),
+    ("subsheets", "g", "Subsheets"),
+)
+PANEL_KEYS = tuple(k for k, _, _ in PANELS)
+PANEL_LETTER = {k: l for k, l, _ in PANELS}
+PANEL_TITLE = {k: t for k, _, t in PANELS}
+
+#: Rows of the comparison figure (the paper's Figs. 8-10): mesh, singularity graph, base complex,
+#: VSG wireframe of the whole mesh, a representative (imperfect) sheet.
+COMPARE_ROWS = (
+    ("mesh", "Mesh"),
+    ("graph", "Singularity graph"),
+    ("complex", "Base complex"),
+    ("mesh_wireframe", "VSG wireframe"),
+    ("sheet", "Sheet"),
+)
+
+ENGINES = ("cycles", "eevee", "workbench")
+
+SHEET_TYPE_NAMES = ("perfect", "type 1", "self-parallel", "self-intersecting")
+
+
+def script_args(argv):
+    """The arguments after Blender's '--' separator."""
+    return list(argv[argv.index("--") + 1:]) if "--" in argv else []
+
+
+def parser():
+    ap = argparse.ArgumentParser(
+        prog="render_figures.py",
+        description="Renders the paper's pipeline panels (a-g) of a hex-dominant mesh, or with --compare "
+                    "the comparison layout of two meshes, as PNG files plus one labelled contact sheet.")
+    ap.add_argument("mesh", nargs="?", help="the mesh (.ovm .ovmb .mesh .HYBRID .hedra)")
+    ap.add_argument("--compare", nargs=2, metavar=("A", "B"), help="comparison figure of two meshes")
+    ap.add_argument("--out", required=True, help="output folder (created)")
+    ap.add_argument("--engine", choices=ENGINES, default="cycles")
+    ap.add_argument("--samples", type=int, default=None, help="render samples (cycles 16, eevee 16)")
+    ap.add_argument("--resolution", type=int, nargs=2, metavar=("W", "H"), default=(640, 480))
+    ap.add_argument("--sheet", type=int, default=None,
+                    help="sheet of panels d-g (default: the largest self-intersecting sheet, else the "
+                         "largest imperfect one, else the largest)")
+    ap.add_argument("--panels", default=",".join(PANEL_KEYS),
+                    help="comma-separated subset of " + ",".join(PANEL_KEYS))
+    ap.add_argument("--max-subsheets", type=int, default=4, help="largest subsheets shown in panel g")
+    ap.add_argument("--up", choices=("x", "y", "z"), default="z", help="the mesh's up axis")
+    ap.add_argument("--azimuth", type=float, default=-50.0, help="view azimuth in degrees around up")
+    ap.add_argument("--elevation", type=float, default=25.0, help="view elevation in degrees")
+    ap.add_argument("--rho", type=float, default=0.8, help="partial-parallel threshold of the wireframe colours")
+    ap.add_argument("--addon", default=None,
+                    help="the add-on package folder (default: $HBC_ADDON_DIR, else <repo>/build/addon/"
+                         "hybrid_base_complex)")
+    ap.add_argument("--blend", action="store_true", help="also save the scene as a .blend next to the images")
+    return ap
+
+
+def parse(argv):
+    """Parses the script's own arguments (after '--'); raises SystemExit(2) on misuse."""
+    ap = parser()
+    args = ap.parse_args(argv)
+    if (args.mesh is None) == (args.compare is None):
+        ap.error("give one MESH, or --compare A B")
+    w, h = args.resolution
+    if w < 16 or h < 16 or w > 8192 or h > 8192:
+        ap.error("--resolution: each side between 16 and 8192")
+    if args.samples is not None and args.samples < 1:
+        ap.error("--samples must be at least 1")
+    keys = [k.strip() for k in args.panels.split(",") if k.strip()]
+    bad = [k for k in keys if k not in PANEL_KEYS]
+    if bad or not keys:
+        ap.error(f"--panels: unknown {','.join(bad) or '(none)'}; choose from {','.join(PANEL_KEYS)}")
+    args.panels = [k for k in PANEL_KEYS if k in keys]
+    if args.max_subsheets < 1:
+        ap.error("--max-subsheets must be at least 1")
+    if args.samples is None:
+        args.samples = 16
+    return args
+
+
+# ---------------------------------------------------------------------------------------------
+# Choices
+
+def pick_sheet(types, cells, requested=None):
+    """The sheet of panels d-g: `requested` if given (checked), else the largest (by cells)
+    self-intersecting sheet, else the largest imperfect one, else the largest; None when there are
+    no sheets."""
+    types = np.asarray(types, np.int64)
+    cells = np.asarray(cells, np.int64)
+    n = len(types)
+    if requested is not None:
+        if not (0 <= requested < n):
+            raise ValueError(f"--sheet {requested}: the mesh has {n} sheets (0..{n - 1})")
+        return int(requested)
+    if n == 0:
+        return None
+    for mask in (types == 3, types > 0, np.ones(n, bool)):
+        if mask.any():
+            idx = np.nonzero(mask)[0]
+            # Largest first; ties to the lower id.
+            return int(idx[np.lexsort((idx, -cells[idx]))[0]])
+    return None
+
+
+def pick_subsheets(sizes, limit):
+    """Ids of the `limit` largest subsheets (by cells), in id order."""
+    sizes = np.asarray(sizes, np.int64)
+    order = np.lexsort((np.arange(len(sizes)), -sizes))[: max(int(limit), 0)]
+    return sorted(int(i) for i in order)
+
+
+def tile_grid(count, width, height):
+    """Panel g: `count` subsheets as columns, each a subsheet above its wireframe. Returns the tile
+    size (w, h) and the (x, y) of the top-left corner of the subsheet tile and of the wireframe
+    tile of every column; the tiles fill width x height."""
+    count = max(int(count), 1)
+    tw = width // count
+    th = height // 2
+    spare = width - tw * count
+    cols = []
+    for k in range(count):
+        x = spare // 2 + k * tw
+        cols.append(((x, 0), (x, th)))
+    return (tw, th), cols
+
+
+# ---------------------------------------------------------------------------------------------
+# Camera
+
+AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def up_vector(up: str) -> np.ndarray:
+    v = np.zeros(3)
+    v[AXES[up]] = 1.0
+    return v
+
+
+def view_direction(azimuth_deg: float, elevation_deg: float, up: str = "z") -> np.ndarray:
+    """Unit vector from the target towards the camera: azimuth around the up axis (0: along the
+    axis after `up` in xyz order, i.e. +x for up=z), elevation above the horizontal plane."""
+    a, e = math.radians(azimuth_deg), math.radians(elevation_deg)
+    u = AXES[up]
+    h1, h2 = (u + 1) % 3, (u + 2) % 3
+    d = np.zeros(3)
+    d[h1] = math.cos(e) * math.cos(a)
+    d[h2] = math.cos(e) * math.sin(a)
+    d[u] = math.sin(e)
+    return d / np.linalg.norm(d)
+
+
+@dataclass
+class Camera:
+    location: np.ndarray  # (3,)
+    matrix: np.ndarray  # (3,3) columns: right, up, backward (Blender camera looks along -Z)
+    lens: float  # focal length in mm with a 36 mm sensor fitted to the larger side
+    width: int
+    height: int
+
+    def project(self, points):
+        """Normalised image coordinates: (x, y) in [-1, 1] inside the frame."""
+        p = np.asarray(points, np.float64).reshape(-1, 3) - self.location
+        cam = p @ self.matrix  # components along right, up, backward
+        depth = -cam[:, 2]
+        tx, ty = half_tangents(self.lens, self.width, self.height)
+        return np.stack([cam[:, 0] / (depth * tx), cam[:, 1] / (depth * ty)], axis=1), depth
+
+
+def half_tangents(lens, width, height, sensor=36.0):
+    """tan of the half field of view along x and y (Blender's AUTO sensor fit: the larger side)."""
+    t = sensor / (2.0 * lens)
+    if width >= height:
+        return t, t * height / width
+    return t * width / height, t
+
+
+def bbox_corners(points):
+    p = np.asarray(points, np.float64).reshape(-1, 3)
+    lo, hi = p.min(axis=0), p.max(axis=0)
+    return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+
+
+def framing_points(points, limit=200000):
+    """The points the camera frames: the mesh's points (tighter than its bounding box's corners,
+    and everything drawn is made of them), subsampled evenly above `limit`, plus the box's
+    extreme points along each axis so that the subsample keeps the full extent."""
+    p = np.asarray(points, np.float64).reshape(-1, 3)
+    if len(p) == 0:
+        return np.zeros((1, 3))
+    if len(p) > limit:
+        step = int(math.ceil(len(p) / limit))
+        ext = np.concatenate([p.argmin(axis=0), p.argmax(axis=0)])
+        p = np.concatenate([p[::step], p[ext]])
+    return p
+
+
+def frame(points, direction, up="z", width=640, height=480, lens=50.0, margin=0.06) -> Camera:
+    """A perspective camera looking along -direction that holds every point (use the bounding
+    box corners: then anything inside the box is in frame) with `margin` (fraction of the half
+    frame) left on the tightest side, the points' projection centred in the frame."""
+    pts = np.asarray(points, np.float64).reshape(-1, 3)
+    back = np.asarray(direction, np.float64)
+    back = back / np.linalg.norm(back)
+    upv = up_vector(up) if isinstance(up, str) else np.asarray(up, np.float64)
+    right = np.cross(upv, back)
+    if np.linalg.norm(right) < 1e-9:  # looking along up: any right vector
+        right = np.cross(np.array([0.0, 1.0, 0.0]) if abs(back[1]) < 0.9 else np.array([1.0, 0.0, 0.0]), back)
+    right /= np.linalg.norm(right)
+    cam_up = np.cross(back, right)
+    basis = np.stack([right, cam_up, back], axis=1)
+    tx, ty = half_tangents(lens, width, height)
+    tx, ty = tx * (1.0 - margin), ty * (1.0 - margin)
+    center = (pts.min(axis=0) + pts.max(axis=0)) / 2.0
+    rel = (pts - center) @ basis  # components in the camera's axes
+    # Camera at center + shift (in the image plane) + d * back. A point holds when
+    # |x - sx| <= (d - z) tx and |y - sy| <= (d - z) ty. Iterate: the best d for the current
+    # shift, then the shift that centres the projection at that d.
+    sx = sy = 0.0
+    d = 0.0
+    for _ in range(30):
+        d = max(np.max(np.abs(rel[:, 0] - sx) / tx + rel[:, 2]), np.max(np.abs(rel[:, 1] - sy) / ty + rel[:, 2]))
+        depth = d - rel[:, 2]
+        u = (rel[:, 0] - sx) / depth
+        v = (rel[:, 1] - sy) / depth
+        # Move the camera so that the extreme rays become symmetric.
+        du = (u.max() + u.min()) / 2.0
+        dv = (v.max() + v.min()) / 2.0
+        if abs(du) < 1e-7 and abs(dv) < 1e-7:
+            break
+        sx += du * float(np.median(depth))
+        sy += dv * float(np.median(depth))
+    d = max(np.max(np.abs(rel[:, 0] - sx) / tx + rel[:, 2]), np.max(np.abs(rel[:, 1] - sy) / ty + rel[:, 2]))
+    loc = center + basis @ np.array([sx, sy, d])
+    return Camera(loc, basis, float(lens), int(width), int(height))
+
+
+def clip_range(camera: Camera, points):
+    """(clip_start, clip_end) holding the points with room to spare."""
+    _, depth = camera.project(points)
+    near, far = float(depth.min()), float(depth.max())
+    return max(near * 0.5, 1e-4), far * 2.0 + 1e-3
+
+
+# ---------------------------------------------------------------------------------------------
+# Outlines
+
+def feature_edges(positions, face_sizes, face_vertices, angle_deg=35.0):
+    """(m, 2) vertex pairs of a polygon soup's feature edges: border edges (one face),
+    non-manifold ones (three or more) and edges whose two faces' normals differ by more than
+    `angle_deg`. Faces with their own vertex copies per block (block soups) give each block's
+    own corner edges, never the seams between blocks."""
+    pos = np.asarray(positions, np.float64).reshape(-1, 3)
+    sizes = np.asarray(face_sizes, np.int64)
+    fv = np.asarray(face_vertices, np.int64)
+    if sizes.size == 0:
+        return np.zeros((0, 2), np.int32)
+    starts = np.cumsum(sizes) - sizes
+    face_of = np.repeat(np.arange(len(sizes)), sizes)
+    pos_in = np.arange(len(fv)) - np.repeat(starts, sizes)
+    nxt = np.where(pos_in + 1 == np.repeat(sizes, sizes), np.repeat(starts, sizes), np.arange(len(fv)) + 1)
+    a, b = fv, fv[nxt]
+    # Newell normals.
+    pa, pb = pos[a], pos[b]
+    n = np.zeros((len(sizes), 3))
+    cr = np.stack([(pa[:, 1] - pb[:, 1]) * (pa[:, 2] + pb[:, 2]),
+                   (pa[:, 2] - pb[:, 2]) * (pa[:, 0] + pb[:, 0]),
+                   (pa[:, 0] - pb[:, 0]) * (pa[:, 1] + pb[:, 1])], axis=1)
+    for i in range(3):
+        n[:, i] = np.bincount(face_of, weights=cr[:, i], minlength=len(sizes))
+    n /= np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-30)
+    lo, hi = np.minimum(a, b), np.maximum(a, b)
+    key = lo * (len(pos) + 1) + hi
+    order = np.argsort(key, kind="stable")
+    key_s = key[order]
+    uniq, first, counts = np.unique(key_s, return_index=True, return_counts=True)
+    keep = counts != 2
+    two = np.nonzero(counts == 2)[0]
+    f1 = face_of[order[first[two]]]
+    f2 = face_of[order[first[two] + 1]]
+    cosang = np.sum(n[f1] * n[f2], axis=1)
+    sharp = np.zeros(len(uniq), bool)
+    sharp[two] = cosang < math.cos(math.radians(angle_deg))
+    sel = keep | sharp
+    e = uniq[sel]
+    return np.stack([e // (len(pos) + 1), e % (len(pos) + 1)], axis=1).astype(np.int32)
+
+
+def all_edges(face_sizes, face_vertices):
+    """(m, 2) unique vertex pairs of every polygon edge."""
+    sizes = np.asarray(face_sizes, np.int64)
+    fv = np.asarray(face_vertices, np.int64)
+    if sizes.size == 0:
+        return np.zeros((0, 2), np.int32)
+    starts = np.cumsum(sizes) - sizes
+    pos_in = np.arange(len(fv)) - np.repeat(starts, sizes)
+    nxt = np.where(pos_in + 1 == np.repeat(sizes, sizes), np.repeat(starts, sizes), np.arange(len(fv)) + 1)
+    e = np.sort(np.stack([fv, fv[nxt]], axis=1), axis=1)
+    return np.unique(e, axis=0).astype(np.int32)

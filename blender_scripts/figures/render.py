@@ -1,0 +1,565 @@
+"""The Blender side of the figures: studio scene (camera, soft lights, light background), panel
+contents built with the add-on's layer and scene builders, outlines, rendering, text labels and
+PNG input/output through bpy.data.images. Decisions live in `plan`, pixel work in `compose`.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import time
+import types
+
+import bpy
+import numpy as np
+
+from . import compose as C
+from . import plan
+
+BG_DISPLAY = 0.94  # background grey as shown in the PNG (display value)
+OUTLINE_COLOR = (0.03, 0.03, 0.035, 1.0)
+MESH_EDGE_COLOR = (0.18, 0.18, 0.2, 0.55)
+BOUNDARY_COLOR = (0.80, 0.80, 0.80, 1.0)
+
+
+def log(msg):
+    print(msg, flush=True)
+
+
+def srgb_to_linear(v):
+    return v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4
+
+
+# ---------------------------------------------------------------------------------------------
+# The add-on
+
+class Addon:
+    """The add-on's modules, imported from its package folder (no registration needed: the
+    layer builders take a plain settings object)."""
+
+    def __init__(self, folder):
+        import importlib
+        import sys
+
+        folder = os.path.abspath(folder)
+        if not os.path.isfile(os.path.join(folder, "__init__.py")):
+            raise FileNotFoundError(f"no add-on package at {folder} (build the 'addon' target)")
+        parent, name = os.path.split(folder)
+        if parent not in sys.path:
+            sys.path.insert(0, parent)
+        pkg = importlib.import_module(name)
+        self.pkg = pkg
+        self.L = importlib.import_module(name + ".layers")
+        self.S = importlib.import_module(name + ".scene")
+        self.P = importlib.import_module(name + ".planning")
+        self.session = importlib.import_module(name + ".session")
+        self.structure = importlib.import_module(name + ".structure")
+        self.properties = importlib.import_module(name + ".properties")
+
+    def settings(self, **overrides):
+        """The panel's settings with the add-on's defaults (read from its property definitions)."""
+        d = {}
+        for key, prop in getattr(self.properties.HBCSettings, "__annotations__", {}).items():
+            kw = getattr(prop, "keywords", None)
+            if kw is not None and "default" in kw:
+                d[key] = kw["default"]
+        d.setdefault("wireframe_scope", "MESH")
+        d.update(overrides)
+        return types.SimpleNamespace(**d)
+
+
+def default_addon_dir():
+    env = os.environ.get("HBC_ADDON_DIR")
+    if env:
+        return env
+    repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    return os.path.join(repo, "build", "addon", "hybrid_base_complex")
+
+
+# ---------------------------------------------------------------------------------------------
+# Studio scene
+
+def reset_file():
+    bpy.ops.wm.read_homefile(use_empty=True)
+    return bpy.context.scene
+
+
+def setup_render(scene, engine, samples, width, height):
+    r = scene.render
+    r.resolution_x, r.resolution_y, r.resolution_percentage = int(width), int(height), 100
+    r.film_transparent = False
+    r.image_settings.file_format = "PNG"
+    r.image_settings.color_mode = "RGB"
+    r.image_settings.color_depth = "8"
+    r.use_freestyle = False
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    if engine == "cycles":
+        r.engine = "CYCLES"
+        c = scene.cycles
+        c.device = "CPU"
+        c.samples = int(samples)
+        c.use_denoising = False
+        if hasattr(c, "use_adaptive_sampling"):
+            c.use_adaptive_sampling = False
+        # Soft studio light needs little indirect light: few bounces (speed), clamped (no fireflies);
+        # transparency (shell, faint wireframe ends) needs many transparent bounces.
+        c.max_bounces = 3
+        c.diffuse_bounces = 1
+        c.glossy_bounces = 1
+        c.transmission_bounces = 0
+        c.volume_bounces = 0
+        c.transparent_max_bounces = 24
+        c.caustics_reflective = c.caustics_refractive = False
+        c.sample_clamp_indirect = 1.0
+        c.use_fast_gi = False
+        c.pixel_filter_type = "BLACKMAN_HARRIS"
+        c.filter_width = 1.5
+        try:
+            scene.view_layers[0].cycles.use_denoising = False
+        except AttributeError:
+            pass
+    elif engine == "eevee":
+        r.engine = "BLENDER_EEVEE_NEXT" if bpy.app.version >= (4, 2, 0) else "BLENDER_EEVEE"
+        e = scene.eevee
+        e.taa_render_samples = int(samples)
+        for attr, value in (("use_gtao", True), ("gtao_distance", 0.2), ("use_soft_shadows", True),
+                            ("shadow_cube_size", "1024"), ("use_ssr", False)):
+            if hasattr(e, attr):
+                setattr(e, attr, value)
+    else:
+        r.engine = "BLENDER_WORKBENCH"
+        sh = scene.display.shading
+        sh.light = "STUDIO"
+        sh.color_type = "VERTEX"
+        sh.show_cavity = True
+        sh.cavity_type = "BOTH"
+        sh.show_object_outline = True
+        sh.object_outline_color = OUTLINE_COLOR[:3]
+        sh.show_specular_highlight = False
+        scene.display.render_aa = "8"
+
+
+def setup_world(scene, engine):
+    """Soft ambient light from a uniform world; the camera sees a flat light grey."""
+    world = bpy.data.worlds.new("Figures World")
+    scene.world = world
+    bg_lin = srgb_to_linear(BG_DISPLAY)
+    world.color = (bg_lin, bg_lin, bg_lin)
+    world.use_nodes = True
+    nt = world.node_tree
+    nt.nodes.clear()
+    out = nt.nodes.new("ShaderNodeOutputWorld")
+    ambient = nt.nodes.new("ShaderNodeBackground")
+    ambient.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+    ambient.inputs["Strength"].default_value = 0.45
+    seen = nt.nodes.new("ShaderNodeBackground")
+    seen.inputs["Color"].default_value = (bg_lin, bg_lin, bg_lin, 1.0)
+    seen.inputs["Strength"].default_value = 1.0
+    path = nt.nodes.new("ShaderNodeLightPath")
+    mix = nt.nodes.new("ShaderNodeMixShader")
+    nt.links.new(path.outputs["Is Camera Ray"], mix.inputs["Fac"])
+    nt.links.new(ambient.outputs["Background"], mix.inputs[1])
+    nt.links.new(seen.outputs["Background"], mix.inputs[2])
+    nt.links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    return world
+
+
+def add_camera(scene, cam: plan.Camera, points):
+    data = bpy.data.cameras.new("Figures Camera")
+    data.lens = cam.lens
+    data.sensor_fit = "AUTO"
+    data.sensor_width = 36.0
+    data.clip_start, data.clip_end = plan.clip_range(cam, plan.bbox_corners(points))
+    ob = bpy.data.objects.new("Figures Camera", data)
+    scene.collection.objects.link(ob)
+    scene.camera = ob
+    place_camera(ob, cam)
+    return ob
+
+
+def place_camera(ob, cam: plan.Camera):
+    from mathutils import Matrix
+
+    m = Matrix.Identity(4)
+    for i in range(3):
+        for j in range(3):
+            m[i][j] = float(cam.matrix[i, j])
+        m[i][3] = float(cam.location[i])
+    ob.matrix_world = m
+    ob.data.lens = cam.lens
+
+
+def add_lights(scene, cam: plan.Camera, points):
+    """Key and fill area lights placed from the camera's point of view, sized to the model;
+    powers scaled with distance so the irradiance is the same at any model size."""
+    from mathutils import Vector
+
+    lo, hi = np.min(points, axis=0), np.max(points, axis=0)
+    center = (lo + hi) / 2.0
+    size = float(np.linalg.norm(hi - lo)) or 1.0
+    right, up, back = cam.matrix[:, 0], cam.matrix[:, 1], cam.matrix[:, 2]
+    made = []
+    for name, (a, b, c), irradiance, spread in (("Key", (-0.7, 0.9, 0.8), 3.2, 1.2),
+                                                 ("Fill", (0.9, 0.2, 0.6), 1.0, 2.0),
+                                                 ("Rim", (0.2, 0.7, -1.0), 1.2, 1.0)):
+        d = a * right + b * up + c * back
+        d /= np.linalg.norm(d)
+        dist = 2.5 * size
+        data = bpy.data.lights.new(f"Figures {name}", "AREA")
+        data.shape = "DISK"
+        data.size = spread * size
+        data.energy = irradiance * math.pi * dist * dist
+        if hasattr(data, "use_shadow"):
+            data.use_shadow = True
+        ob = bpy.data.objects.new(f"Figures {name}", data)
+        ob.location = Vector(center + d * dist)
+        ob.rotation_euler = Vector(-d).to_track_quat("-Z", "Y").to_euler()
+        scene.collection.objects.link(ob)
+        made.append(ob)
+    return made
+
+
+def shell_material(tx, alpha=0.10):
+    """Faint matte grey (no specular: no sparkle at low sample counts) for the context shell."""
+    name = "Figures Shell"
+    mat = bpy.data.materials.get(name)
+    if mat is not None:
+        return mat
+    mat = tx.add("materials", bpy.data.materials.new(name))
+    mat.use_nodes = True
+    bsdf = next(n for n in mat.node_tree.nodes if n.type == "BSDF_PRINCIPLED")
+    bsdf.inputs["Base Color"].default_value = BOUNDARY_COLOR
+    bsdf.inputs["Alpha"].default_value = alpha
+    bsdf.inputs["Roughness"].default_value = 1.0
+    spec = bsdf.inputs.get("Specular") or bsdf.inputs.get("Specular IOR Level")
+    if spec is not None:
+        spec.default_value = 0.0
+    mat.diffuse_color = tuple(BOUNDARY_COLOR[:3]) + (alpha,)
+    if bpy.app.version >= (4, 2, 0):
+        mat.surface_render_method = "BLENDED"
+    else:
+        mat.blend_method = "BLEND"
+        mat.shadow_method = "NONE"
+    return mat
+
+
+# ---------------------------------------------------------------------------------------------
+# Panels: collections of objects, shown one set at a time
+
+class Subject:
+    """One analysed mesh in the scene, its panels as collections (hidden from render unless
+    shown) and its camera."""
+
+    def __init__(self, addon: Addon, path, args, scene):
+        self.addon, self.args, self.scene = addon, args, scene
+        self.path = path
+        self.name = addon.P.mesh_name_from_path(path)
+        t = time.perf_counter()
+        s = addon.session.load(path, 1.0, log)
+        addon.session.analyse(s, args.rho, log)
+        self.s = s
+        self.t_analysis = time.perf_counter() - t
+        self.points = s.points
+        self.length = s.length
+        self.direction = plan.view_direction(args.azimuth, args.elevation, args.up)
+        w, h = args.resolution
+        self.camera = plan.frame(plan.framing_points(self.points), self.direction, args.up, w, h)
+        # Size of one pixel at the model (at the distance of the bounding box centre).
+        center = (self.points.min(axis=0) + self.points.max(axis=0)) / 2.0
+        tx, _ = plan.half_tangents(self.camera.lens, w, h)
+        dist = float(np.linalg.norm(self.camera.location - center))
+        self.pixel = 2.0 * dist * tx / w
+        self.root = bpy.data.collections.new(f"{self.name} figures")
+        scene.collection.children.link(self.root)
+        self.panels = {}  # key -> [collections]
+        self.shared = {}  # name -> collection (shell) shown by several panels
+        types_ = s.sheet_types() if s.num_sheets else np.zeros(0, np.uint8)
+        cells = s.sheet_sizes()[0] if s.num_sheets else np.zeros(0, np.int64)
+        self.sheet = plan.pick_sheet(types_, cells, args.sheet)
+        self.sheet_type = int(types_[self.sheet]) if self.sheet is not None else None
+
+    # -- helpers --------------------------------------------------------------------------------
+    def st(self, **kw):
+        line = max(0.0035, 1.3 * self.pixel / self.length)
+        dot = max(0.006, 3.0 * self.pixel / self.length)
+        base = dict(line_radius=line, dot_radius=dot, shrink=0.08, split_max=1000, spread=False,
+                    sheet_index=self.sheet if self.sheet is not None else 0)
+        base.update(kw)
+        return self.addon.settings(**base)
+
+    def _new_coll(self, key):
+        coll = bpy.data.collections.new(f"{self.name} / {key}")
+        self.root.children.link(coll)
+        coll.hide_render = True
+        return coll
+
+    def _adopt(self, built, key):
+        """Links a collection made by the add-on's build_into under our root."""
+        built.name = f"{self.name} / {key}"
+        self.root.children.link(built)
+        built.hide_render = True
+        return built
+
+    def outline(self, tx, coll, name, soup, angle=35.0, color=OUTLINE_COLOR, every_edge=False, scale=0.55):
+        """Dark tubes along a soup's feature edges (or every edge): blocks read clearly in any
+        engine, and the line builder of the add-on makes them."""
+        P, S = self.addon.P, self.addon.S
+        if soup.num_faces == 0:
+            return None
+        if every_edge:
+            edges = plan.all_edges(soup.face_sizes, soup.face_vertices)
+        else:
+            edges = plan.feature_edges(soup.positions, soup.face_sizes, soup.face_vertices, angle)
+        if len(edges) == 0:
+            return None
+        used, inv = np.unique(edges.ravel(), return_inverse=True)
+        lines = P.Lines(np.asarray(soup.positions, np.float32)[used], inv.reshape(-1, 2).astype(np.int32),
+                        np.tile(np.asarray(color, np.float32), (len(used), 1)), np.zeros(len(used), np.int32))
+        return S.lines_object(tx, coll, name, lines, scale * self.pixel, {"hbc_mesh": self.name, "hbc_outline": True})
+
+    def shell(self):
+        """[the mesh's boundary, faint]: context for line panels; [] in Workbench, which draws it
+        opaque (it only honours attribute colours, not a material's alpha, with them)."""
+        if self.args.engine == "workbench":
+            return []
+        if "shell" in self.shared:
+            return [self.shared["shell"]]
+        S, P = self.addon.S, self.addon.P
+        coll = self._new_coll("shell")
+        with S.Transaction() as tx:
+            mat = shell_material(tx)
+            S.soup_object(tx, coll, f"{self.name} shell", self.s.direct_boundary(), None, mat,
+                          {"hbc_mesh": self.name, "hbc_part": "shell"})
+        self.no_shadows(coll)
+        self.shared["shell"] = coll
+        return [coll]
+
+    def build(self, key, layer, **kw):
+        """An add-on layer with given settings, as the panel collection `key`."""
+        with self.addon.S.Transaction() as tx:
+            built = self.addon.L.build_into(tx, self.name, layer, self.s, self.st(**kw))
+        return self._adopt(built, key)
+
+    # -- panels ---------------------------------------------------------------------------------
+    def panel_mesh(self):
+        s, S = self.s, self.addon.S
+        see_through = self.args.engine != "workbench"
+        coll = self.build("mesh", "direct", direct_boundary=True, direct_transparent=see_through, boundary_alpha=0.22,
+                          direct_hex_cells=False, direct_shrink=0.0)
+        with S.Transaction() as tx:
+            self.outline(tx, coll, f"{self.name} mesh edges", s.direct_boundary(), color=MESH_EDGE_COLOR,
+                         every_edge=True, scale=0.45)
+            if np.any(np.asarray(s.mesh.cell_types) != 0):
+                self.outline(tx, coll, f"{self.name} non-hex outlines", s.non_hex_cells(0.0), angle=20.0)
+        self.no_shadows(coll)
+        return [coll]
+
+    def panel_graph(self):
+        return [self.build("graph", "graph")] + self.shell()
+
+    def panel_complex(self):
+        coll = self.build("complex", "blocks")
+        st = self.st()
+        with self.addon.S.Transaction() as tx:
+            self.outline(tx, coll, f"{self.name} block outlines", self.s.blocks(st.shrink))
+        return [coll]
+
+    def panel_sheet(self):
+        if self.sheet is None:
+            return None
+        coll = self.build("sheet", "sheet")
+        S = self.addon.S
+        with S.Transaction() as tx:
+            self.outline(tx, coll, f"{self.name} sheet outlines", self.s.sheet_blocks(self.sheet, self.st().shrink))
+            # Self-intersecting cells: see-through, so the sheet inside stays visible.
+            mat = S.material(tx, "flat", self.addon.P.SELF_INTERSECTING_COLOR, 0.35)
+            for ob in coll.objects:
+                if ob.get("hbc_highlight") == "self_intersecting":
+                    ob.data.materials.clear()
+                    ob.data.materials.append(mat)
+        return [coll] + self.shell()
+
+    def _vsg_lines(self, sheet):
+        """The VSG chains of a sheet's wireframe (kind 0), palette colours, opaque."""
+        P = self.addon.P
+        w = self.s.analysis.wireframe(sheet=int(sheet))
+        off = np.asarray(w.polyline_offsets)
+        verts = np.asarray(w.polyline_vertices)
+        k = len(off) - 1
+        if k == 0:
+            return None
+        keep = np.asarray(w.kind) == 0
+        if not keep.any():
+            return None
+        colors = P.palette_color(np.asarray(w.color, np.int64))
+        return P.polylines(self.points, off, verts, colors, None, keep)
+
+    def panel_vsg(self):
+        if self.sheet is None:
+            return None
+        lines = self._vsg_lines(self.sheet)
+        if lines is None or not lines.positions.size:
+            return None
+        coll = self._new_coll("vsg")
+        st = self.st()
+        with self.addon.S.Transaction() as tx:
+            self.addon.S.lines_object(tx, coll, f"{self.name} sheet {self.sheet} VSG", lines,
+                                      st.line_radius * self.length,
+                                      {"hbc_mesh": self.name, "hbc_sheet": self.sheet, "hbc_vsg": True})
+        return [coll] + self.shell()
+
+    def panel_wireframe(self):
+        if self.sheet is None:
+            return None
+        coll = self.build("wireframe", "wireframe", wireframe_scope="SHEET", simplified=True)
+        if not len(coll.objects):
+            return None
+        return [coll] + self.shell()
+
+    def panel_mesh_wireframe(self):
+        coll = self.build("mesh_wireframe", "wireframe", wireframe_scope="MESH", simplified=True)
+        if not len(coll.objects):
+            return None
+        return [coll] + self.shell()
+
+    def subsheet_tiles(self):
+        """Panel g's content: the built subsheets layer and the subsheets to show, or None when
+        the sheet is not self-intersecting."""
+        if self.sheet is None or self.sheet_type != 3:
+            return None
+        sub = self.s.subsheets(self.sheet)
+        off = np.asarray(sub.cell_offsets)
+        picked = plan.pick_subsheets(np.diff(off), self.args.max_subsheets)
+        coll = self.build("subsheets", "subsheets", spread=False)
+        with self.addon.S.Transaction() as tx:
+            soup = self.s.subsheet_soup(self.sheet, sub, self.st().shrink)
+            for k in picked:
+                ob = self.outline(tx, coll, f"{self.name} subsheet {k} outlines", soup.select(soup.face_owner == k))
+                if ob is not None:
+                    ob["hbc_subsheet"] = k
+        return coll, picked, int(sub.count)
+
+    def no_shadows(self, coll, parts=("boundary", "shell")):
+        """See-through surfaces and thin edges cast no shadows (Cycles samples transparent
+        shadows stochastically: speckles at low sample counts)."""
+        for ob in coll.objects:
+            if ob.get("hbc_part") in parts or ob.get("hbc_outline"):
+                if hasattr(ob, "visible_shadow"):
+                    ob.visible_shadow = False
+                else:
+                    ob.cycles_visibility.shadow = False
+
+    def show(self, colls):
+        """Only these collections render."""
+        for c in self.root.children:
+            c.hide_render = c not in colls
+
+
+# ---------------------------------------------------------------------------------------------
+# Rendering and images
+
+class quiet_stdout:
+    """Renders print a progress line per tile and sample to stdout: silence them (file
+    descriptor 1) so the script's own output stays readable. Stderr is kept."""
+
+    def __enter__(self):
+        import sys
+
+        sys.stdout.flush()
+        self.saved = os.dup(1)
+        self.null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(self.null, 1)
+        return self
+
+    def __exit__(self, *exc):
+        os.dup2(self.saved, 1)
+        os.close(self.saved)
+        os.close(self.null)
+        return False
+
+
+def render_to(scene, path):
+    scene.render.filepath = path
+    t = time.perf_counter()
+    with quiet_stdout():
+        bpy.ops.render.render(write_still=True, scene=scene.name)
+    if not os.path.isfile(path):
+        raise RuntimeError(f"render did not write {path}")
+    return time.perf_counter() - t
+
+
+def load_png(path):
+    img = bpy.data.images.load(path, check_existing=False)
+    try:
+        w, h = img.size
+        buf = np.empty(w * h * 4, np.float32)
+        img.pixels.foreach_get(buf)
+        return C.from_blender(buf, w, h)
+    finally:
+        bpy.data.images.remove(img)
+
+
+def save_png(arr, path):
+    h, w = arr.shape[:2]
+    img = bpy.data.images.new(os.path.basename(path), w, h, alpha=True)
+    try:
+        img.pixels.foreach_set(C.to_blender(np.clip(arr, 0.0, 1.0)))
+        img.filepath_raw = path
+        img.file_format = "PNG"
+        img.save()
+    finally:
+        bpy.data.images.remove(img)
+    if not os.path.isfile(path):
+        raise RuntimeError(f"could not write {path}")
+    return path
+
+
+def render_labels(texts, width, height, tmpdir, align="LEFT", bold=False):
+    """Each text rendered (Workbench, flat, dark on white) into a (height, width, 4) image whose
+    background is transparent: one scene, one text object, one render per label."""
+    scene = bpy.data.scenes.new("Figures Labels")
+    try:
+        r = scene.render
+        r.engine = "BLENDER_WORKBENCH"
+        r.resolution_x, r.resolution_y, r.resolution_percentage = int(width), int(height), 100
+        r.film_transparent = True
+        r.image_settings.file_format = "PNG"
+        r.image_settings.color_mode = "RGBA"
+        scene.view_settings.view_transform = "Standard"
+        sh = scene.display.shading
+        sh.light = "FLAT"
+        sh.color_type = "SINGLE"
+        sh.single_color = (0.02, 0.02, 0.025)
+        scene.display.render_aa = "16"
+        cam_data = bpy.data.cameras.new("Label Camera")
+        cam_data.type = "ORTHO"
+        cam_data.ortho_scale = float(max(width, height))  # 1 world unit = 1 pixel
+        cam = bpy.data.objects.new("Label Camera", cam_data)
+        scene.collection.objects.link(cam)
+        scene.camera = cam
+        cam.location = (width / 2.0, height / 2.0, 10.0)
+        curve = bpy.data.curves.new("Label", "FONT")
+        curve.size = 0.62 * height
+        curve.align_x = {"LEFT": "LEFT", "CENTER": "CENTER"}[align]
+        curve.align_y = "CENTER"
+        ob = bpy.data.objects.new("Label", curve)
+        scene.collection.objects.link(ob)
+        x = 0.25 * height if align == "LEFT" else width / 2.0
+        ob.location = (x, height / 2.0 - 0.05 * height, 0.0)
+        out = []
+        for i, text in enumerate(texts):
+            curve.body = text
+            path = os.path.join(tmpdir, f"label_{i}.png")
+            render_to(scene, path)
+            out.append(load_png(path))
+            os.remove(path)
+        bpy.data.objects.remove(ob)
+        bpy.data.curves.remove(curve)
+        bpy.data.objects.remove(cam)
+        bpy.data.cameras.remove(cam_data)
+        return out
+    finally:
+        bpy.data.scenes.remove(scene)

@@ -1,0 +1,145 @@
+"""blender_scripts/render_figures.py end to end, in background mode, at a tiny size: every panel
+of twistcube_s.mesh (Cycles, 4 samples) and a comparison (Workbench). Run inside Blender by
+tests/blender/run_pytest_in_blender.py (the images are read back with bpy.data.images); the
+figure script itself runs in a child Blender, as a user runs it.
+
+Environment: HBC_ADDON_DIR (the built add-on), HBC_DATA_DIR (the shared meshes).
+"""
+
+import itertools
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+bpy = pytest.importorskip("bpy")
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+SCRIPT = ROOT / "blender_scripts" / "render_figures.py"
+sys.path.insert(0, str(ROOT / "blender_scripts"))
+from figures import compose as C  # noqa: E402
+from figures import plan  # noqa: E402
+
+W, H = 160, 120
+MIN_STD = 0.02  # RGB standard deviation of a panel: a blank (background only) image gives 0
+
+
+def data(name):
+    d = os.environ.get("HBC_DATA_DIR")
+    if not d or not os.path.isdir(d):
+        pytest.fail(f"HBC_DATA_DIR={d} is not a folder")
+    p = pathlib.Path(d) / "hybrid-base-complex" / name
+    if not p.is_file():
+        pytest.fail(f"missing test mesh {p}")
+    return p
+
+
+def run(args, timeout=240):
+    if not os.environ.get("HBC_ADDON_DIR"):
+        pytest.fail("HBC_ADDON_DIR is not set (the built add-on)")
+    cmd = [bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1", "--python", str(SCRIPT),
+           "--", *map(str, args)]
+    t = time.perf_counter()
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    p.seconds = time.perf_counter() - t
+    return p
+
+
+def written(proc):
+    return [line[len("wrote "):] for line in proc.stdout.splitlines() if line.startswith("wrote ")]
+
+
+def load(path):
+    img = bpy.data.images.load(str(path), check_existing=False)
+    try:
+        w, h = img.size
+        buf = np.empty(w * h * 4, np.float32)
+        img.pixels.foreach_get(buf)
+        return C.from_blender(buf, w, h)
+    finally:
+        bpy.data.images.remove(img)
+
+
+@pytest.fixture(scope="module")
+def pipeline(tmp_path_factory):
+    out = tmp_path_factory.mktemp("figures")
+    p = run([data("twistcube_s.mesh"), "--out", out, "--engine", "cycles", "--samples", 4, "--resolution", W, H])
+    print(p.stdout[-3000:], p.stderr[-3000:])
+    assert p.returncode == 0, p.stderr[-3000:]
+    return out, p
+
+
+def test_every_panel_is_written_and_printed(pipeline):
+    out, p = pipeline
+    names = [f"twistcube_s_{plan.PANEL_LETTER[k]}_{k}.png" for k in plan.PANEL_KEYS] + ["twistcube_s_contact.png"]
+    files = [pathlib.Path(f) for f in written(p)]
+    assert [f.name for f in files] == names
+    for f in files:
+        assert f.parent == out.resolve() and f.is_file() and f.stat().st_size > 0
+    assert "| twistcube_s | 1301 |" in p.stdout  # the Table 1 row
+
+
+def test_panels_are_not_blank_and_all_differ(pipeline):
+    out, _ = pipeline
+    imgs = {k: load(out / f"twistcube_s_{plan.PANEL_LETTER[k]}_{k}.png") for k in plan.PANEL_KEYS}
+    for k, img in imgs.items():
+        expect = (H, 2 * W + C.PAD) if k == "subsheets" else (H, W)
+        assert img.shape[:2] == expect, k
+        assert C.pixel_std(img) > MIN_STD, f"panel {k} is blank (std {C.pixel_std(img):.4f})"
+    for a, b in itertools.combinations(plan.PANEL_KEYS, 2):
+        assert C.differs(imgs[a], imgs[b]), f"panels {a} and {b} are the same"
+
+
+def test_panels_are_not_clipped(pipeline):
+    """Same camera, framed on the mesh: something is drawn, and not on the frame's edge."""
+    out, _ = pipeline
+    for k in ("mesh", "graph", "complex", "sheet"):
+        img = load(out / f"twistcube_s_{plan.PANEL_LETTER[k]}_{k}.png")
+        box = C.foreground_bbox(img, tol=0.03)
+        assert box is not None, k
+        x0, y0, x1, y1 = box
+        assert x0 > 0 and y0 > 0 and x1 < W and y1 < H, (k, box)
+        assert (x1 - x0) > W * 0.4 or (y1 - y0) > H * 0.6, (k, box)  # fills the frame
+
+
+def test_contact_sheet_size(pipeline):
+    out, _ = pipeline
+    img = load(out / "twistcube_s_contact.png")
+    spans = [1] * 6 + [2]
+    label_h = max(14, round(H * 0.07))
+    assert img.shape[:2][::-1] == C.sheet_size(spans, C.contact_columns(spans), W, H, label_h)
+    assert C.pixel_std(img) > MIN_STD
+
+
+def test_compare_layout(tmp_path):
+    a, b = data("twistcube_s.mesh"), data("cube_twist-comp.obj.HYBRID")
+    p = run(["--compare", a, b, "--out", tmp_path, "--engine", "workbench", "--resolution", W, H])
+    assert p.returncode == 0, p.stderr[-3000:]
+    files = [pathlib.Path(f).name for f in written(p)]
+    rows = [k for k, _ in plan.COMPARE_ROWS]
+    assert files == [f"twistcube_s_{k}.png" for k in rows] + [f"cube_twist-comp.obj_{k}.png" for k in rows] + \
+        ["compare_twistcube_s_cube_twist-comp.obj.png"]
+    img = load(tmp_path / files[-1])
+    label_h = max(14, round(H * 0.07))
+    row_w = max(120, round(W * 0.4))
+    assert img.shape[:2] == (C.PAD + label_h + 4 + len(rows) * (H + C.PAD), C.PAD + row_w + 4 + 2 * (W + C.PAD))
+    for f in files[:-1]:
+        assert C.pixel_std(load(tmp_path / f)) > MIN_STD, f
+
+
+@pytest.mark.parametrize("args,pattern", [
+    (["/nonexistent/mesh.mesh", "--out", "{tmp}"], r"mesh\.mesh"),
+    (["--out", "{tmp}"], r"give one MESH"),
+    (["{mesh}", "--out", "{tmp}", "--sheet", "999"], r"--sheet 999: the mesh has 20 sheets"),
+])
+def test_failures_exit_non_zero(tmp_path, args, pattern):
+    args = [a.format(tmp=tmp_path, mesh=data("twistcube_s.mesh")) for a in args]
+    p = run(args + ["--engine", "workbench", "--resolution", W, H], timeout=120)
+    assert p.returncode != 0
+    assert re.search(pattern, p.stdout + p.stderr), (p.stdout[-2000:], p.stderr[-2000:])
+    assert not list(tmp_path.glob("*.png"))

@@ -1,0 +1,108 @@
+"""Decisions of the figure script without Blender: arguments, sheet choice, tiles, camera, outlines."""
+
+import numpy as np
+import pytest
+
+from figures import plan
+
+
+def test_parse_defaults_and_panels():
+    a = plan.parse(["m.mesh", "--out", "o"])
+    assert a.mesh == "m.mesh" and a.out == "o" and a.engine == "cycles" and a.samples == 16
+    assert tuple(a.resolution) == (640, 480) and a.panels == list(plan.PANEL_KEYS) and a.sheet is None
+    a = plan.parse(["m.mesh", "--out", "o", "--panels", "sheet,mesh", "--engine", "workbench", "--sheet", "3",
+                    "--resolution", "160", "120", "--samples", "4"])
+    assert a.panels == ["mesh", "sheet"] and a.sheet == 3 and a.samples == 4 and a.engine == "workbench"
+
+
+@pytest.mark.parametrize("argv", [
+    ["--out", "o"],                                   # no mesh
+    ["m.mesh", "--compare", "a", "b", "--out", "o"],  # both
+    ["m.mesh"],                                       # no --out
+    ["m.mesh", "--out", "o", "--panels", "nope"],
+    ["m.mesh", "--out", "o", "--resolution", "8", "8"],
+    ["m.mesh", "--out", "o", "--samples", "0"],
+    ["m.mesh", "--out", "o", "--engine", "povray"],
+])
+def test_parse_refuses(argv, capsys):
+    with pytest.raises(SystemExit) as e:
+        plan.parse(argv)
+    assert e.value.code == 2
+
+
+def test_script_args():
+    assert plan.script_args(["blender", "-b", "--python", "x.py", "--", "a", "--out", "o"]) == ["a", "--out", "o"]
+    assert plan.script_args(["blender"]) == []
+
+
+def test_pick_sheet_order_of_preference():
+    # types: 0 perfect, 1, 2, 3 self-intersecting
+    assert plan.pick_sheet([0, 3, 1, 3], [50, 10, 40, 20]) == 3      # largest self-intersecting
+    assert plan.pick_sheet([0, 1, 2, 0], [90, 10, 40, 20]) == 2      # else largest imperfect
+    assert plan.pick_sheet([0, 0, 0], [5, 9, 9]) == 1                # else largest, ties to the lower id
+    assert plan.pick_sheet([], []) is None
+    assert plan.pick_sheet([0, 3], [1, 1], requested=0) == 0
+    with pytest.raises(ValueError, match="2 sheets"):
+        plan.pick_sheet([0, 3], [1, 1], requested=2)
+
+
+def test_pick_subsheets_largest_in_id_order():
+    assert plan.pick_subsheets([5, 50, 1, 30, 30], 3) == [1, 3, 4]
+    assert plan.pick_subsheets([2], 4) == [0]
+
+
+def test_tile_grid_fills_the_panel():
+    (tw, th), cols = plan.tile_grid(3, 1292, 480)
+    assert (tw, th) == (430, 240) and len(cols) == 3
+    for (x, y), (x2, y2) in cols:
+        assert x == x2 and y == 0 and y2 == th and 0 <= x and x + tw <= 1292
+
+
+def test_view_direction_is_unit_and_up_aware():
+    d = plan.view_direction(0, 0, "z")
+    assert np.allclose(d, [1, 0, 0])
+    d = plan.view_direction(0, 90, "y")
+    assert np.allclose(d, [0, 1, 0])
+    assert np.isclose(np.linalg.norm(plan.view_direction(-50, 25)), 1.0)
+
+
+@pytest.mark.parametrize("size", [(640, 480), (160, 240), (300, 300)])
+@pytest.mark.parametrize("az,el", [(-50, 25), (30, 60), (10, -20)])
+def test_frame_holds_every_point_centred(size, az, el):
+    rng = np.random.default_rng(1)
+    pts = rng.normal(size=(500, 3)) * [3.0, 1.0, 0.5] + [10, -4, 2]
+    cam = plan.frame(pts, plan.view_direction(az, el), "z", *size, margin=0.06)
+    uv, depth = cam.project(pts)
+    assert (depth > 0).all()
+    assert np.abs(uv).max() <= 0.94 + 1e-6          # inside, with the margin
+    assert np.abs(uv).max() >= 0.90                  # and tight on its tightest side
+    # centred: the extreme points are symmetric on both axes (to within a pixel)
+    assert abs(uv[:, 0].max() + uv[:, 0].min()) < 2.0 / size[0] * 2
+    assert abs(uv[:, 1].max() + uv[:, 1].min()) < 2.0 / size[1] * 2
+    near, far = plan.clip_range(cam, pts)
+    assert 0 < near < depth.min() and far > depth.max()
+
+
+def test_framing_points_keeps_extent():
+    pts = np.random.default_rng(2).random((1000, 3))
+    sub = plan.framing_points(pts, limit=100)
+    assert len(sub) < 200
+    assert np.allclose(sub.min(axis=0), pts.min(axis=0)) and np.allclose(sub.max(axis=0), pts.max(axis=0))
+
+
+def _cube_soup():
+    pos = np.array([[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)], np.float32)
+    quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
+    return pos, np.full(6, 4, np.int32), np.array(quads, np.int32).ravel()
+
+
+def test_feature_edges_of_a_cube_and_a_flat_patch():
+    pos, sizes, fv = _cube_soup()
+    e = plan.feature_edges(pos, sizes, fv)
+    assert len(e) == 12
+    # A flat 2x1 patch: its 6 border edges, not the shared middle one.
+    pos = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]], np.float32)
+    e = plan.feature_edges(pos, [4, 4], [0, 1, 4, 3, 1, 2, 5, 4])
+    assert len(e) == 6 and [1, 4] not in e.tolist()
+    assert len(plan.all_edges([4, 4], [0, 1, 4, 3, 1, 2, 5, 4])) == 7
+    assert plan.feature_edges(np.zeros((0, 3)), [], []).shape == (0, 2)
