@@ -494,27 +494,27 @@ void Builder::colours() {
   }
   w_.color_class.resize(nw);
   for (size_t w = 0; w < nw; ++w) w_.color_class[w] = uf.find(static_cast<int32_t>(w));
-  // Class graph: classes of wire edges sharing a point.
-  std::vector<std::pair<int32_t, int32_t>> adj;
-  for (size_t p = 0; p < point_wires_.rows(); ++p) {
-    const auto ws = point_wires_[p];
-    for (size_t i = 0; i < ws.size(); ++i)
-      for (size_t j = 0; j < ws.size(); ++j) {
-        const int32_t a = w_.color_class[ws[i]], b = w_.color_class[ws[j]];
-        if (a != b) adj.push_back({a, b});
-      }
-  }
-  std::sort(adj.begin(), adj.end());
-  adj.erase(std::unique(adj.begin(), adj.end()), adj.end());
+  // Class graph: classes of wire edges sharing a point. Each class's neighbours are visited on
+  // the fly (a stamp per class counts each once) instead of listed as pairs: the classes at one
+  // point form a clique, and a point where thousands of wires meet (a fan of cells around an
+  // edge) would make the pair list quadratic in memory.
+  Csr<int32_t> wire_class;
+  for (size_t w = 0; w < nw; ++w) wire_class.push_row(&w_.color_class[w], &w_.color_class[w] + 1);
+  const Csr<int32_t> class_wires = transpose(wire_class, nw);
   const int32_t palette = std::max(opt_.palette_size, 1);
-  std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette));
-  size_t a = 0;
+  std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette)), stamp(nw, -1);
   for (size_t c = 0; c < nw; ++c) {
     if (w_.color_class[c] != static_cast<int32_t>(c)) continue;
     std::fill(used.begin(), used.end(), 0);
-    while (a < adj.size() && adj[a].first < static_cast<int32_t>(c)) ++a;
-    for (size_t i = a; i < adj.size() && adj[i].first == static_cast<int32_t>(c); ++i)
-      if (class_color[adj[i].second] >= 0) ++used[class_color[adj[i].second]];
+    stamp[c] = static_cast<int32_t>(c);
+    for (int32_t w : class_wires[c])
+      for (int32_t p : wire_points_[w])
+        for (int32_t w2 : point_wires_[p]) {
+          const int32_t b = w_.color_class[w2];
+          if (stamp[b] == static_cast<int32_t>(c)) continue;
+          stamp[b] = static_cast<int32_t>(c);
+          if (class_color[b] >= 0) ++used[class_color[b]];
+        }
     // The first free colour; with none free, the one fewest neighbours hold.
     class_color[c] = static_cast<int32_t>(std::min_element(used.begin(), used.end()) - used.begin());
   }

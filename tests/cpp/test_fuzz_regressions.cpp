@@ -3,6 +3,8 @@
 // accepted with the invariants the harness checks; any other exception fails the test naming the
 // file, and a crash or sanitizer report (scripts/test_sanitized.sh) fails the suite.
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -101,6 +103,37 @@ TEST(FuzzRegressions, HarnessPathSeesAcceptAndReject) {
   EXPECT_TRUE(fuzz::load_and_analyze(std::string(1, '\x02') + tet));
   EXPECT_FALSE(fuzz::load_and_analyze(std::string(1, '\x00') + tet));  // MEDIT text read as OVM
   EXPECT_FALSE(fuzz::load_and_analyze(""));
+}
+
+// Resource bounds on valid but extreme meshes (found by hand, not by the fuzzers, whose inputs are
+// too small to reach them): k tets in a fan around one edge, so about 2k wireframe edges meet at
+// each end of that edge. The wireframe colouring used to list every pair of wires sharing a point
+// (k = 10^4: 2.1 GB, 128 s); it must stay linear in memory and finish in well under a second.
+TEST(ResourceBounds, TetFanAroundOneEdge) {
+  constexpr int k = 4000;
+  MeshInput in;
+  in.source = "fan";
+  for (double z : {0.0, 1.0}) in.points.insert(in.points.end(), {0.0, 0.0, z});
+  for (int i = 0; i < k; ++i) {
+    const double a = 2 * M_PI * i / k;
+    in.points.insert(in.points.end(), {std::cos(a), std::sin(a), 0.5});
+  }
+  for (int i = 0; i < k; ++i) {
+    const int32_t r = 2 + i, s = 2 + (i + 1) % k;
+    const int32_t f0 = static_cast<int32_t>(in.faces.rows());
+    for (std::array<int32_t, 3> t : {std::array<int32_t, 3>{0, 1, r}, {0, s, 1}, {0, r, s}, {1, s, r}})
+      in.faces.push_row(t.begin(), t.end());
+    for (int32_t f = f0; f < f0 + 4; ++f) in.cells.items.push_back(2 * f);
+    in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const Mesh m = build_mesh(std::move(in));
+  const Analysis a = analyze(m);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(m.num_cells(), static_cast<size_t>(k));
+  EXPECT_EQ(a.wireframe.vsg_edges, k + 1);  // the axis and the k spokes at its ends
+  EXPECT_EQ(a.wireframe.color.size(), a.wireframe.size());
+  EXPECT_LT(seconds, 5.0) << "quadratic again? (the pair list took 10 s and 270 MB here)";
 }
 
 }  // namespace
