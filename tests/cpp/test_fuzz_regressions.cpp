@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -115,7 +116,7 @@ TEST(ResourceBounds, TetFanAroundOneEdge) {
   in.source = "fan";
   for (double z : {0.0, 1.0}) in.points.insert(in.points.end(), {0.0, 0.0, z});
   for (int i = 0; i < k; ++i) {
-    const double a = 2 * M_PI * i / k;
+    const double a = 2 * std::numbers::pi * i / k;
     in.points.insert(in.points.end(), {std::cos(a), std::sin(a), 0.5});
   }
   for (int i = 0; i < k; ++i) {
