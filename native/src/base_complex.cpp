@@ -211,6 +211,31 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
   const size_t npatch = bc.patch_faces.rows();
   const size_t ncurve = bc.curve_edges.rows();
   RowCollector by_vertex(nv), by_curve(ncurve), by_patch(npatch), by_component(ncomp);
+  // Euler characteristic of a component's boundary surface (faces counted once per side): 2 for
+  // a ball, 0 for a solid torus. Only needed for the components that are not cubes.
+  std::vector<int32_t> edge_seen(ne, -1), vert_seen(nv, -1);
+  auto boundary_euler = [&](int32_t k) {
+    int64_t F = 0, E = 0, V = 0;
+    for (int32_t c : bc.component_cells[k])
+      for (int32_t f : m.cell_faces[c]) {
+        if (!sep[f]) continue;
+        const auto fc = m.face_cells[f];
+        const int32_t other = fc[0] == c ? fc[1] : fc[0];
+        if (other >= 0 && bc.cell_component[other] == k) continue;  // a cut inside: not the boundary
+        ++F;
+        for (int32_t e : m.face_edges[f])
+          if (edge_seen[e] != k) {
+            edge_seen[e] = k;
+            ++E;
+          }
+        for (int32_t v : m.face_verts[f])
+          if (vert_seen[v] != k) {
+            vert_seen[v] = k;
+            ++V;
+          }
+      }
+    return V - E + F;
+  };
   for (size_t p = 0; p < npatch; ++p) {
     by_vertex.begin();
     by_curve.begin();
@@ -267,7 +292,9 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
                 bc.component_corners.count(k) == 8;
     for (int32_t p : bc.component_patches[k])
       cube = cube && bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
-    bc.component_kind[k] = cube ? ComponentKind::Cube : self_cut[k] ? ComponentKind::Ring : ComponentKind::Other;
+    if (cube) bc.component_kind[k] = ComponentKind::Cube;
+    else if (self_cut[k] || boundary_euler(static_cast<int32_t>(k)) == 0) bc.component_kind[k] = ComponentKind::Ring;
+    else bc.component_kind[k] = ComponentKind::Other;
   }
   return bc;
 }

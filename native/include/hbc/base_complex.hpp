@@ -15,6 +15,7 @@ namespace hbc {
 enum class ComponentKind : uint8_t {
   Cube = 0,    // hex cells; 6 quad patches, 12 curves, 8 corners (counted in H_B)
   Ring = 1,    // hex cells; cut by a separation face with itself on both sides, or torus-like
+               // (boundary surface of Euler characteristic 0)
   Other = 2,   // hex cells; any other shape
   NonHex = 3,  // a single non-hex cell
 };
