@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the analysis-stage benchmark (bench/bench_stages.cpp) on one core and prints a Markdown table:
+# Runs the analysis-stage benchmark (native/bench/bench_stages.cpp) on one core and prints a Markdown table:
 # per mesh, graph + complex (T_GS + T_GB), sheets (T_GSH) and subsheets (T_GSH*) in CPU ms, the
 # growth between the generated sizes measured in the same run, and the speed-up over the times
 # quoted for the paper's Python implementation in the project's issues (quoted, not re-measured).
