@@ -370,7 +370,8 @@ class Subject:
     def panel_sheet(self):
         if self.sheet is None:
             return None
-        coll = self.build("sheet", "sheet")
+        # Thinner highlight edges than the line panels': they sit on the blocks and would hide them.
+        coll = self.build("sheet", "sheet", line_radius=0.6 * self.st().line_radius)
         S = self.addon.S
         with S.Transaction() as tx:
             self.outline(tx, coll, f"{self.name} sheet outlines", self.s.sheet_blocks(self.sheet, self.st().shrink))
