@@ -25,7 +25,23 @@ size_t Mesh::num_hex_cells() const {
 
 namespace {
 
-// Ids of merged elements (faces, edges) filed under their lowest vertex. The capacity of each
+// Scrambles the bits of a key (murmur3 finaliser) so that hashed bucket indices spread evenly.
+uint64_t mix(uint64_t h) {
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  h ^= h >> 33;
+  return h;
+}
+
+// When more faces (edges) than this have the same lowest vertex, they are filed under a hash of
+// their whole vertex set instead: around a vertex of high valence (a fan of thousands of cells)
+// one bucket would make every lookup scan thousands of entries. Lookups and the counting pass use
+// the same rule, so a bucket may mix both kinds of entries.
+constexpr int32_t kHeavyBucket = 64;
+
+// Ids of merged elements (faces, edges) filed under their lowest vertex (see kHeavyBucket). The capacity of each
 // vertex's bucket is known from a counting pass, so lookups scan a few neighbouring entries
 // instead of probing a hash table spread over the whole memory: large meshes stay cache friendly.
 class VertexBuckets {
@@ -242,6 +258,24 @@ Mesh build_mesh(MeshInput in) {
     auto loop = in.faces[f];
     ++bucket_count[*std::min_element(loop.begin(), loop.end())];
   }
+  std::vector<uint8_t> heavy(nv, 0);
+  for (size_t v = 0; v < nv; ++v) heavy[v] = bucket_count[v] > kHeavyBucket;
+  // Order-independent hash of the vertex set: no sorted key needed for counting.
+  auto face_bucket = [&](std::span<const int32_t> loop) {
+    const int32_t lowest = *std::min_element(loop.begin(), loop.end());
+    if (!heavy[lowest]) return lowest;
+    uint64_t h = 0;
+    for (int32_t v : loop) h += mix(static_cast<uint64_t>(v) + 1);
+    return static_cast<int32_t>(h % nv);
+  };
+  for (size_t f = 0; f < nf_in; ++f) {
+    auto loop = in.faces[f];
+    const int32_t lowest = *std::min_element(loop.begin(), loop.end());
+    if (heavy[lowest]) {
+      --bucket_count[lowest];
+      ++bucket_count[face_bucket(loop)];
+    }
+  }
   VertexBuckets face_table(bucket_count);
   auto canonical = [&](size_t f) {
     auto loop = in.faces[f];
@@ -253,10 +287,10 @@ Mesh build_mesh(MeshInput in) {
     } else {
       std::sort(key.begin(), key.end());
     }
-    return key[0];
+    return face_bucket(loop);
   };
-  auto find_face = [&](int32_t lowest) {
-    return face_table.find(lowest, [&](int32_t u) {
+  auto find_face = [&](int32_t bucket) {
+    return face_table.find(bucket, [&](int32_t u) {
       auto s = sorted_unique[u];
       return s.size() == key.size() && std::equal(s.begin(), s.end(), key.begin());
     });
@@ -271,13 +305,13 @@ Mesh build_mesh(MeshInput in) {
       const size_t f = static_cast<size_t>(r >> 1);
       int32_t u = face_map[f];
       if (u < 0) {
-        const int32_t lowest = canonical(f);
-        u = find_face(lowest);
+        const int32_t bucket = canonical(f);
+        u = find_face(bucket);
         if (u < 0) {
           u = static_cast<int32_t>(m.face_verts.rows());
           m.face_verts.push_row(in.faces[f]);
           sorted_unique.push_row(key.begin(), key.end());
-          face_table.insert(lowest, u);
+          face_table.insert(bucket, u);
           m.face_cells.push_back({-1, -1});
         }
         face_map[f] = u;
@@ -327,13 +361,28 @@ Mesh build_mesh(MeshInput in) {
     auto loop = m.face_verts[f];
     for (size_t i = 0; i < loop.size(); ++i) ++bucket_count[std::min(loop[i], loop[(i + 1) % loop.size()])];
   }
+  for (size_t v = 0; v < nv; ++v) heavy[v] = bucket_count[v] > 2 * kHeavyBucket;  // each edge counted per face
+  auto edge_bucket = [&](uint64_t k) {
+    const auto lo = static_cast<int32_t>(k >> 32);
+    return heavy[lo] ? static_cast<int32_t>(mix(k) % nv) : lo;
+  };
+  for (size_t f = 0; f < nf; ++f) {
+    auto loop = m.face_verts[f];
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const uint64_t k = edge_key(loop[i], loop[(i + 1) % loop.size()]);
+      if (heavy[k >> 32]) {
+        --bucket_count[k >> 32];
+        ++bucket_count[edge_bucket(k)];
+      }
+    }
+  }
   VertexBuckets edge_table(bucket_count);
   std::vector<int32_t>().swap(bucket_count);
   m.face_edges.offsets = m.face_verts.offsets;
   m.face_edges.items.resize(m.face_verts.items.size());
   auto find_edge = [&](uint64_t k) {
     const int32_t lo = static_cast<int32_t>(k >> 32), hi = static_cast<int32_t>(k & 0xffffffffu);
-    return edge_table.find(lo, [&](int32_t e) { return m.edge_verts[e][1] == hi; });
+    return edge_table.find(edge_bucket(k), [&](int32_t e) { return m.edge_verts[e][0] == lo && m.edge_verts[e][1] == hi; });
   };
   for (size_t f = 0; f < nf; ++f) {
     auto loop = m.face_verts[f];
@@ -345,7 +394,7 @@ Mesh build_mesh(MeshInput in) {
       if (e < 0) {
         e = static_cast<int32_t>(m.edge_verts.size());
         m.edge_verts.push_back({std::min(a, b), std::max(a, b)});
-        edge_table.insert(std::min(a, b), e);
+        edge_table.insert(edge_bucket(k), e);
       }
       m.face_edges.items[m.face_edges.offsets[f] + i] = e;
     }

@@ -107,11 +107,9 @@ TEST(FuzzRegressions, HarnessPathSeesAcceptAndReject) {
 }
 
 // Resource bounds on valid but extreme meshes (found by hand, not by the fuzzers, whose inputs are
-// too small to reach them): k tets in a fan around one edge, so about 2k wireframe edges meet at
-// each end of that edge. The wireframe colouring used to list every pair of wires sharing a point
-// (k = 10^4: 2.1 GB, 128 s); it must stay linear in memory and finish in well under a second.
-TEST(ResourceBounds, TetFanAroundOneEdge) {
-  constexpr int k = 4000;
+// too small to reach them): k tets in a fan around one edge, so that about 2k faces, 2k edges and
+// 2k wireframe edges meet at each end of that edge.
+MeshInput tet_fan(int k) {
   MeshInput in;
   in.source = "fan";
   for (double z : {0.0, 1.0}) in.points.insert(in.points.end(), {0.0, 0.0, z});
@@ -127,11 +125,36 @@ TEST(ResourceBounds, TetFanAroundOneEdge) {
     for (int32_t f = f0; f < f0 + 4; ++f) in.cells.items.push_back(2 * f);
     in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
   }
+  return in;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// build_mesh filed faces and edges under their lowest vertex only, so every lookup at the fan's
+// axis scanned all of them (k = 20000: 10 s; a 8 MB file would take a quarter of an hour).
+TEST(ResourceBounds, TetFanBuildMesh) {
+  constexpr int k = 20000;
+  MeshInput in = tet_fan(k);
   const auto t0 = std::chrono::steady_clock::now();
   const Mesh m = build_mesh(std::move(in));
-  const Analysis a = analyze(m);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = seconds_since(t0);
   EXPECT_EQ(m.num_cells(), static_cast<size_t>(k));
+  EXPECT_EQ(m.num_faces(), static_cast<size_t>(3 * k));
+  EXPECT_EQ(m.num_edges(), static_cast<size_t>(3 * k + 1));
+  EXPECT_EQ(m.edge_valence(0), k);  // the axis (the first edge of the first face)
+  EXPECT_LT(seconds, 2.0) << "quadratic again? (one bucket per vertex took 10 s here)";
+}
+
+// The wireframe colouring listed every pair of wires sharing a point (k = 10^4: 2.1 GB, 128 s);
+// it must stay linear in memory and fast.
+TEST(ResourceBounds, TetFanAnalyze) {
+  constexpr int k = 4000;
+  const Mesh m = build_mesh(tet_fan(k));
+  const auto t0 = std::chrono::steady_clock::now();
+  const Analysis a = analyze(m);
+  const double seconds = seconds_since(t0);
   EXPECT_EQ(a.wireframe.vsg_edges, k + 1);  // the axis and the k spokes at its ends
   EXPECT_EQ(a.wireframe.color.size(), a.wireframe.size());
   EXPECT_LT(seconds, 5.0) << "quadratic again? (the pair list took 10 s and 270 MB here)";
