@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Builds the library, the CLI and the GoogleTest suite with AddressSanitizer + UndefinedBehavior-
+# Sanitizer (build-asan/, RelWithDebInfo so reports carry file:line) and runs the whole C++ suite,
+# CLI tests included (they run the sanitized hbc binary). Leaks fail the run; so does any UB
+# report (compiled with -fno-sanitize-recover, and halt_on_error below for good measure).
+# usage: scripts/test_sanitized.sh [extra gtest arguments, e.g. --gtest_filter=Io.*]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${BUILD:-build-asan}
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHBC_SANITIZE=ON -DHBC_BUILD_BENCHMARKS=OFF \
+  -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
+cmake --build "$BUILD" -j"$(nproc)" --target hbc_cli hbc_tests
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+"$BUILD/tests/hbc_tests" --gtest_brief=1 "$@"
