@@ -92,7 +92,7 @@ class RowCollector {
 };
 
 void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
-  std::sort(v.begin(), v.end());
+  if (v.size() > 1) std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
   out.push_row(v.begin(), v.end());
 }

@@ -1,7 +1,6 @@
 #include "hbc/singularity_graph.hpp"
 
 #include <algorithm>
-#include <deque>
 
 namespace hbc {
 
@@ -40,13 +39,13 @@ void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<i
     return other;
   };
   std::vector<uint8_t> seen(ne, 0);
-  std::deque<int32_t> chain;
-  std::vector<int32_t> vs, es;
+  std::vector<int32_t> fwd, bwd, vs, es;  // edges found walking forward / backward from the start
   for (size_t e0 = 0; e0 < ne; ++e0) {
     if (!member[e0] || seen[e0]) continue;
     const int32_t start = static_cast<int32_t>(e0);
     seen[start] = 1;
-    chain.assign(1, start);
+    fwd.clear();
+    bwd.clear();
     bool loop = false;
     // Forward from the hi end, then backward from the lo end.
     int32_t v = m.edge_verts[start][1], e = start;
@@ -59,11 +58,10 @@ void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<i
         break;
       }
       seen[n] = 1;
-      chain.push_back(n);
+      fwd.push_back(n);
       e = n;
       v = m.other_vertex(n, v);
     }
-    const int32_t back_v = v;
     if (!loop) {
       v = front_v;
       e = start;
@@ -71,14 +69,16 @@ void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<i
         int32_t n = pass(v, e);
         if (n < 0 || seen[n]) break;
         seen[n] = 1;
-        chain.push_front(n);
+        bwd.push_back(n);
         e = n;
         v = m.other_vertex(n, v);
       }
       front_v = v;
     }
     // Vertices along the chain from front_v.
-    es.assign(chain.begin(), chain.end());
+    es.assign(bwd.rbegin(), bwd.rend());
+    es.push_back(start);
+    es.insert(es.end(), fwd.begin(), fwd.end());
     vs.clear();
     int32_t cur = loop ? m.edge_verts[es[0]][0] : front_v;
     if (loop) {
@@ -95,7 +95,6 @@ void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<i
       cur = m.other_vertex(x, cur);
     }
     if (!loop) vs.push_back(cur);
-    (void)back_v;
     // Canonical orientation for stable output.
     if (!loop) {
       if (vs.back() < vs.front()) {
