@@ -12,18 +12,8 @@ MeshInput read_hedra(std::string_view text, const std::string& source) {
   const int64_t nv = s.count(6, "the number of vertices");
   const int64_t nf = s.count(8, "the number of faces");
   const int64_t nc = s.count(4, "the number of cells");
-  in.points.reserve(static_cast<size_t>(3 * nv));
-  for (int64_t i = 0; i < nv; ++i) {
-    in.vertex_loc.push_back(s.next_line());
-    for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
-  }
-  for (int64_t f = 0; f < nf; ++f) {
-    in.face_loc.push_back(s.next_line());
-    const int64_t n = s.integer_in(3, 1 << 20, "the number of vertices of a face");
-    for (int64_t k = 0; k < n; ++k)
-      in.faces.items.push_back(static_cast<int32_t>(s.integer_in(1, nv, "a vertex index (1-based)") - 1));
-    in.faces.offsets.push_back(static_cast<int32_t>(in.faces.items.size()));
-  }
+  detail::read_points(s, nv, in);
+  detail::read_face_loops(s, nf, nv, 1, in);
   for (int64_t c = 0; c < nc; ++c) {
     in.cell_loc.push_back(s.next_line());
     const int64_t n = s.integer_in(2, 1 << 20, "the number of faces of a cell");

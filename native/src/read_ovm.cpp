@@ -28,7 +28,10 @@ std::string_view trim(std::string_view s) {
 }
 
 std::string shown(std::string_view t) {
-  return "'" + std::string(t.substr(0, 40)) + (t.size() > 40 ? "...'" : "'");
+  std::string out(1, '\'');  // appended piecewise: GCC 12 warns falsely on "'" + std::string
+  out.append(t.substr(0, 40));
+  out.append(t.size() > 40 ? "...'" : "'");
+  return out;
 }
 
 // Walks the data lines of the text and cuts each into tokens (one reused buffer, no per-line

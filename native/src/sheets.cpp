@@ -5,6 +5,8 @@
 #include <boost/graph/max_cardinality_matching.hpp>
 #include <numeric>
 
+#include "union_find.hpp"
+
 namespace hbc {
 
 const char* sheet_type_name(SheetType t) {
@@ -24,19 +26,7 @@ size_t Sheets::count(SheetType t) const {
 
 namespace {
 
-struct UnionFind {
-  std::vector<int32_t> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int32_t find(int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int32_t a, int32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using detail::UnionFind;
 
 bool contains(std::span<const int32_t> sorted, int32_t x) {
   return std::binary_search(sorted.begin(), sorted.end(), x);

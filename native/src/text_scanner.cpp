@@ -136,4 +136,24 @@ int64_t TextScanner::count(int64_t min_bytes, const char* expected) {
   return n;
 }
 
+void read_points(TextScanner& s, int64_t nv, MeshInput& in) {
+  in.points.reserve(static_cast<size_t>(3 * nv));
+  in.vertex_loc.reserve(static_cast<size_t>(nv));
+  for (int64_t i = 0; i < nv; ++i) {
+    in.vertex_loc.push_back(s.next_line());
+    for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
+  }
+}
+
+void read_face_loops(TextScanner& s, int64_t nf, int64_t nv, int base, MeshInput& in) {
+  const char* what = base == 0 ? "a vertex index (0-based)" : "a vertex index (1-based)";
+  for (int64_t f = 0; f < nf; ++f) {
+    in.face_loc.push_back(s.next_line());
+    const int64_t n = s.integer_in(3, 1 << 20, "the number of vertices of a face");
+    for (int64_t k = 0; k < n; ++k)
+      in.faces.items.push_back(static_cast<int32_t>(s.integer_in(base, nv - 1 + base, what) - base));
+    in.faces.offsets.push_back(static_cast<int32_t>(in.faces.items.size()));
+  }
+}
+
 }  // namespace hbc::detail

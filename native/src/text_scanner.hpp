@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "hbc/error.hpp"
+#include "hbc/mesh.hpp"
 
 namespace hbc::detail {
 
@@ -46,6 +47,12 @@ class TextScanner {
   int64_t tok_line_ = 1;  // line of the last token
   std::string_view last_;
 };
+
+// Sections shared by the counted text formats (.hedra, .HYBRID): `nv` lines of "x y z", and
+// `nf` lines "n v1 .. vn" with vertex ids counted from `base` (0 or 1). Filled into `in` with the
+// line of each element.
+void read_points(TextScanner& s, int64_t nv, MeshInput& in);
+void read_face_loops(TextScanner& s, int64_t nf, int64_t nv, int base, MeshInput& in);
 
 // Lower-case copy for case-insensitive keywords.
 std::string lower(std::string_view s);

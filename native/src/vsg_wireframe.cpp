@@ -8,6 +8,8 @@
 
 #include "hbc/singularity_graph.hpp"
 
+#include "union_find.hpp"
+
 namespace hbc {
 
 int64_t VsgWireframe::wireframe_edges_simplified() const {
@@ -16,20 +18,7 @@ int64_t VsgWireframe::wireframe_edges_simplified() const {
 
 namespace {
 
-// Union-find whose root is always the lowest member, so class ids are deterministic.
-struct MinUnionFind {
-  std::vector<int32_t> parent;
-  explicit MinUnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int32_t find(int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int32_t a, int32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using MinUnionFind = detail::UnionFind;  // root = lowest member: deterministic class ids
 
 bool share_cell(const CellComplex& cx, int32_t e, int32_t f) {
   const auto a = cx.edge_cells[e], b = cx.edge_cells[f];

@@ -12,21 +12,13 @@
 #include <stdexcept>
 
 #include "hbc/io.hpp"
+#include "text_writer.hpp"
 
 namespace hbc {
 namespace {
 
-void append_real(std::string& out, double x) {
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
-}
-
-void append_int(std::string& out, int64_t x) {
-  char buf[24];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
-}
+using detail::append_int;
+using detail::append_real;
 
 // Vertices of one cell in MEDIT order, up to 8.
 struct Element {

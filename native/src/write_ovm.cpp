@@ -4,22 +4,13 @@
 #include <charconv>
 
 #include "hbc/io.hpp"
+#include "text_writer.hpp"
 
 namespace hbc {
 namespace {
 
-// Shortest decimal text that reads back to the same double (std::to_chars round trip).
-void append_real(std::string& out, double x) {
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
-}
-
-void append_int(std::string& out, int64_t x) {
-  char buf[24];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
-}
+using detail::append_int;
+using detail::append_real;
 
 }  // namespace
 
