@@ -62,10 +62,6 @@ void sort_unique(std::vector<int32_t>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
-}  // namespace
-
-namespace {
-
 SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const UnitMask& in_units) {
   SheetClass k;
   // (end vertex, curve) for every open curve.
