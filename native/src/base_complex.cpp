@@ -137,6 +137,7 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
 
   // Components: cells joined across faces that do not separate, numbered by their lowest cell.
   bc.cell_component.assign(nc, -1);
+  bc.component_cells.items.reserve(nc);
   std::vector<int32_t> stack, members;
   for (size_t c0 = 0; c0 < nc; ++c0) {
     if (bc.cell_component[c0] >= 0) continue;
@@ -185,6 +186,7 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
 
   // Patches: separation faces joined straight across edges that are not curves.
   bc.face_patch.assign(nf, -1);
+  bc.patch_faces.items.reserve(static_cast<size_t>(std::count(sep.begin(), sep.end(), 1)));
   for (size_t f0 = 0; f0 < nf; ++f0) {
     if (!sep[f0] || bc.face_patch[f0] >= 0) continue;
     const int32_t id = static_cast<int32_t>(bc.patch_faces.rows());
@@ -211,6 +213,13 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
   const size_t npatch = bc.patch_faces.rows();
   const size_t ncurve = bc.curve_edges.rows();
   RowCollector by_vertex(nv), by_curve(ncurve), by_patch(npatch), by_component(ncomp);
+  // Quads and cubes dominate: room for 4 corners and curves per patch, 8 / 12 / 6 per component.
+  bc.patch_corners.reserve(npatch, 4 * npatch);
+  bc.patch_curves.reserve(npatch, 4 * npatch);
+  bc.component_corners.reserve(ncomp, 8 * ncomp);
+  bc.component_curves.reserve(ncomp, 12 * ncomp);
+  bc.component_patches.reserve(ncomp, 6 * ncomp);
+  bc.component_adjacency.reserve(ncomp, 6 * ncomp);
   // Euler characteristic of a component's boundary surface (faces counted once per side): 2 for
   // a ball, 0 for a solid torus. Only needed for the components that are not cubes.
   std::vector<int32_t> edge_seen(ne, -1), vert_seen(nv, -1);
