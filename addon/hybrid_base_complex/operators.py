@@ -85,6 +85,23 @@ def structure_of(root, analysed, log, rho=0.8):
                           float(root.get("hbc_rho", rho)), analysed, log)
 
 
+class _OnActiveMesh:
+    """Operators that act on the mesh the Hex Structure panel shows."""
+
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return active_root(context) is not None
+
+    def cancel_with(self, context, error, prog=None):
+        """Reports a failure and cancels; the scene was not touched (builds are all or nothing)."""
+        if prog is not None:
+            prog.end(context)
+        self.report({"ERROR"}, f"{type(error).__name__}: {error}")
+        return {"CANCELLED"}
+
+
 class HBC_OT_import(bpy.types.Operator, ImportHelper):
     """Import a hex-dominant volume mesh and show it (optionally analysed)"""
 
@@ -141,16 +158,11 @@ class HBC_OT_import(bpy.types.Operator, ImportHelper):
         return {"FINISHED"}
 
 
-class HBC_OT_analyse(bpy.types.Operator):
+class HBC_OT_analyse(_OnActiveMesh, bpy.types.Operator):
     """Analyse the active hex-dominant mesh (again, with the current ρ)"""
 
     bl_idname = "hbc.analyse"
     bl_label = "Analyse"
-    bl_options = {"REGISTER", "UNDO"}
-
-    @classmethod
-    def poll(cls, context):
-        return active_root(context) is not None
 
     def execute(self, context):
         root = active_root(context)
@@ -160,26 +172,20 @@ class HBC_OT_analyse(bpy.types.Operator):
             s = structure_of(root, False, log)
             session.analyse(s, st.rho, log)
         except Exception as e:  # noqa: BLE001
-            self.report({"ERROR"}, f"{type(e).__name__}: {e}")
-            return {"CANCELLED"}
+            return self.cancel_with(context, e)
         root["hbc_rho"] = float(st.rho)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
         return {"FINISHED"}
 
 
-class HBC_OT_build_layer(bpy.types.Operator):
+class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
     """Build (or rebuild) one structure layer of the active mesh"""
 
     bl_idname = "hbc.build_layer"
     bl_label = "Build Layer"
-    bl_options = {"REGISTER", "UNDO"}
 
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
-
-    @classmethod
-    def poll(cls, context):
-        return active_root(context) is not None
 
     def execute(self, context):
         root = active_root(context)
@@ -194,24 +200,17 @@ class HBC_OT_build_layer(bpy.types.Operator):
             L.build_layer(root, self.layer, s, st, log)
             prog.step(f"built {P.LAYER_TITLES[self.layer]}")
         except Exception as e:  # noqa: BLE001
-            prog.end(context)
-            self.report({"ERROR"}, f"{type(e).__name__}: {e}")
-            return {"CANCELLED"}
+            return self.cancel_with(context, e, prog)
         prog.end(context)
         st.active_mesh = root.name
         return {"FINISHED"}
 
 
-class HBC_OT_build_all(bpy.types.Operator):
+class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
     """Build every overview layer (direct view, singularity graph, blocks, sheets, wireframe)"""
 
     bl_idname = "hbc.build_all"
     bl_label = "Build All Layers"
-    bl_options = {"REGISTER", "UNDO"}
-
-    @classmethod
-    def poll(cls, context):
-        return active_root(context) is not None
 
     def execute(self, context):
         root = active_root(context)
@@ -233,25 +232,18 @@ class HBC_OT_build_all(bpy.types.Operator):
                 for layer, coll in built:
                     S.swap_layer(root, layer, coll)
         except Exception as e:  # noqa: BLE001
-            prog.end(context)
-            self.report({"ERROR"}, f"{type(e).__name__}: {e}")
-            return {"CANCELLED"}
+            return self.cancel_with(context, e, prog)
         prog.end(context)
         return {"FINISHED"}
 
 
-class HBC_OT_clear_layer(bpy.types.Operator):
+class HBC_OT_clear_layer(_OnActiveMesh, bpy.types.Operator):
     """Remove one layer of the active mesh"""
 
     bl_idname = "hbc.clear_layer"
     bl_label = "Clear Layer"
-    bl_options = {"REGISTER", "UNDO"}
 
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
-
-    @classmethod
-    def poll(cls, context):
-        return active_root(context) is not None
 
     def execute(self, context):
         S.remove_layer(active_root(context), self.layer)
