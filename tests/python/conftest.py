@@ -53,3 +53,32 @@ def hbc_cli():
     if not os.access(value, os.X_OK):
         pytest.fail(f"HBC_CLI={value} is not an executable")
     return value
+
+
+@pytest.fixture
+def longest_stall():
+    """Runs `work` three times in a thread while the main thread keeps stamping the time; returns
+    (longest gap between stamps, elapsed). Holding the GIL in C++ stalls the main thread for a
+    whole call; released, it only waits for the interpreter's switches."""
+    import threading
+    import time
+
+    import numpy as np
+
+    def measure(work):
+        done = threading.Event()
+
+        def run():
+            for _ in range(3):
+                work()
+            done.set()
+
+        stamps = [time.perf_counter()]
+        worker = threading.Thread(target=run)
+        worker.start()
+        while not done.is_set():
+            stamps.append(time.perf_counter())
+        worker.join()
+        return float(np.max(np.diff(stamps))), stamps[-1] - stamps[0]
+
+    return measure

@@ -2,8 +2,6 @@
 
 import gc
 import os
-import threading
-import time
 
 import numpy as np
 import pytest
@@ -56,24 +54,8 @@ def test_no_leak_over_100_load_cycles(shared_data_dir, tmp_path):
     assert growth < 4e6, f"resident memory grew by {growth / 1e6:.1f} MB over 100 cycles"
 
 
-def test_load_releases_the_gil(shared_data_dir):
+def test_load_releases_the_gil(shared_data_dir, longest_stall):
     path = shared_data_dir / "hexalab-edge-cone-rectification" / "armadillo_out.mesh"
-    done = threading.Event()
-
-    def work():
-        for _ in range(3):
-            hbc.load(path)
-        done.set()
-
-    # The main thread keeps stamping the time while another thread loads. Holding the GIL in C++
-    # would stall it for a whole load; released, it only waits for the interpreter's switches.
-    stamps = [time.perf_counter()]
-    worker = threading.Thread(target=work)
-    worker.start()
-    while not done.is_set():
-        stamps.append(time.perf_counter())
-    worker.join()
-    elapsed = stamps[-1] - stamps[0]
-    longest_stall = float(np.max(np.diff(stamps)))
+    stall, elapsed = longest_stall(lambda: hbc.load(path))
     assert elapsed > 0.1, "the loads were too quick to tell"
-    assert longest_stall < 0.5 * elapsed / 3, (longest_stall, elapsed)
+    assert stall < 0.5 * elapsed / 3, (stall, elapsed)

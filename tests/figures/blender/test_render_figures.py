@@ -14,7 +14,6 @@ import subprocess
 import sys
 import time
 
-import numpy as np
 import pytest
 
 bpy = pytest.importorskip("bpy")
@@ -24,6 +23,7 @@ SCRIPT = ROOT / "blender_scripts" / "render_figures.py"
 sys.path.insert(0, str(ROOT / "blender_scripts"))
 from figures import compose as C  # noqa: E402
 from figures import plan  # noqa: E402
+from figures.render import load_png  # noqa: E402
 
 W, H = 160, 120
 MIN_STD = 0.02  # RGB standard deviation of a panel: a blank (background only) image gives 0
@@ -55,14 +55,7 @@ def written(proc):
 
 
 def load(path):
-    img = bpy.data.images.load(str(path), check_existing=False)
-    try:
-        w, h = img.size
-        buf = np.empty(w * h * 4, np.float32)
-        img.pixels.foreach_get(buf)
-        return C.from_blender(buf, w, h)
-    finally:
-        bpy.data.images.remove(img)
+    return load_png(str(path))
 
 
 @pytest.fixture(scope="module")
