@@ -58,8 +58,8 @@ def start(args, path):
     """A fresh file with the studio set up around one analysed mesh."""
     scene = R.reset_file()
     w, h = args.resolution
-    R.setup_render(scene, args.engine, args.samples, w, h)
-    R.setup_world(scene, args.engine)
+    R.setup_render(scene, args.engine, args.samples, w, h, ADDON.compat, args.denoise)
+    R.setup_world(scene, args.engine, ADDON.compat)
     subject = R.Subject(ADDON, path, args, scene)
     R.add_camera(scene, subject.camera, subject.points)
     R.add_lights(scene, subject.camera, subject.points)

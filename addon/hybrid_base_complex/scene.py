@@ -18,10 +18,8 @@ from __future__ import annotations
 import bpy
 import numpy as np
 
+from . import compat
 from . import planning as P
-
-NEW_API = bpy.app.version >= (4, 0, 0)
-EEVEE_NEXT = bpy.app.version >= (4, 2, 0)
 
 COLOR_ATTR = "hbc_color"
 OWNER_ATTR = "owner"
@@ -73,24 +71,6 @@ class Transaction:
 # ---------------------------------------------------------------------------------------------
 # Materials and node groups (shared by every layer and every imported mesh)
 
-def _set_blend(mat, transparent: bool):
-    if EEVEE_NEXT:
-        mat.surface_render_method = "BLENDED" if transparent else "DITHERED"
-    else:
-        mat.blend_method = "BLEND" if transparent else "OPAQUE"
-        if transparent:
-            mat.shadow_method = "NONE"
-    if hasattr(mat, "show_transparent_back"):
-        mat.show_transparent_back = False
-
-
-def _principled(mat):
-    mat.use_nodes = True
-    nt = mat.node_tree
-    bsdf = next(n for n in nt.nodes if n.type == "BSDF_PRINCIPLED")
-    return nt, bsdf
-
-
 def material(tx: Transaction, kind: str, color=(0.8, 0.8, 0.8, 1.0), alpha: float = 1.0):
     """Shared material by kind:
     - "attr": base colour and alpha from the `hbc_color` attribute (blocks, lines, dots);
@@ -105,31 +85,25 @@ def material(tx: Transaction, kind: str, color=(0.8, 0.8, 0.8, 1.0), alpha: floa
     mat = bpy.data.materials.get(name)
     if mat is not None and mat.get("hbc_material") == kind:
         return mat
-    mat = tx.add("materials", bpy.data.materials.new(name))
+    mat, nt, bsdf = compat.new_node_material(name)
+    tx.add("materials", mat)
     mat["hbc_material"] = kind
-    nt, bsdf = _principled(mat)
     if kind == "attr":
         attr = nt.nodes.new("ShaderNodeAttribute")
         attr.attribute_name = COLOR_ATTR
         nt.links.new(attr.outputs["Color"], bsdf.inputs["Base Color"])
         nt.links.new(attr.outputs["Alpha"], bsdf.inputs["Alpha"])
-        _set_blend(mat, True)
+        compat.set_blend(mat, True)
     elif kind == "object":
         info = nt.nodes.new("ShaderNodeObjectInfo")
         nt.links.new(info.outputs["Color"], bsdf.inputs["Base Color"])
-        _set_blend(mat, False)
+        compat.set_blend(mat, False)
     else:
         bsdf.inputs["Base Color"].default_value = tuple(color[:3]) + (1.0,)
         bsdf.inputs["Alpha"].default_value = alpha
-        mat.diffuse_color = tuple(color[:3]) + (alpha,)
-        _set_blend(mat, alpha < 1.0)
+        compat.set_viewport_color(mat, tuple(color[:3]) + (alpha,))
+        compat.set_blend(mat, alpha < 1.0)
     return mat
-
-
-def _group_socket(ng, in_out, socket_type, name):
-    if NEW_API:
-        return ng.interface.new_socket(name, in_out=in_out, socket_type=socket_type)
-    return (ng.inputs if in_out == "INPUT" else ng.outputs).new(socket_type, name)
 
 
 def tube_group(tx: Transaction):
@@ -139,13 +113,12 @@ def tube_group(tx: Transaction):
         return ng
     ng = tx.add("node_groups", bpy.data.node_groups.new(TUBE_GROUP, "GeometryNodeTree"))
     ng["hbc_group"] = 2
-    _group_socket(ng, "INPUT", "NodeSocketGeometry", "Geometry")
-    r = _group_socket(ng, "INPUT", "NodeSocketFloat", "Radius")
+    compat.group_socket(ng, "INPUT", "NodeSocketGeometry", "Geometry")
+    r = compat.group_socket(ng, "INPUT", "NodeSocketFloat", "Radius")
     r.default_value = 0.01
-    _group_socket(ng, "INPUT", "NodeSocketInt", "Resolution").default_value = 6
-    _group_socket(ng, "OUTPUT", "NodeSocketGeometry", "Geometry")
-    if hasattr(ng, "is_modifier"):
-        ng.is_modifier = True
+    compat.group_socket(ng, "INPUT", "NodeSocketInt", "Resolution").default_value = 6
+    compat.group_socket(ng, "OUTPUT", "NodeSocketGeometry", "Geometry")
+    compat.mark_modifier_group(ng)
     n = ng.nodes
     gi, go = n.new("NodeGroupInput"), n.new("NodeGroupOutput")
     m2c = n.new("GeometryNodeMeshToCurve")
@@ -165,15 +138,6 @@ def tube_group(tx: Transaction):
     return ng
 
 
-def _modifier_input(mod, ng, name, value):
-    if NEW_API:
-        ident = next(s.identifier for s in ng.interface.items_tree
-                     if getattr(s, "in_out", None) == "INPUT" and s.name == name)
-    else:
-        ident = ng.inputs[name].identifier
-    mod[ident] = value
-
-
 # ---------------------------------------------------------------------------------------------
 # Geometry
 
@@ -185,9 +149,7 @@ def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
     me.loops.add(len(soup.face_vertices))
     me.loops.foreach_set("vertex_index", np.ascontiguousarray(soup.face_vertices, np.int32))
     me.polygons.add(nf)
-    me.polygons.foreach_set("loop_start", soup.loop_starts())
-    if not NEW_API:
-        me.polygons.foreach_set("loop_total", np.ascontiguousarray(soup.face_sizes, np.int32))
+    compat.set_polygons(me, soup.loop_starts(), np.ascontiguousarray(soup.face_sizes, np.int32))
     owner = me.attributes.new(OWNER_ATTR, "INT", "FACE")
     owner.data.foreach_set("value", np.ascontiguousarray(soup.face_owner, np.int32))
     if face_colors is not None:
@@ -195,17 +157,9 @@ def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
         corner = np.repeat(fc, soup.face_sizes, axis=0) if len(fc) == nf else np.broadcast_to(fc[0], (len(soup.face_vertices), 4))
         col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "CORNER")
         col.data.foreach_set("color", np.ascontiguousarray(corner, np.float32).ravel())
-        _make_active_color(me, col)
+        compat.make_active_color(me, col)
     me.update(calc_edges=True)
     return me
-
-
-def _make_active_color(me, attr):
-    try:
-        me.color_attributes.active_color = attr
-        me.color_attributes.render_color_index = me.color_attributes.active_color_index
-    except (AttributeError, TypeError):
-        pass
 
 
 def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None):
@@ -241,8 +195,10 @@ def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of
             used, inverse = np.unique(loops, return_inverse=True)
             part = P.Soup(soup.positions[used], sizes, inverse.astype(np.int32), soup.face_owner[faces])
         name = name_of(int(owner)) if name_of else f"{prefix} {int(owner)}"
-        ob = soup_object(tx, coll, name, part, None, mat, props_of(int(owner)))
-        ob.color = tuple(float(c) for c in colors[int(owner)])
+        rgba = tuple(float(c) for c in colors[int(owner)])
+        # The colour also as the object's colour attribute, so Solid > Attribute shows it.
+        ob = soup_object(tx, coll, name, part, [rgba], mat, props_of(int(owner)))
+        ob.color = rgba
         objects.append(ob)
     return objects
 
@@ -256,7 +212,7 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
     me.edges.foreach_set("vertices", np.ascontiguousarray(lines.edges, np.int32).ravel())
     col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "POINT")
     col.data.foreach_set("color", np.ascontiguousarray(lines.colors, np.float32).ravel())
-    _make_active_color(me, col)
+    compat.make_active_color(me, col)
     poly = me.attributes.new("polyline", "INT", "POINT")
     poly.data.foreach_set("value", np.ascontiguousarray(lines.polyline, np.int32))
     me.update()
@@ -265,7 +221,7 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
     ng = tube_group(tx)
     mod = ob.modifiers.new("Tubes", "NODES")
     mod.node_group = ng
-    _modifier_input(mod, ng, "Radius", float(radius))
+    compat.set_modifier_input(mod, "Radius", float(radius))
     ob["hbc_polylines"] = lines.num_polylines
     for k, v in (props or {}).items():
         ob[k] = v
@@ -310,6 +266,8 @@ def swap_layer(root, layer: str, new_coll):
     new_coll.name = final_name
     if keep_hidden is not None:
         new_coll.hide_viewport, new_coll.hide_render = keep_hidden
+    # Layers are coloured by attributes; Solid mode's default (one colour per material) shows grey.
+    compat.show_attribute_colors()
     return new_coll
 
 

@@ -41,8 +41,14 @@ SHEET_TYPE_NAMES = ("perfect", "type 1", "self-parallel", "self-intersecting")
 
 
 def script_args(argv):
-    """The arguments after Blender's '--' separator."""
-    return list(argv[argv.index("--") + 1:]) if "--" in argv else []
+    """The script's own arguments: those after Blender's '--' separator when Blender runs the
+    script (`blender -b --python render_figures.py -- ARGS`), else, when a Python with the `bpy`
+    module runs it as a script (`python render_figures.py ARGS`), everything after its name."""
+    if "--" in argv:
+        return list(argv[argv.index("--") + 1:])
+    if argv and argv[0].endswith(".py"):
+        return list(argv[1:])
+    return []
 
 
 def parser():
@@ -55,6 +61,9 @@ def parser():
     ap.add_argument("--out", required=True, help="output folder (created)")
     ap.add_argument("--engine", choices=ENGINES, default="cycles")
     ap.add_argument("--samples", type=int, default=None, help="render samples (cycles 16, eevee 16)")
+    ap.add_argument("--denoise", choices=("auto", "on", "off"), default="auto",
+                    help="Cycles denoising with OpenImageDenoise: auto (where this Blender has it), on "
+                         "(fail without it), off")
     ap.add_argument("--resolution", type=int, nargs=2, metavar=("W", "H"), default=(640, 480))
     ap.add_argument("--sheet", type=int, default=None,
                     help="sheet of panels d-g (default: the largest self-intersecting sheet, else the "

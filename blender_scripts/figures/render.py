@@ -55,6 +55,7 @@ class Addon:
         self.session = importlib.import_module(name + ".session")
         self.structure = importlib.import_module(name + ".structure")
         self.properties = importlib.import_module(name + ".properties")
+        self.compat = importlib.import_module(name + ".compat")
 
     def settings(self, **overrides):
         """The panel's settings with the add-on's defaults (read from its property definitions)."""
@@ -84,7 +85,8 @@ def reset_file():
     return bpy.context.scene
 
 
-def setup_render(scene, engine, samples, width, height):
+def setup_render(scene, engine, samples, width, height, compat, denoise="auto"):
+    """`compat`: the add-on's Blender-version module; `denoise`: auto, on or off (Cycles)."""
     r = scene.render
     r.resolution_x, r.resolution_y, r.resolution_percentage = int(width), int(height), 100
     r.film_transparent = False
@@ -101,7 +103,19 @@ def setup_render(scene, engine, samples, width, height):
         c = scene.cycles
         c.device = "CPU"
         c.samples = int(samples)
-        c.use_denoising = False
+        # Denoised where Cycles has OpenImageDenoise (the bpy wheels): grain-free at the same
+        # sample count; Debian's 3.4 lacks it, so those renders stay raw.
+        if denoise == "on" and not compat.has_denoiser():
+            raise RuntimeError(f"--denoise on: Cycles in Blender {bpy.app.version_string} has no OpenImageDenoise")
+        denoise = denoise != "off" and compat.has_denoiser()
+        log(f"render_figures: Cycles {samples} samples, {'denoised (OpenImageDenoise)' if denoise else 'not denoised'}")
+        c.use_denoising = denoise
+        if denoise:
+            c.denoiser = "OPENIMAGEDENOISE"
+            if hasattr(c, "denoising_input_passes"):
+                c.denoising_input_passes = "RGB_ALBEDO_NORMAL"
+            if hasattr(c, "denoising_prefilter"):
+                c.denoising_prefilter = "ACCURATE"
         if hasattr(c, "use_adaptive_sampling"):
             c.use_adaptive_sampling = False
         # Soft studio light needs little indirect light: few bounces (speed), clamped (no fireflies);
@@ -118,11 +132,11 @@ def setup_render(scene, engine, samples, width, height):
         c.pixel_filter_type = "BLACKMAN_HARRIS"
         c.filter_width = 1.5
         try:
-            scene.view_layers[0].cycles.use_denoising = False
+            scene.view_layers[0].cycles.use_denoising = denoise
         except AttributeError:
             pass
     elif engine == "eevee":
-        r.engine = "BLENDER_EEVEE_NEXT" if bpy.app.version >= (4, 2, 0) else "BLENDER_EEVEE"
+        r.engine = compat.eevee_engine()
         e = scene.eevee
         e.taa_render_samples = int(samples)
         for attr, value in (("use_gtao", True), ("gtao_distance", 0.2), ("use_soft_shadows", True),
@@ -142,14 +156,13 @@ def setup_render(scene, engine, samples, width, height):
         scene.display.render_aa = "8"
 
 
-def setup_world(scene, engine):
+def setup_world(scene, engine, compat):
     """Soft ambient light from a uniform world; the camera sees a flat light grey."""
     world = bpy.data.worlds.new("Figures World")
     scene.world = world
     bg_lin = srgb_to_linear(BG_DISPLAY)
     world.color = (bg_lin, bg_lin, bg_lin)
-    world.use_nodes = True
-    nt = world.node_tree
+    nt = compat.world_use_nodes(world)
     nt.nodes.clear()
     out = nt.nodes.new("ShaderNodeOutputWorld")
     ambient = nt.nodes.new("ShaderNodeBackground")
@@ -222,27 +235,20 @@ def add_lights(scene, cam: plan.Camera, points):
     return made
 
 
-def shell_material(tx, alpha=0.10):
+def shell_material(tx, compat, alpha=0.10):
     """Faint matte grey (no specular: no sparkle at low sample counts) for the context shell."""
     name = "Figures Shell"
     mat = bpy.data.materials.get(name)
     if mat is not None:
         return mat
-    mat = tx.add("materials", bpy.data.materials.new(name))
-    mat.use_nodes = True
-    bsdf = next(n for n in mat.node_tree.nodes if n.type == "BSDF_PRINCIPLED")
+    mat, _, bsdf = compat.new_node_material(name)
+    tx.add("materials", mat)
     bsdf.inputs["Base Color"].default_value = BOUNDARY_COLOR
     bsdf.inputs["Alpha"].default_value = alpha
     bsdf.inputs["Roughness"].default_value = 1.0
-    spec = bsdf.inputs.get("Specular") or bsdf.inputs.get("Specular IOR Level")
-    if spec is not None:
-        spec.default_value = 0.0
-    mat.diffuse_color = tuple(BOUNDARY_COLOR[:3]) + (alpha,)
-    if bpy.app.version >= (4, 2, 0):
-        mat.surface_render_method = "BLENDED"
-    else:
-        mat.blend_method = "BLEND"
-        mat.shadow_method = "NONE"
+    compat.principled_input(bsdf, "Specular IOR Level").default_value = 0.0
+    compat.set_viewport_color(mat, tuple(BOUNDARY_COLOR[:3]) + (alpha,))
+    compat.set_blend(mat, True)
     return mat
 
 
@@ -330,7 +336,7 @@ class Subject:
         S, P = self.addon.S, self.addon.P
         coll = self._new_coll("shell")
         with S.Transaction() as tx:
-            mat = shell_material(tx)
+            mat = shell_material(tx, self.addon.compat)
             S.soup_object(tx, coll, f"{self.name} shell", self.s.direct_boundary(), None, mat,
                           {"hbc_mesh": self.name, "hbc_part": "shell"})
         self.no_shadows(coll)

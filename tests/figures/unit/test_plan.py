@@ -33,6 +33,9 @@ def test_parse_refuses(argv, capsys):
 def test_script_args():
     assert plan.script_args(["blender", "-b", "--python", "x.py", "--", "a", "--out", "o"]) == ["a", "--out", "o"]
     assert plan.script_args(["blender"]) == []
+    # A Python with the bpy wheel runs the script directly: no separator, argv[0] is the script.
+    assert plan.script_args(["blender_scripts/render_figures.py", "m.mesh", "--out", "o"]) == ["m.mesh", "--out", "o"]
+    assert plan.script_args(["render_figures.py", "--", "m.mesh"]) == ["m.mesh"]
 
 
 def test_pick_sheet_order_of_preference():

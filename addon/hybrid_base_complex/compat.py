@@ -1,0 +1,211 @@
+"""Every difference between the Blender versions the add-on supports (3.4 to 5.2), in one place.
+
+Each function is checked by the add-on's tests in every Blender of the test matrix. Where an API
+changed, the check is on what the running Blender offers (an attribute, a socket name) when that
+is unambiguous, and on `bpy.app.version` otherwise; each branch names the release that changed it:
+
+- 4.0: Principled BSDF sockets renamed and reordered (`Emission` -> `Emission Color`, emission
+  strength default 0, `Specular` -> `Specular IOR Level`, ...): sockets are found by name only;
+  node-group sockets through `ng.interface.new_socket`; `is_modifier` on geometry-node groups;
+  `MeshPolygon.loop_total` read-only (derived from `loop_start`).
+- 4.2: `Material.blend_method` -> `surface_render_method`, `show_transparent_back` ->
+  `use_transparency_overlap`; EEVEE is `BLENDER_EEVEE_NEXT` (until 4.5, `BLENDER_EEVEE` again
+  from 5.0).
+- 4.3: `Material.shadow_method` removed.
+- 5.0: `bpy.data.materials.new()` gives a material whose node tree is empty and `use_nodes` is
+  deprecated (always on): the nodes are built explicitly.
+- 5.2: geometry-nodes modifier inputs are no longer reached as `mod["Socket_1"]`; the modifier's
+  own input accessor is used where it exists.
+"""
+
+from __future__ import annotations
+
+import bpy
+
+VERSION = tuple(bpy.app.version)
+
+#: Node-group sockets live in `ng.interface` (4.0+), not in `ng.inputs` / `ng.outputs`.
+NODE_INTERFACE = VERSION >= (4, 0, 0)
+#: EEVEE Next's material settings and engine id (4.2+).
+EEVEE_NEXT = VERSION >= (4, 2, 0)
+
+# Principled BSDF inputs by their 4.0+ names, with the name 3.x used for the same input.
+_PRINCIPLED_OLD_NAMES = {
+    "Emission Color": "Emission",
+    "Specular IOR Level": "Specular",
+    "Subsurface Weight": "Subsurface",
+    "Transmission Weight": "Transmission",
+    "Coat Weight": "Clearcoat",
+    "Sheen Weight": "Sheen",
+}
+
+
+def eevee_engine() -> str:
+    """The render engine id of EEVEE in this Blender."""
+    return "BLENDER_EEVEE_NEXT" if (4, 2, 0) <= VERSION < (5, 0, 0) else "BLENDER_EEVEE"
+
+
+def has_denoiser() -> bool:
+    """Whether Cycles here was built with OpenImageDenoise (the bpy wheels are; Debian's 3.4 not)."""
+    try:
+        import _cycles  # Blender's Cycles module, present whenever Cycles is
+    except ImportError:
+        return False
+    return bool(getattr(_cycles, "with_openimagedenoise", False))
+
+
+# ---------------------------------------------------------------------------------------------
+# Materials
+
+def principled_input(bsdf, name: str):
+    """A Principled BSDF input by its 4.0+ name (also found under its 3.x name), never by index."""
+    sock = bsdf.inputs.get(name)
+    if sock is None and name in _PRINCIPLED_OLD_NAMES:
+        sock = bsdf.inputs.get(_PRINCIPLED_OLD_NAMES[name])
+    if sock is None:
+        raise KeyError(f"Principled BSDF has no input {name!r} in Blender {bpy.app.version_string}")
+    return sock
+
+
+def new_node_material(name: str):
+    """A new material with a Principled BSDF wired to a Material Output; returns (material,
+    node tree, bsdf). Built explicitly: 5.0's new materials start with an empty node tree."""
+    mat = bpy.data.materials.new(name)
+    if VERSION < (5, 0, 0):
+        mat.use_nodes = True
+    nt = mat.node_tree
+    bsdf = next((n for n in nt.nodes if n.type == "BSDF_PRINCIPLED"), None)
+    out = next((n for n in nt.nodes if n.type == "OUTPUT_MATERIAL"), None)
+    if bsdf is None:
+        bsdf = nt.nodes.new("ShaderNodeBsdfPrincipled")
+        bsdf.location = (-300, 0)
+    if out is None:
+        out = nt.nodes.new("ShaderNodeOutputMaterial")
+        out.location = (100, 0)
+    if not out.inputs["Surface"].is_linked:
+        nt.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+    # No emission whatever the version's default (3.x: black colour, 4.0+: strength 0).
+    if "Emission Strength" in bsdf.inputs:
+        bsdf.inputs["Emission Strength"].default_value = 0.0
+    return mat, nt, bsdf
+
+
+def world_use_nodes(world):
+    """Turns on the world's node tree where that is still a setting (before 5.0)."""
+    if VERSION < (5, 0, 0):
+        world.use_nodes = True
+    return world.node_tree
+
+
+def set_blend(mat, transparent: bool):
+    """Alpha blending for a see-through material, opaque otherwise, in EEVEE and the viewport."""
+    if EEVEE_NEXT:
+        mat.surface_render_method = "BLENDED" if transparent else "DITHERED"
+        if hasattr(mat, "use_transparency_overlap"):
+            mat.use_transparency_overlap = False
+    else:
+        mat.blend_method = "BLEND" if transparent else "OPAQUE"
+        if transparent and hasattr(mat, "shadow_method"):  # removed in 4.3
+            mat.shadow_method = "NONE"
+        if hasattr(mat, "show_transparent_back"):
+            mat.show_transparent_back = False
+
+
+def set_viewport_color(mat, rgba):
+    """The colour Solid mode shows for the material (`diffuse_color`, RGBA)."""
+    mat.diffuse_color = tuple(float(c) for c in rgba[:4]) if len(rgba) >= 4 else tuple(rgba[:3]) + (1.0,)
+
+
+# ---------------------------------------------------------------------------------------------
+# Geometry nodes
+
+def group_socket(ng, in_out: str, socket_type: str, name: str):
+    """Adds an input or output socket to a node group."""
+    if NODE_INTERFACE:
+        return ng.interface.new_socket(name, in_out=in_out, socket_type=socket_type)
+    return (ng.inputs if in_out == "INPUT" else ng.outputs).new(socket_type, name)
+
+
+def mark_modifier_group(ng):
+    """Geometry-node groups are offered as modifiers only when flagged so (4.0+)."""
+    if hasattr(ng, "is_modifier"):
+        ng.is_modifier = True
+
+
+def _input_identifier(ng, name: str) -> str:
+    if NODE_INTERFACE:
+        return next(s.identifier for s in ng.interface.items_tree
+                    if getattr(s, "item_type", "SOCKET") == "SOCKET"
+                    and getattr(s, "in_out", None) == "INPUT" and s.name == name)
+    return ng.inputs[name].identifier
+
+
+def set_modifier_input(mod, name: str, value):
+    """Sets the geometry-nodes modifier input called `name` (the group's socket name)."""
+    ng = mod.node_group
+    ident = _input_identifier(ng, name)
+    inputs = getattr(mod, "node_group_inputs", None) or getattr(mod, "inputs", None)
+    if inputs is not None and hasattr(inputs, "get") and not isinstance(inputs, dict):
+        sock = inputs.get(ident) or inputs.get(name)
+        if sock is not None and hasattr(sock, "value"):
+            sock.value = value
+            return
+    mod[ident] = value
+
+
+def get_modifier_input(mod, name: str):
+    ng = mod.node_group
+    ident = _input_identifier(ng, name)
+    inputs = getattr(mod, "node_group_inputs", None) or getattr(mod, "inputs", None)
+    if inputs is not None and hasattr(inputs, "get") and not isinstance(inputs, dict):
+        sock = inputs.get(ident) or inputs.get(name)
+        if sock is not None and hasattr(sock, "value"):
+            return sock.value
+    return mod[ident]
+
+
+# ---------------------------------------------------------------------------------------------
+# Meshes
+
+def set_polygons(me, loop_starts, face_sizes):
+    """Polygon loop starts (and, before 4.0, loop totals: later they follow from the starts)."""
+    me.polygons.foreach_set("loop_start", loop_starts)
+    if VERSION < (4, 0, 0):
+        me.polygons.foreach_set("loop_total", face_sizes)
+
+
+def make_active_color(me, attr):
+    """Makes a colour attribute the one Solid > Attribute and the renderers show."""
+    try:
+        me.color_attributes.active_color = attr
+        me.color_attributes.render_color_index = me.color_attributes.active_color_index
+    except (AttributeError, TypeError):
+        pass
+
+
+# ---------------------------------------------------------------------------------------------
+# Context
+
+def temp_override(context=None, **kwargs):
+    """`context.temp_override(...)` (dict overrides are gone since 4.0)."""
+    return (context or bpy.context).temp_override(**kwargs)
+
+
+def view3d_spaces(context=None):
+    """The 3D View spaces of the current window manager's screens (none in background mode)."""
+    wm = (context or bpy.context).window_manager
+    for window in getattr(wm, "windows", []):
+        for area in window.screen.areas:
+            if area.type == "VIEW_3D":
+                for space in area.spaces:
+                    if space.type == "VIEW_3D":
+                        yield space
+
+
+def show_attribute_colors(context=None):
+    """Solid mode of every open 3D View shows the objects' active colour attribute (the layers'
+    colours) instead of the materials' single viewport colour. The enum is still "VERTEX" in
+    5.x (labelled "Attribute" since 3.2)."""
+    for space in view3d_spaces(context):
+        if space.shading.type == "SOLID":
+            space.shading.color_type = "VERTEX"
