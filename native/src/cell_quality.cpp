@@ -82,20 +82,24 @@ void for_each_vertex(std::span<const Corner> corners, F f) {
   }
 }
 
-// Min over corners and consecutive edge triples of N (header); 0 for a corner that is not a cycle.
+// The corner values of the header: the minimum over the corners with 3 edges, or, in a cell
+// without one, over all consecutive edge triples of all corners; 0 for a corner that is not a cycle.
 double min_corner_value(const Mesh& m, std::span<const Corner> corners, std::vector<int32_t>& ring) {
-  double q = std::numeric_limits<double>::infinity();
+  const double none = std::numeric_limits<double>::infinity();
+  double three = none, any = none;
   for_each_vertex(corners, [&](std::span<const Corner> g) {
     const int32_t v = g[0].v;
     if (!corner_ring(g, ring)) {
-      q = std::min(q, 0.0);
+      three = std::min(three, 0.0);
       return;
     }
     const size_t k = ring.size(), triples = k == 3 ? 1 : k;  // the 3 rotations of a triple agree
-    for (size_t i = 0; i < triples; ++i)
-      q = std::min(q, normalised(diff(m, ring[i], v), diff(m, ring[(i + 1) % k], v), diff(m, ring[(i + 2) % k], v)));
+    for (size_t i = 0; i < triples; ++i) {
+      const double q = normalised(diff(m, ring[i], v), diff(m, ring[(i + 1) % k], v), diff(m, ring[(i + 2) % k], v));
+      (k == 3 ? three : any) = std::min(k == 3 ? three : any, q);
+    }
   });
-  return q;
+  return three != none ? three : any;
 }
 
 // The corners at the cell's lowest vertex.

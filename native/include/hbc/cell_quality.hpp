@@ -34,14 +34,21 @@
 //               with all 8 edges equal (each tet: J = l³/sqrt(2), L = sqrt(2) l³). One deviation:
 //               Verdict returns 0 for any q <= 0; here an inverted pyramid keeps its negative value
 //               so that it is counted as inverted like the other types.
-//   polyhedron  (no Verdict definition) min over all corners v and all i of
-//               N(e_i - v, e_{i+1} - v, e_{i+2} - v) over the cyclic edge order (indices mod k).
-//               Why: with three edges this is exactly the hex/wedge corner value; with k > 3
-//               edges, e_i and e_{i+1} span face i and the triple is positive exactly when e_{i+2}
-//               lies on the inner side of that face's plane, so every triple of a convex corner is
-//               positive and a reflex or tangled corner gives a negative one. Not normalised to an
-//               ideal shape (none exists for a general polyhedron): a cube corner gives 1, a
-//               regular hexagonal prism's corner sin 120°.
+//   polyhedron  (no Verdict definition) the minimum of the corner values over the corners with
+//               exactly 3 edges in the cell; in a cell without such a corner, the minimum over all
+//               corners v and all i of N(e_i - v, e_{i+1} - v, e_{i+2} - v) over the cyclic edge
+//               order (indices mod k). Why: the polyhedra of hex-dominant meshes are mostly hexes
+//               and prisms with a face split into pieces (triangles of a neighbouring tet, quads of
+//               a refinement); their 3-edge corners are the shape's own corners and carry the hex
+//               value, while at the ends of a splitting edge the faces around the corner are
+//               coplanar, so a triple there would be about 0 (and of either sign on real data)
+//               for a perfect cube with one split face. With k > 3 edges, e_i and e_{i+1} span
+//               face i and the triple is positive exactly when e_{i+2} lies on the inner side of
+//               its plane, so the fallback is positive at convex corners and negative at reflex
+//               ones (the octahedron: 1/sqrt(2)). Limitation: a fold at a corner of 4+ edges only is
+//               not seen when the cell has a 3-edge corner. Not normalised to an ideal shape (none
+//               exists for a general polyhedron): a cube corner gives 1, a regular hexagonal
+//               prism's corner sin 120°.
 // A corner with a zero-length edge contributes 0 (Verdict returns its VERDICT_DBL_MAX flag there),
 // as does a corner where fewer than 3 faces of the cell meet (a flat or folded cell, SPEC §1).
 // A cell is inverted when q < 0.
