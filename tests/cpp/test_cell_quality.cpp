@@ -17,14 +17,23 @@ namespace {
 
 using Points = std::vector<std::array<double, 3>>;
 
-// One MEDIT element (keyword `kw`) over all the given points, in their order.
-Mesh one_cell(const char* kw, const Points& pts) {
+// One MEDIT element (keyword `kw`) over all the given points, in their order. The file lists
+// vertex j at pts[order[j]] (default: in order), so the vertex ids can be shuffled while the
+// element stays the same.
+Mesh one_cell(const char* kw, const Points& pts, std::vector<size_t> order = {}) {
+  if (order.empty())
+    for (size_t i = 0; i < pts.size(); ++i) order.push_back(i);
+  std::vector<size_t> file_id(pts.size());
   std::ostringstream t;
   t.precision(17);
   t << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << pts.size() << "\n";
-  for (const auto& p : pts) t << p[0] << ' ' << p[1] << ' ' << p[2] << " 0\n";
+  for (size_t j = 0; j < order.size(); ++j) {
+    const auto& p = pts[order[j]];
+    t << p[0] << ' ' << p[1] << ' ' << p[2] << " 0\n";
+    file_id[order[j]] = j + 1;
+  }
   t << kw << "\n1\n";
-  for (size_t i = 1; i <= pts.size(); ++i) t << i << ' ';
+  for (size_t i = 0; i < pts.size(); ++i) t << file_id[i] << ' ';
   t << "0\nEnd\n";
   return build_mesh(read_medit(t.str(), "cell.mesh"));
 }
@@ -125,6 +134,49 @@ TEST(CellQuality, Pyramids) {
   EXPECT_NEAR(cell_quality(pyr(0.5)).scaled_jacobian[0], std::sqrt(2.0 / 3.0), 1e-12);
   EXPECT_NEAR(cell_quality(pyr(1.0)).scaled_jacobian[0], 2.0 - 2.0 / std::pow(1.5, 1.5), 1e-12);
   EXPECT_NEAR(cell_quality(pyr(std::sqrt(0.5))).edge_ratio[0], 1.0, 1e-12);
+}
+
+// Verdict's wedge_scaled_jacobian written out on the element's own order (V_WedgeMetric.cpp):
+// at node k, J = v2 · (v1 × v3) with the three edge vectors below, over their length product.
+double verdict_wedge(const Points& x) {
+  const int nodes[6][4] = {{0, 1, 3, 2}, {1, 2, 4, 0}, {2, 0, 5, 1}, {3, 0, 4, 5}, {4, 1, 5, 3}, {5, 3, 4, 2}};
+  double q = 1e300;
+  for (const auto& n : nodes) {
+    std::array<std::array<double, 3>, 3> v;
+    for (int e = 0; e < 3; ++e)
+      for (int d = 0; d < 3; ++d) v[e][d] = x[n[e + 1]][d] - x[n[0]][d];
+    const auto& [v1, v2, v3] = v;
+    const double j = v2[0] * (v1[1] * v3[2] - v1[2] * v3[1]) - v2[1] * (v1[0] * v3[2] - v1[2] * v3[0]) +
+                     v2[2] * (v1[0] * v3[1] - v1[1] * v3[0]);
+    auto len = [](const std::array<double, 3>& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
+    q = std::min(q, j / (len(v1) * len(v2) * len(v3)));
+  }
+  return 2 / std::sqrt(3.0) * q;
+}
+
+TEST(CellQuality, IrregularCellsDoNotDependOnVertexIds) {
+  // The corner frames come from the faces, so shuffling the vertex ids in the file (which
+  // changes each cell's lowest vertex, where the hex centre frame and the tet's J are taken)
+  // must not change any value; the irregular prism also matches Verdict's own corner list.
+  const Points prism{{0, 0, 0}, {1.2, 0.1, 0}, {0.3, 0.9, 0.1}, {0.1, 0, 1.1}, {1.0, 0.2, 0.8}, {0.4, 1.1, 1.2}};
+  const Points pyramid{{0, 0, 0}, {1.1, 0, 0.1}, {1, 0.9, 0}, {-0.1, 1, 0}, {0.7, 0.3, 0.6}};
+  const Points tet{{0, 0, 0}, {1.3, 0.2, 0}, {0.2, 0.8, 0.1}, {0.4, 0.3, 1.7}};
+  Points hex = kCube;
+  hex[6] = {1.3, 0.8, 1.4};
+  hex[1] = {0.9, -0.2, 0.1};
+  const std::pair<const char*, const Points*> cells[] = {
+      {"Prisms", &prism}, {"Pyramids", &pyramid}, {"Tetrahedra", &tet}, {"Hexahedra", &hex}};
+  EXPECT_NEAR(cell_quality(one_cell("Prisms", prism)).scaled_jacobian[0], verdict_wedge(prism), 1e-12);
+  for (const auto& [kw, pts] : cells) {
+    const double q0 = cell_quality(one_cell(kw, *pts)).scaled_jacobian[0];
+    EXPECT_GT(q0, 0.0) << kw;
+    EXPECT_LT(q0, 1.0) << kw;
+    std::vector<size_t> order(pts->size());
+    for (size_t shift = 1; shift < order.size(); ++shift) {
+      for (size_t j = 0; j < order.size(); ++j) order[j] = (order.size() - 1 - j + shift) % order.size();
+      EXPECT_NEAR(cell_quality(one_cell(kw, *pts, order)).scaled_jacobian[0], q0, 1e-12) << kw << " shift " << shift;
+    }
+  }
 }
 
 TEST(CellQuality, OctahedronUsesTheFallback) {
