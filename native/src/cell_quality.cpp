@@ -71,7 +71,7 @@ bool corner_ring(std::span<const Corner> g, std::vector<int32_t>& ring) {
   return false;
 }
 
-// Calls f(v, group) for each vertex group of the sorted corners.
+// Calls f(group) with the corners of each vertex in turn (corners sorted by vertex).
 template <class F>
 void for_each_vertex(std::span<const Corner> corners, F f) {
   for (size_t b = 0; b < corners.size();) {
@@ -96,7 +96,8 @@ double min_corner_value(const Mesh& m, std::span<const Corner> corners, std::vec
     const size_t k = ring.size(), triples = k == 3 ? 1 : k;  // the 3 rotations of a triple agree
     for (size_t i = 0; i < triples; ++i) {
       const double q = normalised(diff(m, ring[i], v), diff(m, ring[(i + 1) % k], v), diff(m, ring[(i + 2) % k], v));
-      (k == 3 ? three : any) = std::min(k == 3 ? three : any, q);
+      double& slot = k == 3 ? three : any;
+      slot = std::min(slot, q);
     }
   });
   return three != none ? three : any;
