@@ -9,6 +9,8 @@
 #include <string>
 
 #include "hbc/analysis.hpp"
+#include "hbc/cell_depth.hpp"
+#include "hbc/cell_quality.hpp"
 #include "hbc/generate.hpp"
 #include "hbc/io.hpp"
 
@@ -78,6 +80,25 @@ void BM_Subsheets(benchmark::State& st, const std::string& name) {
   set_counters(st, m);
 }
 
+// Per-cell scaled Jacobian and edge ratio, then cell depth (the add-on's filter attributes).
+void BM_Quality(benchmark::State& st, const std::string& name) {
+  const Mesh& m = mesh_named(name);
+  for (auto _ : st) {
+    CellQuality q = cell_quality(m);
+    benchmark::DoNotOptimize(q.scaled_jacobian.data());
+  }
+  set_counters(st, m);
+}
+
+void BM_Depth(benchmark::State& st, const std::string& name) {
+  const Mesh& m = mesh_named(name);
+  for (auto _ : st) {
+    std::vector<int32_t> d = cell_depth(m);
+    benchmark::DoNotOptimize(d.data());
+  }
+  set_counters(st, m);
+}
+
 const char* kPaper[] = {"teapot.hedra", "twistcube_s.mesh", "cube_twist-comp.obj.HYBRID"};
 // Hex-dominant cylinders with prism columns (like the paper's teaser) of ~1e4, ~1e5, ~1e6 cells,
 // and the worst case for the base complex: grids with 1% of the cells, at random, cut into
@@ -93,6 +114,10 @@ int register_all() {
   for (const char* n : kGenerated) {
     benchmark::RegisterBenchmark((std::string("GraphAndComplex/") + n).c_str(), BM_GraphAndComplex, n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("Sheets/") + n).c_str(), BM_Sheets, n)->Unit(benchmark::kMillisecond);
+  }
+  for (const char* n : {"teapot.hedra", "split100"}) {
+    benchmark::RegisterBenchmark((std::string("Quality/") + n).c_str(), BM_Quality, n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("Depth/") + n).c_str(), BM_Depth, n)->Unit(benchmark::kMillisecond);
   }
   return 0;
 }

@@ -18,6 +18,7 @@ int cmd_analyze(const Args& args);
 int cmd_wireframe(const Args& args);
 int cmd_sheets(const Args& args);
 int cmd_table(const Args& args);
+int cmd_quality(const Args& args);
 
 // Small shared helpers for argument handling.
 bool take_flag(Args& args, const std::string& flag);                       // removes it if present

@@ -15,6 +15,7 @@ const char* kUsage =
     "  analyze FILE [--json] [--csv] [--format F] hybrid singularity graph and base complex\n"
     "  sheets FILE [--json] [--level complex|mesh] sheets with type flags, sizes, subsheets\n"
     "  table FILES|DIRS [--csv|--md|--latex] [-j N] Table 1 for many meshes (one process each)\n"
+    "  quality FILE [--json] [--format F]         scaled Jacobian, edge ratio per cell type (Verdict)\n"
     "  generate KIND [options] -o FILE            synthetic meshes with known structure\n"
     "  export-surface FILE -o OUT.obj|.ply|.off [--what boundary|patches|components|sheets] [--sheet N]\n"
     "                                             surfaces with per-face ids, through OpenMesh\n"
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
     if (cmd == "wireframe") return cmd_wireframe(args);
     if (cmd == "sheets") return cmd_sheets(args);
     if (cmd == "table") return cmd_table(args);
+    if (cmd == "quality") return cmd_quality(args);
     if (cmd == "generate") return cmd_generate(args);
     if (cmd == "export-surface") return cmd_export_surface(args);
     if (cmd == "-h" || cmd == "--help" || cmd == "help") {

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 namespace hbc::cli {
 
@@ -57,6 +59,22 @@ class JsonWriter {
       }
     }
     out_ += '"';
+    return *this;
+  }
+  // A one-line array of numbers (integers as such, reals with `digits` decimals, null if not finite).
+  template <class T>
+  JsonWriter& array(const char* key, const std::vector<T>& v, int digits = 6) {
+    sep(key);
+    out_ += '[';
+    for (size_t i = 0; i < v.size(); ++i) {
+      if (i) out_ += ", ";
+      char buf[64];
+      if constexpr (std::is_integral_v<T>) std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v[i]));
+      else if (!std::isfinite(v[i])) std::snprintf(buf, sizeof buf, "null");
+      else std::snprintf(buf, sizeof buf, "%.*f", digits, static_cast<double>(v[i]));
+      out_ += buf;
+    }
+    out_ += ']';
     return *this;
   }
   const std::string& text() const { return out_; }

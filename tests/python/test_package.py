@@ -36,7 +36,7 @@ def public(names):
 def test_package_reexports_core():
     assert set(hbc.__all__) == {"Mesh", "MeshFormatError", "load", "__version__", "Analysis",
                                 "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe",
-                                "block_soup", "polylines"}
+                                "block_soup", "polylines", "cell_quality", "cell_depth"}
     for name in hbc.__all__:
         assert getattr(hbc, name) is getattr(_core, name)
     assert issubclass(hbc.MeshFormatError, ValueError)
@@ -47,7 +47,7 @@ def test_stub_matches_module():
     stub_top = defined_names(tree.body)
     # Helper types that exist only for typing (TypedDicts, aliases) are not in the module.
     typing_only = {"Format", "CellTypeCounts", "MeshInfo", "Level", "SoupWhat", "I32", "U8", "Bool",
-                   "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup"}
+                   "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup", "CellQuality"}
     assert public(stub_top) - typing_only == public(dir(_core))
     assert "__version__" in stub_top
 

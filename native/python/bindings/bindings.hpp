@@ -82,5 +82,6 @@ void bind_from_arrays(py::class_<PyMesh, PyMeshPtr>& cls);  // from_arrays.cpp, 
 void bind_io(py::module_& m);      // io.cpp: load()
 void bind_analysis(py::module_& m);  // analysis.cpp: Mesh.analyze and the Analysis classes
 void bind_geometry(py::module_& m);  // geometry.cpp: block_soup(), polylines()
+void bind_quality(py::module_& m);   // quality.cpp: cell_quality(), cell_depth()
 
 }  // namespace hbc::python

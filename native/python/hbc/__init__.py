@@ -9,6 +9,7 @@ so that user code never imports ``_core`` directly.
     >>> a = mesh.analyze(rho=0.8, level="complex")
     >>> a.stats["hex_components"], a.num_sheets
     >>> soup = hbc.block_soup(mesh, a, "components", shrink=0.1)
+    >>> q = hbc.cell_quality(mesh)["scaled_jacobian"]; depth = hbc.cell_depth(mesh)
 """
 
 from ._core import (
@@ -21,6 +22,8 @@ from ._core import (
     Wireframe,
     __version__,
     block_soup,
+    cell_depth,
+    cell_quality,
     load,
     polylines,
 )
@@ -28,4 +31,5 @@ from ._core import (
 __all__ = [
     "Mesh", "MeshFormatError", "load", "__version__",
     "Analysis", "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe", "block_soup", "polylines",
+    "cell_quality", "cell_depth",
 ]

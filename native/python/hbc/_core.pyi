@@ -413,3 +413,11 @@ class Analysis:
 
 def block_soup(mesh: Mesh, analysis: Analysis, what: SoupWhat, sheet: int = -1, shrink: float = 0.0) -> BlockSoup: ...
 def polylines(mesh: Mesh, offsets: npt.ArrayLike, vertices: npt.ArrayLike) -> npt.NDArray[np.float32]: ...
+
+class CellQuality(TypedDict):
+    scaled_jacobian: npt.NDArray[np.float64]  # (num_cells,) Verdict's; < 0 for inverted cells
+    edge_ratio: npt.NDArray[np.float64]  # (num_cells,) longest / shortest edge, >= 1
+
+def cell_quality(mesh: Mesh) -> CellQuality: ...
+def cell_depth(mesh: Mesh) -> I32:
+    """(num_cells,) cell layers from the boundary: 0 with a boundary vertex, else BFS over faces."""
