@@ -14,8 +14,9 @@ is unambiguous, and on `bpy.app.version` otherwise; each branch names the releas
 - 4.3: `Material.shadow_method` removed.
 - 5.0: `bpy.data.materials.new()` gives a material whose node tree is empty and `use_nodes` is
   deprecated (always on): the nodes are built explicitly.
-- 5.2: geometry-nodes modifier inputs are no longer reached as `mod["Socket_1"]`; the modifier's
-  own input accessor is used where it exists.
+- 5.2: geometry-nodes modifier inputs are no longer ID properties (`mod["Socket_1"]` raises
+  "id properties not supported"); they are `mod.properties.inputs.Socket_1.value`, used wherever
+  the running Blender has it.
 """
 
 from __future__ import annotations
@@ -140,28 +141,27 @@ def _input_identifier(ng, name: str) -> str:
     return ng.inputs[name].identifier
 
 
+def _modifier_socket(mod, ident):
+    """5.2+: the modifier's interface accessor `mod.properties.inputs.<identifier>` (an object
+    with `.value`); None where inputs are still ID properties of the modifier (`mod[identifier]`)."""
+    inputs = getattr(getattr(mod, "properties", None), "inputs", None)
+    return getattr(inputs, ident, None) if inputs is not None else None
+
+
 def set_modifier_input(mod, name: str, value):
     """Sets the geometry-nodes modifier input called `name` (the group's socket name)."""
-    ng = mod.node_group
-    ident = _input_identifier(ng, name)
-    inputs = getattr(mod, "node_group_inputs", None) or getattr(mod, "inputs", None)
-    if inputs is not None and hasattr(inputs, "get") and not isinstance(inputs, dict):
-        sock = inputs.get(ident) or inputs.get(name)
-        if sock is not None and hasattr(sock, "value"):
-            sock.value = value
-            return
-    mod[ident] = value
+    ident = _input_identifier(mod.node_group, name)
+    sock = _modifier_socket(mod, ident)
+    if sock is not None:
+        sock.value = value
+    else:
+        mod[ident] = value
 
 
 def get_modifier_input(mod, name: str):
-    ng = mod.node_group
-    ident = _input_identifier(ng, name)
-    inputs = getattr(mod, "node_group_inputs", None) or getattr(mod, "inputs", None)
-    if inputs is not None and hasattr(inputs, "get") and not isinstance(inputs, dict):
-        sock = inputs.get(ident) or inputs.get(name)
-        if sock is not None and hasattr(sock, "value"):
-            return sock.value
-    return mod[ident]
+    ident = _input_identifier(mod.node_group, name)
+    sock = _modifier_socket(mod, ident)
+    return sock.value if sock is not None else mod[ident]
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Builds the hbc wheel (pip + scikit-build-core on the project's CMake, pyproject.toml) for each
+# Python the test matrix runs Blender with — Debian's CPython 3.11 and the CPython 3.13 of
+# scripts/python313.sh — into build/wheels/, puts each wheel's compiled module beside the build
+# tree's own (build/python/hbc, and the add-on assembled in build/addon) so that every Blender of
+# the matrix imports the same package, and packs the Blender extension (4.2+) with the wheels.
+#   scripts/wheels.sh [PYTHON...]     default: /usr/bin/python3 and CPython 3.13
+# Build folders persist (build/wheel-build/<tag>), so a second run only relinks.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+ENV_DIR=${HBC_ENV_DIR:-$HOME/.cache/hbc-envs}
+PYTHONS=("$@")
+[ ${#PYTHONS[@]} -eq 0 ] && PYTHONS=(/usr/bin/python3 "$(bash scripts/python313.sh)")
+WHEELS=$ROOT/build/wheels
+mkdir -p "$WHEELS/modules"
+rm -f "$WHEELS"/*.whl
+defines=()
+command -v ccache >/dev/null && defines+=(--config-settings=cmake.define.CMAKE_CXX_COMPILER_LAUNCHER=ccache)
+for py in "${PYTHONS[@]}"; do
+  tag=$("$py" -c 'import sys; print(f"cp{sys.version_info[0]}{sys.version_info[1]}")')
+  venv=$ENV_DIR/wheel-$tag
+  if [ ! -x "$venv/bin/pip" ]; then
+    "$py" -m venv "$venv"
+    "$venv/bin/python" -m pip install -q --upgrade pip
+  fi
+  echo "== hbc wheel for $tag"
+  "$venv/bin/python" -m pip wheel -q . --no-deps -w "$WHEELS" \
+    --config-settings=build-dir="$ROOT/build/wheel-build/$tag" "${defines[@]}"
+done
+# The compiled module of every other Python, beside the build tree's own (distinct ABI tags in
+# their names); the build's own Python keeps the module CMake built.
+rm -f "$WHEELS"/modules/*
+/usr/bin/python3 - "$WHEELS" "$ROOT/build/python/hbc" "$ROOT/build/addon/hybrid_base_complex/hbc" <<'PY'
+import glob, os, sys, sysconfig, zipfile
+wheels, *targets = sys.argv[1:]
+own = sysconfig.get_config_var("EXT_SUFFIX")
+for whl in sorted(glob.glob(os.path.join(wheels, "*.whl"))):
+    with zipfile.ZipFile(whl) as z:
+        for name in z.namelist():
+            if name.startswith("hbc/_core.") and name.endswith(".so") and not name.endswith(own):
+                data = z.read(name)
+                for d in [os.path.join(wheels, "modules"), *targets]:
+                    if os.path.isdir(d) or d.endswith("modules"):
+                        with open(os.path.join(d, os.path.basename(name)), "wb") as f:
+                            f.write(data)
+                print("module", os.path.basename(name))
+PY
+cmake --build build --target addon_zip extension
