@@ -109,7 +109,11 @@ int64_t ByteCursor::checked_count(int64_t n, int64_t item_bytes, const char* exp
   return n;
 }
 
-void ByteCursor::fail(const std::string& expected) { fail_at(binary_ ? static_cast<int64_t>(pos_) : line_, expected); }
+void ByteCursor::fail(const std::string& expected) {
+  // "Found the end of the file" points at the last line, not the empty one after its newline.
+  const bool past_last = pos_ == d_.size() && line_ > 1 && !d_.empty() && d_.back() == '\n';
+  fail_at(binary_ ? static_cast<int64_t>(pos_) : line_ - (past_last ? 1 : 0), expected);
+}
 
 void ByteCursor::fail_at(int64_t loc, const std::string& expected) const {
   throw InputError(source_, binary_ ? SourceLoc::at_byte(loc) : SourceLoc::at_line(loc), "expected " + expected);

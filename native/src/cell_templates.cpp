@@ -71,4 +71,29 @@ void CellAppender::polyhedron(const std::vector<int32_t>& face_sizes, const std:
   end_cell(first_face, loc);
 }
 
+void CellAppender::midside(int32_t v) {
+  if (midside_.size() <= static_cast<size_t>(v)) midside_.resize(static_cast<size_t>(v) + 1, 0);
+  midside_[static_cast<size_t>(v)] = 1;
+}
+
+void CellAppender::finish() {
+  if (midside_.empty()) return;
+  for (int32_t v : in_.faces.items)
+    if (static_cast<size_t>(v) < midside_.size()) midside_[static_cast<size_t>(v)] = 0;
+  const size_t nv = in_.points.size() / 3;
+  std::vector<int32_t> new_id(nv, -1);
+  size_t kept = 0;
+  for (size_t v = 0; v < nv; ++v) {
+    if (v < midside_.size() && midside_[v]) continue;
+    new_id[v] = static_cast<int32_t>(kept);
+    for (int k = 0; k < 3; ++k) in_.points[3 * kept + k] = in_.points[3 * v + k];
+    if (v < in_.vertex_loc.size()) in_.vertex_loc[kept] = in_.vertex_loc[v];
+    ++kept;
+  }
+  if (kept == nv) return;
+  in_.points.resize(3 * kept);
+  if (in_.vertex_loc.size() == nv) in_.vertex_loc.resize(kept);
+  for (int32_t& v : in_.faces.items) v = new_id[static_cast<size_t>(v)];
+}
+
 }  // namespace hbc::detail

@@ -28,12 +28,18 @@ class CellAppender {
   // A general polyhedron: `face_sizes[f]` vertices for face f taken in turn from `ids`. Loops are
   // taken as written; build_mesh checks that they close.
   void polyhedron(const std::vector<int32_t>& face_sizes, const std::vector<int32_t>& ids, int64_t loc);
+  // Vertex v is a higher-order (non-corner) node of an element.
+  void midside(int32_t v);
+  // Drops the vertices that are only higher-order nodes, so that a quadratic mesh gives the same
+  // mesh as its linear version; renumbers the faces. Call once after the last cell.
+  void finish();
 
  private:
   void end_cell(size_t first_face, int64_t loc);
   MeshInput& in_;
   std::vector<int32_t> loop_;
   std::vector<std::array<int32_t, 8>> sets_;
+  std::vector<uint8_t> midside_;  // by vertex id, 1 = seen as a higher-order node
 };
 
 }  // namespace hbc::detail

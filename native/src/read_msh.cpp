@@ -184,6 +184,7 @@ void MshReader::element(int64_t type, const std::vector<int64_t>& tags, int64_t 
   for (size_t k = 0; k < tags.size(); ++k) {
     const int32_t id = index_of(tags[k], loc);  // every node must exist, corner or not
     if (static_cast<int>(k) < corners) v[k] = id;
+    else cells_.midside(id);
   }
   cells_.element(t->element, v.data(), loc);
 }
@@ -273,6 +274,7 @@ MeshInput MshReader::read() {
   if (!have_elements) c_.fail("an $Elements section");
   if (in_.cells.rows() == 0) c_.fail("at least one volume element (tetrahedron, hexahedron, prism or pyramid)");
   tally_.report(in_);
+  cells_.finish();
   return std::move(in_);
 }
 

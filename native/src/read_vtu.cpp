@@ -211,7 +211,7 @@ std::vector<T> VtuReader::array(const pugi::xml_node& a, int64_t count) {
     value_size(type, std::is_integral_v<T>, at);
   } else if (format == "binary") {
     const std::string_view text = a.child_value();
-    const int64_t text_at = at;  // the element's offset: pugixml does not give the text node's
+    const int64_t text_at = a.first_child() ? static_cast<int64_t>(a.first_child().offset_debug()) : at;
     convert(decode_block(base64(text, text_at), text_at), type, out, at);
   } else if (format == "appended") {
     if (appended_.data() == nullptr) fail(at, "an AppendedData element for the appended DataArray");

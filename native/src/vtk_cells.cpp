@@ -76,13 +76,15 @@ void VtkCells::add(int64_t type, const int64_t* items, size_t n, int64_t loc) {
   const VtkType* t = vtk_type(type);
   if (!t) fail(loc, "a VTK cell type of a point, line, surface or volume cell (10, 12, 13, 14, 42, ...), found type " + std::to_string(type));
   if (t->dim < 3) {
+    for (size_t k = 0; k < n; ++k) point(items[k], loc);  // a bad id is bad input wherever it is
     tally_.skip(t->dim);
     return;
   }
   if (n < static_cast<size_t>(t->corners))
     fail(loc, "at least " + std::to_string(t->corners) + " point ids for a cell of type " + std::to_string(type) + ", found " + std::to_string(n));
   std::array<int32_t, 8> v{};
-  for (size_t k = 0; k < n; ++k) point(items[k], loc);
+  for (size_t k = 0; k < n; ++k)
+    if (const int32_t id = point(items[k], loc); static_cast<int>(k) >= t->corners) cells_.midside(id);
   for (int k = 0; k < t->corners; ++k) v[k] = static_cast<int32_t>(items[t->perm[k]]);
   cells_.element(t->element, v.data(), loc);
 }
@@ -90,6 +92,7 @@ void VtkCells::add(int64_t type, const int64_t* items, size_t n, int64_t loc) {
 void VtkCells::finish(int64_t loc) {
   if (in_.cells.rows() == 0) fail(loc, "at least one volume cell (VTK type 10, 12, 13, 14 or 42)");
   tally_.report(in_);
+  cells_.finish();
 }
 
 }  // namespace hbc::detail
