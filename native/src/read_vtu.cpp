@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "hbc/io.hpp"
+#include "base64.hpp"
 #include "byte_cursor.hpp"
 #include "vtk_cells.hpp"
 
@@ -72,37 +73,9 @@ void VtuReader::split_appended() {
 }
 
 std::string VtuReader::base64(std::string_view s, int64_t at) const {
-  // Quad by quad: VTK encodes a header and its data separately, so padding may sit mid-stream.
-  auto value = [](char ch) -> int {
-    if (ch >= 'A' && ch <= 'Z') return ch - 'A';
-    if (ch >= 'a' && ch <= 'z') return ch - 'a' + 26;
-    if (ch >= '0' && ch <= '9') return ch - '0' + 52;
-    if (ch == '+') return 62;
-    if (ch == '/') return 63;
-    if (ch == '=') return 64;
-    return -1;
-  };
-  std::string out;
-  out.reserve(s.size() / 4 * 3);
-  int q[4];
-  int nq = 0;
-  for (size_t i = 0; i < s.size(); ++i) {
-    const char ch = s[i];
-    if (ch == ' ' || ch == '\n' || ch == '\r' || ch == '\t') continue;
-    const int v = value(ch);
-    if (v < 0) fail(at + static_cast<int64_t>(i), "base64 data, found the character code " + std::to_string(static_cast<unsigned char>(ch)));
-    q[nq++] = v;
-    if (nq < 4) continue;
-    nq = 0;
-    if (q[0] == 64 || q[1] == 64 || (q[2] == 64 && q[3] != 64))
-      fail(at + static_cast<int64_t>(i), "base64 padding only at the end of a group of 4 characters");
-    const uint32_t w = (static_cast<uint32_t>(q[0]) << 18) | (static_cast<uint32_t>(q[1]) << 12) |
-                       (static_cast<uint32_t>(q[2] & 63) << 6) | static_cast<uint32_t>(q[3] & 63);
-    out.push_back(static_cast<char>(w >> 16));
-    if (q[2] != 64) out.push_back(static_cast<char>((w >> 8) & 255));
-    if (q[3] != 64) out.push_back(static_cast<char>(w & 255));
-  }
-  if (nq != 0) fail(at + static_cast<int64_t>(s.size()), "base64 data in groups of 4 characters, found " + std::to_string(nq) + " left over");
+  std::string out, why;
+  size_t bad = 0;
+  if (!detail::base64_decode(s, out, bad, why)) fail(at + static_cast<int64_t>(bad), why);
   return out;
 }
 

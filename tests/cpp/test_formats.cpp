@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "hbc/analysis.hpp"
+#include "base64.hpp"
 #include "format_samples.hpp"
 #include "test_support.hpp"
 
@@ -153,20 +154,7 @@ struct VtuArray {
   std::string raw;  // little-endian values
 };
 
-std::string base64(const std::string& in) {
-  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < in.size(); i += 3) {
-    uint32_t w = static_cast<uint32_t>(static_cast<unsigned char>(in[i])) << 16;
-    if (i + 1 < in.size()) w |= static_cast<uint32_t>(static_cast<unsigned char>(in[i + 1])) << 8;
-    if (i + 2 < in.size()) w |= static_cast<unsigned char>(in[i + 2]);
-    out += k[w >> 18];
-    out += k[(w >> 12) & 63];
-    out += i + 1 < in.size() ? k[(w >> 6) & 63] : '=';
-    out += i + 2 < in.size() ? k[w & 63] : '=';
-  }
-  return out;
-}
+std::string base64(const std::string& in) { return detail::base64_encode(in); }
 
 struct VtuMode {
   std::string format;   // binary or appended
