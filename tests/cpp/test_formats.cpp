@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "hbc/analysis.hpp"
+#include "hbc/vtu_export.hpp"
 #include "base64.hpp"
 #include "format_samples.hpp"
 #include "test_support.hpp"
@@ -256,6 +257,56 @@ TEST(FormatsVtu, EveryDataEncodingReadsAsTheAsciiFile) {
     SCOPED_TRACE(name);
     expect_same_cells(read_vtu(encode_vtu(poly_arrays(), mode), name), ascii);
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Export: what vtu_cells_text writes reads back as the same mesh, every cell facing out in VTK's
+// corner orders (hex, wedge, tet, pyramid) or as a polyhedron.
+
+void expect_export_round_trip(const Mesh& m, bool ascii) {
+  const Analysis a = analyze(m);
+  VtuExportOptions o;
+  o.ascii = ascii;
+  const MeshInput back = read_vtu(vtu_cells_text(m, a, o), "export.vtu");
+  ASSERT_EQ(back.cells.rows(), m.num_cells());
+  for (size_t c = 0; c < m.num_cells(); ++c) ASSERT_GT(signed_volume(back, c), 0) << "cell " << c;
+  const Mesh mb = build_mesh(back);
+  EXPECT_EQ(mb.cell_type, m.cell_type);
+  const Stats s = compute_stats(m, a), sb = compute_stats(mb, analyze(mb));
+  EXPECT_EQ(sb.components, s.components);
+  EXPECT_EQ(sb.sheets, s.sheets);
+  EXPECT_EQ(sb.singular_edges, s.singular_edges);
+  EXPECT_EQ(sb.pseudo_singular_edges, s.pseudo_singular_edges);
+  // The graph file has only lines, which the reader skips and counts.
+  try {
+    read_vtu(vtu_graph_text(m, a, o), "graph.vtu");
+    ADD_FAILURE() << "a graph of lines read as a volume mesh";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.detail().find("at least one volume cell"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FormatsExport, HexPrismMeshReadsBackFacingOutInVtkCornerOrders) {
+  const Mesh m = load_mesh(formats_path("real/slab.mesh"));
+  expect_export_round_trip(m, false);
+  expect_export_round_trip(m, true);
+}
+
+TEST(FormatsExport, EveryCellTypeAndPolyhedraReadBack) {
+  HBC_REQUIRE_DATA("hybrid-base-complex/twistcube_s.mesh");
+  expect_export_round_trip(test::load_data("hybrid-base-complex/twistcube_s.mesh"), false);
+  HBC_REQUIRE_DATA("openvolumemesh/Cylinder.ovm");
+  expect_export_round_trip(test::load_data("openvolumemesh/Cylinder.ovm"), false);
+}
+
+TEST(FormatsExport, GraphPathAndSheetRange) {
+  EXPECT_EQ(vtu_graph_path("a/b.c/out.vtu"), "a/b.c/out_graph.vtu");
+  EXPECT_EQ(vtu_graph_path("a.b/out"), "a.b/out_graph.vtu");
+  const Mesh m = load_mesh(formats_path("real/slab.mesh"));
+  const Analysis a = analyze(m);
+  VtuExportOptions o;
+  o.sheet = static_cast<int32_t>(a.sheets.sheet_cells.rows());
+  EXPECT_THROW(vtu_cells_text(m, a, o), std::invalid_argument);
 }
 
 }  // namespace
