@@ -4,9 +4,11 @@
 The files are committed (each < 100 KB) so the tests need neither tool; rerun this after changing
 slab.geo. Every file holds the same mesh, so `hbc analyze` must give identical results for all:
   slab_22.msh, slab_22_bin.msh, slab_41.msh, slab_41_bin.msh  gmsh's own .msh writers
+  slab_41_order2.msh                                          gmsh's second-order elements (hex27, prism18)
   slab_gmsh.vtk                                               gmsh's legacy VTK writer (2.0, with surfaces)
   slab.mesh                                                   meshio's MEDIT writer (gmsh's drops prisms)
-  slab_42_ascii.vtk, slab_51_ascii.vtk, slab_51_bin.vtk       meshio's legacy VTK writers
+  slab_42_ascii.vtk, slab_42_bin.vtk, slab_51_ascii.vtk,
+  slab_51_bin.vtk                                             meshio's legacy VTK writers
   slab_ascii.vtu, slab_zlib.vtu, slab_b64.vtu                 meshio's VTU writer (ascii, zlib, plain base64)
   slab_poly.vtk                                               every cell as VTK_POLYHEDRON (written here)
 """
@@ -29,10 +31,12 @@ VTK_FACES = {
 MESHIO_TO_VTK = {"hexahedron": [0, 1, 2, 3, 4, 5, 6, 7], "wedge": [0, 2, 1, 3, 5, 4]}
 
 
-def gmsh(fmt, name, binary=False):
+def gmsh(fmt, name, binary=False, order=1):
     cmd = ["gmsh", "-3", os.path.join(HERE, "slab.geo"), "-format", fmt, "-o", os.path.join(OUT, name)]
     if binary:
         cmd.append("-bin")
+    if order > 1:
+        cmd += ["-order", str(order)]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
 
@@ -60,12 +64,14 @@ def main():
     gmsh("msh22", "slab_22_bin.msh", binary=True)
     gmsh("msh41", "slab_41.msh")
     gmsh("msh41", "slab_41_bin.msh", binary=True)
+    gmsh("msh41", "slab_41_order2.msh", order=2)
     gmsh("vtk", "slab_gmsh.vtk")
     m = meshio.read(os.path.join(OUT, "slab_41.msh"))
     m = meshio.Mesh(m.points, m.cells)  # without gmsh's cell sets, which meshio's VTK writer trips on
     vol = meshio.Mesh(m.points, [b for b in m.cells if b.type in VTK_FACES])
     meshio.write(os.path.join(OUT, "slab.mesh"), vol, file_format="medit")
     meshio.write(os.path.join(OUT, "slab_42_ascii.vtk"), m, file_format="vtk42", binary=False)
+    meshio.write(os.path.join(OUT, "slab_42_bin.vtk"), m, file_format="vtk42", binary=True)
     meshio.write(os.path.join(OUT, "slab_51_ascii.vtk"), m, file_format="vtk", binary=False)
     meshio.write(os.path.join(OUT, "slab_51_bin.vtk"), m, file_format="vtk", binary=True)
     meshio.write(os.path.join(OUT, "slab_ascii.vtu"), m, binary=False)
