@@ -40,7 +40,7 @@ class VtkReader {
   void points();
   void cells_old(int64_t n, int64_t size);
   void cells_new(int64_t noffsets, int64_t nconn);
-  void cell_types();
+  void field();
 
   detail::ByteCursor c_;
   MeshInput in_;
@@ -168,6 +168,21 @@ void VtkReader::cells_new(int64_t noffsets, int64_t nconn) {
   }
 }
 
+void VtkReader::field() {
+  c_.word("the name of the field data");
+  const int64_t n = c_.integer_in(0, 1 << 20, "the number of field arrays");
+  std::vector<double> skipped;
+  for (int64_t i = 0; i < n; ++i) {
+    c_.word("the name of a field array");
+    const int64_t comps = c_.integer_in(1, 1 << 20, "the number of components of a field array");
+    const int64_t tuples = c_.integer_in(0, INT32_MAX, "the number of tuples of a field array");
+    const std::string type = detail::lower(c_.word("a data type"));
+    if (type == "string" || type_size(type) == 0 || type == "bit")
+      c_.fail("a numeric field array type (int, float, double, ...), found '" + type.substr(0, 40) + "'");
+    numbers(type, comps * tuples, skipped, nullptr);
+  }
+}
+
 MeshInput VtkReader::read() {
   header();
   bool have_cells = false, have_types = false;
@@ -192,7 +207,9 @@ MeshInput VtkReader::read() {
       c_.line_text();
       while (c_.remaining() > 0 && !c_.line_text().empty()) {
       }
-    } else if (kw == "point_data" || kw == "cell_data" || kw == "field") {
+    } else if (kw == "field") {
+      field();  // data-set field data (ParaView writes TimeValue here), before or after the cells
+    } else if (kw == "point_data" || kw == "cell_data") {
       break;  // attributes follow the geometry; none of them is needed
     } else {
       c_.fail("POINTS, CELLS, CELL_TYPES, POINT_DATA or CELL_DATA, found '" + std::string(t.substr(0, 40)) + "'");

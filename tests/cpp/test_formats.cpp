@@ -149,6 +149,17 @@ TEST(FormatsMsh, EntityBlocksTagGapsAndASecondOrderHexahedron) {
   EXPECT_NE(m.warnings[0].find("1 surface element(s)"), std::string::npos);
 }
 
+TEST(FormatsVtk, FieldDataPointAndCellDataAreReadPast) {
+  const MeshInput in = read_vtk(formats_file("field_data.vtk"), "field_data.vtk");
+  ASSERT_EQ(in.cells.rows(), 2u);  // the triangle is skipped
+  EXPECT_DOUBLE_EQ(signed_volume(in, 0), 1.0 / 6);
+  EXPECT_DOUBLE_EQ(signed_volume(in, 1), 1.0 / 6);
+  const Mesh m = build_mesh(in);
+  EXPECT_EQ(m.num_faces(), 7u);  // two tets sharing a face
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("1 surface element(s)"), std::string::npos);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Binary Gmsh encoded here in either byte order.
 
