@@ -53,8 +53,8 @@ void expect_same_cells(const MeshInput& a, const MeshInput& b) {
 // The same mesh as real/slab.mesh, written by gmsh or meshio (make_real_files.py).
 const char* const kRealFiles[] = {"slab_22.msh", "slab_22_bin.msh", "slab_41.msh", "slab_41_bin.msh",
                                   "slab_41_order2.msh", "slab_gmsh.vtk", "slab_42_ascii.vtk", "slab_42_bin.vtk",
-                                  "slab_51_ascii.vtk", "slab_51_bin.vtk", "slab_poly.vtk", "slab_ascii.vtu",
-                                  "slab_zlib.vtu", "slab_b64.vtu"};
+                                  "slab_51_ascii.vtk", "slab_51_bin.vtk", "slab_poly.vtk", "slab_poly_bin.vtk",
+                                  "slab_ascii.vtu", "slab_zlib.vtu", "slab_b64.vtu"};
 
 TEST(FormatsRealTools, EveryFormatGivesTheSameAnalysisAsMedit) {
   const Mesh ref_mesh = load_mesh(formats_path("real/slab.mesh"));

@@ -10,7 +10,7 @@ slab.geo. Every file holds the same mesh, so `hbc analyze` must give identical r
   slab_42_ascii.vtk, slab_42_bin.vtk, slab_51_ascii.vtk,
   slab_51_bin.vtk                                             meshio's legacy VTK writers
   slab_ascii.vtu, slab_zlib.vtu, slab_b64.vtu                 meshio's VTU writer (ascii, zlib, plain base64)
-  slab_poly.vtk                                               every cell as VTK_POLYHEDRON (written here)
+  slab_poly.vtk, slab_poly_bin.vtk                            every cell as VTK_POLYHEDRON (written here)
 """
 import os
 import subprocess
@@ -40,22 +40,30 @@ def gmsh(fmt, name, binary=False, order=1):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
 
-def write_poly_vtk(mesh, path):
+def write_poly_vtk(mesh, path, binary=False):
+    """Every hex and wedge as a VTK_POLYHEDRON face stream in the old CELLS layout (VTK 4.2)."""
     cells = [(b.type, c) for b in mesh.cells if b.type in VTK_FACES for c in b.data]
     streams = []
     for kind, c in cells:
         v = [int(c[k]) for k in MESHIO_TO_VTK[kind]]
         faces = VTK_FACES[kind]
         streams.append([len(faces)] + [x for f in faces for x in [len(f)] + [v[k] for k in f]])
-    with open(path, "w") as f:
-        f.write("# vtk DataFile Version 4.2\nslab as polyhedra\nASCII\nDATASET UNSTRUCTURED_GRID\n")
-        f.write(f"POINTS {len(mesh.points)} double\n")
-        for p in mesh.points:
-            f.write(" ".join(repr(float(x)) for x in p) + "\n")
-        f.write(f"CELLS {len(streams)} {sum(len(s) + 1 for s in streams)}\n")
-        for s in streams:
-            f.write(" ".join(str(x) for x in [len(s)] + s) + "\n")
-        f.write(f"CELL_TYPES {len(streams)}\n" + "42\n" * len(streams))
+    flat = [x for s in streams for x in [len(s)] + s]
+
+    def block(rows, dtype):
+        """One text line per row, or the rows' values as big-endian binary (legacy VTK's order)."""
+        if binary:
+            flat_values = [x for r in rows for x in r]
+            return np.asarray(flat_values, dtype=dtype).astype(np.dtype(dtype).newbyteorder(">")).tobytes() + b"\n"
+        show = (lambda x: repr(float(x))) if dtype == np.float64 else str
+        return "".join(" ".join(show(x) for x in r) + "\n" for r in rows).encode()
+
+    with open(path, "wb") as f:
+        f.write(b"# vtk DataFile Version 4.2\nslab as polyhedra\n" + (b"BINARY" if binary else b"ASCII") +
+                b"\nDATASET UNSTRUCTURED_GRID\n")
+        f.write(f"POINTS {len(mesh.points)} double\n".encode() + block(mesh.points, np.float64))
+        f.write(f"CELLS {len(streams)} {len(flat)}\n".encode() + block([[len(st)] + st for st in streams], np.int32))
+        f.write(f"CELL_TYPES {len(streams)}\n".encode() + block([[42]] * len(streams), np.int32))
 
 
 def main():
@@ -78,6 +86,7 @@ def main():
     meshio.write(os.path.join(OUT, "slab_zlib.vtu"), m, binary=True, compression="zlib")
     meshio.write(os.path.join(OUT, "slab_b64.vtu"), m, binary=True, compression=None, header_type="UInt64")
     write_poly_vtk(m, os.path.join(OUT, "slab_poly.vtk"))
+    write_poly_vtk(m, os.path.join(OUT, "slab_poly_bin.vtk"), binary=True)
     return 0
 
 
