@@ -15,7 +15,7 @@ from . import planning as P
 from . import scene as S
 from . import session
 
-FILTER = "*.ovm;*.ovmb;*.mesh;*.HYBRID;*.hybrid;*.hedra"
+FILTER = "*.ovm;*.ovmb;*.mesh;*.HYBRID;*.hybrid;*.hedra;*.msh;*.vtk;*.vtu"
 LAYER_ITEMS = [(k, title, f"Build the {title.lower()} layer") for k, title in P.LAYERS]
 
 

@@ -15,19 +15,25 @@ Format format_from_name(std::string_view name) {
   if (n == "mesh" || n == "medit") return Format::Medit;
   if (n == "hybrid") return Format::Hybrid;
   if (n == "hedra") return Format::Hedra;
+  if (n == "msh") return Format::Msh;
+  if (n == "vtk") return Format::Vtk;
+  if (n == "vtu") return Format::Vtu;
   throw std::invalid_argument("unknown format '" + std::string(name) +
-                              "' (expected ovm, ovmb, mesh, hybrid or hedra)");
+                              "' (expected ovm, ovmb, mesh, hybrid, hedra, msh, vtk or vtu)");
 }
+
+static const char* kExtensions =
+    "a file name ending in .ovm, .ovmb, .mesh, .HYBRID, .hedra, .msh, .vtk or .vtu (or --format)";
 
 Format format_from_path(const std::string& path) {
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    throw InputError(path, {}, "a file name ending in .ovm, .ovmb, .mesh, .HYBRID or .hedra (or --format)");
+    throw InputError(path, {}, kExtensions);
   try {
     return format_from_name(std::string_view(path).substr(dot + 1));
   } catch (const std::invalid_argument&) {
-    throw InputError(path, {}, "a file name ending in .ovm, .ovmb, .mesh, .HYBRID or .hedra (or --format)");
+    throw InputError(path, {}, kExtensions);
   }
 }
 
@@ -38,6 +44,9 @@ const char* format_name(Format f) {
     case Format::Medit: return "mesh";
     case Format::Hybrid: return "hybrid";
     case Format::Hedra: return "hedra";
+    case Format::Msh: return "msh";
+    case Format::Vtk: return "vtk";
+    case Format::Vtu: return "vtu";
     case Format::Auto: return "auto";
   }
   return "?";
@@ -61,6 +70,9 @@ MeshInput read_input(const std::string& path, Format format) {
     case Format::Medit: return read_medit(bytes, path);
     case Format::Hybrid: return read_hybrid(bytes, path);
     case Format::Hedra: return read_hedra(bytes, path);
+    case Format::Msh: return read_msh(bytes, path);
+    case Format::Vtk: return read_vtk(bytes, path);
+    case Format::Vtu: return read_vtu(bytes, path);
     case Format::Auto: break;
   }
   throw InputError(path, {}, "a known format");

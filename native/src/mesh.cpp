@@ -244,6 +244,7 @@ Mesh build_mesh(MeshInput in) {
   const std::string file = in.source;
   Mesh m;
   m.source = in.source;
+  m.warnings = std::move(in.warnings);
   const size_t nv = in.points.size() / 3;
   const size_t nf_in = in.faces.rows();
   const size_t nc = in.cells.rows();

@@ -7,21 +7,15 @@
 #include <cctype>
 
 #include "hbc/io.hpp"
+#include "cell_templates.hpp"
 #include "text_scanner.hpp"
 
 namespace hbc {
 namespace {
 
-struct Element {
-  int nverts;
-  std::vector<std::vector<int>> faces;  // local vertex loops
-};
+using detail::Element;
 
-// Face templates; loops are outward for elements of positive orientation in MEDIT's convention.
-const Element kTet{4, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
-const Element kPyramid{5, {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}};
-const Element kPrism{6, {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}};
-const Element kHex{8, {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+const Element kTet = Element::Tet, kPyramid = Element::Pyramid, kPrism = Element::Prism, kHex = Element::Hex;
 
 const Element* element_of(const std::string& kw) {
   if (kw == "tetrahedra") return &kTet;
@@ -71,14 +65,14 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
         in.vertex_loc.push_back(l);
       }
     } else if (const Element* el = element_of(kw)) {
-      const int64_t n = s.count(2 * (el->nverts + 1), (std::string("the number of ") + kw).c_str());
+      const int64_t n = s.count(2 * (detail::corner_count(*el) + 1), (std::string("the number of ") + kw).c_str());
       raw_el.reserve(raw_el.size() + static_cast<size_t>(n));
       raw_line.reserve(raw_line.size() + static_cast<size_t>(n));
-      raw_ids.reserve(raw_ids.size() + static_cast<size_t>(n * el->nverts));
+      raw_ids.reserve(raw_ids.size() + static_cast<size_t>(n * detail::corner_count(*el)));
       for (int64_t i = 0; i < n; ++i) {
         raw_el.push_back(el);
         raw_line.push_back(s.next_line());
-        for (int k = 0; k < el->nverts; ++k) {
+        for (int k = 0; k < detail::corner_count(*el); ++k) {
           const int64_t id = s.integer("a vertex index");
           const bool fits = id >= 1 && id <= INT32_MAX;
           if (!fits && wide_line < 0) {
@@ -106,60 +100,26 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
   if (nv < 0) s.fail("a Vertices section");
   if (raw_el.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
 
-  // Cells: each template face with repeated ids collapsed (first occurrence kept); faces left
-  // with fewer than 3 distinct vertices vanish, a face repeated within the cell is kept once.
-  size_t corners = 0;
-  for (const Element* el : raw_el)
-    for (const auto& tf : el->faces) corners += tf.size();
+  // Cells: every element through the shared templates (degenerate hexahedra included).
   in.faces.offsets.reserve(raw_el.size() * 6 + 1);
-  in.faces.items.reserve(corners);
+  in.faces.items.reserve(raw_ids.size() * 3);
   in.cells.offsets.reserve(raw_el.size() + 1);
   in.cells.items.reserve(raw_el.size() * 6);
   in.cell_loc.reserve(raw_el.size());
-  std::vector<int32_t> loop;
-  std::vector<std::array<int32_t, 8>> cell_sets;  // sorted distinct ids of each kept face, padded
+  detail::CellAppender cells(in);
   size_t next_id = 0;
   for (size_t e = 0; e < raw_el.size(); ++e) {
-    const Element& el = *raw_el[e];
     const int64_t line = raw_line[e];
     std::array<int32_t, 8> v{};
-    bool distinct = true;
-    for (int k = 0; k < el.nverts; ++k) {
+    for (int k = 0; k < detail::corner_count(*raw_el[e]); ++k) {
       const int64_t id = raw_ids[next_id++];
       if (id < 1 || id > nv) {
         const int64_t shown = (id == 0 && line == wide_line) ? wide_value : id;
         s.fail_at(line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(shown));
       }
       v[k] = static_cast<int32_t>(id - 1);
-      for (int j = 0; j < k; ++j) distinct = distinct && v[j] != v[k];
     }
-    const size_t first_face = in.faces.rows();
-    if (distinct) {
-      // The common case: the template as it is.
-      for (const auto& tf : el.faces) {
-        for (int k : tf) in.faces.items.push_back(v[k]);
-        in.faces.offsets.push_back(static_cast<int32_t>(in.faces.items.size()));
-      }
-    } else {
-      cell_sets.clear();
-      for (const auto& tf : el.faces) {
-        loop.clear();
-        for (int k : tf)
-          if (std::find(loop.begin(), loop.end(), v[k]) == loop.end()) loop.push_back(v[k]);
-        if (loop.size() < 3) continue;
-        std::array<int32_t, 8> sorted;
-        sorted.fill(-1);
-        std::copy(loop.begin(), loop.end(), sorted.begin());
-        for (size_t i = 1; i < loop.size(); ++i)  // at most 4 ids: insertion sort
-          for (size_t j = i; j > 0 && sorted[j - 1] > sorted[j]; --j) std::swap(sorted[j - 1], sorted[j]);
-        if (std::find(cell_sets.begin(), cell_sets.end(), sorted) != cell_sets.end()) continue;
-        cell_sets.push_back(sorted);
-        in.faces.push_row(loop.begin(), loop.end());
-      }
-    }
-    for (size_t f = first_face; f < in.faces.rows(); ++f) in.cells.items.push_back(static_cast<int32_t>(2 * f));
-    in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
-    in.cell_loc.push_back(line);
+    cells.element(*raw_el[e], v.data(), line);
   }
   return in;
 }

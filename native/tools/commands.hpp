@@ -14,6 +14,7 @@ using Args = std::vector<std::string>;
 int cmd_info(const Args& args);
 int cmd_generate(const Args& args);
 int cmd_export_surface(const Args& args);
+int cmd_export_vtu(const Args& args);
 int cmd_analyze(const Args& args);
 int cmd_wireframe(const Args& args);
 int cmd_sheets(const Args& args);

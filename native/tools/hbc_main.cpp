@@ -19,9 +19,11 @@ const char* kUsage =
     "  generate KIND [options] -o FILE            synthetic meshes with known structure\n"
     "  export-surface FILE -o OUT.obj|.ply|.off [--what boundary|patches|components|sheets] [--sheet N]\n"
     "                                             surfaces with per-face ids, through OpenMesh\n"
+    "  export-vtu FILE -o OUT.vtu [--sheet N] [--level complex|mesh] [--ascii]\n"
+    "                                             cells with block/sheet ids for ParaView (+ OUT_graph.vtu)\n"
     "  wireframe FILE [--level complex|mesh] [--rho R] [--sheet N] [--json|--obj] [-o OUT]\n"
     "                                             VSG wireframe (SPEC §4)\n"
-    "formats: ovm, ovmb, mesh, hybrid, hedra (chosen by extension unless --format is given)\n";
+    "formats: ovm, ovmb, mesh, hybrid, hedra, msh, vtk, vtu (chosen by extension unless --format is given)\n";
 
 }  // namespace
 
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
     if (cmd == "quality") return cmd_quality(args);
     if (cmd == "generate") return cmd_generate(args);
     if (cmd == "export-surface") return cmd_export_surface(args);
+    if (cmd == "export-vtu") return cmd_export_vtu(args);
     if (cmd == "-h" || cmd == "--help" || cmd == "help") {
       std::fputs(kUsage, stdout);
       return 0;

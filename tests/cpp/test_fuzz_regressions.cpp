@@ -68,6 +68,9 @@ Format format_of_harness(const std::string& h) {
   if (h == "ovmb") return Format::Ovmb;
   if (h == "medit") return Format::Medit;
   if (h == "hybrid") return Format::Hybrid;
+  if (h == "msh") return Format::Msh;
+  if (h == "vtk") return Format::Vtk;
+  if (h == "vtu") return Format::Vtu;
   return Format::Hedra;
 }
 
@@ -80,7 +83,7 @@ TEST_P(ReaderRegressions, OnlyInputErrorOrAMesh) {
   RecordProperty("rejected", o.rejected);
 }
 
-INSTANTIATE_TEST_SUITE_P(Fuzz, ReaderRegressions, ::testing::Values("ovm", "ovmb", "medit", "hybrid", "hedra"));
+INSTANTIATE_TEST_SUITE_P(Fuzz, ReaderRegressions, ::testing::Values("ovm", "ovmb", "medit", "hybrid", "hedra", "msh", "vtk", "vtu"));
 
 TEST(FuzzRegressions, AnalyzeOnlyInputErrorOrAnAnalysis) {
   replay("analyze", [](const std::string& b) { return fuzz::load_and_analyze(b); });
@@ -90,7 +93,7 @@ TEST(FuzzRegressions, AnalyzeOnlyInputErrorOrAnAnalysis) {
 // at an empty or misplaced one.
 TEST(FuzzRegressions, FolderHoldsInputs) {
   size_t n = 0;
-  for (const char* h : {"ovm", "ovmb", "medit", "hybrid", "hedra", "analyze"}) n += inputs_of(h).size();
+  for (const char* h : {"ovm", "ovmb", "medit", "hybrid", "hedra", "msh", "vtk", "vtu", "analyze"}) n += inputs_of(h).size();
   EXPECT_GT(n, 0u) << "no inputs under " << regressions_dir();
 }
 

@@ -363,11 +363,14 @@ TEST(IoFormats, FromPathAndName) {
   EXPECT_THROW(format_from_path("dir.v2/noextension"), InputError);
   EXPECT_THROW(format_from_path("mesh.stl"), InputError);
   EXPECT_THROW(format_from_path("mesh.obj"), InputError);
+  EXPECT_EQ(format_from_path("g.msh"), Format::Msh);
+  EXPECT_EQ(format_from_path("model.VTK"), Format::Vtk);
+  EXPECT_EQ(format_from_path("p.vtu"), Format::Vtu);
   try {
-    format_from_path("model.vtk");
+    format_from_path("model.ply");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "model.vtk");
+    EXPECT_EQ(e.file(), "model.ply");
     EXPECT_NE(e.detail().find("--format"), std::string::npos);
   }
   EXPECT_EQ(format_from_name("ovm"), Format::Ovm);
@@ -378,7 +381,8 @@ TEST(IoFormats, FromPathAndName) {
   EXPECT_EQ(format_from_name("hedra"), Format::Hedra);
   EXPECT_THROW(format_from_name("stl"), std::invalid_argument);
   EXPECT_THROW(format_from_name(""), std::invalid_argument);
-  for (Format f : {Format::Ovm, Format::Ovmb, Format::Medit, Format::Hybrid, Format::Hedra})
+  for (Format f : {Format::Ovm, Format::Ovmb, Format::Medit, Format::Hybrid, Format::Hedra, Format::Msh, Format::Vtk,
+                   Format::Vtu})
     EXPECT_EQ(format_from_name(format_name(f)), f);
 }
 

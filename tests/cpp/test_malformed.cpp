@@ -11,6 +11,7 @@
 #include <functional>
 #include <unistd.h>
 
+#include "format_samples.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -112,6 +113,9 @@ MeshInput read_as(Format f, std::string_view bytes, const std::string& name) {
     case Format::Medit: return read_medit(bytes, name);
     case Format::Hybrid: return read_hybrid(bytes, name);
     case Format::Hedra: return read_hedra(bytes, name);
+    case Format::Msh: return read_msh(bytes, name);
+    case Format::Vtk: return read_vtk(bytes, name);
+    case Format::Vtu: return read_vtu(bytes, name);
     case Format::Auto: break;
   }
   throw std::logic_error("no reader");
@@ -122,12 +126,13 @@ struct Case {
   std::string bytes;
   int64_t where;        // line, or byte offset for .ovmb
   std::string keyword;  // a piece of the expected-what text
+  bool binary = false;  // `where` is a byte offset (binary .msh / .vtk)
 };
 
 // Reads and builds each case; each must fail at the stated place with the stated reason.
 void expect_all_rejected(Format f, const std::vector<Case>& cases) {
-  const bool binary = f == Format::Ovmb;
   for (const Case& c : cases) {
+    const bool binary = f == Format::Ovmb || f == Format::Vtu || c.binary;
     const std::string file = "bad_" + c.name + "." + format_name(f);
     SCOPED_TRACE(file);
     try {
@@ -435,6 +440,136 @@ TEST(Malformed, CliExitsWithStatus2AndTheMessageOnStderr) {
   EXPECT_NE(msg.find(bad.string() + ":19: "), std::string::npos) << msg;
   EXPECT_NE(msg.find("chain"), std::string::npos) << msg;
   std::filesystem::remove_all(dir);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Element-list formats: the one-prism files of tests/data/formats with one thing broken.
+
+std::string sample(const std::string& name) { return read_file_bytes(std::string(HBC_FORMATS_DIR) + "/" + name); }
+
+// The bytes with a little-endian number written over those at `at`.
+template <class T>
+std::string patched(std::string b, size_t at, T v) {
+  std::memcpy(b.data() + at, &v, sizeof(T));
+  return b;
+}
+
+TEST(Malformed, MshAscii) {
+  // prism_gmsh.msh: nodes on lines 6-11, the prism on line 15.
+  const std::string t = sample("prism_gmsh.msh");
+  expect_all_rejected(Format::Msh, {
+      {"empty", "", 1, "$MeshFormat at the start"},
+      {"version", with_line(t, 2, "3.0 0 8"), 2, "version 2.2 or 4.1, found '3.0'"},
+      {"truncated_nodes", first_lines(t, 8), 5, "number of nodes that the rest of the file can hold"},
+      {"truncated_elements", first_lines(t, 14), 14, "element tag, found the end of the file"},
+      {"count_elements", with_line(t, 14, "2"), 16, "an element tag (an integer), found '$EndElements'"},
+      {"count_nodes", with_line(t, 5, "5"), 11, "$EndNodes, found '6'"},
+      {"unknown_type", with_line(t, 15, "1 99 2 0 1 1 2 3 4 5 6"), 15, "found type 99"},
+      {"node_out_of_range", with_line(t, 15, "1 6 2 0 1 1 2 3 4 5 7"), 15, "node tag defined in $Nodes, found 7"},
+      {"duplicate_tag", with_line(t, 11, "5 0 1 1"), 11, "distinct node tags, found tag 5 twice"},
+      {"section_end", with_line(t, 12, "$EndNodez"), 12, "$EndNodes, found '$EndNodez'"},
+      {"unclosed_section", t + "$Comments\nno end\n", 18, "$EndComments to close $Comments"},
+      {"no_volume", with_line(t, 15, "1 3 2 0 1 1 2 3 4"), 16, "at least one volume element"},
+      {"non_numeric", with_line(t, 8, "3 0 one 0"), 8, "node coordinate (a finite number), found 'one'"},
+      {"nan", with_line(t, 8, "3 0 nan 0"), 8, "finite"},
+      {"elements_first", with_line(with_line(t, 4, "$Elements"), 12, "$EndElements"), 4, "a $Nodes section before $Elements"},
+  });
+}
+
+TEST(Malformed, MshBinary) {
+  // Offsets: see prism_msh41_binary.
+  const std::string t = test::prism_msh41_binary(false);
+  ASSERT_NO_THROW(build_mesh(read_msh(t, "ok.msh")));
+  expect_all_rejected(Format::Msh, {
+      {"check_value", patched<int32_t>(t, 20, 2), 24, "byte-order check value 1, found 2", true},
+      {"huge_node_count", patched<uint64_t>(t, 55, 1000000000000), 63, "number of nodes that the rest of the file can hold", true},
+      // The total node count is checked against the rest of the file before any block.
+      {"truncated_nodes", t.substr(0, 200), 63, "number of nodes that the rest of the file can hold (0 to 5), found 6", true},
+      {"truncated_coordinate", t.substr(0, 290), 283, "node coordinate (8 bytes), found the end of the file after 7", true},
+      {"unknown_type", patched<int32_t>(t, 352, 99), 344, "found type 99", true},
+      {"node_out_of_range", patched<uint64_t>(t, 412, 7), 364, "node tag defined in $Nodes, found 7", true},
+      {"count_elements", patched<uint64_t>(t, 320, 2), 420, "2 elements as the $Elements header says, found 1", true},
+  });
+}
+
+TEST(Malformed, VtkAscii) {
+  // prism_vtk.vtk: points on lines 6-11, the wedge on line 13, its type on line 15.
+  const std::string t = sample("prism_vtk.vtk");
+  // A tetrahedron-like polyhedron whose fourth face leaves for vertex 4: not closed.
+  const std::string open_poly = with_line(with_line(with_line(t, 12, "CELLS 1 18"), 13, "17 4 3 0 2 1 3 0 1 3 3 1 2 3 3 0 3 4"), 15, "42");
+  expect_all_rejected(Format::Vtk, {
+      {"empty", "", 1, "'# vtk DataFile Version x.y'"},
+      {"header", with_line(t, 1, "# not vtk"), 1, "'# vtk DataFile Version x.y'"},
+      {"version", with_line(t, 1, "# vtk DataFile Version 9.0"), 1, "version 2.0 to 5.1, found '9.0'"},
+      {"encoding", with_line(t, 3, "EBCDIC"), 3, "ASCII or BINARY, found 'ebcdic'"},
+      {"dataset", with_line(t, 4, "DATASET POLYDATA"), 4, "DATASET UNSTRUCTURED_GRID, found DATASET polydata"},
+      {"truncated_points", first_lines(t, 8), 5, "number of values that the rest of the file can hold"},
+      {"truncated_cells", first_lines(t, 12), 12, "number of values that the rest of the file can hold"},
+      {"cell_size", with_line(t, 13, "9 0 2 1 3 5 4"), 13, "cell size that fits in the CELLS entries, found 9"},
+      {"count_types", with_line(with_line(t, 14, "CELL_TYPES 2"), 15, "13 13"), 14, "1 cell types, one per cell, found 2"},
+      {"unknown_type", with_line(t, 15, "15"), 13, "found type 15"},
+      {"point_out_of_range", with_line(t, 13, "6 0 2 1 3 5 6"), 13, "point id in [0, 5], found 6"},
+      {"poly_not_closed", open_poly, 13, "closed cell"},
+      {"poly_stream", with_line(with_line(with_line(t, 12, "CELLS 1 9"), 13, "8 4 3 0 2 1 3 0 1"), 15, "42"), 13, "face 1 of the polyhedron"},
+      {"float_type", with_line(t, 5, "POINTS 6 quaternion"), 5, "numeric data type"},
+      {"no_cell_types", first_lines(t, 13), 13, "a CELL_TYPES section"},
+      {"unknown_section", with_line(t, 14, "LINES 1 3"), 14, "POINTS, CELLS, CELL_TYPES"},
+  });
+}
+
+TEST(Malformed, VtkBinary) {
+  // meshio's binary 5.1 file of the real slab: big-endian OFFSETS and CONNECTIVITY (vtktypeint64).
+  const std::string t = sample("real/slab_51_bin.vtk");
+  const size_t points_line_end = t.find('\n', t.find("POINTS"));
+  const size_t conn = t.find('\n', t.find("CONNECTIVITY")) + 1;
+  std::string bad_id = t;
+  for (int k = 0; k < 8; ++k) bad_id[conn + k] = k == 6 ? '\x27' : k == 7 ? '\x0f' : '\0';  // 9999
+  expect_all_rejected(Format::Vtk, {
+      {"truncated", t.substr(0, points_line_end + 200), static_cast<int64_t>(points_line_end), "number of values that the rest of the file can hold", true},
+      {"point_out_of_range", bad_id, static_cast<int64_t>(conn), "found 9999", true},
+  });
+}
+
+TEST(Malformed, Vtu) {
+  const std::string t = sample("poly.vtu");
+  // Byte offsets name the element (pugixml gives the position of its name, after '<').
+  auto at = [&](const std::string& s, const std::string& needle) { return static_cast<int64_t>(s.find(needle)) + 1; };
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string r = t;
+    r.replace(r.find(from), from.size(), to);
+    return r;
+  };
+  const std::string offsets_tag = "<DataArray type=\"Int64\" Name=\"offsets\"";
+  // A binary points array whose base64 holds '!' and one whose size header promises 1000 bytes.
+  const std::string points_ascii = t.substr(t.find("<DataArray type=\"Float64\""), t.find("</DataArray>") + 12 - t.find("<DataArray type=\"Float64\""));
+  std::string b64 = t, huge = t, zbad = t;
+  b64.replace(b64.find(points_ascii), points_ascii.size(), "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"binary\">AAAA!AAA</DataArray>");
+  huge.replace(huge.find(points_ascii), points_ascii.size(), "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"binary\">6AMAAAAAAAA=</DataArray>");
+  // Compressed: 1 block of 288 bytes claimed to be in 4 zlib bytes that are not zlib.
+  zbad.replace(zbad.find("header_type=\"UInt32\""), 20, "header_type=\"UInt32\" compressor=\"vtkZLibDataCompressor\"");
+  zbad.replace(zbad.find(points_ascii), points_ascii.size(), "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"binary\">AQAAACABAAAgAQAABAAAAA==AAAAAA==</DataArray>");
+  const int64_t b64_text = static_cast<int64_t>(b64.find(">AAAA!AAA")) + 1;
+  expect_all_rejected(Format::Vtu, {
+      {"empty", "", 0, "well-formed XML (No document element found)"},
+      {"no_vtkfile", "<VTK/>", 0, "<VTKFile type=\"UnstructuredGrid\">"},
+      // Cut inside a tag: pugixml points at the tag's last character.
+      {"not_xml", t.substr(0, t.find("<Cells>") + 3), static_cast<int64_t>(t.find("<Cells>") + 2), "well-formed XML"},
+      {"poly_data", replaced("type=\"UnstructuredGrid\"", "type=\"PolyData\""), 0, "UnstructuredGrid"},
+      {"count_points", replaced("NumberOfPoints=\"12\"", "NumberOfPoints=\"13\""), at(t, "<DataArray type=\"Float64\""), "39 values in DataArray '', found 36"},
+      {"huge_count", replaced("NumberOfCells=\"2\"", "NumberOfCells=\"2000000\""), at(t, "<Piece"), "NumberOfCells in [0,"},
+      {"unknown_type", replaced(">12 42<", ">99 42<"), at(t, offsets_tag), "found type 99"},
+      // "12" is one digit more than "7": the offsets array moves one byte on.
+      {"point_out_of_range", replaced("0 1 2 3 4 5 6 7 4", "0 1 2 3 4 5 6 12 4"), at(t, offsets_tag) + 1, "point id in [0, 11], found 12"},
+      {"poly_not_closed", replaced("4 7 4 8 11", "4 7 4 8 0"), at(t, offsets_tag), "closed cell"},
+      {"faceoffsets", replaced(">-1 31<", ">-1 40<"), at(t, offsets_tag), "faces and faceoffsets"},
+      {"non_numeric", replaced("0 0 0 1 0 0 1 1 0", "0 0 0 1 x 0 1 1 0"), at(t, "<DataArray type=\"Float64\""), "a number in the ascii DataArray, found 'x"},
+      {"bad_base64", b64, b64_text + 4, "base64 data, found the character code 33"},
+      // Errors inside base64 text name the offset of the text.
+      {"declared_size", huge, at(huge, ">6AMA"), "the 1000 bytes the data header declares, found 4"},
+      {"corrupt_zlib", zbad, at(zbad, ">AQAAA"), "zlib data of block 0 inflating to 288 bytes (zlib: data error)"},
+      {"missing_offsets", replaced("Name=\"offsets\"", "Name=\"offs\""), at(t, "<Cells"), "a DataArray named 'offsets'"},
+      {"appended_offset", replaced("Name=\"types\" format=\"ascii\"", "Name=\"types\" format=\"appended\" offset=\"0\""), at(t, "<DataArray type=\"UInt8\""), "an AppendedData element"},
+  });
 }
 
 }  // namespace

@@ -23,15 +23,19 @@ inline MeshInput read_as(Format f, std::string_view bytes) {
     case Format::Medit: return read_medit(bytes, "fuzz");
     case Format::Hybrid: return read_hybrid(bytes, "fuzz");
     case Format::Hedra: return read_hedra(bytes, "fuzz");
+    case Format::Msh: return read_msh(bytes, "fuzz");
+    case Format::Vtk: return read_vtk(bytes, "fuzz");
+    case Format::Vtu: return read_vtu(bytes, "fuzz");
     case Format::Auto: break;
   }
   std::abort();
 }
 
-// The analyze harness's first byte picks the reader, so one corpus mixes all five formats.
+// The analyze harness's first byte picks the reader, so one corpus mixes all eight formats.
 inline Format format_of_selector(uint8_t b) {
-  constexpr Format kFormats[5] = {Format::Ovm, Format::Ovmb, Format::Medit, Format::Hybrid, Format::Hedra};
-  return kFormats[b % 5];
+  constexpr Format kFormats[8] = {Format::Ovm, Format::Ovmb, Format::Medit, Format::Hybrid,
+                                  Format::Hedra, Format::Msh, Format::Vtk, Format::Vtu};
+  return kFormats[b % 8];
 }
 
 // A failed invariant on a mesh that was accepted. Not an InputError, so it escapes the harness.

@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,analyze}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,analyze}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -23,6 +23,12 @@ while IFS= read -r f; do
   esac
   cp "$f" "$OUT/$dir/real_$(basename "$f")"
 done < <(find "$DATA" -type f -size -100k | sort)
+
+# The element-list formats: the hand-written and tool-made files of tests/data/formats.
+for f in "$HERE"/../data/formats/*.{msh,vtk,vtu} "$HERE"/../data/formats/real/*.{msh,vtk,vtu}; do
+  [ -f "$f" ] || continue
+  cp "$f" "$OUT/${f##*.}/src_$(basename "$f")"
+done
 
 # Generated meshes: every generator, every split kind, sizes that stay a few KB. Grids and
 # pyramid/prism splits go to MEDIT and OVM; tet splits hold 7-face polyhedra MEDIT cannot express.
@@ -53,12 +59,12 @@ done
 
 # The analyze harness reads a selector byte (index of the reader, see fuzz_targets.hpp) and a file.
 sel=0
-for dir in ovm ovmb medit hybrid hedra; do
+for dir in ovm ovmb medit hybrid hedra msh vtk vtu; do
   for f in "$OUT/$dir"/*; do
     { printf "\\x$(printf %02x $sel)"; cat "$f"; } > "$OUT/analyze/$dir-$(basename "$f")"
   done
   sel=$((sel + 1))
 done
-for dir in ovm ovmb medit hybrid hedra analyze; do
+for dir in ovm ovmb medit hybrid hedra msh vtk vtu analyze; do
   echo "corpus $dir: $(ls "$OUT/$dir" | wc -l) files, $(du -sk "$OUT/$dir" | cut -f1) KB"
 done

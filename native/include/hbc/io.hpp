@@ -9,12 +9,12 @@
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu };
 
-// "ovm", "ovmb", "mesh" (or "medit"), "hybrid", "hedra"; case-insensitive. Throws
+// "ovm", "ovmb", "mesh" (or "medit"), "hybrid", "hedra", "msh", "vtk", "vtu"; case-insensitive. Throws
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
-// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra. Throws InputError otherwise.
+// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
 
@@ -24,6 +24,12 @@ MeshInput read_ovmb(std::string_view bytes, const std::string& source);   // Ope
 MeshInput read_medit(std::string_view text, const std::string& source);   // MEDIT .mesh
 MeshInput read_hybrid(std::string_view text, const std::string& source);  // Robust Hex-Dominant .HYBRID
 MeshInput read_hedra(std::string_view text, const std::string& source);   // LoopyCuts / cinolib .hedra
+// Element-list formats: volume elements become cells (a hexahedron with repeated corners the
+// polyhedron it stands for), points, lines and surface elements are skipped and counted in
+// MeshInput::warnings. Binary files report byte offsets (.vtu always does).
+MeshInput read_msh(std::string_view bytes, const std::string& source);    // Gmsh 2.2 / 4.1, ASCII or binary
+MeshInput read_vtk(std::string_view bytes, const std::string& source);    // legacy VTK UNSTRUCTURED_GRID
+MeshInput read_vtu(std::string_view bytes, const std::string& source);    // VTK XML UnstructuredGrid
 
 // Reads a whole file; throws InputError when it cannot be opened.
 std::string read_file_bytes(const std::string& path);

@@ -25,6 +25,7 @@ struct MeshInput {
   Csr<int32_t> cells;               // nc rows: 2*face + flip, flip = 1 when the cell sees the loop reversed
   std::vector<std::array<int32_t, 2>> declared_edges;  // edges a file lists explicitly (OVM), if any
   std::vector<int64_t> vertex_loc, face_loc, cell_loc;  // where each element is in the file (may be empty)
+  std::vector<std::string> warnings;  // what the reader read past (e.g. surface elements); build_mesh keeps them
 
   SourceLoc loc_of(const std::vector<int64_t>& locs, size_t i) const {
     if (i >= locs.size()) return {};

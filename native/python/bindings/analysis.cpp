@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "hbc/vtu_export.hpp"
 
 namespace hbc::python {
 
@@ -293,6 +294,18 @@ void bind_subsheets(py::module_& m) {
   class_arrays(c, "", [flat](const SubsheetsView& v) -> const ClassArrays& { return flat(v).classes; });
 }
 
+std::string to_vtu(const PyAnalysis& p, const std::string& path, py::object sheet, bool ascii) {
+  VtuExportOptions o;
+  o.ascii = ascii;
+  if (!sheet.is_none()) {
+    o.sheet = sheet.cast<int32_t>();
+    if (o.sheet < 0) throw py::value_error("sheet must be >= 0, got " + std::to_string(o.sheet));
+  }
+  py::gil_scoped_release unlocked;  // writing touches no Python object
+  export_vtu(p.mesh->mesh, p.analysis, path, o);
+  return vtu_graph_path(path);
+}
+
 }  // namespace
 
 void bind_analysis(py::module_& m) {
@@ -336,6 +349,12 @@ void bind_analysis(py::module_& m) {
   c.def("wireframe", &wireframe, py::arg("sheet") = py::none(), py::arg("subsheet") = py::none(),
         "The VSG wireframe of the whole mesh (no arguments), or of a sheet / subsheet region (its "
         "cells plus adjacent non-hex cells), computed on demand with the analysis' rho and level.");
+
+  c.def("to_vtu", &to_vtu, py::arg("path"), py::arg("sheet") = py::none(), py::arg("ascii") = false,
+        "Writes the mesh with its analysis for ParaView (GIL released): `path` gets the cells with "
+        "cell data component, is_hex, cell_type, sheet, sheet_count (and in_sheet, subsheet, "
+        "subsheet_count for `sheet`) and point data singular, pseudo_singular, corner; "
+        "<path stem>_graph.vtu the singularity graph as lines. Returns the graph file's path.");
 
   auto mesh_cls = py::reinterpret_borrow<py::class_<PyMesh, PyMeshPtr>>(m.attr("Mesh"));
   mesh_cls.def("analyze", &analyze, py::arg("rho") = 0.8, py::arg("level") = "complex", py::arg("sheets") = true,

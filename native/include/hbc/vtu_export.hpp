@@ -1,0 +1,45 @@
+#pragma once
+// The mesh and its analysis as VTK XML UnstructuredGrid files for ParaView.
+//
+// OUT.vtu holds the cells (hexahedra, tetrahedra, prisms and pyramids as VTK's own cell types in
+// VTK's corner order; when the mesh has any other cell, every cell as VTK_POLYHEDRON with outward
+// faces, since meshio and other readers cannot mix polyhedra with other types) with
+//   cell data  component   Int32  base-complex component (block) id
+//              is_hex      UInt8  1 for a hexahedron
+//              cell_type   UInt8  hbc's CellType: 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron
+//              sheet       Int32  lowest id of a sheet holding the cell, -1 for none (when sheets ran)
+//              sheet_count Int32  number of sheets holding the cell
+//   and with a chosen sheet N:
+//              in_sheet    UInt8  1 for the cells of sheet N
+//              subsheet    Int32  lowest subsheet of sheet N holding the cell (-1: none, or sheet N
+//                                 is not self-intersecting)
+//              subsheet_count Int32
+//   point data singular, pseudo_singular, corner  UInt8  singular / pseudo-singular vertex,
+//                                                 base-complex corner
+// Edge flags have no place in a cell grid, so the singularity graph goes to a second file,
+// OUT_graph.vtu: the same points and one VTK_LINE per singular, pseudo-singular or non-manifold
+// edge, with cell data edge_class (UInt8: 1 singular, 2 pseudo-singular, 3 non-manifold),
+// valence (Int32, cells around the edge) and singularity (Int32, chain id, -1 for none).
+// Arrays are zlib-compressed base64 (UInt64 headers) unless ascii is asked for.
+#include <cstdint>
+#include <string>
+
+#include "hbc/analysis.hpp"
+#include "hbc/mesh.hpp"
+
+namespace hbc {
+
+struct VtuExportOptions {
+  bool ascii = false;
+  int32_t sheet = -1;  // the chosen sheet, or -1
+};
+
+std::string vtu_cells_text(const Mesh& mesh, const Analysis& analysis, const VtuExportOptions& options = {});
+std::string vtu_graph_text(const Mesh& mesh, const Analysis& analysis, const VtuExportOptions& options = {});
+// "dir/out.vtu" -> "dir/out_graph.vtu".
+std::string vtu_graph_path(const std::string& path);
+// Writes both files; throws std::invalid_argument for a sheet id out of range and
+// std::runtime_error when a file cannot be written.
+void export_vtu(const Mesh& mesh, const Analysis& analysis, const std::string& path, const VtuExportOptions& options = {});
+
+}  // namespace hbc

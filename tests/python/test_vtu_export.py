@@ -1,0 +1,140 @@
+"""Analysis.to_vtu() and `hbc export-vtu`: the files open in an independent reader (Debian's
+python3-meshio) with one cell per mesh cell, the block ids of the analysis and the sheet arrays;
+the singularity graph file holds one line per structural edge. Also: the new readers from Python."""
+
+import base64
+import pathlib
+import subprocess
+import xml.etree.ElementTree as ET
+import zlib
+
+import numpy as np
+import pytest
+
+import hbc
+
+import meshio  # Debian python3-meshio: the independent reader
+
+FORMATS_DIR = pathlib.Path(__file__).resolve().parents[1] / "data" / "formats"
+# An all-hex mesh of 288 cells in 5 blocks, a hex-dominant one with prisms, pyramids, tets and
+# degenerate cells, and a polyhedral one (VTK_POLYHEDRON cells).
+MESHES = ["openvolumemesh/Cylinder.ovm", "hybrid-base-complex/twistcube_s.mesh", "cinolib/eight_voronoi.hedra"]
+DTYPES = {"Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8, "Float64": np.float64}
+
+
+def vtu_arrays(path):
+    """A second, minimal VTU reader (xml.etree, base64, zlib): meshio 1.x misplaces the cell data
+    of polyhedra with different vertex counts, so the polyhedral mesh is checked with this."""
+    root = ET.parse(path).getroot()
+    header = np.uint64 if root.get("header_type") == "UInt64" else np.uint32
+    width = np.dtype(header).itemsize
+    out = {}
+    for da in root.iter("DataArray"):
+        dtype = DTYPES[da.get("type")]
+        if da.get("format") == "ascii":
+            out[da.get("Name")] = np.array(da.text.split(), dtype=dtype)
+            continue
+        text = "".join(da.text.split())
+        head3 = np.frombuffer(base64.b64decode(text[: 4 * -(-3 * width // 3)])[: 3 * width], header)
+        head_chars = 4 * -(-(3 + int(head3[0])) * width // 3)
+        sizes = np.frombuffer(base64.b64decode(text[:head_chars])[: (3 + int(head3[0])) * width], header)[3:]
+        body = base64.b64decode(text[head_chars:])
+        starts = np.concatenate([[0], np.cumsum(sizes)]).astype(int)
+        raw = b"".join(zlib.decompress(body[a:b]) for a, b in zip(starts[:-1], starts[1:]))
+        out[da.get("Name")] = np.frombuffer(raw, dtype)
+    return out
+
+
+def cells_of(m):
+    """meshio splits cells into one block per cell type: back to one array per cell-data name."""
+    return sum(len(b.data) for b in m.cells), {k: np.concatenate(v) for k, v in m.cell_data.items()}
+
+
+@pytest.mark.parametrize("name", MESHES)
+@pytest.mark.parametrize("ascii", [False, True])
+def test_to_vtu_arrays_match_the_analysis(shared_data_dir, tmp_path, name, ascii):
+    mesh = hbc.load(shared_data_dir / name)
+    a = mesh.analyze(wireframe=False)
+    a.to_vtu(str(tmp_path / "out.vtu"), sheet=0, ascii=ascii)
+    d = vtu_arrays(tmp_path / "out.vtu")
+    assert np.array_equal(d["component"], a.complex.cell_component)
+    assert np.array_equal(d["cell_type"], mesh.cell_types)
+    assert len(d["offsets"]) == mesh.num_cells
+    assert np.array_equal(d["Points"].reshape(-1, 3), mesh.points64)
+    has_poly = bool((mesh.cell_types == 4).any())
+    assert set(np.unique(d["types"])) <= ({42} if has_poly else {10, 12, 13, 14})
+
+
+@pytest.mark.parametrize("name", MESHES[:2])
+@pytest.mark.parametrize("ascii", [False, True])
+def test_to_vtu_opens_in_meshio_with_the_block_ids(shared_data_dir, tmp_path, name, ascii):
+    mesh = hbc.load(shared_data_dir / name)
+    a = mesh.analyze(wireframe=False)
+    out = tmp_path / "out.vtu"
+    graph_path = a.to_vtu(str(out), sheet=0, ascii=ascii)
+    assert graph_path == str(tmp_path / "out_graph.vtu")
+    m = meshio.read(out)
+    n, data = cells_of(m)
+    assert n == mesh.num_cells
+    assert len(m.points) == mesh.num_vertices
+    assert len(np.unique(data["component"])) == a.stats["components"]
+    if name == MESHES[0]:
+        assert a.stats["components"] == 5  # blocks, not cells: the ids are shared
+    assert int(data["is_hex"].sum()) == int((mesh.cell_types == 0).sum())
+    # meshio regroups the cells by VTK type: compare the counts of hbc's cell types.
+    assert np.array_equal(np.bincount(data["cell_type"], minlength=5), np.bincount(mesh.cell_types, minlength=5))
+    # Sheet 0's membership array holds exactly its cells.
+    sheet0 = a.sheet_cell_items[a.sheet_cell_offsets[0]:a.sheet_cell_offsets[1]]
+    assert int(data["in_sheet"].sum()) == len(sheet0)
+    assert int((data["sheet_count"] > 0).sum()) == len(np.unique(a.sheet_cell_items))
+    g = meshio.read(graph_path)
+    lines, gdata = cells_of(g)
+    st = a.stats
+    assert lines == st["singular_edges"] + st["pseudo_singular_edges"] + st["non_manifold_edges"]
+    assert int((gdata["edge_class"] == 1).sum()) == st["singular_edges"]
+    assert int(m.point_data["singular"].sum()) == st["singular_vertices"]
+
+
+def test_export_vtu_command_writes_what_meshio_reads(shared_data_dir, tmp_path, hbc_cli):
+    src = shared_data_dir / MESHES[0]
+    out = tmp_path / "cli.vtu"
+    subprocess.run([hbc_cli, "export-vtu", str(src), "-o", str(out)], check=True, capture_output=True)
+    m = meshio.read(out)
+    n, data = cells_of(m)
+    mesh = hbc.load(src)
+    assert n == mesh.num_cells
+    assert len(np.unique(data["component"])) == mesh.analyze(wireframe=False).stats["components"]
+    assert (tmp_path / "cli_graph.vtu").exists()
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_export_vtu_reads_back_with_the_same_analysis(shared_data_dir, tmp_path, name):
+    mesh = hbc.load(shared_data_dir / name)
+    a = mesh.analyze(wireframe=False)
+    a.to_vtu(str(tmp_path / "poly.vtu"))
+    b = hbc.load(tmp_path / "poly.vtu").analyze(wireframe=False)
+    for key in ("cells", "hex_ratio", "components", "singular_edges", "pseudo_singular_edges", "sheets"):
+        assert a.stats[key] == b.stats[key], key
+
+
+def test_to_vtu_rejects_a_sheet_out_of_range(shared_data_dir, tmp_path):
+    a = hbc.load(shared_data_dir / MESHES[0]).analyze(wireframe=False)
+    with pytest.raises(ValueError):
+        a.to_vtu(str(tmp_path / "x.vtu"), sheet=a.num_sheets)
+    with pytest.raises(ValueError):
+        a.to_vtu(str(tmp_path / "x.vtu"), sheet=-2)
+
+
+@pytest.mark.parametrize("name", ["slab_41_bin.msh", "slab_51_bin.vtk", "slab_zlib.vtu"])
+def test_new_formats_load_from_python(name):
+    ref = hbc.load(FORMATS_DIR / "real" / "slab.mesh").analyze(wireframe=False).stats
+    got = hbc.load(FORMATS_DIR / "real" / name).analyze(wireframe=False).stats
+    for key in ("cells", "hex_ratio", "components", "sheets", "singular_edges"):
+        assert got[key] == ref[key], key
+
+
+def test_malformed_new_formats_raise_mesh_format_error(tmp_path):
+    bad = tmp_path / "bad.msh"
+    bad.write_text("$MeshFormat\n3.0 0 8\n$EndMeshFormat\n")
+    with pytest.raises(hbc.MeshFormatError, match=r"bad\.msh:2: expected a \.msh version 2\.2 or 4\.1"):
+        hbc.load(bad)
