@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "hbc/io.hpp"
+#include "line_table.hpp"
 #include "text_scanner.hpp"
 
 namespace hbc {
@@ -35,25 +36,124 @@ bool looks_like_keyword(std::string_view t) {
   return !t.empty() && std::isalpha(static_cast<unsigned char>(t[0]));
 }
 
+// Elements as read, validated once the vertex count is known (sections come in any order).
+struct RawElements {
+  std::vector<const Element*> el;
+  std::vector<int64_t> line;
+  std::vector<int32_t> ids;                // 1-based as in the file; 0 stands for anything outside int32
+  int64_t wide_line = -1, wide_value = 0;  // the first id too large for int32, for the message
+};
+
+void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, int threads) {
+  in.points.reserve(static_cast<size_t>(3 * nv));
+  in.vertex_loc.reserve(static_cast<size_t>(nv));
+  if (detail::fast_vertex_lines(s, nv, in.points, in.vertex_loc, threads)) return;
+  for (int64_t i = 0; i < nv; ++i) {
+    const int64_t l = s.next_line();
+    for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
+    s.integer("a vertex reference number");
+    in.vertex_loc.push_back(l);
+  }
+}
+
+void read_elements(detail::TextScanner& s, const Element* el, int64_t n, RawElements& raw, int threads) {
+  raw.el.resize(raw.el.size() + static_cast<size_t>(n), el);
+  raw.line.reserve(raw.line.size() + static_cast<size_t>(n));
+  raw.ids.reserve(raw.ids.size() + static_cast<size_t>(n * el->nverts));
+  if (detail::fast_element_lines(s, n, el->nverts, raw.ids, raw.line, threads)) return;
+  for (int64_t i = 0; i < n; ++i) {
+    raw.line.push_back(s.next_line());
+    for (int k = 0; k < el->nverts; ++k) {
+      const int64_t id = s.integer("a vertex index");
+      const bool fits = id >= 1 && id <= INT32_MAX;
+      if (!fits && raw.wide_line < 0) {
+        raw.wide_line = raw.line.back();
+        raw.wide_value = id;
+      }
+      raw.ids.push_back(fits ? static_cast<int32_t>(id) : 0);
+    }
+    s.integer("an element reference number");
+  }
+}
+
+// The faces of one element with vertex ids v: each template face with repeated ids collapsed
+// (first occurrence kept); faces left with fewer than 3 distinct vertices vanish, a face
+// repeated within the cell is kept once.
+void append_element_faces(const Element& el, const std::array<int32_t, 8>& v, bool distinct, MeshInput& in,
+                          std::vector<std::array<int32_t, 8>>& cell_sets) {
+  if (distinct) {
+    // The common case: the template as it is.
+    for (const auto& tf : el.faces) {
+      for (int k : tf) in.faces.items.push_back(v[k]);
+      in.faces.offsets.push_back(static_cast<int32_t>(in.faces.items.size()));
+    }
+    return;
+  }
+  cell_sets.clear();
+  std::vector<int32_t> loop;
+  for (const auto& tf : el.faces) {
+    loop.clear();
+    for (int k : tf)
+      if (std::find(loop.begin(), loop.end(), v[k]) == loop.end()) loop.push_back(v[k]);
+    if (loop.size() < 3) continue;
+    std::array<int32_t, 8> sorted;
+    sorted.fill(-1);
+    std::copy(loop.begin(), loop.end(), sorted.begin());
+    for (size_t i = 1; i < loop.size(); ++i)  // at most 4 ids: insertion sort
+      for (size_t j = i; j > 0 && sorted[j - 1] > sorted[j]; --j) std::swap(sorted[j - 1], sorted[j]);
+    if (std::find(cell_sets.begin(), cell_sets.end(), sorted) != cell_sets.end()) continue;
+    cell_sets.push_back(sorted);
+    in.faces.push_row(loop.begin(), loop.end());
+  }
+}
+
+// Cells from the elements read, once the vertex count nv is known.
+void cells_from_elements(const RawElements& raw, int64_t nv, const detail::TextScanner& s, MeshInput& in) {
+  size_t corners = 0;
+  for (const Element* el : raw.el)
+    for (const auto& tf : el->faces) corners += tf.size();
+  in.faces.reserve(raw.el.size() * 6, corners);
+  in.cells.reserve(raw.el.size(), raw.el.size() * 6);
+  in.cell_loc.reserve(raw.el.size());
+  std::vector<std::array<int32_t, 8>> cell_sets;  // sorted distinct ids of each kept face, padded
+  size_t next_id = 0;
+  for (size_t e = 0; e < raw.el.size(); ++e) {
+    const Element& el = *raw.el[e];
+    const int64_t line = raw.line[e];
+    std::array<int32_t, 8> v{};
+    bool distinct = true;
+    for (int k = 0; k < el.nverts; ++k) {
+      const int64_t id = raw.ids[next_id++];
+      if (id < 1 || id > nv) {
+        const int64_t shown = (id == 0 && line == raw.wide_line) ? raw.wide_value : id;
+        s.fail_at(line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(shown));
+      }
+      v[k] = static_cast<int32_t>(id - 1);
+      for (int j = 0; j < k; ++j) distinct = distinct && v[j] != v[k];
+    }
+    const size_t first_face = in.faces.rows();
+    append_element_faces(el, v, distinct, in, cell_sets);
+    for (size_t f = first_face; f < in.faces.rows(); ++f) in.cells.items.push_back(static_cast<int32_t>(2 * f));
+    in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
+    in.cell_loc.push_back(line);
+  }
+}
+
 }  // namespace
 
-MeshInput read_medit(std::string_view text, const std::string& source) {
+MeshInput read_medit(std::string_view text, const std::string& source, const LoadOptions& options) {
+  const int threads = resolve_threads(options);
   detail::TextScanner s(text, source, true);
   MeshInput in;
   in.source = source;
   int64_t nv = -1;
-  // Elements as read, validated once the vertex count is known (sections come in any order).
-  std::vector<const Element*> raw_el;
-  std::vector<int64_t> raw_line;
-  std::vector<int32_t> raw_ids;  // 1-based as in the file; 0 stands for anything outside int32
-  int64_t wide_line = -1, wide_value = 0;  // the first id too large for int32, for the message
-  bool seen_version = false, seen_end = false;
+  RawElements raw;
+  bool seen_version = false;
   std::string_view tok;
   bool have_tok = s.next(tok);
   while (have_tok) {
     if (!looks_like_keyword(tok)) s.fail("a MEDIT keyword, found '" + std::string(tok.substr(0, 40)) + "'");
     const std::string kw = detail::lower(tok);
-    const int64_t kw_line = s.line();
     if (kw == "meshversionformatted") {
       s.integer_in(1, 4, "the MEDIT version");
       seen_version = true;
@@ -62,35 +162,11 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
     } else if (kw == "vertices") {
       if (nv >= 0) s.fail("one Vertices section, found a second");
       nv = s.count(8, "the number of vertices");
-      in.points.reserve(static_cast<size_t>(3 * nv));
-      in.vertex_loc.reserve(static_cast<size_t>(nv));
-      for (int64_t i = 0; i < nv; ++i) {
-        const int64_t l = s.next_line();
-        for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
-        s.integer("a vertex reference number");
-        in.vertex_loc.push_back(l);
-      }
+      read_vertices(s, nv, in, threads);
     } else if (const Element* el = element_of(kw)) {
       const int64_t n = s.count(2 * (el->nverts + 1), (std::string("the number of ") + kw).c_str());
-      raw_el.reserve(raw_el.size() + static_cast<size_t>(n));
-      raw_line.reserve(raw_line.size() + static_cast<size_t>(n));
-      raw_ids.reserve(raw_ids.size() + static_cast<size_t>(n * el->nverts));
-      for (int64_t i = 0; i < n; ++i) {
-        raw_el.push_back(el);
-        raw_line.push_back(s.next_line());
-        for (int k = 0; k < el->nverts; ++k) {
-          const int64_t id = s.integer("a vertex index");
-          const bool fits = id >= 1 && id <= INT32_MAX;
-          if (!fits && wide_line < 0) {
-            wide_line = raw_line.back();
-            wide_value = id;
-          }
-          raw_ids.push_back(fits ? static_cast<int32_t>(id) : 0);
-        }
-        s.integer("an element reference number");
-      }
+      read_elements(s, el, n, raw, threads);
     } else if (kw == "end") {
-      seen_end = true;
       break;
     } else {
       // Surface elements and other data are read past: everything up to the next keyword.
@@ -98,69 +174,12 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
       }
       continue;
     }
-    (void)kw_line;
     have_tok = s.next(tok);
   }
-  (void)seen_end;
   if (!seen_version && text.size() > 0 && nv < 0) s.fail("a MEDIT file (MeshVersionFormatted, Vertices, ...)");
   if (nv < 0) s.fail("a Vertices section");
-  if (raw_el.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
-
-  // Cells: each template face with repeated ids collapsed (first occurrence kept); faces left
-  // with fewer than 3 distinct vertices vanish, a face repeated within the cell is kept once.
-  size_t corners = 0;
-  for (const Element* el : raw_el)
-    for (const auto& tf : el->faces) corners += tf.size();
-  in.faces.offsets.reserve(raw_el.size() * 6 + 1);
-  in.faces.items.reserve(corners);
-  in.cells.offsets.reserve(raw_el.size() + 1);
-  in.cells.items.reserve(raw_el.size() * 6);
-  in.cell_loc.reserve(raw_el.size());
-  std::vector<int32_t> loop;
-  std::vector<std::array<int32_t, 8>> cell_sets;  // sorted distinct ids of each kept face, padded
-  size_t next_id = 0;
-  for (size_t e = 0; e < raw_el.size(); ++e) {
-    const Element& el = *raw_el[e];
-    const int64_t line = raw_line[e];
-    std::array<int32_t, 8> v{};
-    bool distinct = true;
-    for (int k = 0; k < el.nverts; ++k) {
-      const int64_t id = raw_ids[next_id++];
-      if (id < 1 || id > nv) {
-        const int64_t shown = (id == 0 && line == wide_line) ? wide_value : id;
-        s.fail_at(line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(shown));
-      }
-      v[k] = static_cast<int32_t>(id - 1);
-      for (int j = 0; j < k; ++j) distinct = distinct && v[j] != v[k];
-    }
-    const size_t first_face = in.faces.rows();
-    if (distinct) {
-      // The common case: the template as it is.
-      for (const auto& tf : el.faces) {
-        for (int k : tf) in.faces.items.push_back(v[k]);
-        in.faces.offsets.push_back(static_cast<int32_t>(in.faces.items.size()));
-      }
-    } else {
-      cell_sets.clear();
-      for (const auto& tf : el.faces) {
-        loop.clear();
-        for (int k : tf)
-          if (std::find(loop.begin(), loop.end(), v[k]) == loop.end()) loop.push_back(v[k]);
-        if (loop.size() < 3) continue;
-        std::array<int32_t, 8> sorted;
-        sorted.fill(-1);
-        std::copy(loop.begin(), loop.end(), sorted.begin());
-        for (size_t i = 1; i < loop.size(); ++i)  // at most 4 ids: insertion sort
-          for (size_t j = i; j > 0 && sorted[j - 1] > sorted[j]; --j) std::swap(sorted[j - 1], sorted[j]);
-        if (std::find(cell_sets.begin(), cell_sets.end(), sorted) != cell_sets.end()) continue;
-        cell_sets.push_back(sorted);
-        in.faces.push_row(loop.begin(), loop.end());
-      }
-    }
-    for (size_t f = first_face; f < in.faces.rows(); ++f) in.cells.items.push_back(static_cast<int32_t>(2 * f));
-    in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
-    in.cell_loc.push_back(line);
-  }
+  if (raw.el.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
+  cells_from_elements(raw, nv, s, in);
   return in;
 }
 
