@@ -63,14 +63,14 @@ bool line_end(const char*& p, const char* end) {
 // Runs parse_line(i, p, end) for each of the n lines, split over threads; on success moves the
 // scanner past the section.
 template <class ParseLine>
-bool parse_lines(TextScanner& s, int64_t n, int threads, ParseLine&& parse_line) {
+bool parse_lines(TextScanner& s, int64_t n, const LoadOptions& par, ParseLine&& parse_line) {
   size_t begin = 0;
   if (n <= 0 || !after_blank_rest(s, begin)) return false;
-  const int nr = range_count(static_cast<size_t>(n), threads);
+  const int nr = range_count(static_cast<size_t>(n), par);
   std::vector<size_t> starts;
   if (!split_lines(s.text(), begin, n, nr, starts)) return false;
   std::vector<uint8_t> ok(static_cast<size_t>(nr), 1);
-  parallel_ranges(static_cast<size_t>(n), threads, [&](size_t b, size_t e, int r) {
+  parallel_ranges(static_cast<size_t>(n), par, [&](size_t b, size_t e, int r) {
     const char* p = s.text().data() + starts[static_cast<size_t>(r)];
     const char* end = s.text().data() + starts[static_cast<size_t>(r) + 1];
     for (size_t i = b; i < e; ++i)
@@ -88,12 +88,12 @@ bool parse_lines(TextScanner& s, int64_t n, int threads, ParseLine&& parse_line)
 }  // namespace
 
 bool fast_vertex_lines(TextScanner& s, int64_t n, std::vector<double>& points, std::vector<int64_t>& lines,
-                       int threads) {
+                       const LoadOptions& par) {
   const size_t p0 = points.size(), l0 = lines.size();
   points.resize(p0 + 3 * static_cast<size_t>(n));
   lines.resize(l0 + static_cast<size_t>(n));
   const int64_t first_line = s.line() + 1;
-  const bool ok = parse_lines(s, n, threads, [&](size_t i, const char*& p, const char* end) {
+  const bool ok = parse_lines(s, n, par, [&](size_t i, const char*& p, const char* end) {
     double* x = &points[p0 + 3 * i];
     int64_t ref = 0;
     for (int k = 0; k < 3; ++k)
@@ -106,12 +106,12 @@ bool fast_vertex_lines(TextScanner& s, int64_t n, std::vector<double>& points, s
 }
 
 bool fast_element_lines(TextScanner& s, int64_t n, int k, std::vector<int32_t>& ids, std::vector<int64_t>& lines,
-                        int threads) {
+                        const LoadOptions& par) {
   const size_t i0 = ids.size(), l0 = lines.size();
   ids.resize(i0 + static_cast<size_t>(k) * static_cast<size_t>(n));
   lines.resize(l0 + static_cast<size_t>(n));
   const int64_t first_line = s.line() + 1;
-  const bool ok = parse_lines(s, n, threads, [&](size_t i, const char*& p, const char* end) {
+  const bool ok = parse_lines(s, n, par, [&](size_t i, const char*& p, const char* end) {
     int32_t* out = &ids[i0 + static_cast<size_t>(k) * i];
     int64_t ref = 0;
     for (int j = 0; j < k; ++j)

@@ -16,11 +16,11 @@ namespace hbc::detail {
 // n lines of "x y z ref" after the scanner's position (the rest of the current line blank):
 // appends 3 coordinates per line to points and the line number to lines.
 bool fast_vertex_lines(TextScanner& s, int64_t n, std::vector<double>& points, std::vector<int64_t>& lines,
-                       int threads);
+                       const LoadOptions& par);
 
 // n lines of `k` vertex ids in [1, 2^31) then a reference number: appends the ids to ids and
 // the line number to lines.
 bool fast_element_lines(TextScanner& s, int64_t n, int k, std::vector<int32_t>& ids, std::vector<int64_t>& lines,
-                        int threads);
+                        const LoadOptions& par);
 
 }  // namespace hbc::detail

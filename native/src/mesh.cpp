@@ -100,23 +100,30 @@ int resolve_threads(const LoadOptions& options) {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+LoadOptions resolved(const LoadOptions& options) {
+  LoadOptions r = options;
+  r.threads = resolve_threads(options);
+  r.grain = std::max(1, options.grain);
+  return r;
+}
+
 Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   using namespace mesh_steps;
-  const int threads = resolve_threads(options);
+  const LoadOptions par = resolved(options);
   validate_input(in);
   Mesh m;
   m.source = in.source;
   m.points = std::move(in.points);
-  merge_faces(in, m, threads);
-  const std::vector<int32_t> slot_face = slot_faces(m, threads);
-  build_edges(m, slot_face, threads);
-  const std::vector<int32_t> partner = cell_incidences(m, in, threads);
-  orient_cells(m, partner, slot_face, threads);
+  merge_faces(in, m, par);
+  const std::vector<int32_t> slot_face = slot_faces(m, par);
+  build_edges(m, slot_face, par);
+  const std::vector<int32_t> partner = cell_incidences(m, in, par);
+  orient_cells(m, partner, slot_face, par);
   mark_boundary(m);
-  vertex_incidences(m, in, threads);
-  edge_fans(m, partner, slot_face, threads);
-  cell_types(m, threads);
-  non_manifold_vertices(m, threads);
+  vertex_incidences(m, in, par);
+  edge_fans(m, partner, slot_face, par);
+  cell_types(m, par);
+  non_manifold_vertices(m, par);
   return m;
 }
 

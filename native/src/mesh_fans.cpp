@@ -20,16 +20,16 @@ void mark_boundary(Mesh& m) {
   }
 }
 
-void vertex_incidences(Mesh& m, const MeshInput& in, int threads) {
+void vertex_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par) {
   const size_t nv = m.num_vertices();
   detail::parallel_invoke(
-      threads,
+      par,
       [&] {
-        // Both ends of every edge, row e = edge e, without copying: a 2-item CSR over edge_verts.
+        // Both ends of every edge as a CSR, row e = edge e.
         Csr<int32_t> ev;
-        ev.offsets.resize(m.num_edges() + 1);
-        std::iota(ev.offsets.begin(), ev.offsets.end(), 0);
-        for (auto& o : ev.offsets) o *= 2;
+        std::vector<int32_t> offsets(m.num_edges() + 1);
+        for (size_t e = 0; e < offsets.size(); ++e) offsets[e] = static_cast<int32_t>(2 * e);
+        ev.offsets = std::move(offsets);
         ev.items.resize(2 * m.num_edges());
         for (size_t e = 0; e < m.num_edges(); ++e) {
           ev.items[2 * e] = m.edge_verts[e][0];
@@ -91,14 +91,14 @@ bool walk_fan(const Mesh& m, std::span<const int32_t> slots, const std::vector<i
 
 }  // namespace
 
-void edge_fans(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face, int threads) {
+void edge_fans(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face, const LoadOptions& par) {
   const size_t ne = m.num_edges();
   // The face slots carrying each edge; each row is then overwritten with the faces of the fan.
   m.edge_faces = group_by(m.face_edges.items, ne);
   m.edge_fan_ok.assign(ne, 0);
-  const int nr = detail::range_count(ne, threads);
+  const int nr = detail::range_count(ne, par);
   std::vector<Csr<int32_t>> cells(static_cast<size_t>(nr));
-  detail::parallel_ranges(ne, threads, [&](size_t eb, size_t ee, int r) {
+  detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int r) {
     std::vector<int32_t> slots, fan_faces, fan_cells, scratch;
     Csr<int32_t>& rows = cells[static_cast<size_t>(r)];
     for (size_t e = eb; e < ee; ++e) {
@@ -126,11 +126,11 @@ void edge_fans(Mesh& m, const std::vector<int32_t>& partner, const std::vector<i
   m.edge_cells = concat(std::move(cells));
 }
 
-void cell_types(Mesh& m, int threads) {
+void cell_types(Mesh& m, const LoadOptions& par) {
   const size_t nc = m.num_cells();
   m.cell_type.assign(nc, CellType::Polyhedron);
   m.vert_non_manifold.assign(m.num_vertices(), 0);
-  detail::parallel_ranges(nc, threads, [&](size_t cb, size_t ce, int) {
+  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int) {
     std::vector<int32_t> vcount(m.num_vertices(), 0);  // faces of the cell at each vertex
     for (size_t c = cb; c < ce; ++c) {
       auto faces = m.cell_faces[c];
@@ -160,8 +160,8 @@ void cell_types(Mesh& m, int threads) {
   });
 }
 
-void non_manifold_vertices(Mesh& m, int threads) {
-  detail::parallel_ranges(m.num_vertices(), threads, [&](size_t vb, size_t ve, int) {
+void non_manifold_vertices(Mesh& m, const LoadOptions& par) {
+  detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
     std::vector<int32_t> parent;
     for (size_t v = vb; v < ve; ++v) {
       auto cells = m.vert_cells[v];

@@ -112,9 +112,9 @@ void orient_groups(Mesh& m, std::vector<double>& cell_vol) {
 }  // namespace
 
 void orient_cells(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face,
-                  int threads) {
+                  const LoadOptions& par) {
   std::vector<double> cell_vol(m.num_cells(), 0.0);
-  detail::parallel_ranges(m.num_cells(), threads, [&](size_t cb, size_t ce, int) {
+  detail::parallel_ranges(m.num_cells(), par, [&](size_t cb, size_t ce, int) {
     std::vector<int8_t> face_state(m.num_faces(), -1), state;
     std::vector<int32_t> queue;
     for (size_t c = cb; c < ce; ++c) {

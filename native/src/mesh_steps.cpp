@@ -23,10 +23,10 @@ bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
 // rep[f] = the input face standing for all input faces with f's vertex set: the one a cell uses
 // first (lowest first_use), or -1 when no cell uses any of them.
 std::vector<int32_t> face_representatives(const Csr<int32_t>& faces, const std::vector<int32_t>& first_use,
-                                          size_t nv, int threads) {
+                                          size_t nv, const LoadOptions& par) {
   const size_t nf = faces.rows();
   std::vector<int32_t> lowest(nf);
-  detail::parallel_ranges(nf, threads, [&](size_t b, size_t e, int) {
+  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f) lowest[f] = *std::min_element(faces[f].begin(), faces[f].end());
   });
   const Csr<int32_t> by_lowest = group_by(lowest, nv);
@@ -34,7 +34,7 @@ std::vector<int32_t> face_representatives(const Csr<int32_t>& faces, const std::
   std::vector<int32_t> rep(nf, -1);
   // An unused face sorts after the used ones of its group.
   auto use_rank = [&](int32_t f) { return static_cast<uint32_t>(first_use[f]); };
-  detail::parallel_ranges(nv, threads, [&](size_t vb, size_t ve, int) {
+  detail::parallel_ranges(nv, par, [&](size_t vb, size_t ve, int) {
     std::vector<int32_t> keys, order;
     std::vector<int32_t> key_at;  // start of each bucket member's sorted key in keys
     for (size_t v = vb; v < ve; ++v) {
@@ -101,14 +101,14 @@ void fill_face_cells(const MeshInput& in, Mesh& m) {
 
 }  // namespace
 
-void merge_faces(MeshInput& in, Mesh& m, int threads) {
+void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   const size_t nf_in = in.faces.rows(), nslots = in.cells.items.size();
   std::vector<int32_t> first_use(nf_in, -1);
   for (size_t s = 0; s < nslots; ++s) {
     const int32_t f = in.cells.items[s] >> 1;
     if (first_use[f] < 0) first_use[f] = static_cast<int32_t>(s);
   }
-  const std::vector<int32_t> rep = face_representatives(in.faces, first_use, m.num_vertices(), threads);
+  const std::vector<int32_t> rep = face_representatives(in.faces, first_use, m.num_vertices(), par);
   for (size_t f = 0; f < nf_in; ++f) m.dropped_faces += rep[f] < 0;
   if (m.dropped_faces > 0)
     m.warnings.push_back(std::to_string(m.dropped_faces) + " face(s) used by no cell dropped");
@@ -128,7 +128,7 @@ void merge_faces(MeshInput& in, Mesh& m, int threads) {
   // The cell sees the stored loop reversed when exactly one of (input flip, loop copy reversed
   // against the stored one) holds.
   m.cell_face_flip.resize(nslots);
-  detail::parallel_ranges(nslots, threads, [&](size_t b, size_t e, int) {
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
     for (size_t s = b; s < e; ++s) {
       const int32_t f = in.cells.items[s] >> 1;
       const bool same = rep[f] == f || same_direction(m.face_verts[m.cell_faces.items[s]], in.faces[f]);
@@ -142,9 +142,9 @@ void merge_faces(MeshInput& in, Mesh& m, int threads) {
   fill_face_cells(in, m);
 }
 
-std::vector<int32_t> slot_faces(const Mesh& m, int threads) {
+std::vector<int32_t> slot_faces(const Mesh& m, const LoadOptions& par) {
   std::vector<int32_t> slot_face(m.face_verts.items.size());
-  detail::parallel_ranges(m.num_faces(), threads, [&](size_t b, size_t e, int) {
+  detail::parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f)
       std::fill(slot_face.begin() + m.face_verts.offsets[f], slot_face.begin() + m.face_verts.offsets[f + 1],
                 static_cast<int32_t>(f));
@@ -160,18 +160,18 @@ int32_t next_vertex(const Mesh& m, const std::vector<int32_t>& slot_face, size_t
 }
 }  // namespace
 
-void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, int threads) {
+void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, const LoadOptions& par) {
   const size_t ns = m.face_verts.items.size();
   std::vector<int32_t>& rep = m.face_edges.items;  // first the lowest slot with the same edge
   rep.resize(ns);
   {
     std::vector<int32_t> lo(ns);
-    detail::parallel_ranges(ns, threads, [&](size_t b, size_t e, int) {
+    detail::parallel_ranges(ns, par, [&](size_t b, size_t e, int) {
       for (size_t k = b; k < e; ++k) lo[k] = std::min(m.face_verts.items[k], next_vertex(m, slot_face, k));
     });
     const Csr<int32_t> by_lo = group_by(lo, m.num_vertices());
     std::vector<int32_t>().swap(lo);
-    detail::parallel_ranges(m.num_vertices(), threads, [&](size_t vb, size_t ve, int) {
+    detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
       std::vector<std::pair<int32_t, int32_t>> hi_slot;  // (other end, slot), sorted
       for (size_t v = vb; v < ve; ++v) {
         hi_slot.clear();
@@ -198,12 +198,12 @@ void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, int threads) {
   m.face_edges.offsets = m.face_verts.offsets;
 }
 
-std::vector<int32_t> cell_incidences(Mesh& m, const MeshInput& in, int threads) {
+std::vector<int32_t> cell_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par) {
   const size_t nc = m.num_cells();
   std::vector<int32_t> partner(2 * m.face_edges.items.size(), -1);
-  const int nr = detail::range_count(nc, threads);
+  const int nr = detail::range_count(nc, par);
   std::vector<Csr<int32_t>> verts(static_cast<size_t>(nr)), edges(static_cast<size_t>(nr));
-  detail::parallel_ranges(nc, threads, [&](size_t cb, size_t ce, int r) {
+  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int r) {
     std::vector<std::pair<int32_t, int32_t>> edge_slot;  // (edge, 2*slot + side) of the cell
     std::vector<int32_t> cv, cedges;
     Csr<int32_t>& vrows = verts[static_cast<size_t>(r)];

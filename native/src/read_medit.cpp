@@ -44,10 +44,10 @@ struct RawElements {
   int64_t wide_line = -1, wide_value = 0;  // the first id too large for int32, for the message
 };
 
-void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, int threads) {
+void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, const LoadOptions& par) {
   in.points.reserve(static_cast<size_t>(3 * nv));
   in.vertex_loc.reserve(static_cast<size_t>(nv));
-  if (detail::fast_vertex_lines(s, nv, in.points, in.vertex_loc, threads)) return;
+  if (detail::fast_vertex_lines(s, nv, in.points, in.vertex_loc, par)) return;
   for (int64_t i = 0; i < nv; ++i) {
     const int64_t l = s.next_line();
     for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
@@ -56,11 +56,11 @@ void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, int thread
   }
 }
 
-void read_elements(detail::TextScanner& s, const Element* el, int64_t n, RawElements& raw, int threads) {
+void read_elements(detail::TextScanner& s, const Element* el, int64_t n, RawElements& raw, const LoadOptions& par) {
   raw.el.resize(raw.el.size() + static_cast<size_t>(n), el);
   raw.line.reserve(raw.line.size() + static_cast<size_t>(n));
   raw.ids.reserve(raw.ids.size() + static_cast<size_t>(n * el->nverts));
-  if (detail::fast_element_lines(s, n, el->nverts, raw.ids, raw.line, threads)) return;
+  if (detail::fast_element_lines(s, n, el->nverts, raw.ids, raw.line, par)) return;
   for (int64_t i = 0; i < n; ++i) {
     raw.line.push_back(s.next_line());
     for (int k = 0; k < el->nverts; ++k) {
@@ -142,7 +142,7 @@ void cells_from_elements(const RawElements& raw, int64_t nv, const detail::TextS
 }  // namespace
 
 MeshInput read_medit(std::string_view text, const std::string& source, const LoadOptions& options) {
-  const int threads = resolve_threads(options);
+  const LoadOptions par = resolved(options);
   detail::TextScanner s(text, source, true);
   MeshInput in;
   in.source = source;
@@ -162,10 +162,10 @@ MeshInput read_medit(std::string_view text, const std::string& source, const Loa
     } else if (kw == "vertices") {
       if (nv >= 0) s.fail("one Vertices section, found a second");
       nv = s.count(8, "the number of vertices");
-      read_vertices(s, nv, in, threads);
+      read_vertices(s, nv, in, par);
     } else if (const Element* el = element_of(kw)) {
       const int64_t n = s.count(2 * (el->nverts + 1), (std::string("the number of ") + kw).c_str());
-      read_elements(s, el, n, raw, threads);
+      read_elements(s, el, n, raw, par);
     } else if (kw == "end") {
       break;
     } else {

@@ -76,12 +76,16 @@ struct Mesh {
 
 // How to load: threads = how many threads may split the work (results are identical for any
 // number); 0 means the environment variable HBC_THREADS when it holds a positive number, else
-// every core of the machine.
+// every core of the machine. grain = the fewest elements worth a thread of their own (tests lower
+// it to split small meshes into many ranges).
 struct LoadOptions {
   int threads = 0;
+  int grain = 4096;
 };
 // The thread count `options` asks for, resolved as described above (always >= 1).
 int resolve_threads(const LoadOptions& options);
+// options with threads resolved and grain at least 1.
+LoadOptions resolved(const LoadOptions& options);
 
 // Builds the topology and checks conformity. Throws InputError (naming input.source and the line
 // of the offending element) for: an index out of range, a face with fewer than 3 distinct vertices
