@@ -111,17 +111,21 @@ Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   using namespace mesh_steps;
   const LoadOptions par = resolved(options);
   validate_input(in);
+  std::vector<int64_t>().swap(in.vertex_loc);  // only validate_input names vertices
   Mesh m;
   m.source = in.source;
   m.points = std::move(in.points);
   merge_faces(in, m, par);
-  const std::vector<int32_t> slot_face = slot_faces(m, par);
-  build_edges(m, slot_face, par);
-  const std::vector<int32_t> partner = cell_incidences(m, in, par);
-  orient_cells(m, partner, slot_face, par);
-  mark_boundary(m);
+  {
+    // The slot tables are the largest temporaries: gone before the vertex incidences are built.
+    const std::vector<int32_t> slot_face = slot_faces(m, par);
+    build_edges(m, slot_face, par);
+    const std::vector<int32_t> partner = cell_incidences(m, in, par);
+    orient_cells(m, partner, slot_face, par);
+    mark_boundary(m);
+    edge_fans(m, partner, slot_face, par);
+  }
   vertex_incidences(m, in, par);
-  edge_fans(m, partner, slot_face, par);
   cell_types(m, par);
   non_manifold_vertices(m, par);
   return m;

@@ -49,13 +49,13 @@ void orient_cells(Mesh& m, const std::vector<int32_t>& partner, const std::vecto
 // face_boundary, edge_boundary, vert_boundary.
 void mark_boundary(Mesh& m);
 
-// vert_edges, vert_faces, vert_cells; then dropped_edges (+ warning) for in.declared_edges
-// that no face uses.
-void vertex_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par);
-
 // edge_faces, edge_cells, edge_fan_ok (see Mesh).
 void edge_fans(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face,
                const LoadOptions& par);
+
+// vert_edges, vert_faces, vert_cells; then dropped_edges (+ warning) for in.declared_edges
+// that no face uses.
+void vertex_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par);
 
 // cell_type, and vert_non_manifold = 1 where a cell meets a vertex in fewer than 3 faces.
 void cell_types(Mesh& m, const LoadOptions& par);
