@@ -48,35 +48,34 @@ for f in "${cases[@]}"; do
     tag="$D/$(basename "$f").$name.$threads"
     HBC_THREADS=$threads HBC_BENCH_FILE=$f "$bench" --benchmark_filter='^BM_LoadFile$' --benchmark_min_time=0.2 \
       --benchmark_format=json >"$tag.load.json"
-    HBC_THREADS=$threads /usr/bin/time -f '%M' -o "$tag.rss" "$cli" analyze "$f" --json >"$tag.analyze.json"
+    HBC_THREADS=$threads /usr/bin/time -f '%M %U %S' -o "$tag.rss" "$cli" analyze "$f" --json >"$tag.analyze.json"
     rows+=("$f|$name|$threads|$tag")
   done
 done
 
 /usr/bin/python3 - "${rows[@]}" <<'PY'
 import json, os, sys
-print("| mesh | cells | code | threads | read (ms) | read+parse (s) | parse MB/s | topology (s) | load cells/s | load / read | "
-      "base complex (s) | sheets (s) | VSG wireframe (s) | analyze total (s) | peak RSS (MB) | bytes/cell |")
+print("| mesh | cells | code | threads | read (ms) | read+parse wall / CPU (s) | parse MB/s | topology wall / CPU (s) | load cells/s | "
+      "load / read | base complex (s) | sheets (s) | VSG wireframe (s) | analyze wall / CPU (s) | peak RSS (MB) | bytes/cell |")
 print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
-read_of = {}
 for row in sys.argv[1:]:
     path, name, threads, tag = row.split("|")
     b = json.load(open(tag + ".load.json"))["benchmarks"][0]
     a = json.load(open(tag + ".analyze.json"))
     t = a["timings"]
-    rss_kb = int(open(tag + ".rss").read().split()[-1])
+    rss_kb, user, sys_s = open(tag + ".rss").read().split()[-3:]
+    rss_kb = int(rss_kb)
     mb = b["file_MB"] * 1024 * 1024 / 1e6
-    # The baseline's binary is this tree's source, so it measures the read as well.
-    read = b.get("read_s", read_of.get(path))
-    read_of[path] = read
+    read = b["read_s"]  # the baseline's binary is this tree's bench source, so it has it too
     load = b["parse_s"] + b["build_s"]
     cells = int(b["cells"])
     total = sum(v for v in t.values())
-    print(f"| {os.path.basename(path)} | {cells} | {name} | {threads} | {read * 1e3:.1f} | {b['parse_s']:.3f} | {mb / b['parse_s']:.0f} | "
-          f"{b['build_s']:.3f} | {cells / load:.3g} | {load / read:.0f} | {t['base_complex']:.3f} | {t['sheets'] + t['subsheets']:.3f} | "
-          f"{t['vsg_wireframe']:.3f} | {total:.2f} | {rss_kb / 1024:.0f} | {rss_kb * 1024 / cells:.0f} |")
+    print(f"| {os.path.basename(path)} | {cells} | {name} | {threads} | {read * 1e3:.1f} | {b['parse_s']:.3f} / {b['parse_cpu_s']:.3f} | "
+          f"{mb / b['parse_s']:.0f} | {b['build_s']:.3f} / {b['build_cpu_s']:.3f} | {cells / load:.3g} | {load / read:.0f} | "
+          f"{t['base_complex']:.3f} | {t['sheets'] + t['subsheets']:.3f} | {t['vsg_wireframe']:.3f} | {total:.2f} / {float(user) + float(sys_s):.2f} | "
+          f"{rss_kb / 1024:.0f} | {rss_kb * 1024 / cells:.0f} |")
 print()
-print(f"{os.cpu_count()} CPUs, load average {' '.join(open('/proc/loadavg').read().split()[:3])} at the end; "
-      "read+parse includes reading the file; analyze total = load + every stage of `hbc analyze` (its own load); "
-      "peak RSS of the `hbc analyze` process.")
+print(f"{os.cpu_count()} CPUs, load average {' '.join(open('/proc/loadavg').read().split()[:3])} at the end. Wall times come from one "
+      "process per row, and other processes on the machine inflate them; CPU = user + system time of every thread. read+parse includes reading the file; analyze = `hbc analyze --json` (its own load and "
+      "every stage), peak RSS of that process.")
 PY

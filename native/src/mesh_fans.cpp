@@ -101,6 +101,7 @@ void edge_fans(Mesh& m, const std::vector<int32_t>& partner, const std::vector<i
   detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int r) {
     std::vector<int32_t> slots, fan_faces, fan_cells, scratch;
     Csr<int32_t>& rows = cells[static_cast<size_t>(r)];
+    rows.reserve(ee - eb, static_cast<size_t>(m.edge_faces.offsets[ee] - m.edge_faces.offsets[eb]));
     for (size_t e = eb; e < ee; ++e) {
       auto row = m.edge_faces.row(e);
       slots.assign(row.begin(), row.end());

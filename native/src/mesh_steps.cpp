@@ -117,6 +117,9 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   std::fill(face_id.begin(), face_id.end(), -1);
   m.cell_faces.offsets = std::move(in.cells.offsets);
   m.cell_faces.items.resize(nslots);
+  // Room for every input face: untouched capacity costs address space only, while growing
+  // would copy the loops again and again.
+  m.face_verts.reserve(nf_in, in.faces.items.size());
   for (size_t s = 0; s < nslots; ++s) {
     const int32_t r = rep[in.cells.items[s] >> 1];
     if (face_id[r] < 0) {
@@ -172,20 +175,25 @@ void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, const LoadOptio
     const Csr<int32_t> by_lo = group_by(lo, m.num_vertices());
     std::vector<int32_t>().swap(lo);
     detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
-      std::vector<std::pair<int32_t, int32_t>> hi_slot;  // (other end, slot), sorted
+      std::vector<uint64_t> hi_slot;  // other end << 32 | slot, sorted
       for (size_t v = vb; v < ve; ++v) {
         hi_slot.clear();
-        for (int32_t k : by_lo[v])
-          hi_slot.push_back({std::max(m.face_verts.items[k], next_vertex(m, slot_face, k)), k});
+        for (int32_t k : by_lo[v]) {
+          const int32_t hi = std::max(m.face_verts.items[k], next_vertex(m, slot_face, k));
+          hi_slot.push_back(static_cast<uint64_t>(hi) << 32 | static_cast<uint32_t>(k));
+        }
         std::sort(hi_slot.begin(), hi_slot.end());
-        for (size_t i = 0; i < hi_slot.size(); ++i)
-          rep[hi_slot[i].second] = (i > 0 && hi_slot[i - 1].first == hi_slot[i].first) ? rep[hi_slot[i - 1].second]
-                                                                                      : hi_slot[i].second;
+        for (size_t i = 0; i < hi_slot.size(); ++i) {
+          const auto k = static_cast<int32_t>(hi_slot[i] & 0xffffffffu);
+          const bool same = i > 0 && (hi_slot[i - 1] >> 32) == (hi_slot[i] >> 32);
+          rep[k] = same ? rep[static_cast<int32_t>(hi_slot[i - 1] & 0xffffffffu)] : k;
+        }
       }
     });
   }
   // Numbering in slot order: a representative precedes the other slots of its edge, so by the
   // time they are reached it already holds the edge id.
+  m.edge_verts.reserve(ns);
   for (size_t k = 0; k < ns; ++k) {
     if (rep[k] == static_cast<int32_t>(k)) {
       const int32_t a = m.face_verts.items[k], b = next_vertex(m, slot_face, k);
@@ -204,10 +212,13 @@ std::vector<int32_t> cell_incidences(Mesh& m, const MeshInput& in, const LoadOpt
   const int nr = detail::range_count(nc, par);
   std::vector<Csr<int32_t>> verts(static_cast<size_t>(nr)), edges(static_cast<size_t>(nr));
   detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int r) {
-    std::vector<std::pair<int32_t, int32_t>> edge_slot;  // (edge, 2*slot + side) of the cell
+    std::vector<uint64_t> edge_slot;  // edge << 32 | (2*slot + side), per slot of the cell: sorts as one integer
     std::vector<int32_t> cv, cedges;
     Csr<int32_t>& vrows = verts[static_cast<size_t>(r)];
     Csr<int32_t>& erows = edges[static_cast<size_t>(r)];
+    const size_t slots = static_cast<size_t>(m.cell_faces.offsets[ce] - m.cell_faces.offsets[cb]);
+    vrows.reserve(ce - cb, 2 * slots);  // a hex: 6 faces, 8 vertices, 12 edges
+    erows.reserve(ce - cb, 2 * slots);
     for (size_t c = cb; c < ce; ++c) {
       edge_slot.clear();
       cv.clear();
@@ -215,23 +226,25 @@ std::vector<int32_t> cell_incidences(Mesh& m, const MeshInput& in, const LoadOpt
       for (int32_t f : m.cell_faces[c]) {
         const int32_t side = m.face_cells[f][0] == static_cast<int32_t>(c) ? 0 : 1;
         for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k)
-          edge_slot.push_back({m.face_edges.items[k], 2 * k + side});
+          edge_slot.push_back(static_cast<uint64_t>(m.face_edges.items[k]) << 32 | static_cast<uint32_t>(2 * k + side));
         cv.insert(cv.end(), m.face_verts[f].begin(), m.face_verts[f].end());
       }
       std::sort(edge_slot.begin(), edge_slot.end());
+      auto edge = [&](size_t i) { return static_cast<int32_t>(edge_slot[i] >> 32); };
+      auto slot = [&](size_t i) { return static_cast<int32_t>(edge_slot[i] & 0xffffffffu); };
       for (size_t i = 0; i < edge_slot.size();) {
         size_t j = i + 1;
-        while (j < edge_slot.size() && edge_slot[j].first == edge_slot[i].first) ++j;
+        while (j < edge_slot.size() && edge(j) == edge(i)) ++j;
         if (j - i != 2) {
-          auto ev = m.edge_verts[edge_slot[i].first];
+          auto ev = m.edge_verts[edge(i)];
           throw InputError(in.source, in.loc_of(in.cell_loc, c),
                            "a closed cell (each edge in exactly 2 of its faces), cell " + std::to_string(c) +
                                " has edge (" + std::to_string(ev[0]) + " " + std::to_string(ev[1]) + ") in " +
                                std::to_string(j - i));
         }
-        partner[edge_slot[i].second] = edge_slot[i + 1].second;
-        partner[edge_slot[i + 1].second] = edge_slot[i].second;
-        cedges.push_back(edge_slot[i].first);
+        partner[slot(i)] = slot(i + 1);
+        partner[slot(i + 1)] = slot(i);
+        cedges.push_back(edge(i));
         i = j;
       }
       erows.push_row(cedges.begin(), cedges.end());
