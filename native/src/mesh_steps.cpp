@@ -117,9 +117,11 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   std::fill(face_id.begin(), face_id.end(), -1);
   m.cell_faces.offsets = std::move(in.cells.offsets);
   m.cell_faces.items.resize(nslots);
-  // Room for every input face: untouched capacity costs address space only, while growing
-  // would copy the loops again and again.
-  m.face_verts.reserve(nf_in, in.faces.items.size());
+  // Exactly the room the merged loops need: growing would copy them again and again.
+  size_t kept = 0, corners = 0;
+  for (size_t f = 0; f < nf_in; ++f)
+    if (rep[f] == static_cast<int32_t>(f)) ++kept, corners += static_cast<size_t>(in.faces.count(f));
+  m.face_verts.reserve(kept, corners);
   for (size_t s = 0; s < nslots; ++s) {
     const int32_t r = rep[in.cells.items[s] >> 1];
     if (face_id[r] < 0) {
@@ -193,7 +195,7 @@ void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, const LoadOptio
   }
   // Numbering in slot order: a representative precedes the other slots of its edge, so by the
   // time they are reached it already holds the edge id.
-  m.edge_verts.reserve(ns);
+  m.edge_verts.reserve(ns / 2);  // each edge of a closed cell is in two of its face slots
   for (size_t k = 0; k < ns; ++k) {
     if (rep[k] == static_cast<int32_t>(k)) {
       const int32_t a = m.face_verts.items[k], b = next_vertex(m, slot_face, k);
