@@ -1,8 +1,17 @@
 #!/usr/bin/env bash
-# Builds and runs the load benchmark (read + topology build) and prints a Markdown table.
-# Each case runs in its own process with its grid file written beforehand by `hbc generate`, so
-# peak RSS (getrusage ru_maxrss) is the load's own. Usage: scripts/bench.sh [build-dir]
-# Environment: HBC_BENCH_DIR keeps the generated grids (default: a fresh temporary folder).
+# Load and analysis benchmark, printed as a Markdown table. Per case (a real mesh, rockerarm
+# refined to 678,400 hexes, the 10^6-hex grid) and per variant (1 and 2 threads, and the baseline
+# when given), in one run:
+#   - hbc_bench_load (BM_LoadFile, one process per case and variant): the time to read the file
+#     into memory (read_file_bytes, the hardware's pace), read+parse (read_input) and topology
+#     (build_mesh) times, parse MB/s, load cells/s and the load / read ratio;
+#   - `hbc analyze --json` under /usr/bin/time: the stage times and the peak RSS of load + analysis
+#     (and bytes per cell).
+# Usage: scripts/bench.sh [build-dir]
+# Environment: HBC_BENCH_DIR keeps the generated meshes (default: a fresh temporary folder);
+# HBC_BENCH_BASELINE=DIR compares with the build folder DIR of an earlier commit whose source tree
+# is DIR/.. (its bench_load is compiled here from this tree's source against its library);
+# HBC_BENCH_LARGE=1 adds the 216^3 grid (10,077,696 hexes, about 3 minutes per variant).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
@@ -14,37 +23,59 @@ if [[ -z "${HBC_BENCH_DIR:-}" ]]; then
   trap 'rm -rf "$HBC_BENCH_DIR"' EXIT
 fi
 export HBC_BENCH_DIR
-gen() {  # cells n m k
-  local f="$HBC_BENCH_DIR/hbc_bench_grid_$1.mesh"
-  [[ -f "$f" ]] || "$BUILD/bin/hbc" generate grid --size "$2" "$3" "$4" -o "$f" >/dev/null
-}
-gen 10000 25 20 20
-gen 100000 50 50 40
-gen 1000000 100 100 100
+D=$HBC_BENCH_DIR
+[[ -f "$D/grid_1000000.mesh" ]] || "$BUILD/bin/hbc" generate grid --size 100 100 100 -o "$D/grid_1000000.mesh" >/dev/null
+[[ -f "$D/rockerarm_x64.mesh" ]] ||
+  /usr/bin/python3 scripts/refine_medit_hexes.py ../shared/data/cinolib/rockerarm.mesh "$D/rockerarm_x64.mesh" 4 >/dev/null
+cases=(../shared/data/hexalab-edge-cone-rectification/armadillo_out.mesh "$D/rockerarm_x64.mesh" "$D/grid_1000000.mesh")
+if [[ "${HBC_BENCH_LARGE:-0}" == 1 ]]; then
+  [[ -f "$D/grid_10077696.mesh" ]] || "$BUILD/bin/hbc" generate grid --size 216 216 216 -o "$D/grid_10077696.mesh" >/dev/null
+  cases+=("$D/grid_10077696.mesh")
+fi
 
-results=()
-for name in BM_LoadArmadillo BM_LoadGrid/10000 BM_LoadGrid/100000 BM_LoadGrid/1000000; do
-  out="$HBC_BENCH_DIR/$(echo "$name" | tr '/' '_').json"
-  "$BUILD/bin/hbc_bench_load" --benchmark_filter="^${name}\$" --benchmark_format=json \
-    --benchmark_out="$out" --benchmark_out_format=json >/dev/null
-  results+=("$out")
+variants=("new:1:$BUILD/bin/hbc_bench_load:$BUILD/bin/hbc" "new:2:$BUILD/bin/hbc_bench_load:$BUILD/bin/hbc")
+if [[ -n "${HBC_BENCH_BASELINE:-}" ]]; then
+  B=$HBC_BENCH_BASELINE
+  g++ -std=c++20 -O2 -DNDEBUG -DHBC_DATA_DIR="\"$PWD/../shared/data\"" -I"$B/../native/include" \
+    native/bench/bench_load.cpp "$B/native/libhbc.a" -lOpenMeshCore -lbenchmark -pthread -o "$D/bench_load_baseline"
+  variants=("baseline:1:$D/bench_load_baseline:$B/bin/hbc" "${variants[@]}")
+fi
+
+rows=()
+for f in "${cases[@]}"; do
+  for v in "${variants[@]}"; do
+    IFS=: read -r name threads bench cli <<<"$v"
+    tag="$D/$(basename "$f").$name.$threads"
+    HBC_THREADS=$threads HBC_BENCH_FILE=$f "$bench" --benchmark_filter='^BM_LoadFile$' --benchmark_min_time=0.2 \
+      --benchmark_format=json >"$tag.load.json"
+    HBC_THREADS=$threads /usr/bin/time -f '%M %U %S' -o "$tag.rss" "$cli" analyze "$f" --json >"$tag.analyze.json"
+    rows+=("$f|$name|$threads|$tag")
+  done
 done
 
-/usr/bin/python3 - "${results[@]}" <<'PY'
-import json, sys
-print("| benchmark | cells | load+build wall (s) | CPU (s) | parse wall (s) | build wall (s) | cells/s (CPU) | peak RSS (MB) | file (MB) |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
-for path in sys.argv[1:]:
-    data = json.load(open(path))
-    for b in data["benchmarks"]:
-        if b.get("error_occurred"):
-            print(f"| {b['name']} | error: {b.get('error_message', '?')} ||||||||")
-            continue
-        scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b["time_unit"]]
-        print(f"| {b['name']} | {int(b['cells'])} | {b['real_time'] * scale:.3f} | {b['cpu_time'] * scale:.3f} | {b['parse_s']:.3f} | "
-              f"{b['build_s']:.3f} | {b['cells_per_second']:.3g} | {b['peak_rss_MB']:.0f} | {b['file_MB']:.1f} |")
+/usr/bin/python3 - "${rows[@]}" <<'PY'
+import json, os, sys
+print("| mesh | cells | code | threads | read (ms) | read+parse wall / CPU (s) | parse MB/s | topology wall / CPU (s) | load cells/s | "
+      "load / read | base complex (s) | sheets (s) | VSG wireframe (s) | analyze wall / CPU (s) | peak RSS (MB) | bytes/cell |")
+print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+for row in sys.argv[1:]:
+    path, name, threads, tag = row.split("|")
+    b = json.load(open(tag + ".load.json"))["benchmarks"][0]
+    a = json.load(open(tag + ".analyze.json"))
+    t = a["timings"]
+    rss_kb, user, sys_s = open(tag + ".rss").read().split()[-3:]
+    rss_kb = int(rss_kb)
+    mb = b["file_MB"] * 1024 * 1024 / 1e6
+    read = b["read_s"]  # the baseline's binary is this tree's bench source, so it has it too
+    load = b["parse_s"] + b["build_s"]
+    cells = int(b["cells"])
+    total = sum(v for v in t.values())
+    print(f"| {os.path.basename(path)} | {cells} | {name} | {threads} | {read * 1e3:.1f} | {b['parse_s']:.3f} / {b['parse_cpu_s']:.3f} | "
+          f"{mb / b['parse_s']:.0f} | {b['build_s']:.3f} / {b['build_cpu_s']:.3f} | {cells / load:.3g} | {load / read:.0f} | "
+          f"{t['base_complex']:.3f} | {t['sheets'] + t['subsheets']:.3f} | {t['vsg_wireframe']:.3f} | {total:.2f} / {float(user) + float(sys_s):.2f} | "
+          f"{rss_kb / 1024:.0f} | {rss_kb * 1024 / cells:.0f} |")
 print()
-print(f"host: {data['context'].get('host_name', '?')}, {data['context'].get('num_cpus', '?')} CPUs, "
-      f"load average {open('/proc/loadavg').read().split()[0]}; single-threaded load; wall times grow when other "
-      f"processes share the cores, CPU time less so; peak RSS per process (one case per process).")
+print(f"{os.cpu_count()} CPUs, load average {' '.join(open('/proc/loadavg').read().split()[:3])} at the end. Wall times come from one "
+      "process per row, and other processes on the machine inflate them; CPU = user + system time of every thread. read+parse includes reading the file; analyze = `hbc analyze --json` (its own load and "
+      "every stage), peak RSS of that process.")
 PY

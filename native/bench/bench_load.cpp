@@ -1,13 +1,19 @@
 // Load + topology build (read_input + build_mesh) of real and generated MEDIT files.
-// Counters: cells, cells_per_second, parse_s / build_s (mean per iteration), peak_rss_MB
+// Counters: cells, cells_per_second, parse_s / build_s (mean wall time per iteration),
+// parse_cpu_s / build_cpu_s (CPU time of every thread, which a busy machine does not inflate), peak_rss_MB
 // (getrusage ru_maxrss of the whole process: run one benchmark per process, as scripts/bench.sh
 // does, and have the grid files written beforehand, or the peak includes writing them:
 // grid_written_here = 1 says so).
+// BM_LoadFile loads $HBC_BENCH_FILE and also reports read_s, the time to read the same file into
+// memory (read_file_bytes, measured in the same process just before), as the hardware's pace.
+// Threads: HBC_THREADS (the library's default options read it). The file uses only the API of
+// the first release, so scripts/bench.sh compiles it against a baseline build as well.
 // Grid files go to $HBC_BENCH_DIR (default: the system temporary folder) as
 // hbc_bench_grid_<cells>.mesh and are reused when present.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -19,6 +25,14 @@
 namespace {
 
 namespace fs = std::filesystem;
+
+// CPU seconds (user + system, every thread) of the process so far.
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  auto sec = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return sec(u.ru_utime) + sec(u.ru_stime);
+}
 
 double peak_rss_mb() {
   rusage u{};
@@ -36,14 +50,18 @@ void load_file(benchmark::State& state, const std::string& path, bool written_he
     state.SkipWithError(("missing " + path).c_str());
     return;
   }
-  double parse_s = 0, build_s = 0;
+  double parse_s = 0, build_s = 0, parse_cpu = 0, build_cpu = 0;
   size_t cells = 0;
   for (auto _ : state) {
+    const double c0 = cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     hbc::MeshInput in = hbc::read_input(path);
     const auto t1 = std::chrono::steady_clock::now();
+    const double c1 = cpu_seconds();
     hbc::Mesh m = hbc::build_mesh(std::move(in));
     const auto t2 = std::chrono::steady_clock::now();
+    build_cpu += cpu_seconds() - c1;
+    parse_cpu += c1 - c0;
     parse_s += std::chrono::duration<double>(t1 - t0).count();
     build_s += std::chrono::duration<double>(t2 - t1).count();
     cells = m.num_cells();
@@ -55,9 +73,29 @@ void load_file(benchmark::State& state, const std::string& path, bool written_he
       benchmark::Counter(static_cast<double>(cells), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["parse_s"] = parse_s / n;
   state.counters["build_s"] = build_s / n;
+  state.counters["parse_cpu_s"] = parse_cpu / n;
+  state.counters["build_cpu_s"] = build_cpu / n;
   state.counters["file_MB"] = static_cast<double>(fs::file_size(path)) / (1024.0 * 1024.0);
   state.counters["peak_rss_MB"] = peak_rss_mb();
   state.counters["grid_written_here"] = written_here ? 1 : 0;
+}
+
+void BM_LoadFile(benchmark::State& state) {
+  const char* path = std::getenv("HBC_BENCH_FILE");
+  if (!path || !fs::exists(path)) {
+    state.SkipWithError("set HBC_BENCH_FILE to a mesh file");
+    return;
+  }
+  // Best of three plain reads: the page cache is warm after the first.
+  double read_s = 1e300;
+  for (int i = 0; i < 3; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string bytes = hbc::read_file_bytes(path);
+    benchmark::DoNotOptimize(bytes.data());
+    read_s = std::min(read_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  load_file(state, path, false);
+  state.counters["read_s"] = read_s;
 }
 
 void BM_LoadArmadillo(benchmark::State& state) {
@@ -83,6 +121,7 @@ void BM_LoadGrid(benchmark::State& state) {
   load_file(state, path.string(), written_here);
 }
 
+BENCHMARK(BM_LoadFile)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LoadArmadillo)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LoadGrid)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 

@@ -1,17 +1,51 @@
 #include "hbc/csr.hpp"
 
 namespace hbc {
+namespace {
+
+// Row offsets of a counting sort: how many items fall into each of n rows, then prefix sums.
+template <class KeyOf>
+std::vector<int32_t> counted_offsets(size_t nitems, size_t nrows, KeyOf&& key_of) {
+  std::vector<int32_t> offsets(nrows + 1, 0);
+  for (size_t i = 0; i < nitems; ++i) ++offsets[static_cast<size_t>(key_of(i)) + 1];
+  for (size_t r = 0; r < nrows; ++r) offsets[r + 1] += offsets[r];
+  return offsets;
+}
+
+}  // namespace
 
 Csr<int32_t> transpose(const Csr<int32_t>& a, size_t ncols) {
   Csr<int32_t> t;
-  t.offsets.assign(ncols + 1, 0);
-  for (int32_t c : a.items) ++t.offsets[static_cast<size_t>(c) + 1];
-  for (size_t i = 0; i < ncols; ++i) t.offsets[i + 1] += t.offsets[i];
+  t.offsets = counted_offsets(a.items.size(), ncols, [&](size_t i) { return a.items[i]; });
   t.items.resize(a.items.size());
   std::vector<int32_t> fill(t.offsets.begin(), t.offsets.end() - 1);
   for (size_t r = 0; r < a.rows(); ++r)
     for (int32_t c : a[r]) t.items[fill[c]++] = static_cast<int32_t>(r);
   return t;
+}
+
+Csr<int32_t> group_by(std::span<const int32_t> keys, size_t nkeys) {
+  Csr<int32_t> g;
+  g.offsets = counted_offsets(keys.size(), nkeys, [&](size_t i) { return keys[i]; });
+  g.items.resize(keys.size());
+  std::vector<int32_t> fill(g.offsets.begin(), g.offsets.end() - 1);
+  for (size_t i = 0; i < keys.size(); ++i) g.items[fill[keys[i]]++] = static_cast<int32_t>(i);
+  return g;
+}
+
+Csr<int32_t> concat(std::vector<Csr<int32_t>>&& parts) {
+  if (parts.size() == 1) return std::move(parts[0]);
+  Csr<int32_t> all;
+  size_t rows = 0, items = 0;
+  for (const auto& p : parts) rows += p.rows(), items += p.items.size();
+  all.reserve(rows, items);
+  for (auto& p : parts) {
+    const int32_t base = static_cast<int32_t>(all.items.size());
+    for (size_t r = 1; r < p.offsets.size(); ++r) all.offsets.push_back(base + p.offsets[r]);
+    all.items.insert(all.items.end(), p.items.begin(), p.items.end());
+    p = Csr<int32_t>{};
+  }
+  return all;
 }
 
 }  // namespace hbc

@@ -1,6 +1,7 @@
 #include "hbc/io.hpp"
 
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -53,21 +54,33 @@ const char* format_name(Format f) {
 }
 
 std::string read_file_bytes(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
+  // One read into a buffer of the file's size: no stream buffering, no copy of the text.
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) throw InputError(path, {}, "a readable file (cannot open it)");
-  std::ostringstream ss;
-  ss << f.rdbuf();
+  const std::streamoff size = f.tellg();
+  std::string bytes;
+  if (size > 0) {
+    bytes.resize(static_cast<size_t>(size));
+    f.seekg(0);
+    f.read(bytes.data(), size);
+    if (f.gcount() != size) throw InputError(path, {}, "a readable file (read failed)");
+  } else {
+    // Sizes unknown up front (pipes, /proc): read what there is.
+    f.clear();
+    f.seekg(0);
+    bytes.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  }
   if (f.bad()) throw InputError(path, {}, "a readable file (read failed)");
-  return std::move(ss).str();
+  return bytes;
 }
 
-MeshInput read_input(const std::string& path, Format format) {
+MeshInput read_input(const std::string& path, Format format, const LoadOptions& options) {
   if (format == Format::Auto) format = format_from_path(path);
   const std::string bytes = read_file_bytes(path);
   switch (format) {
     case Format::Ovm: return read_ovm(bytes, path);
     case Format::Ovmb: return read_ovmb(bytes, path);
-    case Format::Medit: return read_medit(bytes, path);
+    case Format::Medit: return read_medit(bytes, path, options);
     case Format::Hybrid: return read_hybrid(bytes, path);
     case Format::Hedra: return read_hedra(bytes, path);
     case Format::Msh: return read_msh(bytes, path);
@@ -78,7 +91,9 @@ MeshInput read_input(const std::string& path, Format format) {
   throw InputError(path, {}, "a known format");
 }
 
-Mesh load_mesh(const std::string& path, Format format) { return build_mesh(read_input(path, format)); }
+Mesh load_mesh(const std::string& path, Format format, const LoadOptions& options) {
+  return build_mesh(read_input(path, format, options), options);
+}
 
 void write_mesh(const Mesh& mesh, const std::string& path, Format format) {
   if (format == Format::Auto) format = format_from_path(path);

@@ -8,6 +8,7 @@
 
 #include "hbc/io.hpp"
 #include "cell_templates.hpp"
+#include "line_table.hpp"
 #include "text_scanner.hpp"
 
 namespace hbc {
@@ -15,9 +16,10 @@ namespace {
 
 using detail::Element;
 
-const Element kTet = Element::Tet, kPyramid = Element::Pyramid, kPrism = Element::Prism, kHex = Element::Hex;
-
+// The element kind of a section keyword, or nullptr.
 const Element* element_of(const std::string& kw) {
+  static constexpr Element kTet = Element::Tet, kPyramid = Element::Pyramid, kPrism = Element::Prism,
+                           kHex = Element::Hex;
   if (kw == "tetrahedra") return &kTet;
   if (kw == "pyramids") return &kPyramid;
   if (kw == "prisms") return &kPrism;
@@ -29,25 +31,85 @@ bool looks_like_keyword(std::string_view t) {
   return !t.empty() && std::isalpha(static_cast<unsigned char>(t[0]));
 }
 
+// Elements as read, validated once the vertex count is known (sections come in any order).
+struct RawElements {
+  std::vector<Element> el;
+  std::vector<int64_t> line;
+  std::vector<int32_t> ids;                // 1-based as in the file; 0 stands for anything outside int32
+  int64_t wide_line = -1, wide_value = 0;  // the first id too large for int32, for the message
+};
+
+void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, const LoadOptions& par) {
+  in.points.reserve(static_cast<size_t>(3 * nv));
+  in.vertex_loc.reserve(static_cast<size_t>(nv));
+  if (detail::fast_vertex_lines(s, nv, in.points, in.vertex_loc, par)) return;
+  for (int64_t i = 0; i < nv; ++i) {
+    const int64_t l = s.next_line();
+    for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
+    s.integer("a vertex reference number");
+    in.vertex_loc.push_back(l);
+  }
+}
+
+void read_elements(detail::TextScanner& s, Element el, int64_t n, RawElements& raw, const LoadOptions& par) {
+  const int nverts = detail::corner_count(el);
+  raw.el.resize(raw.el.size() + static_cast<size_t>(n), el);
+  raw.line.reserve(raw.line.size() + static_cast<size_t>(n));
+  raw.ids.reserve(raw.ids.size() + static_cast<size_t>(n * nverts));
+  if (detail::fast_element_lines(s, n, nverts, raw.ids, raw.line, par)) return;
+  for (int64_t i = 0; i < n; ++i) {
+    raw.line.push_back(s.next_line());
+    for (int k = 0; k < nverts; ++k) {
+      const int64_t id = s.integer("a vertex index");
+      const bool fits = id >= 1 && id <= INT32_MAX;
+      if (!fits && raw.wide_line < 0) {
+        raw.wide_line = raw.line.back();
+        raw.wide_value = id;
+      }
+      raw.ids.push_back(fits ? static_cast<int32_t>(id) : 0);
+    }
+    s.integer("an element reference number");
+  }
+}
+
+// Cells from the elements read, once the vertex count nv is known, through the templates shared
+// with the other element-list readers (degenerate hexahedra included).
+void cells_from_elements(const RawElements& raw, int64_t nv, const detail::TextScanner& s, MeshInput& in) {
+  in.faces.reserve(raw.el.size() * 6, raw.ids.size() * 3);
+  in.cells.reserve(raw.el.size(), raw.el.size() * 6);
+  in.cell_loc.reserve(raw.el.size());
+  detail::CellAppender cells(in);
+  size_t next_id = 0;
+  for (size_t e = 0; e < raw.el.size(); ++e) {
+    const int64_t line = raw.line[e];
+    std::array<int32_t, 8> v{};
+    for (int k = 0; k < detail::corner_count(raw.el[e]); ++k) {
+      const int64_t id = raw.ids[next_id++];
+      if (id < 1 || id > nv) {
+        const int64_t shown = (id == 0 && line == raw.wide_line) ? raw.wide_value : id;
+        s.fail_at(line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(shown));
+      }
+      v[k] = static_cast<int32_t>(id - 1);
+    }
+    cells.element(raw.el[e], v.data(), line);
+  }
+}
+
 }  // namespace
 
-MeshInput read_medit(std::string_view text, const std::string& source) {
+MeshInput read_medit(std::string_view text, const std::string& source, const LoadOptions& options) {
+  const LoadOptions par = resolved(options);
   detail::TextScanner s(text, source, true);
   MeshInput in;
   in.source = source;
   int64_t nv = -1;
-  // Elements as read, validated once the vertex count is known (sections come in any order).
-  std::vector<const Element*> raw_el;
-  std::vector<int64_t> raw_line;
-  std::vector<int32_t> raw_ids;  // 1-based as in the file; 0 stands for anything outside int32
-  int64_t wide_line = -1, wide_value = 0;  // the first id too large for int32, for the message
-  bool seen_version = false, seen_end = false;
+  RawElements raw;
+  bool seen_version = false;
   std::string_view tok;
   bool have_tok = s.next(tok);
   while (have_tok) {
     if (!looks_like_keyword(tok)) s.fail("a MEDIT keyword, found '" + std::string(tok.substr(0, 40)) + "'");
     const std::string kw = detail::lower(tok);
-    const int64_t kw_line = s.line();
     if (kw == "meshversionformatted") {
       s.integer_in(1, 4, "the MEDIT version");
       seen_version = true;
@@ -56,35 +118,11 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
     } else if (kw == "vertices") {
       if (nv >= 0) s.fail("one Vertices section, found a second");
       nv = s.count(8, "the number of vertices");
-      in.points.reserve(static_cast<size_t>(3 * nv));
-      in.vertex_loc.reserve(static_cast<size_t>(nv));
-      for (int64_t i = 0; i < nv; ++i) {
-        const int64_t l = s.next_line();
-        for (int k = 0; k < 3; ++k) in.points.push_back(s.real("a vertex coordinate"));
-        s.integer("a vertex reference number");
-        in.vertex_loc.push_back(l);
-      }
+      read_vertices(s, nv, in, par);
     } else if (const Element* el = element_of(kw)) {
       const int64_t n = s.count(2 * (detail::corner_count(*el) + 1), (std::string("the number of ") + kw).c_str());
-      raw_el.reserve(raw_el.size() + static_cast<size_t>(n));
-      raw_line.reserve(raw_line.size() + static_cast<size_t>(n));
-      raw_ids.reserve(raw_ids.size() + static_cast<size_t>(n * detail::corner_count(*el)));
-      for (int64_t i = 0; i < n; ++i) {
-        raw_el.push_back(el);
-        raw_line.push_back(s.next_line());
-        for (int k = 0; k < detail::corner_count(*el); ++k) {
-          const int64_t id = s.integer("a vertex index");
-          const bool fits = id >= 1 && id <= INT32_MAX;
-          if (!fits && wide_line < 0) {
-            wide_line = raw_line.back();
-            wide_value = id;
-          }
-          raw_ids.push_back(fits ? static_cast<int32_t>(id) : 0);
-        }
-        s.integer("an element reference number");
-      }
+      read_elements(s, *el, n, raw, par);
     } else if (kw == "end") {
-      seen_end = true;
       break;
     } else {
       // Surface elements and other data are read past: everything up to the next keyword.
@@ -92,35 +130,12 @@ MeshInput read_medit(std::string_view text, const std::string& source) {
       }
       continue;
     }
-    (void)kw_line;
     have_tok = s.next(tok);
   }
-  (void)seen_end;
   if (!seen_version && text.size() > 0 && nv < 0) s.fail("a MEDIT file (MeshVersionFormatted, Vertices, ...)");
   if (nv < 0) s.fail("a Vertices section");
-  if (raw_el.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
-
-  // Cells: every element through the shared templates (degenerate hexahedra included).
-  in.faces.offsets.reserve(raw_el.size() * 6 + 1);
-  in.faces.items.reserve(raw_ids.size() * 3);
-  in.cells.offsets.reserve(raw_el.size() + 1);
-  in.cells.items.reserve(raw_el.size() * 6);
-  in.cell_loc.reserve(raw_el.size());
-  detail::CellAppender cells(in);
-  size_t next_id = 0;
-  for (size_t e = 0; e < raw_el.size(); ++e) {
-    const int64_t line = raw_line[e];
-    std::array<int32_t, 8> v{};
-    for (int k = 0; k < detail::corner_count(*raw_el[e]); ++k) {
-      const int64_t id = raw_ids[next_id++];
-      if (id < 1 || id > nv) {
-        const int64_t shown = (id == 0 && line == wide_line) ? wide_value : id;
-        s.fail_at(line, "a vertex index in [1, " + std::to_string(nv) + "], found " + std::to_string(shown));
-      }
-      v[k] = static_cast<int32_t>(id - 1);
-    }
-    cells.element(*raw_el[e], v.data(), line);
-  }
+  if (raw.el.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
+  cells_from_elements(raw, nv, s, in);
   return in;
 }
 

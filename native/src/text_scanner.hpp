@@ -33,6 +33,14 @@ class TextScanner {
   int64_t count(int64_t min_bytes, const char* expected);
   size_t remaining_bytes() const { return text_.size() - pos_; }
   const std::string& source() const { return source_; }
+  std::string_view text() const { return text_; }
+  size_t pos() const { return pos_; }
+  // Moves to `pos`, `lines` lines further down (for a fast path that has read the text between).
+  void skip_to(size_t pos, int64_t lines) {
+    pos_ = pos;
+    line_ += lines;
+    tok_line_ = line_ - 1;
+  }
 
   [[noreturn]] void fail(const std::string& expected) const;
   [[noreturn]] void fail_at(int64_t line, const std::string& expected) const;

@@ -22,7 +22,7 @@ int cmd_analyze(const Args& args_in) {
     }
     else if (*level != "complex") throw std::invalid_argument("--level takes complex or mesh");
   }
-  const Format format = take_format(args);
+  const InputFormat format = take_format(args);
   if (args.size() != 1)
     throw std::invalid_argument("usage: hbc analyze FILE [--json] [--csv] [--level complex|mesh] [--rho R] [--no-sheets] [--no-wireframe] [--format F]");
   double t_load = 0;

@@ -15,7 +15,7 @@ int cmd_export_surface(const Args& args_in) {
   auto out = take_option(args, "-o");
   auto what = take_option(args, "--what");
   auto sheet = take_option(args, "--sheet");
-  const Format format = take_format(args);
+  const InputFormat format = take_format(args);
   if (!out || args.size() != 1)
     throw std::invalid_argument("usage: hbc export-surface FILE -o OUT.obj|.ply|.off [--what boundary|patches|components|sheets] [--sheet N] [--format F]");
   const std::string kind = what.value_or("boundary");

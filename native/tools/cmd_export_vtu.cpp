@@ -17,7 +17,7 @@ int cmd_export_vtu(const Args& args_in) {
   auto level = take_option(args, "--level");
   VtuExportOptions vo;
   vo.ascii = take_flag(args, "--ascii");
-  const Format format = take_format(args);
+  const InputFormat format = take_format(args);
   if (!out || args.size() != 1)
     throw std::invalid_argument("usage: hbc export-vtu FILE -o OUT.vtu [--sheet N] [--level complex|mesh] [--ascii] [--format F]");
   AnalysisOptions opt;

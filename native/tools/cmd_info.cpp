@@ -9,7 +9,7 @@ namespace hbc::cli {
 int cmd_info(const Args& args_in) {
   Args args = args_in;
   const bool json = take_flag(args, "--json");
-  const Format format = take_format(args);
+  const InputFormat format = take_format(args);
   if (args.size() != 1) throw std::invalid_argument("usage: hbc info FILE [--json] [--format F]");
   const Mesh m = load_for_cli(args[0], format);
 

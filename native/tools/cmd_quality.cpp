@@ -55,7 +55,7 @@ void print_measure(const char* title, const std::vector<double>& edges, const Me
 int cmd_quality(const Args& args_in) {
   Args args = args_in;
   const bool json = take_flag(args, "--json");
-  const Format format = take_format(args);
+  const InputFormat format = take_format(args);
   if (args.size() != 1) throw std::invalid_argument("usage: hbc quality FILE [--json] [--format F]");
   const Mesh m = load_for_cli(args[0], format);
   const QualitySummary s = summarize_quality(m, cell_quality(m));

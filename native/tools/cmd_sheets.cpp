@@ -32,7 +32,7 @@ int cmd_sheets(const Args& args_in) {
     if (*level == "mesh") opt.sheet_level = SheetLevel::Mesh;
     else if (*level != "complex") throw std::invalid_argument("--level takes complex or mesh");
   }
-  const Format format = take_format(args);
+  const InputFormat format = take_format(args);
   if (args.size() != 1) throw std::invalid_argument("usage: hbc sheets FILE [--json] [--level complex|mesh] [--format F]");
   const Mesh m = load_for_cli(args[0], format);
   const Analysis a = analyze(m, opt);

@@ -136,7 +136,7 @@ int cmd_wireframe(const Args& args_in) {
   const bool obj = take_flag(args, "--obj");
   const bool json = take_flag(args, "--json");
   const bool all = take_flag(args, "--all");
-  const Format format = take_format(args);
+  const InputFormat format = take_format(args);
   const auto level_name = take_option(args, "--level");
   const auto rho = take_option(args, "--rho");
   const auto sheet_arg = take_option(args, "--sheet");

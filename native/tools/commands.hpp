@@ -24,8 +24,15 @@ int cmd_quality(const Args& args);
 // Small shared helpers for argument handling.
 bool take_flag(Args& args, const std::string& flag);                       // removes it if present
 std::optional<std::string> take_option(Args& args, const std::string& opt);  // "--opt value"
-Format take_format(Args& args);                                            // --format NAME or Auto
+// How to read the input: --format NAME (or Auto) and --threads N (default: HBC_THREADS, else
+// every core).
+struct InputFormat {
+  Format format = Format::Auto;
+  LoadOptions load;
+  operator Format() const { return format; }
+};
+InputFormat take_format(Args& args);
 // Loads a mesh and prints its warnings on stderr.
-Mesh load_for_cli(const std::string& path, Format format, double* seconds = nullptr);
+Mesh load_for_cli(const std::string& path, const InputFormat& format, double* seconds = nullptr);
 
 }  // namespace hbc::cli

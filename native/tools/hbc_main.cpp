@@ -23,7 +23,8 @@ const char* kUsage =
     "                                             cells with block/sheet ids for ParaView (+ OUT_graph.vtu)\n"
     "  wireframe FILE [--level complex|mesh] [--rho R] [--sheet N] [--json|--obj] [-o OUT]\n"
     "                                             VSG wireframe (SPEC §4)\n"
-    "formats: ovm, ovmb, mesh, hybrid, hedra, msh, vtk, vtu (chosen by extension unless --format is given)\n";
+    "formats: ovm, ovmb, mesh, hybrid, hedra, msh, vtk, vtu (chosen by extension unless --format is given)\n"
+    "--threads N: threads for reading a mesh (default: HBC_THREADS, else every core)\n";
 
 }  // namespace
 

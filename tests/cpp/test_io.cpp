@@ -455,5 +455,24 @@ TEST(IoCli, FormatOverride) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(IoCli, ThreadsOption) {
+  // --threads changes how the load is split, never what it finds; a count below 1 is a usage
+  // error naming the option.
+  HBC_REQUIRE_DATA("cinolib/rockerarm.mesh");
+  const auto dir = std::filesystem::temp_directory_path() / ("hbc_cli_threads_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string file = "'" + data_path("cinolib/rockerarm.mesh") + "'";
+  const CliRun one = run_cli("info " + file + " --json --threads 1", dir);
+  const CliRun two = run_cli("info " + file + " --threads 2 --json", dir);
+  EXPECT_EQ(one.status, 0) << one.err;
+  EXPECT_EQ(two.status, 0) << two.err;
+  EXPECT_EQ(one.out, two.out);
+  EXPECT_NE(one.out.find("\"cells\": 10600"), std::string::npos) << one.out;
+  const CliRun zero = run_cli("info " + file + " --threads 0", dir);
+  EXPECT_EQ(zero.status, 1);
+  EXPECT_NE(zero.err.find("--threads"), std::string::npos) << zero.err;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace hbc

@@ -169,3 +169,15 @@ def test_load_rejects_unknown_format_and_non_paths(shared_data_dir):
         hbc.load(path, format="stl")
     with pytest.raises(TypeError):
         hbc.load(42)
+
+
+def test_threads_keyword_changes_nothing(shared_data_dir):
+    # The load splits its work over threads; every array must come out the same.
+    path = shared_data_dir / "hexalab-edge-cone-rectification" / "armadillo_out.mesh"
+    one, two = hbc.load(path, threads=1), hbc.load(path, threads=2)
+    names = [n for n in dir(one) if not n.startswith("_") and isinstance(getattr(one, n), np.ndarray)]
+    assert len(names) >= 5, names
+    for n in names:
+        np.testing.assert_array_equal(getattr(one, n), getattr(two, n), err_msg=n)
+    with pytest.raises(ValueError):
+        hbc.load(path, threads=0)

@@ -1,5 +1,6 @@
 #pragma once
 // Compressed sparse rows: the one container for every variable-length incidence in the library.
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -40,5 +41,19 @@ struct Csr {
 // Transposes an incidence: rows of `a` hold column ids in [0, ncols); the result has ncols rows,
 // each listing the rows of `a` that name it, in increasing order (stable, hence deterministic).
 Csr<int32_t> transpose(const Csr<int32_t>& a, size_t ncols);
+
+// Counting sort of the positions of `keys` by key: row k lists every i with keys[i] == k, in
+// increasing i. keys[i] in [0, nkeys). Linear in keys.size() + nkeys.
+Csr<int32_t> group_by(std::span<const int32_t> keys, size_t nkeys);
+
+// The rows of `parts` one after the other (parts are consumed).
+Csr<int32_t> concat(std::vector<Csr<int32_t>>&& parts);
+
+// Sorts v and removes repeated values.
+template <class T>
+void sort_unique(std::vector<T>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
 
 }  // namespace hbc

@@ -75,11 +75,24 @@ struct Mesh {
   }
 };
 
+// How to load: threads = how many threads may split the work (results are identical for any
+// number); 0 means the environment variable HBC_THREADS when it holds a positive number, else
+// every core of the machine. grain = the fewest elements worth a thread of their own (tests lower
+// it to split small meshes into many ranges).
+struct LoadOptions {
+  int threads = 0;
+  int grain = 4096;
+};
+// The thread count `options` asks for, resolved as described above (always >= 1).
+int resolve_threads(const LoadOptions& options);
+// options with threads resolved and grain at least 1.
+LoadOptions resolved(const LoadOptions& options);
+
 // Builds the topology and checks conformity. Throws InputError (naming input.source and the line
 // of the offending element) for: an index out of range, a face with fewer than 3 distinct vertices
 // or a repeated vertex, a face shared by 3+ cells, a cell listing a face twice, a cell that is not
 // closed, a non-finite coordinate.
-Mesh build_mesh(MeshInput input);
+Mesh build_mesh(MeshInput input, const LoadOptions& options = {});
 
 // The mesh with vertices and cells renumbered (vertex v becomes vperm[v], cell c becomes
 // cperm[c]); used to check that results do not depend on numbering.

@@ -1,0 +1,126 @@
+#include "line_table.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "parallel.hpp"
+
+namespace hbc::detail {
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Where the section's lines start: position `begin` (just after the newline ending the count's
+// line) and every 1/nranges of the n lines; starts.back() is the end of the n-th line. False
+// when the text has fewer than n complete lines.
+bool split_lines(std::string_view text, size_t begin, int64_t n, int nranges, std::vector<size_t>& starts) {
+  starts.assign(1, begin);
+  size_t p = begin;
+  int r = 1;
+  for (int64_t i = 0; i < n; ++i) {
+    const void* nl = std::memchr(text.data() + p, '\n', text.size() - p);
+    if (!nl) return false;
+    p = static_cast<size_t>(static_cast<const char*>(nl) - text.data()) + 1;
+    if (r < nranges && i + 1 == n * r / nranges) {
+      starts.push_back(p);
+      ++r;
+    }
+  }
+  starts.push_back(p);
+  starts.resize(static_cast<size_t>(nranges) + 1, p);
+  starts.back() = p;
+  return true;
+}
+
+// Start of the line after the scanner's position when only blanks are left on the current one.
+bool after_blank_rest(const TextScanner& s, size_t& begin) {
+  std::string_view t = s.text();
+  size_t p = s.pos();
+  while (p < t.size() && is_blank(t[p])) ++p;
+  if (p >= t.size() || t[p] != '\n') return false;
+  begin = p + 1;
+  return true;
+}
+
+// Parses one number at p (blanks before it skipped), which must end at a blank or the newline.
+template <class T>
+bool number(const char*& p, const char* end, T& v) {
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  auto r = std::from_chars(p, end, v);
+  if (r.ec != std::errc() || r.ptr == p) return false;
+  p = r.ptr;
+  return p == end || is_blank(*p) || *p == '\n';
+}
+
+bool line_end(const char*& p, const char* end) {
+  while (p < end && is_blank(*p)) ++p;
+  if (p == end || *p != '\n') return false;
+  ++p;
+  return true;
+}
+
+// Runs parse_line(i, p, end) for each of the n lines, split over threads; on success moves the
+// scanner past the section.
+template <class ParseLine>
+bool parse_lines(TextScanner& s, int64_t n, const LoadOptions& par, ParseLine&& parse_line) {
+  size_t begin = 0;
+  if (n <= 0 || !after_blank_rest(s, begin)) return false;
+  const int nr = range_count(static_cast<size_t>(n), par);
+  std::vector<size_t> starts;
+  if (!split_lines(s.text(), begin, n, nr, starts)) return false;
+  std::vector<uint8_t> ok(static_cast<size_t>(nr), 1);
+  parallel_ranges(static_cast<size_t>(n), par, [&](size_t b, size_t e, int r) {
+    const char* p = s.text().data() + starts[static_cast<size_t>(r)];
+    const char* end = s.text().data() + starts[static_cast<size_t>(r) + 1];
+    for (size_t i = b; i < e; ++i)
+      if (!parse_line(i, p, end) || !line_end(p, end)) {
+        ok[static_cast<size_t>(r)] = 0;
+        return;
+      }
+  });
+  for (uint8_t k : ok)
+    if (!k) return false;
+  s.skip_to(starts.back(), n + 1);
+  return true;
+}
+
+}  // namespace
+
+bool fast_vertex_lines(TextScanner& s, int64_t n, std::vector<double>& points, std::vector<int64_t>& lines,
+                       const LoadOptions& par) {
+  const size_t p0 = points.size(), l0 = lines.size();
+  points.resize(p0 + 3 * static_cast<size_t>(n));
+  lines.resize(l0 + static_cast<size_t>(n));
+  const int64_t first_line = s.line() + 1;
+  const bool ok = parse_lines(s, n, par, [&](size_t i, const char*& p, const char* end) {
+    double* x = &points[p0 + 3 * i];
+    int64_t ref = 0;
+    for (int k = 0; k < 3; ++k)
+      if (!number(p, end, x[k]) || !std::isfinite(x[k])) return false;
+    lines[l0 + i] = first_line + static_cast<int64_t>(i);
+    return number(p, end, ref);
+  });
+  if (!ok) points.resize(p0), lines.resize(l0);
+  return ok;
+}
+
+bool fast_element_lines(TextScanner& s, int64_t n, int k, std::vector<int32_t>& ids, std::vector<int64_t>& lines,
+                        const LoadOptions& par) {
+  const size_t i0 = ids.size(), l0 = lines.size();
+  ids.resize(i0 + static_cast<size_t>(k) * static_cast<size_t>(n));
+  lines.resize(l0 + static_cast<size_t>(n));
+  const int64_t first_line = s.line() + 1;
+  const bool ok = parse_lines(s, n, par, [&](size_t i, const char*& p, const char* end) {
+    int32_t* out = &ids[i0 + static_cast<size_t>(k) * i];
+    int64_t ref = 0;
+    for (int j = 0; j < k; ++j)
+      if (!number(p, end, out[j]) || out[j] < 1) return false;
+    lines[l0 + i] = first_line + static_cast<int64_t>(i);
+    return number(p, end, ref);
+  });
+  if (!ok) ids.resize(i0), lines.resize(l0);
+  return ok;
+}
+
+}  // namespace hbc::detail

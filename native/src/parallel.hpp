@@ -1,0 +1,75 @@
+#pragma once
+// Splitting a loop over [0, n) into one contiguous range per thread. Every range writes only its
+// own outputs, so results do not depend on the number of threads; the caller combines per-range
+// results in range order.
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <thread>
+#include <vector>
+
+#include "hbc/mesh.hpp"
+
+namespace hbc::detail {
+
+// Number of ranges parallel_ranges will use for n items: one per thread, each of at least
+// par.grain items.
+inline int range_count(size_t n, const LoadOptions& par) {
+  const size_t by_size = n / static_cast<size_t>(std::max(1, par.grain));
+  const size_t t = par.threads < 1 ? 1 : static_cast<size_t>(par.threads);
+  return static_cast<int>(std::max<size_t>(1, std::min(t, by_size)));
+}
+
+// Calls f(begin, end, r) for ranges r = 0 .. range_count(n, par)-1 covering [0, n) in order,
+// range 0 on the calling thread. An exception thrown in a range is rethrown after all ranges end;
+// when several throw, the one of the lowest range wins (the first bad element in order, when each
+// range stops at its first).
+template <class F>
+void parallel_ranges(size_t n, const LoadOptions& par, F&& f) {
+  const int nr = range_count(n, par);
+  std::vector<std::exception_ptr> errors(static_cast<size_t>(nr));
+  auto run = [&](int r) {
+    const size_t b = n * static_cast<size_t>(r) / static_cast<size_t>(nr);
+    const size_t e = n * static_cast<size_t>(r + 1) / static_cast<size_t>(nr);
+    try {
+      f(b, e, r);
+    } catch (...) {
+      errors[static_cast<size_t>(r)] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(static_cast<size_t>(nr - 1));
+  for (int r = 1; r < nr; ++r) pool.emplace_back(run, r);
+  run(0);
+  for (auto& t : pool) t.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+// Runs independent jobs, one per thread when threads > 1.
+template <class... F>
+void parallel_invoke(const LoadOptions& par, F&&... jobs) {
+  if (par.threads <= 1) {
+    (jobs(), ...);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(sizeof...(F));
+  std::vector<std::thread> pool;
+  size_t i = 0;
+  auto start = [&](auto& job) {
+    const size_t k = i++;
+    pool.emplace_back([&job, &errors, k] {
+      try {
+        job();
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    });
+  };
+  (start(jobs), ...);
+  for (auto& t : pool) t.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace hbc::detail

@@ -1,0 +1,346 @@
+// The steps of build_mesh on hand-built cells, the fast MEDIT section parser against the token
+// scanner, and parallel loads against single-threaded ones (every array of the Mesh).
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "hbc/generate.hpp"
+#include "hbc/mesh_steps.hpp"
+#include "test_support.hpp"
+
+namespace hbc {
+namespace {
+
+using namespace mesh_steps;
+
+const LoadOptions kOne{1, 1};
+
+// A MeshInput from vertex positions and cells given as lists of face loops (each cell its own
+// copy of a shared face, as .HYBRID files do; flips all 0).
+MeshInput soup(std::vector<double> points, const std::vector<std::vector<std::vector<int32_t>>>& cells) {
+  MeshInput in;
+  in.source = "hand.mesh";
+  in.points = std::move(points);
+  for (const auto& cell : cells) {
+    for (const auto& loop : cell) {
+      in.cells.items.push_back(static_cast<int32_t>(2 * in.faces.rows()));
+      in.faces.push_row(loop.begin(), loop.end());
+    }
+    in.cells.offsets.push_back(static_cast<int32_t>(in.cells.items.size()));
+  }
+  return in;
+}
+
+// Unit cube on vertices base..base+7 (bottom 0-3 counter-clockwise from above, top 4-7 above
+// them), faces outward.
+std::vector<std::vector<int32_t>> cube(int32_t b) {
+  return {{b + 0, b + 3, b + 2, b + 1}, {b + 4, b + 5, b + 6, b + 7}, {b + 0, b + 1, b + 5, b + 4},
+          {b + 1, b + 2, b + 6, b + 5}, {b + 2, b + 3, b + 7, b + 6}, {b + 3, b + 0, b + 4, b + 7}};
+}
+void add_square(std::vector<double>& p, double x, double y, double z) {
+  for (auto [dx, dy] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) p.insert(p.end(), {x + dx, y + dy, z});
+}
+
+// The steps up to and including cell_incidences, as build_mesh runs them.
+struct Built {
+  MeshInput in;
+  Mesh m;
+  std::vector<int32_t> slot_face, partner;
+};
+Built through_incidences(MeshInput in) {
+  Built b{std::move(in), {}, {}, {}};
+  validate_input(b.in);
+  b.m.points = b.in.points;
+  merge_faces(b.in, b.m, kOne);
+  b.slot_face = slot_faces(b.m, kOne);
+  build_edges(b.m, b.slot_face, kOne);
+  b.partner = cell_incidences(b.m, b.in, kOne);
+  return b;
+}
+
+double signed_volume(const Mesh& m, size_t c) {
+  double vol = 0;
+  for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i) {
+    auto loop = m.face_verts[m.cell_faces.items[i]];
+    std::vector<int32_t> l(loop.begin(), loop.end());
+    if (m.cell_face_flip[i]) std::reverse(l.begin(), l.end());
+    const double* p0 = &m.points[3 * l[0]];
+    for (size_t t = 1; t + 1 < l.size(); ++t) {
+      const double *p1 = &m.points[3 * l[t]], *p2 = &m.points[3 * l[t + 1]];
+      vol += p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) - p0[1] * (p1[0] * p2[2] - p1[2] * p2[0]) +
+             p0[2] * (p1[0] * p2[1] - p1[1] * p2[0]);
+    }
+  }
+  return vol / 6;
+}
+
+// Two unit cubes stacked along z: vertices 0-3 at z=0, 4-7 at z=1, 8-11 at z=top.
+MeshInput stacked_cubes(double top) {
+  std::vector<double> p;
+  add_square(p, 0, 0, 0);
+  add_square(p, 0, 0, 1);
+  add_square(p, 0, 0, top);
+  auto upper = cube(4);
+  // The upper cube's bottom face is the lower cube's top face, listed as the upper cube sees it.
+  return soup(p, {cube(0), upper});
+}
+
+TEST(LoadSteps, MergeFacesJoinsCopiesInOrderOfFirstUse) {
+  // 2 cubes x 6 face copies; the shared square is listed by both: 11 faces, numbered as the cells
+  // name them, the second copy seen reversed against the first (stored) loop.
+  MeshInput in = stacked_cubes(2);
+  in.faces.push_row(std::vector<int32_t>{0, 1, 2});  // used by no cell: dropped
+  Mesh m;
+  m.points = in.points;
+  merge_faces(in, m, kOne);
+  ASSERT_EQ(m.num_faces(), 11u);
+  EXPECT_EQ(m.dropped_faces, 1);
+  std::vector<int32_t> first_cell(m.cell_faces[0].begin(), m.cell_faces[0].end());
+  EXPECT_EQ(first_cell, (std::vector<int32_t>{0, 1, 2, 3, 4, 5}));
+  // Upper cube's bottom loop {4,7,6,5} is the lower cube's top {4,5,6,7} (face 1) reversed.
+  EXPECT_EQ(m.cell_faces[1][0], 1);
+  EXPECT_EQ(m.cell_face_flip[6], 1);
+  EXPECT_EQ(m.cell_face_flip[0], 0);
+  EXPECT_EQ(m.face_cells[1], (std::array<int32_t, 2>{0, 1}));
+  EXPECT_EQ(m.face_cells[0], (std::array<int32_t, 2>{0, -1}));
+}
+
+TEST(LoadSteps, MergeFacesRejectsAFaceInThreeCells) {
+  std::vector<double> p;
+  add_square(p, 0, 0, 0);
+  add_square(p, 0, 0, 1);
+  MeshInput in = soup(p, {cube(0), cube(0), cube(0)});
+  Mesh m;
+  m.points = in.points;
+  EXPECT_THROW(merge_faces(in, m, kOne), InputError);
+}
+
+TEST(LoadSteps, EdgesAreNumberedAlongTheLoops) {
+  // One cube: 12 edges; the first face (0 3 2 1) gives edges 0-3, 3-2, 2-1, 1-0 as 0..3.
+  std::vector<double> p;
+  add_square(p, 0, 0, 0);
+  add_square(p, 0, 0, 1);
+  Built b = through_incidences(soup(p, {cube(0)}));
+  ASSERT_EQ(b.m.num_edges(), 12u);
+  EXPECT_EQ(b.m.edge_verts[0], (std::array<int32_t, 2>{0, 3}));
+  EXPECT_EQ(b.m.edge_verts[1], (std::array<int32_t, 2>{2, 3}));
+  EXPECT_EQ(b.m.edge_verts[3], (std::array<int32_t, 2>{0, 1}));
+  // Face 2 (0 1 5 4) starts with edge 0-1, edge 3.
+  EXPECT_EQ(b.m.face_edges[2][0], 3);
+  std::vector<int32_t> ce(b.m.cell_edges[0].begin(), b.m.cell_edges[0].end());
+  EXPECT_EQ(ce.size(), 12u);
+  EXPECT_TRUE(std::is_sorted(ce.begin(), ce.end()));
+  // Every slot of a closed cell has a partner in the same cell.
+  for (size_t k = 0; k < b.m.face_edges.items.size(); ++k) EXPECT_GE(b.partner[2 * k], 0);
+}
+
+TEST(LoadSteps, AnOpenCellIsRejectedNamingItsEdge) {
+  std::vector<double> p;
+  add_square(p, 0, 0, 0);
+  add_square(p, 0, 0, 1);
+  auto open = cube(0);
+  open.pop_back();  // the face 3 0 4 7 missing: edges 0-3, 0-4, 3-7, 4-7 in one face only
+  try {
+    through_incidences(soup(p, {open}));
+    FAIL() << "an open cell was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a closed cell"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("in 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LoadSteps, OrientationKeepsATangledCellInverted) {
+  // The upper cube's top at z = 0.5, below its bottom at z = 1: it is tangled (volume -0.5)
+  // while fitting its neighbour face to face. Its group has volume 1 - 0.5 > 0, so the lower
+  // cube stays positive and the tangled one keeps its negative volume, instead of being turned
+  // against its neighbour.
+  Built b = through_incidences(stacked_cubes(0.5));
+  // Scramble what the file said: the orientation step must not depend on it.
+  for (auto& f : b.m.cell_face_flip) f ^= 1;
+  orient_cells(b.m, b.partner, b.slot_face, kOne);
+  EXPECT_DOUBLE_EQ(signed_volume(b.m, 0), 1.0);
+  EXPECT_DOUBLE_EQ(signed_volume(b.m, 1), -0.5);
+  // The shared face (1) is seen in opposite directions by the two cells.
+  EXPECT_NE(b.m.cell_face_flip[1], b.m.cell_face_flip[6]);
+}
+
+TEST(LoadSteps, OrientationTurnsAnInsideOutGroup) {
+  // A single cube with every loop inward comes out with volume +1.
+  std::vector<double> p;
+  add_square(p, 0, 0, 0);
+  add_square(p, 0, 0, 1);
+  auto inward = cube(0);
+  for (auto& l : inward) std::reverse(l.begin(), l.end());
+  Built b = through_incidences(soup(p, {inward}));
+  orient_cells(b.m, b.partner, b.slot_face, kOne);
+  EXPECT_DOUBLE_EQ(signed_volume(b.m, 0), 1.0);
+}
+
+TEST(LoadSteps, EdgeFansRunThroughTheCellsInOrder) {
+  // Two stacked cubes: the edge 4-5 between them has faces (2: front of the lower cube,
+  // 1: shared, 6+2: front of the upper) and the cells 0, 1 between them; a boundary path.
+  Built b = through_incidences(stacked_cubes(2));
+  orient_cells(b.m, b.partner, b.slot_face, kOne);
+  mark_boundary(b.m);
+  vertex_incidences(b.m, b.in, kOne);
+  edge_fans(b.m, b.partner, b.slot_face, kOne);
+  int32_t e45 = -1;
+  for (size_t e = 0; e < b.m.num_edges(); ++e)
+    if (b.m.edge_verts[e] == std::array<int32_t, 2>{4, 5}) e45 = static_cast<int32_t>(e);
+  ASSERT_GE(e45, 0);
+  EXPECT_TRUE(b.m.edge_fan_ok[e45]);
+  std::vector<int32_t> faces(b.m.edge_faces[e45].begin(), b.m.edge_faces[e45].end());
+  std::vector<int32_t> cells(b.m.edge_cells[e45].begin(), b.m.edge_cells[e45].end());
+  ASSERT_EQ(faces.size(), 3u);
+  EXPECT_EQ(faces[1], 1) << "the shared face lies between the two cells";
+  EXPECT_EQ(cells, (std::vector<int32_t>{0, 1}));
+  EXPECT_TRUE(b.m.face_boundary[faces[0]] && b.m.face_boundary[faces[2]]);
+}
+
+TEST(LoadSteps, CellTypesFromFacesAndVertices) {
+  // A tet, a hex, and a triangular bipyramid (6 triangles, 5 vertices): a polyhedron, as it
+  // matches no named type (prisms and pyramids: test_mesh_core's degenerate hexahedra).
+  const char* text =
+      "MeshVersionFormatted 1\nDimension 3\nVertices\n5\n"
+      "0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 -1 0\nTetrahedra\n1\n1 2 3 4 0\nEnd\n";
+  Mesh tet = build_mesh(read_medit(text, "tet.mesh"), kOne);
+  EXPECT_EQ(tet.cell_type[0], CellType::Tet);
+  std::vector<double> p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1};
+  Built b = through_incidences(soup(p, {{{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {0, 2, 4}, {2, 1, 4}, {1, 0, 4}}}));
+  cell_types(b.m, kOne);
+  EXPECT_EQ(b.m.cell_type[0], CellType::Polyhedron);
+  EXPECT_FALSE(b.m.vert_non_manifold[0]);
+  Mesh two = build_mesh(stacked_cubes(2), kOne);
+  EXPECT_EQ(two.cell_type[0], CellType::Hex);
+}
+
+TEST(LoadSteps, APinchedVertexIsNonManifold) {
+  // Two cubes meeting at vertex 6 of the first only (the second cube's vertex 0 there): the
+  // cells around it are not face connected.
+  std::vector<double> p;
+  add_square(p, 0, 0, 0);
+  add_square(p, 0, 0, 1);
+  add_square(p, 1, 1, 1);
+  add_square(p, 1, 1, 2);
+  MeshInput in = soup(p, {cube(0), cube(8)});
+  // Glue vertex 8 (the corner (1,1,1) of the second cube) onto vertex 6.
+  for (auto& v : in.faces.items)
+    if (v == 8) v = 6;
+  Mesh m = build_mesh(std::move(in), kOne);
+  for (size_t v = 0; v < m.num_vertices(); ++v)
+    EXPECT_EQ(m.vert_non_manifold[v] != 0, v == 6) << "vertex " << v;
+}
+
+// --- parser fast path ----------------------------------------------------------------------
+
+std::string grid_text(int n) { return medit_text(build_mesh(generate_grid(n, n, n), kOne)); }
+
+void expect_same_input(const MeshInput& a, const MeshInput& b) {
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.faces.offsets, b.faces.offsets);
+  EXPECT_EQ(a.faces.items, b.faces.items);
+  EXPECT_EQ(a.cells.offsets, b.cells.offsets);
+  EXPECT_EQ(a.cells.items, b.cells.items);
+  EXPECT_EQ(a.vertex_loc, b.vertex_loc);
+  EXPECT_EQ(a.cell_loc, b.cell_loc);
+}
+
+TEST(LoadParse, FastSectionsEqualTheTokenScanner) {
+  // A comment after each count keeps the fast path off (the rest of the count's line is not
+  // blank) without moving any line: both readings must agree on every value and line.
+  const std::string fast = grid_text(12);
+  std::string slow = fast;
+  for (const char* kw : {"Vertices\n", "Hexahedra\n"}) {
+    const size_t at = slow.find('\n', slow.find(kw) + std::strlen(kw));
+    slow.insert(at, " # slow path");
+  }
+  ASSERT_NE(slow, fast);
+  for (int threads : {1, 2, 3}) {
+    SCOPED_TRACE(threads);
+    const LoadOptions par{threads, 64};
+    expect_same_input(read_medit(fast, "fast.mesh", par), read_medit(slow, "slow.mesh", par));
+  }
+}
+
+TEST(LoadParse, FastPathReportsTheLineOfABadIndex) {
+  // Vertex id 9999 on the second hexahedron line of a 2x2x2 grid: 27 vertices on lines 5-31,
+  // "Hexahedra" on 32, the count on 33, the second hexahedron on line 35.
+  std::string text = grid_text(2);
+  const size_t hex = text.find("Hexahedra\n");
+  const size_t second = text.find('\n', text.find('\n', text.find('\n', hex) + 1) + 1) + 1;
+  text.replace(second, text.find(' ', second) - second, "9999");
+  try {
+    read_medit(text, "bad.mesh", kOne);
+    FAIL() << "accepted an id out of range";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":35"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("found 9999"), std::string::npos) << e.what();
+  }
+}
+
+// --- parallel loads --------------------------------------------------------------------------
+
+void expect_same_mesh(const Mesh& a, const Mesh& b) {
+#define HBC_SAME(x) EXPECT_EQ(a.x, b.x) << #x
+  HBC_SAME(points); HBC_SAME(edge_verts);
+  HBC_SAME(face_verts.offsets); HBC_SAME(face_verts.items);
+  HBC_SAME(face_edges.offsets); HBC_SAME(face_edges.items); HBC_SAME(face_cells);
+  HBC_SAME(cell_faces.offsets); HBC_SAME(cell_faces.items); HBC_SAME(cell_face_flip);
+  HBC_SAME(cell_verts.offsets); HBC_SAME(cell_verts.items);
+  HBC_SAME(cell_edges.offsets); HBC_SAME(cell_edges.items);
+  HBC_SAME(vert_edges.offsets); HBC_SAME(vert_edges.items);
+  HBC_SAME(vert_faces.offsets); HBC_SAME(vert_faces.items);
+  HBC_SAME(vert_cells.offsets); HBC_SAME(vert_cells.items);
+  HBC_SAME(edge_faces.offsets); HBC_SAME(edge_faces.items);
+  HBC_SAME(edge_cells.offsets); HBC_SAME(edge_cells.items); HBC_SAME(edge_fan_ok);
+  HBC_SAME(vert_boundary); HBC_SAME(edge_boundary); HBC_SAME(face_boundary);
+  HBC_SAME(cell_type); HBC_SAME(vert_non_manifold);
+  HBC_SAME(dropped_faces); HBC_SAME(dropped_edges); HBC_SAME(warnings);
+#undef HBC_SAME
+}
+
+TEST(LoadParallel, EveryArrayEqualsTheSingleThreadedLoad) {
+  // A grain of 64 splits even the small meshes into many ranges per step, so range boundaries
+  // fall inside every kind of element; 3 threads on 2 cores still run the ranges concurrently.
+  for (const char* rel : {"hexalab-edge-cone-rectification/armadillo_out.mesh", "cinolib/rockerarm.mesh",
+                          "hybrid-base-complex/twistcube_s.mesh", "cinolib/eight_voronoi.hedra",
+                          "hybrid-base-complex/cube_twist-comp.obj.HYBRID", "openvolumemesh/NonManifold.ovm",
+                          "openvolumemesh/Cylinder.ovmb"}) {
+    SCOPED_TRACE(rel);
+    HBC_REQUIRE_DATA(rel);
+    const Mesh one = load_mesh(test::data_path(rel), Format::Auto, LoadOptions{1, 64});
+    for (int threads : {2, 3}) expect_same_mesh(one, load_mesh(test::data_path(rel), Format::Auto, LoadOptions{threads, 64}));
+  }
+  // The all-singleton worst case: a grid with about 1 % of its cells split into pyramids.
+  std::vector<std::array<int, 3>> split;
+  for (int i = 0; i < 12 * 12 * 12; i += 97) split.push_back({i % 12, i / 12 % 12, i / 144});
+  const Mesh one = build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), LoadOptions{1, 64});
+  expect_same_mesh(one, build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), LoadOptions{2, 64}));
+}
+
+TEST(LoadParallel, ErrorsNameTheFirstBadCellForAnyThreadCount) {
+  // Two open cells, far apart in the cell order: every thread count reports the first one.
+  const MeshInput base = generate_grid(20, 20, 20);
+  std::string first;
+  for (int threads : {1, 2, 3}) {
+    MeshInput in = base;
+    // Cells 100 and 5000 lose their last face.
+    Csr<int32_t> cells;
+    for (size_t c = 0; c < in.cells.rows(); ++c) {
+      auto row = in.cells[c];
+      cells.push_row(row.begin(), row.end() - ((c == 100 || c == 5000) ? 1 : 0));
+    }
+    in.cells = cells;
+    try {
+      build_mesh(std::move(in), LoadOptions{threads, 64});
+      FAIL() << "open cells accepted";
+    } catch (const InputError& e) {
+      if (first.empty()) first = e.what();
+      EXPECT_EQ(std::string(e.what()), first);
+      EXPECT_NE(first.find("cell 100 "), std::string::npos) << first;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hbc
