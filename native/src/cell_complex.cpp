@@ -82,6 +82,21 @@ void build_vert_edges(CellComplex& cx) {
   cx.vert_edges = transpose(ev, cx.num_vertices());
 }
 
+// The region cells on the two sides of each kept face (compact ids; -1 for a side outside the
+// region or off the mesh), lower first.
+std::vector<std::array<int32_t, 2>> region_face_cells(const std::vector<int32_t>& face_source,
+                                                      const std::vector<std::array<int32_t, 2>>& sides,
+                                                      const std::vector<int32_t>& cell_map) {
+  std::vector<std::array<int32_t, 2>> out(face_source.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const auto [a, b] = sides[face_source[i]];
+    std::array<int32_t, 2> s{a >= 0 ? cell_map[a] : -1, b >= 0 ? cell_map[b] : -1};
+    if (s[0] < 0 || (s[1] >= 0 && s[1] < s[0])) std::swap(s[0], s[1]);
+    out[i] = s;
+  }
+  return out;
+}
+
 }  // namespace
 
 CellComplex complex_from_mesh(const Mesh& m) {
@@ -119,6 +134,7 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
     sort_unique_row(buf, cx.face_edges);
     cx.face_quad[i] = m.face_verts.count(f) == 4;
   }
+  cx.face_cells = region_face_cells(cx.face_source, m.face_cells, cmap);
 
   const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
   cx.edge_verts.resize(nx);
@@ -218,6 +234,7 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     sort_unique_row(buf, cx.face_edges);
     cx.face_quad[i] = patch_quad[p];
   }
+  cx.face_cells = region_face_cells(cx.face_source, bc.patch_components, kmap);
 
   const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
   cx.edge_verts.resize(nx);

@@ -61,6 +61,9 @@ std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level
   key("singular_vertices"), o += std::to_string(w.singular_vertices.size()) + ",\n";
   key("wireframe_edges"), o += std::to_string(w.wireframe_edges()) + ",\n";
   key("wireframe_edges_simplified"), o += std::to_string(w.wireframe_edges_simplified()) + ",\n";
+  key("vsg_mesh_edges"), o += std::to_string(w.vsg_mesh_edges) + ",\n";
+  key("wireframe_mesh_edges"), o += std::to_string(w.wireframe_mesh_edges) + ",\n";
+  key("wireframe_mesh_edges_simplified"), o += std::to_string(w.simplified_mesh_edges) + ",\n";
   key("reference_components"), o += std::to_string(w.reference_components) + ",\n";
   key("shown_components"), o += std::to_string(w.shown_components) + ",\n";
   key("seconds_vsg_wireframe"), append_real(o, seconds), o += ",\n";
