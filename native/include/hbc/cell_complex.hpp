@@ -51,7 +51,7 @@ struct CellComplex {
   Csr<int32_t> face_edges;                // nf rows: bounding edges, sorted
   std::vector<uint8_t> face_quad;         // nf: 4 edges and 4 vertices (a topological quad)
   std::vector<int32_t> face_source;       // nf: mesh face / patch id
-  std::vector<std::array<int32_t, 2>> face_cells;  // nf: region cells on its sides, sorted; -1 for none
+  std::vector<std::array<int32_t, 2>> face_cells;  // nf: region cells on its two sides, lower first; -1 for a side outside
 
   // Cells (nc): mesh cells / components in the region.
   std::vector<uint8_t> cell_non_hex;      // nc: non-hex cell / non-hex component
