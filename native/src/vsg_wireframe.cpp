@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "hbc/wireframe_style.hpp"
-
 #include "union_find.hpp"
 
 namespace hbc {
@@ -571,7 +569,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
 
 VsgWireframe vsg_wireframe(const CellComplex& cx, const WireframeOptions& opt) {
   VsgWireframe w = vsg_wireframe_graph(cx, opt);
-  apply_wireframe_style(cx, opt, w);
+  w.style = wireframe_style(cx, w, opt);
   return w;
 }
 

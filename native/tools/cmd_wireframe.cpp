@@ -77,8 +77,8 @@ std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level
     o += ", \"non_important\": " + std::to_string(int(w.non_important[i]));
     o += std::string(", \"reactivated\": ") + (w.reactivated[i] ? "true" : "false");
     o += std::string(", \"shown\": ") + (w.shown[i] ? "true" : "false");
-    o += ", \"color_class\": " + std::to_string(w.color_class[i]);
-    o += ", \"color\": " + std::to_string(w.color[i]);
+    o += ", \"color_class\": " + std::to_string(w.style.color_class[i]);
+    o += ", \"color\": " + std::to_string(w.style.color[i]);
     o += ", \"vertices\": [";
     const auto poly = w.polylines[i];
     for (size_t k = 0; k < poly.size(); ++k) {
@@ -94,7 +94,7 @@ std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level
     o += "], \"opacity\": [";
     for (int32_t k = w.polylines.offsets[i]; k < w.polylines.offsets[i + 1]; ++k) {
       if (k != w.polylines.offsets[i]) o += ',';
-      append_real(o, w.point_opacity[k]);
+      append_real(o, w.style.point_opacity[k]);
     }
     o += "]}";
   }
@@ -119,10 +119,10 @@ std::string obj_text(const Mesh& m, const VsgWireframe& w, bool all) {
   // Classes in order of their id (the lowest wire edge), each wire edge listed under its class.
   std::vector<std::vector<int32_t>> members(w.size());
   for (size_t i = 0; i < w.size(); ++i)
-    if (all || w.shown[i]) members[w.color_class[i]].push_back(static_cast<int32_t>(i));
+    if (all || w.shown[i]) members[w.style.color_class[i]].push_back(static_cast<int32_t>(i));
   for (size_t c = 0; c < members.size(); ++c) {
     if (members[c].empty()) continue;
-    o += "o class_" + std::to_string(c) + "_color_" + std::to_string(w.color[c]) + "\n";
+    o += "o class_" + std::to_string(c) + "_color_" + std::to_string(w.style.color[c]) + "\n";
     for (int32_t i : members[c]) {
       o += "l";
       for (int32_t p : w.polylines[i]) o += ' ' + std::to_string(index[p]);

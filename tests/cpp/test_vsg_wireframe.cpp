@@ -1,6 +1,6 @@
-// The valence singularity graph and its wireframe (SPEC §4): hand-derived results on a plain grid
-// and on a grid with a "Y" non-hex column, the three simplification criteria on hand-made
-// complexes, reactivation, determinism under renumbering, and invariants on every real mesh.
+// The valence singularity graph and its wireframe (SPEC §4, the authors' rules, docs/validation.md):
+// hand-derived results on plain grids, test_2 at both levels against the authors' figures,
+// determinism under renumbering, regions, colours, and invariants on every real mesh.
 #include <algorithm>
 #include <cstdio>
 #include <array>
@@ -186,8 +186,8 @@ TEST(VsgWireframe, DeterministicUnderRenumbering) {
   const VsgWireframe again = vsg_wireframe(complex_from_mesh(m));
   EXPECT_EQ(a.polylines.items, again.polylines.items);
   EXPECT_EQ(a.shown, again.shown);
-  EXPECT_EQ(a.color, again.color);
-  EXPECT_EQ(a.point_opacity, again.point_opacity);
+  EXPECT_EQ(a.style.color, again.style.color);
+  EXPECT_EQ(a.style.point_opacity, again.style.point_opacity);
   std::mt19937 rng(7);
   std::vector<int32_t> vperm(m.num_vertices()), cperm(m.num_cells());
   std::iota(vperm.begin(), vperm.end(), 0);
@@ -251,7 +251,7 @@ void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& 
   const WireframeOptions opt;
   std::set<std::pair<int32_t, int32_t>> mesh_edges;
   for (auto [a, b] : m.edge_verts) mesh_edges.insert({a, b});
-  ASSERT_EQ(w.point_opacity.size(), w.polylines.items.size());
+  ASSERT_EQ(w.style.point_opacity.size(), w.polylines.items.size());
   // The oracle holds for the whole fine mesh (a region has its own irregular edges and graph).
   const bool whole_mesh = cx.level == ComplexLevel::Mesh && cx.num_cells() == m.num_cells();
   const std::vector<int32_t> hops = whole_mesh ? hop_distances(m) : std::vector<int32_t>{};
@@ -267,12 +267,12 @@ void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& 
     for (int32_t e : w.edges[i]) all_irregular = all_irregular && cx.irregular(e);
     ASSERT_EQ(all_irregular, w.kind[i] == WireKind::Vsg);
     if (w.ends[i][0] >= 0) ASSERT_TRUE(w.vert_singular[w.ends[i][0]] || w.vert_singular[w.ends[i][1]]);
-    ASSERT_LT(w.color[i], opt.palette_size);
-    ASSERT_GE(w.color[i], 0);
+    ASSERT_LT(w.style.color[i], opt.palette_size);
+    ASSERT_GE(w.style.color[i], 0);
     bool opaque = w.kind[i] == WireKind::Vsg;
     for (int32_t e : w.edges[i]) opaque = opaque || cx.edge_non_hex[e];
     for (int32_t k = w.polylines.offsets[i]; k < w.polylines.offsets[i + 1]; ++k) {
-      const float o = w.point_opacity[k];
+      const float o = w.style.point_opacity[k];
       ASSERT_GE(o, float(opt.opacity_floor) - 1e-6f);
       ASSERT_LE(o, 1.0f);
       if (opaque) ASSERT_EQ(o, 1.0f);
@@ -349,9 +349,9 @@ TEST(VsgWireframe, ColoursSeparateAdjacentClasses) {
   for (const auto& [p, ws] : at_point)
     for (int32_t a : ws)
       for (int32_t b : ws) {
-        if (a >= b || w.color_class[a] == w.color_class[b]) continue;
+        if (a >= b || w.style.color_class[a] == w.style.color_class[b]) continue;
         ++adjacent;
-        conflicts += w.color[a] == w.color[b];
+        conflicts += w.style.color[a] == w.style.color[b];
       }
   EXPECT_GT(adjacent, 0);
   // Greedy colouring with 8 colours: a clash only where a class already has 8+ coloured neighbours.

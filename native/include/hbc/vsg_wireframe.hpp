@@ -26,6 +26,7 @@
 
 #include "hbc/cell_complex.hpp"
 #include "hbc/csr.hpp"
+#include "hbc/wireframe_style.hpp"
 
 namespace hbc {
 
@@ -79,10 +80,8 @@ struct VsgWireframe {
   int64_t reference_components = 0;        // connected components of the complete wireframe
   int64_t shown_components = 0;            // connected components of the simplified one
 
-  // ---- Presentation (filled by wireframe_style, wireframe_style.hpp) ----
-  std::vector<float> point_opacity;        // aligned with polylines.items
-  std::vector<int32_t> color_class;        // per chain
-  std::vector<int32_t> color;              // per chain
+  // ---- Presentation: a separate step's result (wireframe_style.hpp), empty from vsg_wireframe_graph ----
+  WireframeStyle style;
 
   size_t size() const { return kind.size(); }
   int64_t wireframe_edges() const { return static_cast<int64_t>(kind.size()); }
@@ -95,7 +94,7 @@ int64_t covered_mesh_edges(const CellComplex& complex, const Csr<int32_t>& chain
 
 // The graph only (no presentation arrays).
 VsgWireframe vsg_wireframe_graph(const CellComplex& complex, const WireframeOptions& options = {});
-// vsg_wireframe_graph followed by wireframe_style.
+// vsg_wireframe_graph, then wireframe_style into `style`.
 VsgWireframe vsg_wireframe(const CellComplex& complex, const WireframeOptions& options = {});
 
 }  // namespace hbc

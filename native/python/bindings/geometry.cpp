@@ -43,7 +43,7 @@ void bind_wireframe(py::module_& m) {
             "int32 (count + 1,): row offsets of polyline_vertices.");
   wire_prop(c, "polyline_vertices", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
             "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
-  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.point_opacity; },
+  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.style.point_opacity; },
             "float32, aligned with polyline_vertices: opacity in [floor, 1].");
   wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
@@ -60,8 +60,8 @@ void bind_wireframe(py::module_& m) {
             "int32 (counts['wireframe_edges_simplified'] + 1,): row offsets of simplified_vertices.");
   wire_prop(c, "simplified_vertices", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.items; },
             "int32: mesh vertices along each simplified polyline (kept chains re-chained).");
-  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.color; }, "int32 (count,): palette index.");
-  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.color_class; },
+  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
+  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
   c.def_property_readonly(
       "counts",
