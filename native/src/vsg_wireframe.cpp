@@ -1,6 +1,7 @@
 #include "hbc/vsg_wireframe.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <utility>
 
 #include "union_find.hpp"
