@@ -97,6 +97,37 @@ std::vector<std::array<int32_t, 2>> region_face_cells(const std::vector<int32_t>
   return out;
 }
 
+// The whole-mesh adjacency of a proper region (CellComplex::edge_all_faces and co.), from the
+// mesh-level rows of each complex edge's mesh edges mapped by `face_id` / `cell_id` (identity at
+// the mesh level, patch / component at the complex level).
+template <class EdgeMeshEdges, class FaceId, class CellId>
+void fill_whole_mesh_adjacency(const Mesh& m, CellComplex& cx, const EdgeMeshEdges& mesh_edges_of, const FaceId& face_id,
+                               const CellId& cell_id, const std::vector<std::array<int32_t, 2>>& face_sides) {
+  std::vector<uint8_t> all(m.num_cells(), 1);
+  const RegionBoundary mb = region_boundary(m, all);
+  std::vector<int32_t> fbuf, cbuf;
+  const size_t ne = cx.num_edges();
+  cx.edge_mesh_boundary.assign(ne, 0);
+  cx.edge_all_non_hex.assign(ne, 0);
+  for (size_t i = 0; i < ne; ++i) {
+    fbuf.clear();
+    cbuf.clear();
+    for (int32_t e : mesh_edges_of(i)) {
+      cx.edge_mesh_boundary[i] = cx.edge_mesh_boundary[i] || mb.edge_boundary[e];
+      for (int32_t f : m.edge_faces[e])
+        if (face_id(f) >= 0) fbuf.push_back(face_id(f));
+      for (int32_t c : m.edge_cells[e]) {
+        cbuf.push_back(cell_id(c));
+        cx.edge_all_non_hex[i] = cx.edge_all_non_hex[i] || !m.is_hex(c);
+      }
+    }
+    sort_unique_row(fbuf, cx.edge_all_faces);
+    sort_unique_row(cbuf, cx.edge_all_cells);
+  }
+  cx.face_all_cells.resize(cx.num_faces());
+  for (size_t i = 0; i < cx.num_faces(); ++i) cx.face_all_cells[i] = face_sides[cx.face_source[i]];
+}
+
 }  // namespace
 
 CellComplex complex_from_mesh(const Mesh& m) {
@@ -178,6 +209,10 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
     for (int32_t f : m.vert_faces[v])
       if (rb.face_in[f] && m.face_verts.count(f) != 4) cx.vert_all_quad[i] = 0;
   }
+  if (cx.num_cells() < m.num_cells())
+    fill_whole_mesh_adjacency(
+        m, cx, [&](size_t i) { return std::span<const int32_t>(&cx.edge_source[i], 1); },
+        [](int32_t f) { return f; }, [](int32_t c) { return c; }, m.face_cells);
   build_vert_edges(cx);
   return cx;
 }
@@ -291,6 +326,11 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     for (int32_t f : m.vert_faces[v])
       if (rb.face_in[f] && bc.face_patch[f] >= 0 && !patch_quad[bc.face_patch[f]]) cx.vert_all_quad[i] = 0;
   }
+  if (cx.num_cells() < bc.num_components())
+    fill_whole_mesh_adjacency(
+        m, cx, [&](size_t i) { return bc.curve_edges[cx.edge_source[i]]; },
+        [&](int32_t f) { return bc.face_patch[f]; }, [&](int32_t c) { return bc.cell_component[c]; },
+        bc.patch_components);
   build_vert_edges(cx);
   return cx;
 }

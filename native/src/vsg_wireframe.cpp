@@ -27,13 +27,27 @@ struct Region {
   const CellComplex& cx;
   int32_t valence(int32_t e) const { return cx.edge_cells.count(e); }
   bool regular(int32_t e) const { return valence(e) == (cx.edge_boundary[e] ? 2 : 4); }
-  bool share_face(int32_t e, int32_t f) const { return intersects(cx.edge_faces[e], cx.edge_faces[f]); }
-  bool share_cell(int32_t e, int32_t f) const { return intersects(cx.edge_cells[e], cx.edge_cells[f]); }
+  // Two edges in one region face (the authors' "opposite" test for a vertex's two patch edges).
+  bool share_region_face(int32_t e, int32_t f) const { return intersects(cx.edge_faces[e], cx.edge_faces[f]); }
+  // The tests behind the authors' continuation (get_next_edge) and flood look at the whole mesh.
+  bool share_face(int32_t e, int32_t f) const {
+    return cx.whole() ? share_region_face(e, f) : intersects(cx.edge_all_faces[e], cx.edge_all_faces[f]);
+  }
+  bool share_cell(int32_t e, int32_t f) const {
+    return cx.whole() ? intersects(cx.edge_cells[e], cx.edge_cells[f]) : intersects(cx.edge_all_cells[e], cx.edge_all_cells[f]);
+  }
   bool faces_share_cell(int32_t f, int32_t g) const {
-    const auto a = cx.face_cells[f], b = cx.face_cells[g];
+    const auto a = cx.whole() ? cx.face_cells[f] : cx.face_all_cells[f];
+    const auto b = cx.whole() ? cx.face_cells[g] : cx.face_all_cells[g];
     for (int32_t x : a)
       if (x >= 0 && (x == b[0] || x == b[1])) return true;
     return false;
+  }
+  bool mesh_boundary(int32_t e) const { return cx.whole() ? cx.edge_boundary[e] : cx.edge_mesh_boundary[e]; }
+  // The authors' mesh marks an edge singular when irregular in the whole mesh or at a non-hex cell.
+  bool mesh_singular(int32_t e) const {
+    if (cx.whole()) return !regular(e) || cx.edge_non_hex[e];
+    return cx.edge_all_cells.count(e) != (mesh_boundary(e) ? 2 : 4) || cx.edge_all_non_hex[e];
   }
   double quad_ratio(int32_t e) const {
     const auto fs = cx.edge_faces[e];
@@ -43,9 +57,9 @@ struct Region {
   }
   // A boundary edge of one cell whose faces are all quads: a corner the cleaning treats as regular.
   bool quad_corner_edge(int32_t e) const { return valence(e) == 1 && cx.edge_all_quad[e]; }
-  int32_t valence_gap(int32_t e) const {
+  int32_t valence_gap(int32_t e) const {  // region valence, whole-mesh boundary (as the authors)
     const int32_t n = valence(e);
-    if (cx.edge_boundary[e]) return n == 1 ? 0 : std::abs(n - 2);
+    if (mesh_boundary(e)) return n == 1 ? 0 : std::abs(n - 2);
     return std::abs(n - 4);
   }
 };
@@ -152,7 +166,7 @@ std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& st
     const int32_t f = stack.back();
     stack.pop_back();
     for (int32_t g : cx.face_edges[f]) {
-      if (cx.edge_boundary[g] || (mesh_level && (!r.regular(g) || cx.edge_non_hex[g]))) continue;
+      if (r.mesh_boundary(g) || (mesh_level && r.mesh_singular(g))) continue;
       for (int32_t h : cx.edge_faces[g])
         if (!seen[h] && !r.faces_share_cell(f, h)) seen[h] = 1, stack.push_back(h);
     }
@@ -179,7 +193,7 @@ std::vector<uint8_t> patch_singular_vertices(const Region& r, const std::vector<
     at.clear();
     for (int32_t e : cx.vert_edges[v])
       if (patch_edge[e]) at.push_back(e);
-    out[v] = (!at.empty() && at.size() != 2) || (at.size() == 2 && r.share_face(at[0], at[1]));
+    out[v] = (!at.empty() && at.size() != 2) || (at.size() == 2 && r.share_region_face(at[0], at[1]));
   }
   return out;
 }

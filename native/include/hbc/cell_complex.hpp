@@ -57,6 +57,17 @@ struct CellComplex {
   std::vector<uint8_t> cell_non_hex;      // nc: non-hex cell / non-hex component
   std::vector<int32_t> cell_source;       // nc: mesh cell / component id
 
+  // Whole-mesh adjacency of the region's elements, for the rules that look past the region (the
+  // authors' continuation and flood use the whole mesh's faces and cells). Ids are source ids (mesh
+  // faces / patches, mesh cells / components). Empty when the region is the whole mesh: then they
+  // equal edge_faces, edge_cells, face_cells and edge_boundary.
+  Csr<int32_t> edge_all_faces;                        // ne rows, sorted
+  Csr<int32_t> edge_all_cells;                        // ne rows, sorted
+  std::vector<std::array<int32_t, 2>> face_all_cells; // nf: cells on its sides, -1 off the mesh
+  std::vector<uint8_t> edge_mesh_boundary;            // ne: on the mesh boundary
+  std::vector<uint8_t> edge_all_non_hex;              // ne: some mesh cell around it is non-hex
+  bool whole() const { return edge_all_faces.rows() == 0; }
+
   size_t num_vertices() const { return vert_mesh.size(); }
   size_t num_edges() const { return edge_verts.size(); }
   size_t num_faces() const { return face_source.size(); }
