@@ -11,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "hbc/analysis.hpp"
 #include "hbc/base_complex.hpp"
 #include "hbc/cell_complex.hpp"
+#include "hbc/render_geometry.hpp"
 #include "hbc/sheets.hpp"
 #include "hbc/singularity_graph.hpp"
 #include "hbc/vsg_wireframe.hpp"
@@ -293,7 +295,10 @@ void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& 
   ASSERT_TRUE(std::includes(complete.begin(), complete.end(), simple.begin(), simple.end()));
   for (size_t e = 0; e < cx.num_edges(); ++e) ASSERT_EQ(w.edge_vsg[e], cx.irregular(e) ? 1 : 0);
   EXPECT_EQ(std::count(w.edge_vsg.begin(), w.edge_vsg.end(), 1), w.vsg_edges);
-  EXPECT_LE(w.shown_components, w.reference_components);
+  // The authors' cleaning does not promise to keep the wireframe connected (a removable chain may
+  // be the only link between two kept ones: on some teapot sheets the simplified wireframe has 2
+  // components where the complete one has 1), so only the trivial bound holds.
+  EXPECT_LE(w.shown_components, w.wireframe_edges_simplified());
 }
 
 TEST(VsgWireframe, InvariantsOnRealMeshes) {
@@ -336,6 +341,26 @@ TEST(VsgWireframe, SheetRegions) {
     check_invariants(m, fine, vsg_wireframe(fine), "sheet " + std::to_string(k) + " mesh level");
     check_invariants(m, coarse, vsg_wireframe(coarse), "sheet " + std::to_string(k) + " complex level");
   }
+}
+
+// Every sheet of cube_twist at the complex level (the sheet plus its adjacent non-hex cells, its
+// parallel edges removed last), against the authors' per-sheet ValenceSingularityGraph3D(mesh,
+// parallel_eids, region_cids) run at cb426c4: VSG chains, complete and simplified polylines per
+// sheet, compared as sorted lists (the two codes number sheets differently).
+TEST(VsgWireframe, SheetWireframesMatchTheAuthors) {
+  HBC_REQUIRE_DATA("hybrid-base-complex/cube_twist-comp.obj.HYBRID");
+  const Mesh m = test::load_data("hybrid-base-complex/cube_twist-comp.obj.HYBRID");
+  const Analysis a = analyze(m);
+  std::vector<std::array<int64_t, 3>> ours, theirs{
+      {12, 12, 0},  {13, 20, 0},  {13, 28, 6},  {14, 38, 7},  {14, 43, 13}, {14, 54, 6},   {14, 55, 5},
+      {14, 55, 14}, {15, 49, 8},  {15, 71, 13}, {16, 49, 12}, {17, 71, 22}, {18, 57, 13},  {18, 90, 33},
+      {18, 92, 40}, {19, 65, 50}, {21, 71, 17}, {26, 199, 136}, {55, 204, 170}};
+  for (size_t k = 0; k < a.sheets.size(); ++k) {
+    const VsgWireframe w = region_wireframe(m, a, ComplexLevel::Complex, {}, static_cast<int32_t>(k));
+    ours.push_back({w.vsg_chains, w.wireframe_edges(), w.wireframe_edges_simplified()});
+  }
+  std::sort(ours.begin(), ours.end());
+  EXPECT_EQ(ours, theirs);
 }
 
 TEST(VsgWireframe, ColoursSeparateAdjacentClasses) {
