@@ -335,6 +335,18 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
   return cx;
 }
 
+std::vector<int32_t> complex_edges_of(const CellComplex& cx, const BaseComplex& bc, std::span<const int32_t> mesh_edges) {
+  std::vector<int32_t> out;
+  for (int32_t e : mesh_edges) {
+    const int32_t src = cx.level == ComplexLevel::Complex ? bc.edge_curve[static_cast<size_t>(e)] : e;
+    const auto it = std::lower_bound(cx.edge_source.begin(), cx.edge_source.end(), src);
+    if (src >= 0 && it != cx.edge_source.end() && *it == src) out.push_back(static_cast<int32_t>(it - cx.edge_source.begin()));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 std::vector<int32_t> components_of_cells(const BaseComplex& bc, std::span<const int32_t> cells) {
   std::vector<int32_t> out;
   out.reserve(cells.size());

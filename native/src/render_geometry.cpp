@@ -307,15 +307,7 @@ std::vector<int32_t> region_parallel_edges(const Analysis& a, const CellComplex&
     for (int32_t k : require_subsheets(a, sheet).curves[static_cast<size_t>(subsheet)])
       for (int32_t e : a.domain.curve_edges[static_cast<size_t>(k)]) mesh_edges.push_back(e);
   }
-  std::vector<int32_t> out;
-  for (int32_t e : mesh_edges) {
-    const int32_t src = cx.level == ComplexLevel::Complex ? a.complex.edge_curve[static_cast<size_t>(e)] : e;
-    const auto it = std::lower_bound(cx.edge_source.begin(), cx.edge_source.end(), src);
-    if (src >= 0 && it != cx.edge_source.end() && *it == src) out.push_back(static_cast<int32_t>(it - cx.edge_source.begin()));
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  return complex_edges_of(cx, a.complex, mesh_edges);
 }
 }  // namespace
 

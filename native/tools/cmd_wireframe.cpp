@@ -166,7 +166,7 @@ int cmd_wireframe(const Args& args_in) {
 
   const Mesh m = load_for_cli(args[0], format);
   const BaseComplex bc = base_complex(m, singularity_graph(m));
-  std::vector<int32_t> region_cells;
+  std::vector<int32_t> region_cells, parallel_edges;
   if (sheet >= 0) {
     const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, SheetLevel::Complex));
     if (static_cast<size_t>(sheet) >= sheets.size())
@@ -174,6 +174,7 @@ int cmd_wireframe(const Args& args_in) {
                                   std::to_string(sheets.size()) + " sheets");
     for (auto rows : {sheets.sheet_cells[sheet], sheets.sheet_non_hex_cells[sheet]})
       region_cells.insert(region_cells.end(), rows.begin(), rows.end());
+    parallel_edges.assign(sheets.sheet_edges[sheet].begin(), sheets.sheet_edges[sheet].end());
   }
   const auto t1 = std::chrono::steady_clock::now();
   CellComplex cx;
@@ -182,6 +183,7 @@ int cmd_wireframe(const Args& args_in) {
   } else {
     cx = sheet >= 0 ? complex_from_base(m, bc, components_of_cells(bc, region_cells)) : complex_from_base(m, bc);
   }
+  opt.parallel_edges = complex_edges_of(cx, bc, parallel_edges);
   const VsgWireframe w = vsg_wireframe(cx, opt);
   const auto t2 = std::chrono::steady_clock::now();
 

@@ -93,6 +93,11 @@ CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc);
 CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc,
                               std::span<const int32_t> region_components);
 
+// The complex edges (ids of `cx`) holding the given mesh edges, sorted and distinct; mesh edges
+// off the view (or, at the complex level, on no curve) are skipped. `bc` is read at the complex
+// level only.
+std::vector<int32_t> complex_edges_of(const CellComplex& cx, const BaseComplex& bc, std::span<const int32_t> mesh_edges);
+
 // The components holding the given mesh cells, sorted and distinct (to turn a sheet's cells into a
 // complex-level region).
 std::vector<int32_t> components_of_cells(const BaseComplex& bc, std::span<const int32_t> cells);
