@@ -13,12 +13,14 @@
 // are all flooded or boundary are "patch edges"; a vertex is singular when it has a number of patch
 // edges other than 0 and 2, or 2 that share a face (a turn). The wireframe is then the chains
 // traced (the VSG rule, stopping at singular vertices) from every edge at a singular vertex.
+// (As in the authors' code, "sharing a face" in a continuation, "sharing a cell" in the flood and
+// in the re-chaining, and the flood's stops look at the whole mesh, not only at the region.)
 // Simplification: redundant singular vertices (an all-quad corner of one cell, or only regular
 // wireframe edges around it), removable pairs of regular all-quad wireframe edges continuing each
 // other at a singular vertex (ties broken by valence gap, then quad ratio; unresolved ties keep
 // both), chains with two redundant ends; reactivation keeps every removable chain reached from a
-// kept one through its continuation; the rest is re-chained through the vertices that stop being
-// singular (two chains meeting straight).
+// kept one through its continuation; the kept chains are re-chained through the vertices that stop
+// being singular (exactly two kept chains through it, no two of its wireframe edges in one cell).
 #include <array>
 #include <cstdint>
 #include <span>
