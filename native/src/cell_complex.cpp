@@ -82,6 +82,52 @@ void build_vert_edges(CellComplex& cx) {
   cx.vert_edges = transpose(ev, cx.num_vertices());
 }
 
+// The region cells on the two sides of each kept face (compact ids; -1 for a side outside the
+// region or off the mesh), lower first.
+std::vector<std::array<int32_t, 2>> region_face_cells(const std::vector<int32_t>& face_source,
+                                                      const std::vector<std::array<int32_t, 2>>& sides,
+                                                      const std::vector<int32_t>& cell_map) {
+  std::vector<std::array<int32_t, 2>> out(face_source.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const auto [a, b] = sides[face_source[i]];
+    std::array<int32_t, 2> s{a >= 0 ? cell_map[a] : -1, b >= 0 ? cell_map[b] : -1};
+    if (s[0] < 0 || (s[1] >= 0 && s[1] < s[0])) std::swap(s[0], s[1]);
+    out[i] = s;
+  }
+  return out;
+}
+
+// The whole-mesh adjacency of a proper region (CellComplex::edge_all_faces and co.), from the
+// mesh-level rows of each complex edge's mesh edges mapped by `face_id` / `cell_id` (identity at
+// the mesh level, patch / component at the complex level).
+template <class EdgeMeshEdges, class FaceId, class CellId>
+void fill_whole_mesh_adjacency(const Mesh& m, CellComplex& cx, const EdgeMeshEdges& mesh_edges_of, const FaceId& face_id,
+                               const CellId& cell_id, const std::vector<std::array<int32_t, 2>>& face_sides) {
+  std::vector<uint8_t> all(m.num_cells(), 1);
+  const RegionBoundary mb = region_boundary(m, all);
+  std::vector<int32_t> fbuf, cbuf;
+  const size_t ne = cx.num_edges();
+  cx.edge_mesh_boundary.assign(ne, 0);
+  cx.edge_all_non_hex.assign(ne, 0);
+  for (size_t i = 0; i < ne; ++i) {
+    fbuf.clear();
+    cbuf.clear();
+    for (int32_t e : mesh_edges_of(i)) {
+      cx.edge_mesh_boundary[i] = cx.edge_mesh_boundary[i] || mb.edge_boundary[e];
+      for (int32_t f : m.edge_faces[e])
+        if (face_id(f) >= 0) fbuf.push_back(face_id(f));
+      for (int32_t c : m.edge_cells[e]) {
+        cbuf.push_back(cell_id(c));
+        cx.edge_all_non_hex[i] = cx.edge_all_non_hex[i] || !m.is_hex(c);
+      }
+    }
+    sort_unique_row(fbuf, cx.edge_all_faces);
+    sort_unique_row(cbuf, cx.edge_all_cells);
+  }
+  cx.face_all_cells.resize(cx.num_faces());
+  for (size_t i = 0; i < cx.num_faces(); ++i) cx.face_all_cells[i] = face_sides[cx.face_source[i]];
+}
+
 }  // namespace
 
 CellComplex complex_from_mesh(const Mesh& m) {
@@ -119,6 +165,7 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
     sort_unique_row(buf, cx.face_edges);
     cx.face_quad[i] = m.face_verts.count(f) == 4;
   }
+  cx.face_cells = region_face_cells(cx.face_source, m.face_cells, cmap);
 
   const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
   cx.edge_verts.resize(nx);
@@ -162,6 +209,10 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
     for (int32_t f : m.vert_faces[v])
       if (rb.face_in[f] && m.face_verts.count(f) != 4) cx.vert_all_quad[i] = 0;
   }
+  if (cx.num_cells() < m.num_cells())
+    fill_whole_mesh_adjacency(
+        m, cx, [&](size_t i) { return std::span<const int32_t>(&cx.edge_source[i], 1); },
+        [](int32_t f) { return f; }, [](int32_t c) { return c; }, m.face_cells);
   build_vert_edges(cx);
   return cx;
 }
@@ -218,6 +269,7 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     sort_unique_row(buf, cx.face_edges);
     cx.face_quad[i] = patch_quad[p];
   }
+  cx.face_cells = region_face_cells(cx.face_source, bc.patch_components, kmap);
 
   const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
   cx.edge_verts.resize(nx);
@@ -274,8 +326,25 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     for (int32_t f : m.vert_faces[v])
       if (rb.face_in[f] && bc.face_patch[f] >= 0 && !patch_quad[bc.face_patch[f]]) cx.vert_all_quad[i] = 0;
   }
+  if (cx.num_cells() < bc.num_components())
+    fill_whole_mesh_adjacency(
+        m, cx, [&](size_t i) { return bc.curve_edges[cx.edge_source[i]]; },
+        [&](int32_t f) { return bc.face_patch[f]; }, [&](int32_t c) { return bc.cell_component[c]; },
+        bc.patch_components);
   build_vert_edges(cx);
   return cx;
+}
+
+std::vector<int32_t> complex_edges_of(const CellComplex& cx, const BaseComplex& bc, std::span<const int32_t> mesh_edges) {
+  std::vector<int32_t> out;
+  for (int32_t e : mesh_edges) {
+    const int32_t src = cx.level == ComplexLevel::Complex ? bc.edge_curve[static_cast<size_t>(e)] : e;
+    const auto it = std::lower_bound(cx.edge_source.begin(), cx.edge_source.end(), src);
+    if (src >= 0 && it != cx.edge_source.end() && *it == src) out.push_back(static_cast<int32_t>(it - cx.edge_source.begin()));
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 std::vector<int32_t> components_of_cells(const BaseComplex& bc, std::span<const int32_t> cells) {

@@ -295,17 +295,33 @@ std::vector<int32_t> region_cells(const Mesh& m, const Analysis& a, int32_t shee
   return cells;
 }
 
+// The sheet's (or subsheet's) parallel edges as complex edge ids of `cx`: the authors remove, last,
+// the simplified chains made of them only, so the wireframe of a sheet shows what crosses it.
+namespace {
+std::vector<int32_t> region_parallel_edges(const Analysis& a, const CellComplex& cx, int32_t sheet, int32_t subsheet) {
+  std::vector<int32_t> mesh_edges;
+  if (subsheet < 0) {
+    const auto row = a.sheets.sheet_edges[static_cast<size_t>(sheet)];
+    mesh_edges.assign(row.begin(), row.end());
+  } else {
+    for (int32_t k : require_subsheets(a, sheet).curves[static_cast<size_t>(subsheet)])
+      for (int32_t e : a.domain.curve_edges[static_cast<size_t>(k)]) mesh_edges.push_back(e);
+  }
+  return complex_edges_of(cx, a.complex, mesh_edges);
+}
+}  // namespace
+
 VsgWireframe region_wireframe(const Mesh& m, const Analysis& a, ComplexLevel level,
                               const WireframeOptions& options, int32_t sheet, int32_t subsheet) {
-  CellComplex cx;
-  if (sheet < 0 && subsheet < 0) {
-    cx = level == ComplexLevel::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m);
-  } else {
-    const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);
-    cx = level == ComplexLevel::Complex ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
-                                        : complex_from_mesh(m, cells);
-  }
-  return vsg_wireframe(cx, options);
+  if (sheet < 0 && subsheet < 0)
+    return vsg_wireframe(level == ComplexLevel::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m), options);
+  const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);
+  const CellComplex cx = level == ComplexLevel::Complex
+                             ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
+                             : complex_from_mesh(m, cells);
+  WireframeOptions opt = options;
+  opt.parallel_edges = region_parallel_edges(a, cx, sheet, subsheet);
+  return vsg_wireframe(cx, opt);
 }
 
 }  // namespace hbc

@@ -1,43 +1,203 @@
 #include "hbc/vsg_wireframe.hpp"
 
 #include <algorithm>
-#include <limits>
-#include <numeric>
-#include <queue>
+#include <cstdlib>
 #include <utility>
-
-#include "hbc/singularity_graph.hpp"
 
 #include "union_find.hpp"
 
 namespace hbc {
 
-int64_t VsgWireframe::wireframe_edges_simplified() const {
-  return std::count(shown.begin(), shown.end(), uint8_t{1});
-}
-
 namespace {
 
-using MinUnionFind = detail::UnionFind;  // root = lowest member: deterministic class ids
-
-bool share_cell(const CellComplex& cx, int32_t e, int32_t f) {
-  const auto a = cx.edge_cells[e], b = cx.edge_cells[f];
-  size_t i = 0, j = 0;
-  while (i < a.size() && j < b.size()) {
-    if (a[i] == b[j]) return true;
-    a[i] < b[j] ? ++i : ++j;
+// Sorted-range intersection test.
+template <class A, class B>
+bool intersects(const A& a, const B& b) {
+  auto i = a.begin(), j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i == *j) return true;
+    *i < *j ? ++i : ++j;
   }
   return false;
 }
 
-bool share_vertex(const CellComplex& cx, int32_t e, int32_t f) {
-  const auto a = cx.edge_verts[e], b = cx.edge_verts[f];
-  if (a[0] < 0 || b[0] < 0) return false;
-  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+// Region-relative element tests shared by every step (the authors' rules count region cells and
+// faces only).
+struct Region {
+  const CellComplex& cx;
+  int32_t valence(int32_t e) const { return cx.edge_cells.count(e); }
+  bool regular(int32_t e) const { return valence(e) == (cx.edge_boundary[e] ? 2 : 4); }
+  // Two edges in one region face (the authors' "opposite" test for a vertex's two patch edges).
+  bool share_region_face(int32_t e, int32_t f) const { return intersects(cx.edge_faces[e], cx.edge_faces[f]); }
+  // The tests behind the authors' continuation (get_next_edge) and flood look at the whole mesh.
+  bool share_face(int32_t e, int32_t f) const {
+    return cx.whole() ? share_region_face(e, f) : intersects(cx.edge_all_faces[e], cx.edge_all_faces[f]);
+  }
+  bool share_cell(int32_t e, int32_t f) const {
+    return cx.whole() ? intersects(cx.edge_cells[e], cx.edge_cells[f]) : intersects(cx.edge_all_cells[e], cx.edge_all_cells[f]);
+  }
+  bool faces_share_cell(int32_t f, int32_t g) const {
+    const auto a = cx.whole() ? cx.face_cells[f] : cx.face_all_cells[f];
+    const auto b = cx.whole() ? cx.face_cells[g] : cx.face_all_cells[g];
+    for (int32_t x : a)
+      if (x >= 0 && (x == b[0] || x == b[1])) return true;
+    return false;
+  }
+  bool mesh_boundary(int32_t e) const { return cx.whole() ? cx.edge_boundary[e] : cx.edge_mesh_boundary[e]; }
+  // The authors' mesh marks an edge singular when irregular in the whole mesh or at a non-hex cell.
+  bool mesh_singular(int32_t e) const {
+    if (cx.whole()) return !regular(e) || cx.edge_non_hex[e];
+    return cx.edge_all_cells.count(e) != (mesh_boundary(e) ? 2 : 4) || cx.edge_all_non_hex[e];
+  }
+  double quad_ratio(int32_t e) const {
+    const auto fs = cx.edge_faces[e];
+    int32_t q = 0;
+    for (int32_t f : fs) q += cx.face_quad[f];
+    return fs.empty() ? 0.0 : double(q) / double(fs.size());
+  }
+  // A boundary edge of one cell whose faces are all quads: a corner the cleaning treats as regular.
+  bool quad_corner_edge(int32_t e) const { return valence(e) == 1 && cx.edge_all_quad[e]; }
+  int32_t valence_gap(int32_t e) const {  // region valence, whole-mesh boundary (as the authors)
+    const int32_t n = valence(e);
+    if (mesh_boundary(e)) return n == 1 ? 0 : std::abs(n - 2);
+    return std::abs(n - 4);
+  }
+};
+
+// Chains of edges. A chain continues through vertex v from edge e along next(v, e) (an edge id or
+// -1) unless v is a stop vertex; each edge joins at most one chain (the first that reaches it).
+struct Chains {
+  Csr<int32_t> edges, verts;  // verts: one more than edges; a closed chain repeats its start
+};
+
+template <class Next>
+void walk(const CellComplex& cx, int32_t from, int32_t e, const std::vector<uint8_t>& stop_vert,
+          std::vector<uint8_t>& used, const Next& next, std::vector<int32_t>& vs, std::vector<int32_t>& es) {
+  vs.assign(1, from);
+  es.clear();
+  int32_t v = from;
+  while (e >= 0 && !used[e]) {
+    used[e] = 1;
+    es.push_back(e);
+    v = cx.other_vertex(e, v);
+    vs.push_back(v);
+    if (stop_vert[v]) break;
+    e = next(v, e);
+  }
 }
 
-// Appends the points of complex edge e walked from vertex `from` to `poly`, skipping the first
-// point when the polyline already ends there.
+// Chains through every seed edge (in increasing id order), traced first from the seed's second end
+// through it, then from its first end: the two walks are joined at the seed.
+template <class Next>
+Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
+                    const Next& next) {
+  Chains out;
+  std::vector<uint8_t> used(cx.num_edges(), 0);
+  std::vector<int32_t> lv, le, rv, re;
+  for (size_t s = 0; s < seed.size(); ++s) {
+    const int32_t e = static_cast<int32_t>(s);
+    if (!seed[e] || used[e] || cx.closed(e)) continue;
+    walk(cx, cx.edge_verts[e][1], e, stop_vert, used, next, lv, le);
+    if (lv.front() != lv.back()) {
+      used[e] = 0;
+      walk(cx, cx.edge_verts[e][0], e, stop_vert, used, next, rv, re);
+      std::reverse(lv.begin(), lv.end());
+      std::reverse(le.begin(), le.end());
+      lv.resize(lv.size() - 2);
+      le.pop_back();
+      lv.insert(lv.end(), rv.begin(), rv.end());
+      le.insert(le.end(), re.begin(), re.end());
+    }
+    out.edges.push_row(le.begin(), le.end());
+    out.verts.push_row(lv.begin(), lv.end());
+  }
+  return out;
+}
+
+// The edge at v sharing no face with e, if there is exactly one (else -1); `allow` filters.
+template <class Allow>
+int32_t straight_next(const Region& r, int32_t v, int32_t e, const Allow& allow) {
+  int32_t found = -1;
+  for (int32_t f : r.cx.vert_edges[v]) {
+    if (f == e || r.cx.closed(f) || r.share_face(e, f) || !allow(f)) continue;
+    if (found >= 0) return -1;
+    found = f;
+  }
+  return found;
+}
+
+// Chains of the VSG rule: the unique straight continuation, when it has the same valence.
+Chains valence_chains(const Region& r, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert) {
+  return trace_chains(r.cx, seed, stop_vert, [&](int32_t v, int32_t e) {
+    const int32_t f = straight_next(r, v, e, [](int32_t) { return true; });
+    return f >= 0 && r.valence(f) == r.valence(e) ? f : -1;
+  });
+}
+
+std::vector<uint8_t> chain_end_flags(const CellComplex& cx, const Chains& ch) {
+  std::vector<uint8_t> out(cx.num_vertices(), 0);
+  for (size_t c = 0; c < ch.verts.rows(); ++c) {
+    const auto vs = ch.verts[c];
+    if (vs.front() != vs.back()) out[vs.front()] = out[vs.back()] = 1;
+  }
+  return out;
+}
+
+std::vector<uint8_t> edge_flags(const CellComplex& cx, const Csr<int32_t>& rows) {
+  std::vector<uint8_t> out(cx.num_edges(), 0);
+  for (int32_t e : rows.items) out[e] = 1;
+  return out;
+}
+
+// Faces reachable from the faces at `start` edges, across edges that do not stop the flood, into
+// the faces at the crossed edge sharing no cell with the current face. The authors' mesh marks an
+// edge singular (a stop) when irregular, at a non-hex cell (mesh level); their base-complex mesh
+// marks none, so there only the boundary stops.
+std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& start) {
+  const CellComplex& cx = r.cx;
+  const bool mesh_level = cx.level == ComplexLevel::Mesh;
+  std::vector<uint8_t> seen(cx.num_faces(), 0);
+  std::vector<int32_t> stack;
+  for (size_t e = 0; e < start.size(); ++e)
+    if (start[e])
+      for (int32_t f : cx.edge_faces[e])
+        if (!seen[f]) seen[f] = 1, stack.push_back(f);
+  while (!stack.empty()) {
+    const int32_t f = stack.back();
+    stack.pop_back();
+    for (int32_t g : cx.face_edges[f]) {
+      if (r.mesh_boundary(g) || (mesh_level && r.mesh_singular(g))) continue;
+      for (int32_t h : cx.edge_faces[g])
+        if (!seen[h] && !r.faces_share_cell(f, h)) seen[h] = 1, stack.push_back(h);
+    }
+  }
+  return seen;
+}
+
+// Singular vertices of the complete wireframe: ends of patch edges (all faces flooded or on the
+// boundary) with a patch-edge count other than 0 and 2, or two patch edges sharing a face.
+std::vector<uint8_t> patch_singular_vertices(const Region& r, const std::vector<uint8_t>& flooded) {
+  const CellComplex& cx = r.cx;
+  std::vector<uint8_t> patched(cx.num_faces());
+  for (size_t f = 0; f < patched.size(); ++f)
+    patched[f] = flooded[f] || cx.face_cells[f][1] < 0;
+  std::vector<uint8_t> patch_edge(cx.num_edges(), 0);
+  for (size_t e = 0; e < patch_edge.size(); ++e) {
+    bool all = !cx.edge_faces[e].empty();
+    for (int32_t f : cx.edge_faces[e]) all = all && patched[f];
+    patch_edge[e] = all;
+  }
+  std::vector<uint8_t> out(cx.num_vertices(), 0);
+  std::vector<int32_t> at;
+  for (size_t v = 0; v < out.size(); ++v) {
+    at.clear();
+    for (int32_t e : cx.vert_edges[v])
+      if (patch_edge[e]) at.push_back(e);
+    out[v] = (!at.empty() && at.size() != 2) || (at.size() == 2 && r.share_region_face(at[0], at[1]));
+  }
+  return out;
+}
+
 void append_points(const CellComplex& cx, int32_t e, int32_t from, std::vector<int32_t>& poly) {
   const auto pts = cx.edge_points[e];
   const bool forward = cx.edge_verts[e][0] == from;
@@ -45,477 +205,386 @@ void append_points(const CellComplex& cx, int32_t e, int32_t from, std::vector<i
   for (size_t k = poly.empty() ? 0 : 1; k < n; ++k) poly.push_back(forward ? pts[k] : pts[n - 1 - k]);
 }
 
-class Builder {
- public:
-  Builder(const CellComplex& cx, const WireframeOptions& opt, VsgWireframe& w) : cx_(cx), opt_(opt), w_(w) {}
+void push_polyline(const CellComplex& cx, std::span<const int32_t> es, std::span<const int32_t> vs, Csr<int32_t>& out) {
+  std::vector<int32_t> poly;
+  for (size_t i = 0; i < es.size(); ++i) append_points(cx, es[i], vs[i], poly);
+  out.push_row(poly.begin(), poly.end());
+}
 
-  void run() {
-    find_vsg();
-    add_vsg_chains();
-    add_traces();
-    index_points();
-    mark_non_important();
-    reactivate();
-    opacity();
-    colours();
-  }
-
- private:
-  const CellComplex& cx_;
-  const WireframeOptions& opt_;
-  VsgWireframe& w_;
-  std::vector<int32_t> edge_wire_;             // ne: wire edge holding the complex edge, else -1
-  std::vector<int32_t> point_of_mesh_;         // mesh vertex -> compact point id, else -1
-  Csr<int32_t> wire_points_, point_wires_;     // distinct compact points per wire and back
-
-  void push_wire(WireKind kind, std::span<const int32_t> es, const std::vector<int32_t>& poly,
-                 std::array<int32_t, 2> ends, int32_t valence, TraceStop stop) {
-    const int32_t id = static_cast<int32_t>(w_.kind.size());
-    for (int32_t e : es) edge_wire_[e] = id;
-    w_.edges.push_row(es);
-    w_.polylines.push_row(poly.begin(), poly.end());
-    w_.ends.push_back(ends);
-    w_.kind.push_back(kind);
-    w_.valence.push_back(valence);
-    w_.stop.push_back(stop);
-  }
-
-  void find_vsg() {
-    const size_t ne = cx_.num_edges(), nv = cx_.num_vertices();
-    w_.edge_vsg.assign(ne, 0);
-    w_.vert_vsg.assign(nv, 0);
-    for (size_t e = 0; e < ne; ++e) {
-      if (!cx_.irregular(e)) continue;
-      w_.edge_vsg[e] = 1;
-      ++w_.vsg_edges;
-      if (!cx_.closed(e)) w_.vert_vsg[cx_.edge_verts[e][0]] = w_.vert_vsg[cx_.edge_verts[e][1]] = 1;
-    }
-    edge_wire_.assign(ne, -1);
-  }
-
-  void add_vsg_chains() {
-    const size_t ne = cx_.num_edges(), nv = cx_.num_vertices();
-    // Closed curves have no vertices for chain_edges to walk: each is a closed chain by itself.
-    std::vector<uint8_t> member(w_.edge_vsg);
-    for (size_t e = 0; e < ne; ++e) member[e] = member[e] && !cx_.closed(e);
-    Csr<int32_t> cverts, cedges;
-    std::vector<uint8_t> closed;
-    chain_edges(cx_.edge_verts, cx_.vert_edges, member, cx_.edge_valence, std::vector<uint8_t>(nv, 0),
-                cverts, cedges, closed);
-    w_.vert_singular.assign(nv, 0);
-    std::vector<int32_t> poly;
-    for (size_t s = 0; s < cedges.rows(); ++s) {
-      const auto vs = cverts[s];
-      const auto es = cedges[s];
-      poly.clear();
-      for (size_t i = 0; i < es.size(); ++i) append_points(cx_, es[i], vs[i], poly);
-      std::array<int32_t, 2> ends{-1, -1};
-      if (!closed[s]) {
-        ends = {vs.front(), vs.back()};
-        w_.vert_singular[vs.front()] = w_.vert_singular[vs.back()] = 1;
-      }
-      push_wire(WireKind::Vsg, es, poly, ends, cx_.edge_valence[es[0]], TraceStop::None);
-    }
-    for (size_t e = 0; e < ne; ++e) {
-      if (!w_.edge_vsg[e] || !cx_.closed(e)) continue;
-      const auto pts = cx_.edge_points[e];
-      poly.assign(pts.begin(), pts.end());
-      const int32_t one = static_cast<int32_t>(e);
-      push_wire(WireKind::Vsg, std::span<const int32_t>(&one, 1), poly, {-1, -1}, cx_.edge_valence[e],
-                TraceStop::None);
-    }
-    w_.vsg_chains = static_cast<int64_t>(w_.kind.size());
-    for (size_t v = 0; v < nv; ++v)
-      if (w_.vert_singular[v]) w_.singular_vertices.push_back(static_cast<int32_t>(v));
-  }
-
-  // The straight continuation of `in` at vertex v (off the VSG), or -1.
-  int32_t continuation(int32_t v, int32_t in, bool along_boundary) const {
-    int32_t found = -1;
-    for (int32_t f : cx_.vert_edges[v]) {
-      if (f == in || cx_.closed(f) || (along_boundary && !cx_.edge_boundary[f])) continue;
-      if (share_cell(cx_, in, f)) continue;
-      if (found >= 0) return -1;
-      found = f;
-    }
-    return found;
-  }
-
-  void add_traces() {
-    std::vector<int32_t> es, poly;
-    for (int32_t v : w_.singular_vertices) {
-      for (int32_t e0 : cx_.vert_edges[v]) {
-        // A trace joining two singular vertices is found from both; the first one keeps it.
-        if (w_.edge_vsg[e0] || cx_.closed(e0) || edge_wire_[e0] >= 0) continue;
-        es.clear();
-        poly.clear();
-        const bool along_boundary = cx_.edge_boundary[e0];
-        int32_t cur = v, e = e0;
-        TraceStop stop = TraceStop::NoContinuation;
-        for (;;) {
-          es.push_back(e);
-          append_points(cx_, e, cur, poly);
-          cur = cx_.other_vertex(e, cur);
-          if (w_.vert_vsg[cur]) {
-            stop = TraceStop::VsgVertex;
-            break;
-          }
-          if (!along_boundary && cx_.vert_boundary[cur]) {
-            stop = TraceStop::Boundary;
-            break;
-          }
-          const int32_t next = continuation(cur, e, along_boundary);
-          // A straight line may cross itself through a vertex; it never reuses an edge.
-          if (next < 0 || edge_wire_[next] >= 0 || std::find(es.begin(), es.end(), next) != es.end()) break;
-          e = next;
-        }
-        push_wire(WireKind::Trace, es, poly, {v, cur}, cx_.edge_valence[e0], stop);
-      }
-    }
-  }
-
-  void index_points() {
-    int32_t max_id = -1;
-    for (int32_t p : w_.polylines.items) max_id = std::max(max_id, p);
-    point_of_mesh_.assign(static_cast<size_t>(max_id + 1), -1);
-    int32_t n = 0;
-    std::vector<int32_t> sorted(w_.polylines.items);
-    std::sort(sorted.begin(), sorted.end());
-    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-    for (int32_t p : sorted) point_of_mesh_[p] = n++;
-    std::vector<int32_t> buf;
-    for (size_t w = 0; w < w_.size(); ++w) {
-      buf.clear();
-      for (int32_t p : w_.polylines[w]) buf.push_back(point_of_mesh_[p]);
-      std::sort(buf.begin(), buf.end());
-      buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
-      wire_points_.push_row(buf.begin(), buf.end());
-    }
-    point_wires_ = transpose(wire_points_, static_cast<size_t>(n));
-  }
-
-  void mark_non_important();
-  void reactivate();
-  int64_t count_components(const std::vector<uint8_t>& use);
-  void opacity();
-  void colours();
-};
-
-// Paper §5.1. Criterion 1: both ends non-important. Criteria 2 and 3 look at the regular edges
-// (trace ends) around each singular vertex: two can be paired when they share no cell and every
-// face around each is a quad.
-void Builder::mark_non_important() {
-  const size_t nv = cx_.num_vertices(), nw = w_.size();
-  w_.vert_non_important.assign(nv, 0);
-  for (size_t v = 0; v < nv; ++v) {
-    const bool all_quad_corner = cx_.vert_boundary[v] && cx_.vert_cell_count[v] == 1 && cx_.vert_all_quad[v];
-    w_.vert_non_important[v] = !w_.vert_singular[v] || all_quad_corner;
-  }
-  w_.non_important.assign(nw, 0);
-  auto mark = [&](size_t w, uint8_t criterion) {
-    if (w_.non_important[w] == 0 || w_.non_important[w] > criterion) w_.non_important[w] = criterion;
-  };
-  for (size_t w = 0; w < nw; ++w) {
-    const auto [a, b] = w_.ends[w];
-    if (a >= 0 && w_.vert_non_important[a] && w_.vert_non_important[b]) mark(w, 1);
-  }
-  // (vertex, wire, local complex edge) for every trace end at a singular vertex.
-  struct Incidence {
-    int32_t vert, wire, edge;
-  };
-  std::vector<Incidence> inc;
-  for (size_t w = 0; w < nw; ++w) {
-    if (w_.kind[w] != WireKind::Trace) continue;
-    const auto es = w_.edges[w];
-    const int32_t id = static_cast<int32_t>(w);
-    inc.push_back({w_.ends[w][0], id, es.front()});
-    if (w_.vert_singular[w_.ends[w][1]]) inc.push_back({w_.ends[w][1], id, es.back()});
-  }
-  std::stable_sort(inc.begin(), inc.end(), [](const Incidence& x, const Incidence& y) { return x.vert < y.vert; });
-  std::vector<std::vector<int32_t>> pairs;  // per candidate at the vertex: the candidates it pairs with
-  std::vector<int32_t> cand;
-  for (size_t i = 0; i < inc.size();) {
-    size_t j = i;
-    while (j < inc.size() && inc[j].vert == inc[i].vert) ++j;
-    cand.clear();
-    for (size_t k = i; k < j; ++k)
-      if (cx_.edge_all_quad[inc[k].edge]) cand.push_back(static_cast<int32_t>(k));
-    pairs.assign(cand.size(), {});
-    for (size_t x = 0; x < cand.size(); ++x)
-      for (size_t y = 0; y < cand.size(); ++y) {
-        const Incidence &p = inc[cand[x]], &q = inc[cand[y]];
-        if (x != y && p.wire != q.wire && !share_cell(cx_, p.edge, q.edge)) pairs[x].push_back(static_cast<int32_t>(y));
-      }
-    for (size_t x = 0; x < cand.size(); ++x) {
-      const auto& px = pairs[x];
-      if (px.size() == 1 && pairs[px[0]].size() == 1 && pairs[px[0]][0] == static_cast<int32_t>(x)) {
-        mark(inc[cand[x]].wire, 2);
-      } else if (px.size() >= 2) {
-        bool only_me = true;
-        int32_t lowest = std::numeric_limits<int32_t>::max();
-        for (int32_t y : px) {
-          only_me = only_me && pairs[y].size() == 1 && pairs[y][0] == static_cast<int32_t>(x);
-          lowest = std::min(lowest, inc[cand[y]].wire);
-        }
-        if (only_me) {
-          mark(inc[cand[x]].wire, 3);
-          mark(lowest, 3);  // the paper picks one partner at random; we take the lowest index
-        }
-      }
-    }
-    i = j;
+// Closed complex edges (curves without corners) are chains by themselves when seeded.
+void add_closed(const CellComplex& cx, const std::vector<uint8_t>& seed, Chains& ch) {
+  for (size_t e = 0; e < seed.size(); ++e) {
+    if (!seed[e] || !cx.closed(e)) continue;
+    const int32_t one = static_cast<int32_t>(e), none[2] = {-1, -1};
+    ch.edges.push_row(&one, &one + 1);
+    ch.verts.push_row(none, none + 2);
   }
 }
 
-int64_t Builder::count_components(const std::vector<uint8_t>& use) {
-  MinUnionFind uf(point_wires_.rows());
-  std::vector<uint8_t> touched(point_wires_.rows(), 0);
-  for (size_t w = 0; w < w_.size(); ++w) {
-    if (!use[w]) continue;
-    const auto pts = wire_points_[w];
-    for (int32_t p : pts) {
-      touched[p] = 1;
-      uf.unite(pts[0], p);
-    }
-  }
+void push_row_span(Csr<int32_t>& out, std::span<const int32_t> row) { out.push_row(row.begin(), row.end()); }
+
+}  // namespace
+
+int64_t covered_mesh_edges(const CellComplex& cx, const Csr<int32_t>& chains) {
+  std::vector<uint8_t> on = edge_flags(cx, chains);
   int64_t n = 0;
-  for (size_t p = 0; p < touched.size(); ++p) n += touched[p] && uf.find(static_cast<int32_t>(p)) == static_cast<int32_t>(p);
+  for (size_t e = 0; e < on.size(); ++e)
+    if (on[e]) n += cx.edge_points.count(e) - 1;
   return n;
 }
 
-void Builder::reactivate() {
-  const size_t nw = w_.size(), np = point_wires_.rows();
-  std::vector<uint8_t> in_r(nw, 0), shown(nw, 0);
-  for (size_t w = 0; w < nw; ++w) {
-    in_r[w] = w_.kind[w] == WireKind::Vsg || w_.stop[w] == TraceStop::VsgVertex;
-    shown[w] = w_.non_important[w] == 0;
-  }
-  MinUnionFind ur(np), us(np);
-  std::vector<uint8_t> point_shown(np, 0), point_on_vsg(np, 0);
-  for (size_t w = 0; w < nw; ++w) {
-    const auto pts = wire_points_[w];
-    for (int32_t p : pts) {
-      if (in_r[w]) ur.unite(pts[0], p);
-      if (shown[w]) {
-        us.unite(pts[0], p);
-        point_shown[p] = 1;
-        if (w_.kind[w] == WireKind::Vsg) point_on_vsg[p] = 1;
-      }
+namespace {
+
+// ---- Simplification (the authors' cleaning) ----
+
+struct Cleaning {
+  std::vector<uint8_t> redundant_vert, non_important, reactivated, kept;
+};
+
+// Chain ids per edge (-1 off the wireframe) and the chains through each vertex.
+struct ChainIndex {
+  std::vector<int32_t> edge_chain;
+  Csr<int32_t> vert_chains;
+};
+
+ChainIndex index_chains(const CellComplex& cx, const Chains& ch, const std::vector<uint8_t>& keep) {
+  ChainIndex ix;
+  ix.edge_chain.assign(cx.num_edges(), -1);
+  Csr<int32_t> chain_verts;
+  std::vector<int32_t> buf;
+  for (size_t c = 0; c < ch.edges.rows(); ++c) {
+    buf.clear();
+    if (keep[c]) {
+      for (int32_t e : ch.edges[c]) ix.edge_chain[e] = static_cast<int32_t>(c);
+      for (int32_t v : ch.verts[c])
+        if (v >= 0) buf.push_back(v);
+      std::sort(buf.begin(), buf.end());
+      buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
     }
+    chain_verts.push_row(buf.begin(), buf.end());
   }
-  // Cost of showing a hidden R edge: first whether it touches a shown VSG chain, then its length.
-  constexpr int64_t kFar = int64_t{1} << 32;
-  std::vector<int64_t> cost(nw, 0);
-  for (size_t w = 0; w < nw; ++w) {
-    bool touches = false;
-    for (int32_t p : wire_points_[w]) touches = touches || point_on_vsg[p];
-    cost[w] = (touches ? 0 : kFar) + static_cast<int64_t>(w_.polylines.count(w)) - 1;
-  }
-  // Pieces of shown edges per component of R, visited in order of the component's lowest point.
-  std::vector<std::vector<int32_t>> pieces(np);
-  for (size_t p = 0; p < np; ++p) {
-    if (!point_shown[p]) continue;
-    bool in_reference = false;
-    for (int32_t w : point_wires_[p]) in_reference = in_reference || in_r[w];
-    if (!in_reference) continue;
-    auto& list = pieces[ur.find(static_cast<int32_t>(p))];
-    const int32_t s = us.find(static_cast<int32_t>(p));
-    if (std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
-  }
-  w_.reactivated.assign(nw, 0);
-  std::vector<int64_t> dist(np, std::numeric_limits<int64_t>::max());
-  std::vector<int32_t> via_wire(np, -1), via_point(np, -1), reached;
-  std::vector<uint8_t> expanded(nw, 0);
-  using Item = std::pair<int64_t, int32_t>;
-  for (size_t k = 0; k < np; ++k) {
-    if (pieces[k].size() < 2) continue;
-    const int32_t component = static_cast<int32_t>(k);
-    for (;;) {
-      // Grow from the piece holding the component's lowest shown point until another piece.
-      const int32_t tree = us.find(pieces[k][0]);
-      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
-      for (int32_t p : reached) dist[p] = std::numeric_limits<int64_t>::max(), via_wire[p] = via_point[p] = -1;
-      reached.clear();
-      std::fill(expanded.begin(), expanded.end(), 0);
-      for (size_t p = 0; p < np; ++p)
-        if (point_shown[p] && us.find(static_cast<int32_t>(p)) == tree && ur.find(static_cast<int32_t>(p)) == component) {
-          dist[p] = 0;
-          reached.push_back(static_cast<int32_t>(p));
-          pq.push({0, static_cast<int32_t>(p)});
-        }
-      int32_t target = -1;
-      while (!pq.empty()) {
-        const auto [d, p] = pq.top();
-        pq.pop();
-        if (d != dist[p]) continue;
-        if (point_shown[p] && us.find(p) != tree) {
-          target = p;
-          break;
-        }
-        for (int32_t w : point_wires_[p]) {
-          if (!in_r[w] || shown[w] || expanded[w]) continue;
-          expanded[w] = 1;
-          for (int32_t q : wire_points_[w]) {
-            if (d + cost[w] >= dist[q]) continue;
-            if (dist[q] == std::numeric_limits<int64_t>::max()) reached.push_back(q);
-            dist[q] = d + cost[w];
-            via_wire[q] = w;
-            via_point[q] = p;
-            pq.push({dist[q], q});
-          }
-        }
-      }
-      if (target < 0) break;  // cannot happen: R's component is connected
-      for (int32_t p = target; via_wire[p] >= 0; p = via_point[p]) {
-        const int32_t w = via_wire[p];
-        if (shown[w]) continue;
-        shown[w] = 1;
-        w_.reactivated[w] = 1;
-        const auto pts = wire_points_[w];
-        for (int32_t q : pts) {
-          us.unite(pts[0], q);
-          point_shown[q] = 1;
-        }
-      }
-      us.unite(tree, target);
-      auto& list = pieces[k];
-      for (int32_t& s : list) s = us.find(s);
-      std::sort(list.begin(), list.end());
-      list.erase(std::unique(list.begin(), list.end()), list.end());
-      if (list.size() < 2) break;
-    }
-  }
-  w_.shown = shown;
-  w_.reference_components = count_components(in_r);
-  w_.shown_components = count_components(shown);
+  ix.vert_chains = transpose(chain_verts, cx.num_vertices());
+  return ix;
 }
 
-void Builder::opacity() {
-  const size_t nv = cx_.num_vertices(), ne = cx_.num_edges();
-  constexpr int32_t kInf = std::numeric_limits<int32_t>::max() / 4;
-  std::vector<uint8_t> source(ne, 0);
-  std::vector<int32_t> dv(nv, kInf);
-  using Item = std::pair<int32_t, int32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
-  for (size_t e = 0; e < ne; ++e) {
-    source[e] = w_.edge_vsg[e] || cx_.edge_non_hex[e];
-    if (!source[e] || cx_.closed(e)) continue;
-    for (int32_t v : cx_.edge_verts[e])
-      if (dv[v] != 0) {
-        dv[v] = 0;
-        pq.push({0, v});
-      }
+// A redundant singular vertex: the corner of one cell with only quads around it, or one whose
+// wireframe edges are all of regular valence (or all-quad corner edges).
+bool redundant_vertex(const Region& r, const ChainIndex& ix, int32_t v) {
+  if (r.cx.vert_cell_count[v] == 1 && r.cx.vert_all_quad[v]) return true;
+  for (int32_t e : r.cx.vert_edges[v])
+    if (ix.edge_chain[e] >= 0 && !r.regular(e) && !r.quad_corner_edge(e)) return false;
+  return true;
+}
+
+// Candidate removable pairs of edges at v: a regular wireframe edge (or an all-quad corner edge)
+// with only quads around it, and its straight continuation (the only edge sharing no face with it,
+// else the only such all-quad edge) if that is a candidate too.
+std::vector<std::array<int32_t, 2>> candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v) {
+  std::vector<int32_t> cand;
+  for (int32_t e : r.cx.vert_edges[v])
+    if ((ix.edge_chain[e] >= 0 && r.regular(e)) || r.quad_corner_edge(e)) cand.push_back(e);
+  std::vector<std::array<int32_t, 2>> pairs;
+  for (int32_t e : cand) {
+    if (!r.cx.edge_all_quad[e]) continue;
+    int32_t next = -1, quad_next = -1, n = 0, nq = 0;
+    for (int32_t f : r.cx.vert_edges[v]) {
+      if (f == e || r.share_face(e, f)) continue;
+      next = f, ++n;
+      if (r.cx.edge_all_quad[f]) quad_next = f, ++nq;
+    }
+    const int32_t pick = n == 1 ? next : nq == 1 ? quad_next : -1;
+    if (pick < 0 || std::find(cand.begin(), cand.end(), pick) == cand.end()) continue;
+    const std::array<int32_t, 2> p{std::min(e, pick), std::max(e, pick)};
+    if (std::find(pairs.begin(), pairs.end(), p) == pairs.end()) pairs.push_back(p);
   }
-  // Distances beyond opacity_hops all give the floor, so the search stops there.
-  const int32_t horizon = std::max(opt_.opacity_hops, 1);
-  while (!pq.empty()) {
-    const auto [d, v] = pq.top();
-    pq.pop();
-    if (d != dv[v]) continue;
-    for (int32_t e : cx_.vert_edges[v]) {
-      const int32_t u = cx_.other_vertex(e, v);
-      const int32_t nd = d + cx_.edge_points.count(e) - 1;
-      if (nd < dv[u] && nd <= horizon) {
-        dv[u] = nd;
-        pq.push({nd, u});
-      }
+  return pairs;
+}
+
+// Pairs sharing an edge form a group; a group of one pair stays, a larger one keeps the one pair of
+// lowest valence gap, else of highest quad ratio, else none (the authors' tie-breaks).
+std::vector<std::array<int32_t, 2>> resolve_pairs(const Region& r, const std::vector<std::array<int32_t, 2>>& pairs) {
+  const size_t n = pairs.size();
+  detail::UnionFind uf(n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j)
+      if (intersects(pairs[i], pairs[j]))
+        uf.unite(static_cast<int32_t>(i), static_cast<int32_t>(j));
+  std::vector<std::array<int32_t, 2>> out;
+  for (size_t g = 0; g < n; ++g) {
+    if (uf.find(static_cast<int32_t>(g)) != static_cast<int32_t>(g)) continue;
+    std::vector<size_t> members;
+    for (size_t i = 0; i < n; ++i)
+      if (uf.find(static_cast<int32_t>(i)) == static_cast<int32_t>(g)) members.push_back(i);
+    if (members.size() == 1) {
+      out.push_back(pairs[members[0]]);
+      continue;
+    }
+    auto gap = [&](size_t i) { return r.valence_gap(pairs[i][0]) + r.valence_gap(pairs[i][1]); };
+    auto qr = [&](size_t i) { return r.quad_ratio(pairs[i][0]) + r.quad_ratio(pairs[i][1]); };
+    int32_t best_gap = gap(members[0]);
+    for (size_t i : members) best_gap = std::min(best_gap, gap(i));
+    std::vector<size_t> low;
+    for (size_t i : members)
+      if (gap(i) == best_gap) low.push_back(i);
+    double best_qr = qr(low[0]);
+    for (size_t i : low) best_qr = std::max(best_qr, qr(i));
+    size_t count = 0, pick = 0;
+    for (size_t i : low)
+      if (qr(i) == best_qr) ++count, pick = i;
+    if (low.size() == 1 || count == 1) out.push_back(pairs[low.size() == 1 ? low[0] : pick]);
+  }
+  return out;
+}
+
+// Chain pairs (sorted, second -1 when both edges lie on one chain or one is off the wireframe).
+using ChainPair = std::array<int32_t, 2>;
+ChainPair chain_pair(const ChainIndex& ix, const std::array<int32_t, 2>& p) {
+  int32_t a = ix.edge_chain[p[0]], b = ix.edge_chain[p[1]];
+  if (a < 0 || a == b) a = b, b = -1;
+  if (b >= 0 && b < a) std::swap(a, b);
+  return {a, b};
+}
+
+struct PairTable {
+  std::vector<std::vector<ChainPair>> at;  // nv: resolved chain pairs at the vertex (empty: none)
+};
+
+ChainPair make_pair_of(int32_t a, int32_t b) {
+  if (a == b) return {a, -1};
+  return {std::min(a, b), std::max(a, b)};
+}
+
+bool in_pair(const std::vector<ChainPair>& ps, int32_t c) {
+  for (const auto& p : ps)
+    if (p[0] == c || p[1] == c) return true;
+  return false;
+}
+
+// The chain's edge at its end v.
+int32_t end_edge(const Chains& ch, int32_t c, int32_t v) {
+  const auto es = ch.edges[c];
+  return ch.verts[c].front() == v ? es.front() : es.back();
+}
+
+// Chains continuing chain c at its end v: those holding an edge at v sharing no face with c's
+// edge there; at a vertex with pairs, c's partners if any, else the chains in no pair. With none,
+// along the boundary: boundary edges at v with the same cells as c's edge (sheet-parallel ones
+// dropped when that leaves several).
+void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
+                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, std::vector<int32_t>& out) {
+  const CellComplex& cx = r.cx;
+  const int32_t e = end_edge(ch, c, v);
+  std::vector<int32_t> found;
+  for (int32_t f : cx.vert_edges[v])
+    if (f != e && !r.share_face(e, f) && ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
+  const auto& ps = pt.at[v];
+  if (!ps.empty()) {
+    std::vector<int32_t> partners, free;
+    for (int32_t s : found) {
+      if (std::find(ps.begin(), ps.end(), make_pair_of(c, s)) != ps.end()) partners.push_back(s);
+      if (!in_pair(ps, s)) free.push_back(s);
+    }
+    found = partners.empty() ? free : partners;
+  }
+  if (found.empty() && cx.vert_boundary[v] && cx.edge_boundary[ch.edges[c][0]]) {
+    std::vector<int32_t> side;
+    for (int32_t f : cx.vert_edges[v]) {
+      const auto a = cx.edge_cells[e], b = cx.edge_cells[f];
+      if (f != e && cx.edge_boundary[f] && std::equal(a.begin(), a.end(), b.begin(), b.end())) side.push_back(f);
+    }
+    if (side.size() > 1) std::erase_if(side, [&](int32_t f) { return parallel[f] != 0; });
+    for (int32_t f : side)
+      if (ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
+  }
+  out.insert(out.end(), found.begin(), found.end());
+}
+
+Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& singular,
+                      const std::vector<uint8_t>& parallel) {
+  const CellComplex& cx = r.cx;
+  const size_t nc = ch.edges.rows(), nv = cx.num_vertices();
+  const ChainIndex ix = index_chains(cx, ch, std::vector<uint8_t>(nc, 1));
+  Cleaning cl;
+  cl.redundant_vert.assign(nv, 0);
+  for (size_t v = 0; v < nv; ++v)
+    cl.redundant_vert[v] = singular[v] && redundant_vertex(r, ix, static_cast<int32_t>(v));
+  PairTable pt;
+  pt.at.resize(nv);
+  cl.non_important.assign(nc, 0);
+  for (size_t v = 0; v < nv; ++v) {
+    if (!singular[v] || cl.redundant_vert[v]) continue;
+    for (const auto& p : resolve_pairs(r, candidate_pairs(r, ix, static_cast<int32_t>(v)))) {
+      const ChainPair cp = chain_pair(ix, p);
+      if (cp[0] < 0) continue;
+      pt.at[v].push_back(cp);
+      for (int32_t c : cp)
+        if (c >= 0) cl.non_important[c] = 2;
     }
   }
-  const double floor = std::clamp(opt_.opacity_floor, 0.0, 1.0);
-  auto value = [&](int32_t d) {
-    return static_cast<float>(std::max(floor, 1.0 - (1.0 - floor) * double(d) / double(horizon)));
-  };
-  w_.point_opacity.assign(w_.polylines.items.size(), 1.0f);
-  for (size_t w = 0; w < w_.size(); ++w) {
-    const auto es = w_.edges[w];
-    bool full = w_.kind[w] == WireKind::Vsg;
-    for (int32_t e : es) full = full || cx_.edge_non_hex[e];
-    if (full) continue;
-    // Walk the complex edges in polyline order; point k of an edge of n segments from end a to b
-    // is min(d(a) + k, d(b) + n - k) hops away.
-    size_t out = static_cast<size_t>(w_.polylines.offsets[w]);
-    int32_t cur = w_.ends[w][0];
-    for (size_t i = 0; i < es.size(); ++i) {
-      const int32_t e = es[i];
-      const int32_t n = cx_.edge_points.count(e) - 1;
-      const int32_t next = cx_.other_vertex(e, cur);
-      for (int32_t k = i == 0 ? 0 : 1; k <= n; ++k) {
-        const int32_t d = source[e] ? 0 : std::min(dv[cur] + k, dv[next] + n - k);
-        w_.point_opacity[out++] = value(d);
+  std::vector<int32_t> stack;
+  for (size_t c = 0; c < nc; ++c) {
+    if (cl.non_important[c]) continue;
+    const auto vs = ch.verts[c];
+    const bool open = vs.front() != vs.back();
+    if (open && cl.redundant_vert[vs.front()] && cl.redundant_vert[vs.back()]) cl.non_important[c] = 1;
+    else stack.push_back(static_cast<int32_t>(c));
+  }
+  // Reactivation: everything reached from a kept chain through its continuations stays.
+  std::vector<uint8_t> keep(nc, 0);
+  while (!stack.empty()) {
+    const int32_t c = stack.back();
+    stack.pop_back();
+    if (keep[c]) continue;
+    keep[c] = 1;
+    const auto vs = ch.verts[c];
+    if (vs.front() == vs.back()) continue;
+    for (int32_t v : {vs.front(), vs.back()}) next_chains(r, ch, ix, pt, parallel, c, v, stack);
+  }
+  cl.reactivated.assign(nc, 0);
+  for (size_t c = 0; c < nc; ++c) {
+    cl.reactivated[c] = keep[c] && cl.non_important[c];
+    bool all_parallel = true;
+    for (int32_t e : ch.edges[c]) all_parallel = all_parallel && parallel[e];
+    if (all_parallel) keep[c] = 0;
+  }
+  cl.kept = std::move(keep);
+  return cl;
+}
+
+// The kept chains re-chained: a kept chain end stays singular unless exactly two kept chains pass
+// through it with no two of its wireframe edges in one cell; chains are then traced from the edges
+// at the remaining singular vertices along the unique kept straight continuation. (Chains that
+// touch no remaining singular vertex, closed ones included, drop out, as in the authors' code.)
+Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& kept) {
+  const CellComplex& cx = r.cx;
+  const ChainIndex ix = index_chains(cx, ch, kept);
+  std::vector<uint8_t> on(cx.num_edges(), 0), singular(cx.num_vertices(), 0);
+  for (size_t e = 0; e < on.size(); ++e) on[e] = ix.edge_chain[e] >= 0;
+  std::vector<int32_t> at;
+  for (size_t c = 0; c < ch.edges.rows(); ++c) {
+    const auto vs = ch.verts[c];
+    if (!kept[c] || vs.front() == vs.back()) continue;
+    for (int32_t v : {vs.front(), vs.back()}) {
+      if (ix.vert_chains.count(v) != 2) {
+        singular[v] = 1;
+        continue;
       }
-      cur = next;
+      at.clear();
+      for (int32_t e : cx.vert_edges[v])
+        if (on[e]) at.push_back(e);
+      for (size_t i = 0; i < at.size() && !singular[v]; ++i)
+        for (size_t j = i + 1; j < at.size(); ++j)
+          if (r.share_cell(at[i], at[j])) singular[v] = 1;
     }
+  }
+  std::vector<uint8_t> seeds(cx.num_edges(), 0);
+  for (size_t v = 0; v < singular.size(); ++v)
+    if (singular[v])
+      for (int32_t e : cx.vert_edges[v]) seeds[e] = on[e];
+  return trace_chains(cx, seeds, singular, [&](int32_t v, int32_t e) {
+    return straight_next(r, v, e, [&](int32_t f) { return on[f] != 0; });
+  });
+}
+
+void fill_complete(const Region& r, const Chains& ch, VsgWireframe& w) {
+  const CellComplex& cx = r.cx;
+  for (size_t c = 0; c < ch.edges.rows(); ++c) {
+    const auto es = ch.edges[c], vs = ch.verts[c];
+    push_row_span(w.edges, es);
+    if (vs[0] < 0) push_row_span(w.polylines, cx.edge_points[es[0]]);
+    else push_polyline(cx, es, vs, w.polylines);
+    const bool closed = vs.front() == vs.back();
+    w.ends.push_back(closed ? std::array<int32_t, 2>{-1, -1} : std::array<int32_t, 2>{vs.front(), vs.back()});
+    bool all_vsg = true;
+    for (int32_t e : es) all_vsg = all_vsg && w.edge_vsg[e];
+    w.kind.push_back(all_vsg ? WireKind::Vsg : WireKind::Trace);
+    w.valence.push_back(r.valence(es[0]));
+    const int32_t last = vs.back();
+    w.stop.push_back(closed ? TraceStop::None
+                     : w.vert_singular[last] ? TraceStop::VsgVertex
+                     : cx.vert_boundary[last] ? TraceStop::Boundary
+                                              : TraceStop::NoContinuation);
   }
 }
 
-void Builder::colours() {
-  const size_t nw = w_.size();
-  // (w, w', e): complex edge e of wire w is parallel (Definition 1) to an edge of wire w'.
-  std::vector<std::array<int32_t, 3>> par;
-  for (size_t w = 0; w < nw; ++w)
-    for (int32_t e : w_.edges[w])
-      for (int32_t f : cx_.edge_faces[e]) {
-        if (!cx_.face_quad[f]) continue;
-        for (int32_t g : cx_.face_edges[f]) {
-          const int32_t w2 = edge_wire_[g];
-          if (g == e || w2 < 0 || w2 == static_cast<int32_t>(w) || share_vertex(cx_, e, g)) continue;
-          par.push_back({static_cast<int32_t>(w), w2, e});
-        }
-      }
-  std::sort(par.begin(), par.end());
-  par.erase(std::unique(par.begin(), par.end()), par.end());
-  // Count per ordered pair, then look up the reverse pair.
-  std::vector<std::array<int32_t, 3>> counts;  // (w, w', |E_w|)
-  for (size_t i = 0; i < par.size();) {
-    size_t j = i;
-    while (j < par.size() && par[j][0] == par[i][0] && par[j][1] == par[i][1]) ++j;
-    counts.push_back({par[i][0], par[i][1], static_cast<int32_t>(j - i)});
-    i = j;
+int64_t components(const CellComplex& cx, const Csr<int32_t>& chains) {
+  const size_t nv = cx.num_vertices();
+  detail::UnionFind uf(nv + chains.rows());
+  for (size_t c = 0; c < chains.rows(); ++c) {
+    const int32_t id = static_cast<int32_t>(nv + c);
+    for (int32_t e : chains[c])
+      for (int32_t v : cx.edge_verts[e])
+        if (v >= 0) uf.unite(id, v);
   }
-  MinUnionFind uf(nw);
-  for (const auto& c : counts) {
-    if (c[0] > c[1]) continue;
-    auto it = std::lower_bound(counts.begin(), counts.end(), std::array<int32_t, 3>{c[1], c[0], 0});
-    if (it == counts.end() || (*it)[0] != c[1] || (*it)[1] != c[0]) continue;
-    const double fa = double(c[2]) / double(w_.edges.count(c[0]));
-    const double fb = double((*it)[2]) / double(w_.edges.count(c[1]));
-    if (std::min(fa, fb) >= opt_.rho) uf.unite(c[0], c[1]);
-  }
-  w_.color_class.resize(nw);
-  for (size_t w = 0; w < nw; ++w) w_.color_class[w] = uf.find(static_cast<int32_t>(w));
-  // Class graph: classes of wire edges sharing a point. Each class's neighbours are visited on
-  // the fly (a stamp per class counts each once) instead of listed as pairs: the classes at one
-  // point form a clique, and a point where thousands of wires meet (a fan of cells around an
-  // edge) would make the pair list quadratic in memory.
-  Csr<int32_t> wire_class;
-  for (size_t w = 0; w < nw; ++w) wire_class.push_row(&w_.color_class[w], &w_.color_class[w] + 1);
-  const Csr<int32_t> class_wires = transpose(wire_class, nw);
-  const int32_t palette = std::max(opt_.palette_size, 1);
-  std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette)), stamp(nw, -1);
-  for (size_t c = 0; c < nw; ++c) {
-    if (w_.color_class[c] != static_cast<int32_t>(c)) continue;
-    std::fill(used.begin(), used.end(), 0);
-    stamp[c] = static_cast<int32_t>(c);
-    for (int32_t w : class_wires[c])
-      for (int32_t p : wire_points_[w])
-        for (int32_t w2 : point_wires_[p]) {
-          const int32_t b = w_.color_class[w2];
-          if (stamp[b] == static_cast<int32_t>(c)) continue;
-          stamp[b] = static_cast<int32_t>(c);
-          if (class_color[b] >= 0) ++used[class_color[b]];
-        }
-    // The first free colour; with none free, the one fewest neighbours hold.
-    class_color[c] = static_cast<int32_t>(std::min_element(used.begin(), used.end()) - used.begin());
-  }
-  w_.color.resize(nw);
-  for (size_t w = 0; w < nw; ++w) w_.color[w] = class_color[w_.color_class[w]];
+  // A chain's own id joins its vertices' set: count sets, not chains.
+  std::vector<int32_t> roots;
+  for (size_t c = 0; c < chains.rows(); ++c) roots.push_back(uf.find(static_cast<int32_t>(nv + c)));
+  std::sort(roots.begin(), roots.end());
+  return std::unique(roots.begin(), roots.end()) - roots.begin();
 }
 
 }  // namespace
 
-VsgWireframe vsg_wireframe(const CellComplex& complex, const WireframeOptions& options) {
+VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& opt) {
+  const Region r{cx};
   VsgWireframe w;
-  Builder(complex, options, w).run();
+  const size_t ne = cx.num_edges(), nv = cx.num_vertices();
+  w.edge_vsg.assign(ne, 0);
+  for (size_t e = 0; e < ne; ++e) w.edge_vsg[e] = !r.regular(static_cast<int32_t>(e));
+  w.vsg_edges = std::count(w.edge_vsg.begin(), w.edge_vsg.end(), uint8_t{1});
+
+  // VSG: chains of seeds, broken only where the continuation is not unique or changes valence.
+  Chains vsg = valence_chains(r, w.edge_vsg, std::vector<uint8_t>(nv, 0));
+  add_closed(cx, w.edge_vsg, vsg);
+  w.vsg_chain_edges = vsg.edges;
+  w.vsg_chains = static_cast<int64_t>(vsg.edges.rows());
+  w.vert_vsg = chain_end_flags(cx, vsg);
+
+  // Complete wireframe: flood from the VSG's edges and from every edge at a VSG vertex.
+  std::vector<uint8_t> start = edge_flags(cx, vsg.edges);
+  for (size_t v = 0; v < nv; ++v)
+    if (w.vert_vsg[v])
+      for (int32_t e : cx.vert_edges[v]) start[e] = 1;
+  w.vert_singular = patch_singular_vertices(r, flood_faces(r, start));
+  for (size_t v = 0; v < nv; ++v)
+    if (w.vert_singular[v]) w.singular_vertices.push_back(static_cast<int32_t>(v));
+  std::vector<uint8_t> seeds(ne, 0);
+  for (int32_t v : w.singular_vertices)
+    for (int32_t e : cx.vert_edges[v]) seeds[e] = 1;
+  const Chains complete = valence_chains(r, seeds, w.vert_singular);
+  fill_complete(r, complete, w);
+
+  // Simplification.
+  std::vector<uint8_t> parallel(ne, 0);
+  for (int32_t e : opt.parallel_edges)
+    if (e >= 0 && static_cast<size_t>(e) < ne) parallel[e] = 1;
+  const Cleaning cl = clean_chains(r, complete, w.vert_singular, parallel);
+  w.vert_non_important.resize(nv);
+  for (size_t v = 0; v < nv; ++v) w.vert_non_important[v] = !w.vert_singular[v] || cl.redundant_vert[v];
+  w.non_important = cl.non_important;
+  w.reactivated = cl.reactivated;
+  const Chains simple = final_chains(r, complete, cl.kept);
+  w.simplified_edges = simple.edges;
+  for (size_t c = 0; c < simple.edges.rows(); ++c)
+    push_polyline(cx, simple.edges[c], simple.verts[c], w.simplified_polylines);
+  const std::vector<uint8_t> on = edge_flags(cx, simple.edges);
+  w.shown.assign(w.size(), 0);
+  for (size_t c = 0; c < w.size(); ++c) {
+    bool all = true;
+    for (int32_t e : w.edges[c]) all = all && on[e];
+    w.shown[c] = all;
+  }
+  w.vsg_mesh_edges = covered_mesh_edges(cx, w.vsg_chain_edges);
+  w.wireframe_mesh_edges = covered_mesh_edges(cx, w.edges);
+  w.simplified_mesh_edges = covered_mesh_edges(cx, w.simplified_edges);
+  w.reference_components = components(cx, w.edges);
+  w.shown_components = components(cx, w.simplified_edges);
+  return w;
+}
+
+VsgWireframe vsg_wireframe(const CellComplex& cx, const WireframeOptions& opt) {
+  VsgWireframe w = vsg_wireframe_graph(cx, opt);
+  w.style = wireframe_style(cx, w, opt);
   return w;
 }
 

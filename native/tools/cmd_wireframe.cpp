@@ -61,6 +61,9 @@ std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level
   key("singular_vertices"), o += std::to_string(w.singular_vertices.size()) + ",\n";
   key("wireframe_edges"), o += std::to_string(w.wireframe_edges()) + ",\n";
   key("wireframe_edges_simplified"), o += std::to_string(w.wireframe_edges_simplified()) + ",\n";
+  key("vsg_mesh_edges"), o += std::to_string(w.vsg_mesh_edges) + ",\n";
+  key("wireframe_mesh_edges"), o += std::to_string(w.wireframe_mesh_edges) + ",\n";
+  key("wireframe_mesh_edges_simplified"), o += std::to_string(w.simplified_mesh_edges) + ",\n";
   key("reference_components"), o += std::to_string(w.reference_components) + ",\n";
   key("shown_components"), o += std::to_string(w.shown_components) + ",\n";
   key("seconds_vsg_wireframe"), append_real(o, seconds), o += ",\n";
@@ -74,8 +77,8 @@ std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level
     o += ", \"non_important\": " + std::to_string(int(w.non_important[i]));
     o += std::string(", \"reactivated\": ") + (w.reactivated[i] ? "true" : "false");
     o += std::string(", \"shown\": ") + (w.shown[i] ? "true" : "false");
-    o += ", \"color_class\": " + std::to_string(w.color_class[i]);
-    o += ", \"color\": " + std::to_string(w.color[i]);
+    o += ", \"color_class\": " + std::to_string(w.style.color_class[i]);
+    o += ", \"color\": " + std::to_string(w.style.color[i]);
     o += ", \"vertices\": [";
     const auto poly = w.polylines[i];
     for (size_t k = 0; k < poly.size(); ++k) {
@@ -91,7 +94,7 @@ std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level
     o += "], \"opacity\": [";
     for (int32_t k = w.polylines.offsets[i]; k < w.polylines.offsets[i + 1]; ++k) {
       if (k != w.polylines.offsets[i]) o += ',';
-      append_real(o, w.point_opacity[k]);
+      append_real(o, w.style.point_opacity[k]);
     }
     o += "]}";
   }
@@ -116,10 +119,10 @@ std::string obj_text(const Mesh& m, const VsgWireframe& w, bool all) {
   // Classes in order of their id (the lowest wire edge), each wire edge listed under its class.
   std::vector<std::vector<int32_t>> members(w.size());
   for (size_t i = 0; i < w.size(); ++i)
-    if (all || w.shown[i]) members[w.color_class[i]].push_back(static_cast<int32_t>(i));
+    if (all || w.shown[i]) members[w.style.color_class[i]].push_back(static_cast<int32_t>(i));
   for (size_t c = 0; c < members.size(); ++c) {
     if (members[c].empty()) continue;
-    o += "o class_" + std::to_string(c) + "_color_" + std::to_string(w.color[c]) + "\n";
+    o += "o class_" + std::to_string(c) + "_color_" + std::to_string(w.style.color[c]) + "\n";
     for (int32_t i : members[c]) {
       o += "l";
       for (int32_t p : w.polylines[i]) o += ' ' + std::to_string(index[p]);
@@ -163,7 +166,7 @@ int cmd_wireframe(const Args& args_in) {
 
   const Mesh m = load_for_cli(args[0], format);
   const BaseComplex bc = base_complex(m, singularity_graph(m));
-  std::vector<int32_t> region_cells;
+  std::vector<int32_t> region_cells, parallel_edges;
   if (sheet >= 0) {
     const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, SheetLevel::Complex));
     if (static_cast<size_t>(sheet) >= sheets.size())
@@ -171,6 +174,7 @@ int cmd_wireframe(const Args& args_in) {
                                   std::to_string(sheets.size()) + " sheets");
     for (auto rows : {sheets.sheet_cells[sheet], sheets.sheet_non_hex_cells[sheet]})
       region_cells.insert(region_cells.end(), rows.begin(), rows.end());
+    parallel_edges.assign(sheets.sheet_edges[sheet].begin(), sheets.sheet_edges[sheet].end());
   }
   const auto t1 = std::chrono::steady_clock::now();
   CellComplex cx;
@@ -179,6 +183,7 @@ int cmd_wireframe(const Args& args_in) {
   } else {
     cx = sheet >= 0 ? complex_from_base(m, bc, components_of_cells(bc, region_cells)) : complex_from_base(m, bc);
   }
+  opt.parallel_edges = complex_edges_of(cx, bc, parallel_edges);
   const VsgWireframe w = vsg_wireframe(cx, opt);
   const auto t2 = std::chrono::steady_clock::now();
 

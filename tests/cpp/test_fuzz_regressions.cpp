@@ -159,7 +159,7 @@ TEST(ResourceBounds, TetFanAnalyze) {
   const Analysis a = analyze(m);
   const double seconds = seconds_since(t0);
   EXPECT_EQ(a.wireframe.vsg_edges, k + 1);  // the axis and the k spokes at its ends
-  EXPECT_EQ(a.wireframe.color.size(), a.wireframe.size());
+  EXPECT_EQ(a.wireframe.style.color.size(), a.wireframe.size());
   EXPECT_LT(seconds, 5.0) << "quadratic again? (the pair list took 10 s and 270 MB here)";
 }
 

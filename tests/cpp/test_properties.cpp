@@ -151,9 +151,9 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
     for (size_t j = 1; j < p.size(); ++j)
       EXPECT_TRUE(is_mesh_edge(m, p[j - 1], p[j])) << "wire edge " << i << " step " << j;
   }
-  ASSERT_EQ(w.point_opacity.size(), w.polylines.items.size());
+  ASSERT_EQ(w.style.point_opacity.size(), w.polylines.items.size());
   const float floor = static_cast<float>(opt.wireframe_options.opacity_floor);
-  for (float o : w.point_opacity) {
+  for (float o : w.style.point_opacity) {
     EXPECT_GE(o, floor - 1e-6f);
     EXPECT_LE(o, 1.0f + 1e-6f);
   }

@@ -51,10 +51,22 @@ struct CellComplex {
   Csr<int32_t> face_edges;                // nf rows: bounding edges, sorted
   std::vector<uint8_t> face_quad;         // nf: 4 edges and 4 vertices (a topological quad)
   std::vector<int32_t> face_source;       // nf: mesh face / patch id
+  std::vector<std::array<int32_t, 2>> face_cells;  // nf: region cells on its two sides, lower first; -1 for a side outside
 
   // Cells (nc): mesh cells / components in the region.
   std::vector<uint8_t> cell_non_hex;      // nc: non-hex cell / non-hex component
   std::vector<int32_t> cell_source;       // nc: mesh cell / component id
+
+  // Whole-mesh adjacency of the region's elements, for the rules that look past the region (the
+  // authors' continuation and flood use the whole mesh's faces and cells). Ids are source ids (mesh
+  // faces / patches, mesh cells / components). Empty when the region is the whole mesh: then they
+  // equal edge_faces, edge_cells, face_cells and edge_boundary.
+  Csr<int32_t> edge_all_faces;                        // ne rows, sorted
+  Csr<int32_t> edge_all_cells;                        // ne rows, sorted
+  std::vector<std::array<int32_t, 2>> face_all_cells; // nf: cells on its sides, -1 off the mesh
+  std::vector<uint8_t> edge_mesh_boundary;            // ne: on the mesh boundary
+  std::vector<uint8_t> edge_all_non_hex;              // ne: some mesh cell around it is non-hex
+  bool whole() const { return edge_all_faces.rows() == 0; }
 
   size_t num_vertices() const { return vert_mesh.size(); }
   size_t num_edges() const { return edge_verts.size(); }
@@ -80,6 +92,11 @@ CellComplex complex_from_mesh(const Mesh& mesh, std::span<const int32_t> region_
 CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc);
 CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc,
                               std::span<const int32_t> region_components);
+
+// The complex edges (ids of `cx`) holding the given mesh edges, sorted and distinct; mesh edges
+// off the view (or, at the complex level, on no curve) are skipped. `bc` is read at the complex
+// level only.
+std::vector<int32_t> complex_edges_of(const CellComplex& cx, const BaseComplex& bc, std::span<const int32_t> mesh_edges);
 
 // The components holding the given mesh cells, sorted and distinct (to turn a sheet's cells into a
 // complex-level region).

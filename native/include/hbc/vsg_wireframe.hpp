@@ -1,21 +1,34 @@
 #pragma once
-// The valence singularity graph (VSG) and its simplified wireframe (paper §5, §6.2; SPEC §4),
-// computed on a CellComplex (fine mesh or base complex, whole or restricted to a region).
+// The valence singularity graph (VSG) and its wireframe (paper §5, §6.2; SPEC §4), computed on a
+// CellComplex (fine mesh or base complex, whole or restricted to a region), by the rules of the
+// authors' implementation (which made the paper's figures; docs/validation.md compares the two):
 //
-// VSG: every irregular edge of the complex (interior valence != 4, boundary != 2), whatever its
-// cells, chained by equal valence; chains are cut at branch points and valence changes only. The
-// ends of open chains are the VSG's singular vertices.
-// Wireframe: the VSG chains plus traces: from each singular vertex, each incident non-VSG edge
-// followed straight through vertices off the VSG (interior: the unique edge sharing no cell with
-// the incoming one; boundary edge: the unique boundary edge sharing no cell with it) until a VSG
-// vertex, the boundary (an interior trace touching a boundary vertex), or no unique continuation.
-// Simplification: the paper's three criteria, then reactivation (see VsgWireframe::reactivated).
+// VSG: seed edges are the valence-irregular edges (region valence = distinct region cells; interior
+// != 4, boundary != 2). From each seed both ways, a chain continues through a vertex along the one
+// edge there sharing no face with the current one, if it has the same valence. The ends of open
+// chains are the VSG's vertices.
+// Complete wireframe: faces are flooded from every face at a chain edge or at an edge of a VSG
+// vertex, across edges that stop nothing (not boundary; at mesh level also not irregular and not
+// touching a non-hex cell) into the faces sharing no cell with the current one. Edges whose faces
+// are all flooded or boundary are "patch edges"; a vertex is singular when it has a number of patch
+// edges other than 0 and 2, or 2 that share a face (a turn). The wireframe is then the chains
+// traced (the VSG rule, stopping at singular vertices) from every edge at a singular vertex.
+// (As in the authors' code, "sharing a face" in a continuation, "sharing a cell" in the flood and
+// in the re-chaining, and the flood's stops look at the whole mesh, not only at the region.)
+// Simplification: redundant singular vertices (an all-quad corner of one cell, or only regular
+// wireframe edges around it), removable pairs of regular all-quad wireframe edges continuing each
+// other at a singular vertex (ties broken by valence gap, then quad ratio; unresolved ties keep
+// both), chains with two redundant ends; reactivation keeps every removable chain reached from a
+// kept one through its continuation; the kept chains are re-chained through the vertices that stop
+// being singular (exactly two kept chains through it, no two of its wireframe edges in one cell).
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "hbc/cell_complex.hpp"
 #include "hbc/csr.hpp"
+#include "hbc/wireframe_style.hpp"
 
 namespace hbc {
 
@@ -24,64 +37,66 @@ struct WireframeOptions {
   double opacity_floor = 0.15;  // opacity far from irregular edges and non-hex cells
   int32_t opacity_hops = 6;     // mesh-edge hops over which opacity falls from 1 to the floor
   int32_t palette_size = 8;     // colours available to the greedy colouring
+  // Complex edges (ids of the CellComplex) removed last when they make up a whole simplified
+  // chain: a sheet's parallel edges, so a sheet's wireframe shows what crosses it.
+  std::vector<int32_t> parallel_edges;
 };
 
+// Kind of a complete-wireframe chain: made of VSG (irregular) edges or of regular ones.
 enum class WireKind : uint8_t { Vsg = 0, Trace = 1 };
-// Why a trace ended at its last vertex.
+// Where a chain's last vertex lies (None for a closed chain).
 enum class TraceStop : uint8_t { None = 0, VsgVertex = 1, Boundary = 2, NoContinuation = 3 };
 
 struct VsgWireframe {
   // ---- VSG (ids of the CellComplex) ----
-  std::vector<uint8_t> edge_vsg;           // ne: irregular edge
-  std::vector<uint8_t> vert_vsg;           // nv: end of an irregular edge
-  std::vector<uint8_t> vert_singular;      // nv: end of an open VSG chain
-  std::vector<int32_t> singular_vertices;  // sorted complex vertex ids
-  int64_t vsg_edges = 0;                   // irregular edges at the chosen level (= VSG complex edges)
-  int64_t vsg_chains = 0;                  // wireframe edges of kind Vsg
+  std::vector<uint8_t> edge_vsg;           // ne: seed (irregular) edge
+  std::vector<uint8_t> vert_vsg;           // nv: end of a VSG chain
+  Csr<int32_t> vsg_chain_edges;            // VSG chains: complex edges in order
+  int64_t vsg_edges = 0;                   // seed edges
+  int64_t vsg_chains = 0;                  // rows of vsg_chain_edges
 
-  // ---- Wireframe edges: the VSG chains first (in chain order), then the traces ----
-  // Row w of `edges` lists complex edges in order along it; row w of `polylines` the mesh vertices
-  // along it (a closed VSG chain repeats its first vertex at the end). ends[w] are the complex
-  // vertices at its two ends ({-1,-1} for a closed chain); a trace starts at ends[w][0].
+  // ---- Complete wireframe ----
+  std::vector<uint8_t> vert_singular;      // nv: singular vertex of the complete wireframe
+  std::vector<int32_t> singular_vertices;  // sorted complex vertex ids
+  // Row w of `edges` lists complex edges in order along chain w; row w of `polylines` the mesh
+  // vertices along it (a closed chain repeats its first vertex at the end). ends[w] are its two end
+  // vertices ({-1,-1} for a closed chain).
   Csr<int32_t> edges;
   Csr<int32_t> polylines;
   std::vector<std::array<int32_t, 2>> ends;
   std::vector<WireKind> kind;
-  std::vector<int32_t> valence;            // per wire edge: chain valence; traces the valence of
-                                           // their (regular) edges, 4 inside or 2 on the boundary
-  std::vector<TraceStop> stop;             // per wire edge (None for VSG chains)
+  std::vector<int32_t> valence;            // per chain: region valence of its first edge
+  std::vector<TraceStop> stop;             // per chain: what its second end is
 
-  // ---- Simplification ----
-  std::vector<uint8_t> vert_non_important; // nv: not singular, or a boundary corner (one cell)
-                                           // whose faces are all quads
-  // Per wire edge: 0 = important, else the lowest criterion (1, 2, 3) that marked it.
+  // ---- Simplification (per complete chain) ----
+  std::vector<uint8_t> vert_non_important; // nv: redundant singular vertex, or not singular
+  // 0 = kept; 1 = both ends redundant; 2 = in a removable pair at a singular vertex.
   std::vector<uint8_t> non_important;
-  // Per wire edge: non-important but shown again. R = the VSG chains plus the traces joining two
-  // VSG vertices; within each connected component of R the shown edges are joined into one
-  // connected piece by the cheapest paths of hidden R edges (first those touching a shown VSG
-  // chain, then fewer mesh edges, then lowest index). Connectivity is through shared mesh
-  // vertices anywhere along the polylines.
-  std::vector<uint8_t> reactivated;
-  std::vector<uint8_t> shown;              // important or reactivated
-  int64_t reference_components = 0;       // connected components of R
-  int64_t shown_components = 0;           // connected components of the shown edges
+  std::vector<uint8_t> reactivated;        // non-important but kept (continues a kept chain)
+  std::vector<uint8_t> shown;              // every edge lies on the simplified wireframe
+  // The simplified wireframe: kept chains re-chained through the vertices that stop being singular.
+  Csr<int32_t> simplified_edges;
+  Csr<int32_t> simplified_polylines;
+  // Distinct mesh edges covered by the VSG chains, the complete and the simplified wireframe.
+  int64_t vsg_mesh_edges = 0, wireframe_mesh_edges = 0, simplified_mesh_edges = 0;
+  int64_t reference_components = 0;        // connected components of the complete wireframe
+  int64_t shown_components = 0;            // connected components of the simplified one
 
-  // ---- Presentation ----
-  // Aligned with polylines.items: 1 on VSG chains and on traces with an edge touching a non-hex
-  // cell; elsewhere max(floor, 1 - (1 - floor) d / opacity_hops), d = mesh-edge hops along the
-  // complex's edges to the nearest point of an irregular edge or of an edge touching a non-hex cell.
-  std::vector<float> point_opacity;
-  // Per wire edge: colour class (lowest wire edge of a union of partial-parallel pairs, Definition
-  // 1 parallels over quad faces, both fractions >= rho) and a palette index; classes holding wire
-  // edges that share a mesh vertex get different colours when the palette allows.
-  std::vector<int32_t> color_class;
-  std::vector<int32_t> color;
+  // ---- Presentation: a separate step's result (wireframe_style.hpp), empty from vsg_wireframe_graph ----
+  WireframeStyle style;
 
   size_t size() const { return kind.size(); }
   int64_t wireframe_edges() const { return static_cast<int64_t>(kind.size()); }
-  int64_t wireframe_edges_simplified() const;
+  int64_t wireframe_edges_simplified() const { return static_cast<int64_t>(simplified_edges.rows()); }
 };
 
+// Distinct mesh edges along the rows (complex edges) of `chains` (a complex edge of k+1 points
+// covers k mesh edges).
+int64_t covered_mesh_edges(const CellComplex& complex, const Csr<int32_t>& chains);
+
+// The graph only (no presentation arrays).
+VsgWireframe vsg_wireframe_graph(const CellComplex& complex, const WireframeOptions& options = {});
+// vsg_wireframe_graph, then wireframe_style into `style`.
 VsgWireframe vsg_wireframe(const CellComplex& complex, const WireframeOptions& options = {});
 
 }  // namespace hbc

@@ -43,21 +43,25 @@ void bind_wireframe(py::module_& m) {
             "int32 (count + 1,): row offsets of polyline_vertices.");
   wire_prop(c, "polyline_vertices", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
             "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
-  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.point_opacity; },
+  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.style.point_opacity; },
             "float32, aligned with polyline_vertices: opacity in [floor, 1].");
-  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 VSG chain, 1 trace.");
+  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
-            "int32 (count,): chain valence; traces the valence of their regular edges.");
+            "int32 (count,): region valence of the chain's first edge.");
   wire_prop(c, "stop", [](const VsgWireframe& w) -> auto& { return w.stop; },
-            "uint8 (count,): why a trace ended: 0 not a trace, 1 VSG vertex, 2 boundary, 3 no continuation.");
+            "uint8 (count,): the chain's last vertex: 0 closed chain, 1 singular, 2 boundary, 3 neither.");
   wire_prop(c, "shown", [](const VsgWireframe& w) -> auto& { return w.shown; },
-            "bool (count,): in the simplified wireframe (important or reactivated).", true);
+            "bool (count,): every edge of the chain lies on the simplified wireframe.", true);
   wire_prop(c, "non_important", [](const VsgWireframe& w) -> auto& { return w.non_important; },
-            "uint8 (count,): 0 important, else the simplification criterion (1, 2, 3) that hid it.");
+            "uint8 (count,): 0 kept, 1 both ends redundant, 2 in a removable pair at a singular vertex.");
   wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
-            "bool (count,): non-important but shown again to keep the wireframe connected.", true);
-  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.color; }, "int32 (count,): palette index.");
-  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.color_class; },
+            "bool (count,): non-important but kept: it continues a kept chain.", true);
+  wire_prop(c, "simplified_offsets", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.offsets; },
+            "int32 (counts['wireframe_edges_simplified'] + 1,): row offsets of simplified_vertices.");
+  wire_prop(c, "simplified_vertices", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.items; },
+            "int32: mesh vertices along each simplified polyline (kept chains re-chained).");
+  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
+  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
   c.def_property_readonly(
       "counts",
@@ -69,11 +73,15 @@ void bind_wireframe(py::module_& m) {
         d["wireframe_edges_simplified"] = w.wireframe_edges_simplified();
         d["vsg_chains"] = w.vsg_chains;
         d["singular_vertices"] = w.singular_vertices.size();
+        d["vsg_mesh_edges"] = w.vsg_mesh_edges;
+        d["wireframe_mesh_edges"] = w.wireframe_mesh_edges;
+        d["wireframe_mesh_edges_simplified"] = w.simplified_mesh_edges;
         d["reference_components"] = w.reference_components;
         d["shown_components"] = w.shown_components;
         return d;
       },
       "dict: vsg_edges, wireframe_edges, wireframe_edges_simplified, vsg_chains, singular_vertices, "
+      "vsg_mesh_edges, wireframe_mesh_edges, wireframe_mesh_edges_simplified (distinct mesh edges covered), "
       "reference_components, shown_components.");
 }
 

@@ -171,6 +171,9 @@ class WireframeCounts(TypedDict):
     wireframe_edges_simplified: int
     vsg_chains: int
     singular_vertices: int
+    vsg_mesh_edges: int
+    wireframe_mesh_edges: int
+    wireframe_mesh_edges_simplified: int
     reference_components: int
     shown_components: int
 
@@ -320,7 +323,7 @@ class Wireframe:
         """Aligned with polyline_vertices."""
     @property
     def kind(self) -> U8:
-        """(count,) 0 VSG chain, 1 trace."""
+        """(count,) 0 chain of VSG (irregular) edges only, 1 other chain."""
     @property
     def valence(self) -> I32: ...
     @property
@@ -331,6 +334,12 @@ class Wireframe:
     def non_important(self) -> U8: ...
     @property
     def reactivated(self) -> Bool: ...
+    @property
+    def simplified_offsets(self) -> I32:
+        """(counts['wireframe_edges_simplified'] + 1,) row offsets of simplified_vertices."""
+    @property
+    def simplified_vertices(self) -> I32:
+        """Mesh vertices along each polyline of the simplified wireframe."""
     @property
     def color(self) -> I32: ...
     @property

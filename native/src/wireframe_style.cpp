@@ -1,0 +1,192 @@
+#include "hbc/wireframe_style.hpp"
+
+#include "hbc/cell_complex.hpp"
+#include "hbc/vsg_wireframe.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+#include <utility>
+
+#include "union_find.hpp"
+
+namespace hbc {
+
+namespace {
+
+using MinUnionFind = detail::UnionFind;  // root = lowest member: deterministic class ids
+
+bool share_vertex(const CellComplex& cx, int32_t e, int32_t f) {
+  const auto a = cx.edge_verts[e], b = cx.edge_verts[f];
+  if (a[0] < 0 || b[0] < 0) return false;
+  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+}
+
+// Chains per complex edge, and the distinct mesh vertices of each chain (compact ids) and back.
+struct Index {
+  std::vector<int32_t> edge_wire;  // ne: chain holding the edge, else -1
+  Csr<int32_t> wire_points, point_wires;
+};
+
+Index index_points(const CellComplex& cx, const VsgWireframe& w) {
+  Index ix;
+  ix.edge_wire.assign(cx.num_edges(), -1);
+  for (size_t c = 0; c < w.size(); ++c)
+    for (int32_t e : w.edges[c]) ix.edge_wire[e] = static_cast<int32_t>(c);
+  int32_t max_id = -1;
+  for (int32_t p : w.polylines.items) max_id = std::max(max_id, p);
+  std::vector<int32_t> point_of_mesh(static_cast<size_t>(max_id + 1), -1);
+  std::vector<int32_t> sorted(w.polylines.items);
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  int32_t n = 0;
+  for (int32_t p : sorted) point_of_mesh[p] = n++;
+  std::vector<int32_t> buf;
+  for (size_t c = 0; c < w.size(); ++c) {
+    buf.clear();
+    for (int32_t p : w.polylines[c]) buf.push_back(point_of_mesh[p]);
+    std::sort(buf.begin(), buf.end());
+    buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
+    ix.wire_points.push_row(buf.begin(), buf.end());
+  }
+  ix.point_wires = transpose(ix.wire_points, static_cast<size_t>(n));
+  return ix;
+}
+
+void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWireframe& wf, WireframeStyle& st) {
+  const size_t nv = cx.num_vertices(), ne = cx.num_edges();
+  constexpr int32_t kInf = std::numeric_limits<int32_t>::max() / 4;
+  std::vector<uint8_t> source(ne, 0);
+  std::vector<int32_t> dv(nv, kInf);
+  using Item = std::pair<int32_t, int32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
+  for (size_t e = 0; e < ne; ++e) {
+    source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
+    if (!source[e] || cx.closed(e)) continue;
+    for (int32_t v : cx.edge_verts[e])
+      if (dv[v] != 0) {
+        dv[v] = 0;
+        pq.push({0, v});
+      }
+  }
+  // Distances beyond opacity_hops all give the floor, so the search stops there.
+  const int32_t horizon = std::max(opt.opacity_hops, 1);
+  while (!pq.empty()) {
+    const auto [d, v] = pq.top();
+    pq.pop();
+    if (d != dv[v]) continue;
+    for (int32_t e : cx.vert_edges[v]) {
+      const int32_t u = cx.other_vertex(e, v);
+      const int32_t nd = d + cx.edge_points.count(e) - 1;
+      if (nd < dv[u] && nd <= horizon) {
+        dv[u] = nd;
+        pq.push({nd, u});
+      }
+    }
+  }
+  const double floor = std::clamp(opt.opacity_floor, 0.0, 1.0);
+  auto value = [&](int32_t d) {
+    return static_cast<float>(std::max(floor, 1.0 - (1.0 - floor) * double(d) / double(horizon)));
+  };
+  st.point_opacity.assign(wf.polylines.items.size(), 1.0f);
+  for (size_t w = 0; w < wf.size(); ++w) {
+    const auto es = wf.edges[w];
+    bool full = wf.kind[w] == WireKind::Vsg;
+    for (int32_t e : es) full = full || cx.edge_non_hex[e];
+    if (full) continue;
+    size_t out = static_cast<size_t>(wf.polylines.offsets[w]);
+    if (cx.closed(es[0])) {  // a curve without corners: its own distance is unknown, so the floor
+      for (int32_t k = 0; k < wf.polylines.count(w); ++k) st.point_opacity[out++] = value(source[es[0]] ? 0 : horizon);
+      continue;
+    }
+    // Walk the complex edges in polyline order; point k of an edge of n segments from end a to b
+    // is min(d(a) + k, d(b) + n - k) hops away.
+    // The polyline starts at the end of its first edge whose mesh vertex it starts with.
+    int32_t cur = cx.edge_verts[es[0]][wf.polylines[w][0] == cx.edge_points[es[0]][0] ? 0 : 1];
+    for (size_t i = 0; i < es.size(); ++i) {
+      const int32_t e = es[i];
+      const int32_t n = cx.edge_points.count(e) - 1;
+      const int32_t next = cx.other_vertex(e, cur);
+      for (int32_t k = i == 0 ? 0 : 1; k <= n; ++k) {
+        const int32_t d = source[e] ? 0 : std::min(dv[cur] + k, dv[next] + n - k);
+        st.point_opacity[out++] = value(d);
+      }
+      cur = next;
+    }
+  }
+}
+
+void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
+             WireframeStyle& st) {
+  const size_t nw = wf.size();
+  // (w, w', e): complex edge e of wire w is parallel (Definition 1) to an edge of wire w'.
+  std::vector<std::array<int32_t, 3>> par;
+  for (size_t w = 0; w < nw; ++w)
+    for (int32_t e : wf.edges[w])
+      for (int32_t f : cx.edge_faces[e]) {
+        if (!cx.face_quad[f]) continue;
+        for (int32_t g : cx.face_edges[f]) {
+          const int32_t w2 = ix.edge_wire[g];
+          if (g == e || w2 < 0 || w2 == static_cast<int32_t>(w) || share_vertex(cx, e, g)) continue;
+          par.push_back({static_cast<int32_t>(w), w2, e});
+        }
+      }
+  std::sort(par.begin(), par.end());
+  par.erase(std::unique(par.begin(), par.end()), par.end());
+  // Count per ordered pair, then look up the reverse pair.
+  std::vector<std::array<int32_t, 3>> counts;  // (w, w', |E_w|)
+  for (size_t i = 0; i < par.size();) {
+    size_t j = i;
+    while (j < par.size() && par[j][0] == par[i][0] && par[j][1] == par[i][1]) ++j;
+    counts.push_back({par[i][0], par[i][1], static_cast<int32_t>(j - i)});
+    i = j;
+  }
+  MinUnionFind uf(nw);
+  for (const auto& c : counts) {
+    if (c[0] > c[1]) continue;
+    auto it = std::lower_bound(counts.begin(), counts.end(), std::array<int32_t, 3>{c[1], c[0], 0});
+    if (it == counts.end() || (*it)[0] != c[1] || (*it)[1] != c[0]) continue;
+    const double fa = double(c[2]) / double(wf.edges.count(c[0]));
+    const double fb = double((*it)[2]) / double(wf.edges.count(c[1]));
+    if (std::min(fa, fb) >= opt.rho) uf.unite(c[0], c[1]);
+  }
+  st.color_class.resize(nw);
+  for (size_t w = 0; w < nw; ++w) st.color_class[w] = uf.find(static_cast<int32_t>(w));
+  // Class graph: classes of wire edges sharing a point. Each class's neighbours are visited on
+  // the fly (a stamp per class counts each once) instead of listed as pairs: the classes at one
+  // point form a clique, and a point where thousands of wires meet (a fan of cells around an
+  // edge) would make the pair list quadratic in memory.
+  Csr<int32_t> wire_class;
+  for (size_t w = 0; w < nw; ++w) wire_class.push_row(&st.color_class[w], &st.color_class[w] + 1);
+  const Csr<int32_t> class_wires = transpose(wire_class, nw);
+  const int32_t palette = std::max(opt.palette_size, 1);
+  std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette)), stamp(nw, -1);
+  for (size_t c = 0; c < nw; ++c) {
+    if (st.color_class[c] != static_cast<int32_t>(c)) continue;
+    std::fill(used.begin(), used.end(), 0);
+    stamp[c] = static_cast<int32_t>(c);
+    for (int32_t w : class_wires[c])
+      for (int32_t p : ix.wire_points[w])
+        for (int32_t w2 : ix.point_wires[p]) {
+          const int32_t b = st.color_class[w2];
+          if (stamp[b] == static_cast<int32_t>(c)) continue;
+          stamp[b] = static_cast<int32_t>(c);
+          if (class_color[b] >= 0) ++used[class_color[b]];
+        }
+    // The first free colour; with none free, the one fewest neighbours hold.
+    class_color[c] = static_cast<int32_t>(std::min_element(used.begin(), used.end()) - used.begin());
+  }
+  st.color.resize(nw);
+  for (size_t w = 0; w < nw; ++w) st.color[w] = class_color[st.color_class[w]];
+}
+
+}  // namespace
+
+WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options) {
+  WireframeStyle st;
+  opacity(complex, options, w, st);
+  colours(complex, options, index_points(complex, w), w, st);
+  return st;
+}
+
+}  // namespace hbc
