@@ -15,7 +15,6 @@ import numpy as np
 
 from . import planning as P
 from . import scene as S
-from .structure import concat_soups
 
 
 def _props(name, layer, **extra):
@@ -39,7 +38,7 @@ def build_direct(tx, coll, s, st, name):
                       _props(name, "direct", hbc_part="non_hex"))
         made += 1
     if st.direct_hex_cells and np.any(types == 0):
-        soup = s.direct_cells(hex_cells=True)
+        soup = s.hex_region()
         mat = S.material(tx, "flat", P.HEX_COLOR, 1.0)
         S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"))
         made += 1

@@ -1,4 +1,4 @@
-"""Operators: import, analyse, build / clear layers. All undoable; a failure reports an error,
+"""Operators: import, analyze, build / clear layers. All undoable; a failure reports an error,
 cancels, and leaves the scene as it was."""
 
 from __future__ import annotations
@@ -80,9 +80,9 @@ def active_root(context):
     return root
 
 
-def structure_of(root, analysed, log, rho=0.8):
+def structure_of(root, analyzed, log, rho=0.8):
     return session.ensure(root.name, root["hbc_source"], float(root.get("hbc_scale", 1.0)),
-                          float(root.get("hbc_rho", rho)), analysed, log)
+                          float(root.get("hbc_rho", rho)), analyzed, log)
 
 
 class _OnActiveMesh:
@@ -103,7 +103,7 @@ class _OnActiveMesh:
 
 
 class HBC_OT_import(bpy.types.Operator, ImportHelper):
-    """Import a hex-dominant volume mesh and show it (optionally analysed)"""
+    """Import a hex-dominant volume mesh and show it (optionally analyzed)"""
 
     bl_idname = "import_mesh.hbc"
     bl_label = "Import Hex-dominant Mesh"
@@ -112,7 +112,7 @@ class HBC_OT_import(bpy.types.Operator, ImportHelper):
     filename_ext = ".mesh"
     filter_glob: StringProperty(default=FILTER, options={"HIDDEN"})
     scale: FloatProperty(name="Scale", default=1.0, min=1e-6, soft_max=100.0)
-    analyse: BoolProperty(name="Analyse on import", default=True,
+    analyze: BoolProperty(name="Analyze on import", default=True,
                           description="Compute the singularity graph, base complex, sheets and wireframe")
     build_layers: BoolProperty(name="Build structure layers", default=False,
                                description="Also build the singularity graph, blocks and wireframe layers")
@@ -123,16 +123,16 @@ class HBC_OT_import(bpy.types.Operator, ImportHelper):
         if not os.path.isfile(path):
             self.report({"ERROR"}, f"No such file: {path}")
             return {"CANCELLED"}
-        prog = _Progress(context, 2 + (1 if self.analyse else 0) + (3 if self.build_layers and self.analyse else 0))
+        prog = _Progress(context, 2 + (1 if self.analyze else 0) + (3 if self.build_layers and self.analyze else 0))
         st = context.scene.hbc
         tx = S.Transaction()
         try:
             t0 = time.perf_counter()
             s = session.load(path, self.scale, log)
             prog.step("loaded")
-            if self.analyse:
-                session.analyse(s, st.rho, log)
-                prog.step("analysed")
+            if self.analyze:
+                session.analyze(s, st.rho, log)
+                prog.step("analyzed")
             name = P.mesh_name_from_path(path)
             with tx:
                 root = tx.collection(name)
@@ -140,7 +140,7 @@ class HBC_OT_import(bpy.types.Operator, ImportHelper):
                 root["hbc_scale"] = float(self.scale)
                 root["hbc_rho"] = float(st.rho)
                 root["hbc_cells"] = int(s.num_cells)
-                layers = ["direct"] + (["graph", "blocks", "wireframe"] if self.build_layers and self.analyse else [])
+                layers = ["direct"] + (["graph", "blocks", "wireframe"] if self.build_layers and self.analyze else [])
                 for layer in layers:
                     coll = L.build_into(tx, root.name, layer, s, st)
                     S.swap_layer(root, layer, coll)
@@ -158,11 +158,11 @@ class HBC_OT_import(bpy.types.Operator, ImportHelper):
         return {"FINISHED"}
 
 
-class HBC_OT_analyse(_OnActiveMesh, bpy.types.Operator):
-    """Analyse the active hex-dominant mesh (again, with the current ρ)"""
+class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
+    """Analyze the active hex-dominant mesh (again, with the current ρ)"""
 
-    bl_idname = "hbc.analyse"
-    bl_label = "Analyse"
+    bl_idname = "hbc.analyze"
+    bl_label = "Analyze"
 
     def execute(self, context):
         root = active_root(context)
@@ -170,7 +170,7 @@ class HBC_OT_analyse(_OnActiveMesh, bpy.types.Operator):
         log = make_log(context)
         try:
             s = structure_of(root, False, log)
-            session.analyse(s, st.rho, log)
+            session.analyze(s, st.rho, log)
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)
         root["hbc_rho"] = float(st.rho)
@@ -277,7 +277,7 @@ def menu_import(self, context):
     self.layout.operator(HBC_OT_import.bl_idname, text="Hex-dominant mesh (.ovm/.ovmb/.mesh/.HYBRID/.hedra)")
 
 
-classes = (HBC_OT_import, HBC_OT_analyse, HBC_OT_build_layer, HBC_OT_build_all, HBC_OT_clear_layer,
+classes = (HBC_OT_import, HBC_OT_analyze, HBC_OT_build_layer, HBC_OT_build_all, HBC_OT_clear_layer,
            HBC_OT_set_active)
 
 

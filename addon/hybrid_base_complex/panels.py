@@ -62,7 +62,7 @@ class HBC_PT_main(_Base, bpy.types.Panel):
         layout.label(text=f"{root.name}: {root.get('hbc_cells', '?')} cells", icon="MESH_CUBE")
         row = layout.row(align=True)
         row.prop(st, "rho")
-        row.operator("hbc.analyse", text="Analyse" if s is None or s.analysis is None else "Re-analyse")
+        row.operator("hbc.analyze", text="Analyze" if s is None or s.analysis is None else "Re-analyze")
         layout.operator("hbc.build_all", icon="SCENE_DATA")
         if s is not None:
             grid = layout.grid_flow(columns=2, even_columns=True, align=True)
@@ -70,7 +70,7 @@ class HBC_PT_main(_Base, bpy.types.Panel):
                 grid.label(text=label)
                 grid.label(text=text)
         elif root is not None:
-            layout.label(text="Not in memory: Analyse to read the file again")
+            layout.label(text="Not in memory: Analyze to read the file again")
 
 
 class HBC_PT_layers(_Base, bpy.types.Panel):

@@ -41,7 +41,7 @@ class HBCSettings(bpy.types.PropertyGroup):
 
     # wireframe
     rho: FloatProperty(name="ρ", default=0.8, min=0.0, max=1.0,
-                       description="Partial-parallel threshold of the wireframe colours (re-analyses)")
+                       description="Partial-parallel threshold of the wireframe colours (re-analyzes)")
     opacity_floor: FloatProperty(name="Opacity floor", default=0.15, min=0.0, max=1.0)
     simplified: BoolProperty(name="Simplified", default=True)
     wireframe_scope: EnumProperty(name="Scope", items=[("MESH", "Whole mesh", ""), ("SHEET", "Picked sheet", "")])

@@ -67,7 +67,7 @@ def test_failed_layer_build_leaves_scene_unchanged(clean_scene, monkeypatch, dat
     from hybrid_base_complex import scene as S
 
     assert bpy.ops.import_mesh.hbc(filepath=str(data_dir / "openvolumemesh" / "Cylinder.ovm"),
-                                   analyse=False) == {"FINISHED"}
+                                   analyze=False) == {"FINISHED"}
     root = roots()[0]
 
     def explode(tx, coll, s, st, name):
@@ -89,8 +89,8 @@ def test_import_every_shared_mesh(clean_scene, data_dir, index):
     from hybrid_base_complex.structure import import_hbc
 
     path = hbc_meshes(data_dir)[index]
-    analyse = has_analysis()
-    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyse=analyse) == {"FINISHED"}
+    analyze = has_analysis()
+    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyze=analyze) == {"FINISHED"}
     (root,) = roots()
     assert root.name in [c.name for c in bpy.context.scene.collection.children]
     mesh = import_hbc().load(str(path))
@@ -106,7 +106,7 @@ def test_import_every_shared_mesh(clean_scene, data_dir, index):
         owners = np.zeros(len(nh.data.polygons), np.int32)
         nh.data.attributes["owner"].data.foreach_get("value", owners)
         assert len(np.unique(owners)) == n_non_hex
-    if analyse:
+    if analyze:
         st = bpy.context.scene.hbc
         assert len(st.sheets) == s.num_sheets
         build_every_layer_and_check(root, s)
@@ -261,13 +261,13 @@ class _Recorder:
 
 
 def test_panels_draw(clean_scene, data_dir):
-    """Every panel's draw runs (against a recording layout) for an analysed mesh and a picked block."""
+    """Every panel's draw runs (against a recording layout) for an analyzed mesh and a picked block."""
     from types import SimpleNamespace
 
     from hybrid_base_complex import panels
 
     path = data_dir / "hybrid-base-complex" / "twistcube_s.mesh"
-    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyse=has_analysis()) == {"FINISHED"}
+    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyze=has_analysis()) == {"FINISHED"}
     texts = []
     for cls in (panels.HBC_PT_main, panels.HBC_PT_layers):
         assert not hasattr(cls, "poll") or cls.poll(bpy.context)

@@ -11,6 +11,14 @@ namespace {
 
 py::object optional_int(int64_t v) { return v >= 0 ? py::object(py::int_(v)) : py::object(py::none()); }
 
+// A reader quotes the token it rejects as the file has it, which need not be UTF-8: undecodable
+// bytes become U+FFFD so the message (file, line, what was expected) still reaches Python.
+py::str utf8_replace(const std::string& s) {
+  PyObject* u = PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "replace");
+  if (u == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(u);
+}
+
 void translate(std::exception_ptr p) {
   try {
     if (p) std::rethrow_exception(p);
@@ -18,11 +26,11 @@ void translate(std::exception_ptr p) {
     // The type is looked up through the module rather than kept in a static, so no state lives
     // outside the module object.
     py::object type = py::module_::import("hbc._core").attr("MeshFormatError");
-    py::object err = type(e.what());
-    err.attr("file") = e.file();
+    py::object err = type(utf8_replace(e.what()));
+    err.attr("file") = utf8_replace(e.file());
     err.attr("line") = optional_int(e.loc().line);
     err.attr("byte_offset") = optional_int(e.loc().byte_offset);
-    err.attr("detail") = e.detail();
+    err.attr("detail") = utf8_replace(e.detail());
     PyErr_SetObject(type.ptr(), err.ptr());
   }
 }
