@@ -83,10 +83,18 @@ def build_sheets(tx, coll, s, st, name):
         return _props(name, "sheets", hbc_sheet=i, hbc_sheet_type=P.SHEET_TYPES[int(types[i])])
 
     if n <= st.split_max:
-        return len(S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of))
+        objects = S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of)
+        show_sheets(objects, st)
+        return len(objects)
     S.soup_object(tx, coll, f"{name} sheets", soup, colors[soup.face_owner], None,
                   _props(name, "sheets", hbc_owner="sheet"))
     return 1
+
+
+def show_sheets(objects, st):
+    """All sheets share one space and z-fight: by default only the picked one is shown."""
+    for ob in objects:
+        ob.hide_viewport = not st.sheets_all and ob.get("hbc_sheet") != st.sheet_index
 
 
 def _dot_radius(s, st):
@@ -192,22 +200,26 @@ BUILDERS = {
 NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
 
 
-def build_into(tx, root_name, layer, s, st):
-    """Builds a layer into a new unlinked collection (registered in tx); returns it."""
-    coll = tx.collection(P.layer_collection_name(root_name, layer) + " (building)")
-    BUILDERS[layer](tx, coll, s, st, root_name)
+def build_into(tx, root, layer, s, st):
+    """Builds a layer into a new unlinked collection (registered in tx); returns it. The old
+    layer's objects are renamed first so the new ones get the same names a first build gives."""
+    S.retire_layer(tx, root, layer)
+    coll = tx.collection(P.layer_collection_name(root.name, layer) + " (building)")
+    BUILDERS[layer](tx, coll, s, st, root.name)
     return coll
 
 
 def build_layer(root, layer, s, st, log=print):
-    """Builds one layer of the mesh under `root`, replacing the old one; all or nothing."""
+    """Builds one layer of the mesh under `root`, replacing the old one; all or nothing. Returns
+    (collection, a sentence saying what was built and how long it took)."""
     t = time.perf_counter()
     with S.Transaction() as tx:
-        coll = build_into(tx, root.name, layer, s, st)
-        S.swap_layer(root, layer, coll)
-    log(f"hbc: {root.name}: built {P.LAYER_TITLES[layer]} ({len(coll.all_objects)} objects) "
-        f"in {time.perf_counter() - t:.2f} s")
-    return coll
+        coll = build_into(tx, root, layer, s, st)
+        S.swap_layer(root, layer, coll, tx)
+    done = (f"{root.name}: built {P.LAYER_TITLES[layer]} ({len(coll.all_objects)} objects) "
+            f"in {time.perf_counter() - t:.2f} s")
+    log("hbc: " + done)
+    return coll, done
 
 
 def find_root(name):

@@ -100,7 +100,9 @@ SELF_PARALLEL_EDGE_COLOR = (1.0, 0.55, 0.0, 1.0)
 SELF_INTERSECTING_COLOR = (0.85, 0.1, 0.85, 1.0)
 
 COMPONENT_KINDS = ("cube", "ring", "other", "non-hex")
-SHEET_TYPES = ("perfect", "type 1", "type 2 (self-parallel)", "type 3 (self-intersecting)")
+SHEET_TYPES = ("perfect", "type 1 (non-hex)", "type 2 (self-parallel)", "type 3 (self-intersecting)")
+#: One short word per sheet type for narrow list rows.
+SHEET_TYPE_SHORT = ("perfect", "non-hex", "self-par.", "self-int.")
 
 
 def palette_color(index) -> np.ndarray:
@@ -343,23 +345,27 @@ def spread_translation(index: int, points, gap: float = 0.25, below: bool = Fals
 # Table 1 row
 
 TABLE1_FIELDS = (
-    ("cells", "|C|", "{:d}"),
-    ("hex_ratio", "|H|/|C|", "{:.1%}"),
-    ("components", "|C_B|", "{:d}"),
-    ("hex_component_ratio", "|H_B|/|C_B|", "{:.1%}"),
-    ("sheets", "#Sheets", "{:d}"),
-    ("sheets_type1", "#Type 1", "{:d}"),
-    ("sheets_type2", "#Type 2", "{:d}"),
-    ("sheets_type3", "#Type 3", "{:d}"),
-    ("subsheets_of_largest_self_intersecting", "#Subsheets", "{:d}"),
+    ("cells", "|C|", "{:d}", "Cells of the mesh"),
+    ("hex_ratio", "|H|/|C|", "{:.1%}", "Share of the cells that are hexahedra"),
+    ("components", "|C_B|", "{:d}", "Blocks (components) of the base complex"),
+    ("hex_component_ratio", "|H_B|/|C_B|", "{:.1%}", "Share of the blocks made of hexahedra"),
+    ("sheets", "#Sheets", "{:d}", "Sheets of the base complex"),
+    ("sheets_type1", "#Type 1", "{:d}", "Imperfect sheets of type 1 (corners shared through non-hex cells)"),
+    ("sheets_type2", "#Type 2", "{:d}", "Self-parallel sheets (type 2)"),
+    ("sheets_type3", "#Type 3", "{:d}", "Self-intersecting sheets (type 3)"),
+    ("subsheets_of_largest_self_intersecting", "#Subsheets", "{:d}",
+     "Subsheets of the largest self-intersecting sheet"),
 )
 TIMING_FIELDS = (
-    ("singularity_graph", "T_GS"),
-    ("base_complex", "T_GB"),
-    ("vsg_wireframe", "T_VSGW"),
-    ("sheets", "T_GSH"),
-    ("subsheets", "T_GSH*"),
+    ("singularity_graph", "T_GS", "Time to extract the hybrid singularity graph"),
+    ("base_complex", "T_GB", "Time to build the base complex"),
+    ("vsg_wireframe", "T_VSGW", "Time to compute the VSG wireframe"),
+    ("sheets", "T_GSH", "Time to extract and classify the sheets"),
+    ("subsheets", "T_GSH*", "Time to decompose the self-intersecting sheets into subsheets"),
 )
+#: Table 1 label -> what it means, in words (the panel's tooltips).
+TABLE1_MEANING = {label: meaning for _, label, _, meaning in TABLE1_FIELDS}
+TABLE1_MEANING.update({label: meaning for _, label, meaning in TIMING_FIELDS})
 
 
 def table1_row(stats: dict):
@@ -367,17 +373,117 @@ def table1_row(stats: dict):
     rows = []
     if "hex_component_ratio" not in stats and stats.get("components"):
         stats = dict(stats, hex_component_ratio=stats.get("hex_components", 0) / stats["components"])
-    for key, label, fmt in TABLE1_FIELDS:
+    for key, label, fmt, _ in TABLE1_FIELDS:
         v = stats.get(key)
         if v is None or (isinstance(v, (int, np.integer)) and v < 0):
             rows.append((label, "-"))
         else:
             rows.append((label, fmt.format(int(v) if "d" in fmt else float(v))))
     timings = stats.get("timings") or {}
-    for key, label in TIMING_FIELDS:
+    for key, label, _ in TIMING_FIELDS:
         v = timings.get(key)
         rows.append((label, "-" if v is None else f"{1000.0 * float(v):.0f} ms"))
     return rows
+
+
+def table1_text(name: str, stats: dict, fmt: str = "MARKDOWN") -> str:
+    """The Table 1 row of one mesh as a Markdown table (header, rule, row) or as CSV (header, row)."""
+    rows = table1_row(stats)
+    head = ["Mesh"] + [label for label, _ in rows]
+    values = [name] + [text for _, text in rows]
+    if fmt == "CSV":
+        def cell(t):
+            return '"' + t.replace('"', '""') + '"' if any(ch in t for ch in ',"\n') else t
+        return ",".join(cell(t) for t in head) + "\n" + ",".join(cell(t) for t in values) + "\n"
+    def md(cells):
+        return "| " + " | ".join(t.replace("|", "\\|") for t in cells) + " |"
+    return "\n".join([md(head), "|" + "---|" * len(head), md(values)]) + "\n"
+
+
+# ---------------------------------------------------------------------------------------------
+# Words for the panel
+
+def describe_error(error: BaseException) -> str:
+    """What a failure says to a user: the message itself (hbc's name the file, the line and what
+    was expected), never the Python class; the class only when there is no message at all."""
+    text = str(error).strip()
+    if isinstance(error, OSError) and error.filename and error.strerror:
+        text = f"{error.filename}: {error.strerror}"
+    return text or f"unexpected failure ({type(error).__name__})"
+
+
+def subsheets_unavailable(sheet_type) -> str | None:
+    """Why the subsheets layer cannot be built for a picked sheet of this type, or None."""
+    if sheet_type is None:
+        return "Pick a sheet in the list first"
+    if int(sheet_type) != 3:
+        return (f"Sheet is {SHEET_TYPES[int(sheet_type)]}: only self-intersecting (type 3) sheets "
+                "have subsheets")
+    return None
+
+
+def sheet_order(types, cells, by: str) -> list:
+    """Sheet indices in list order: by "TYPE" (then size, largest first), by "SIZE" (cells,
+    largest first), else by index."""
+    types = np.asarray(types, np.int64)
+    cells = np.asarray(cells, np.int64)
+    idx = np.arange(len(types))
+    if by == "TYPE":
+        return np.lexsort((idx, -cells, types)).tolist()
+    if by == "SIZE":
+        return np.lexsort((idx, -cells)).tolist()
+    return idx.tolist()
+
+
+#: Every colour a legend can show, by key (the panel draws each as a swatch property).
+LEGEND_COLORS = {
+    "hex": HEX_COLOR,
+    **{CELL_TYPE_NAMES[t]: tuple(float(x) for x in CELL_TYPE_COLORS[t]) for t in range(1, 5)},
+    **{f"valence{v}": c for v, c in VALENCE_COLORS.items()},
+    "valence_other": OTHER_VALENCE_COLOR,
+    "pseudo": PSEUDO_COLOR,
+    "non_manifold": NON_MANIFOLD_COLOR,
+    "non_hex_block": NON_HEX_COLOR,
+    "unmatched": UNMATCHED_COLOR,
+    "shared": SHARED_COLOR,
+    "self_parallel": SELF_PARALLEL_EDGE_COLOR,
+    "self_intersecting": SELF_INTERSECTING_COLOR,
+}
+
+
+def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_hex_types=()):
+    """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
+    edge means."""
+    out = []
+    if "direct" in layers:
+        out.append(("hex", "Boundary, hex cells"))
+        out += [(CELL_TYPE_NAMES[t], f"{CELL_TYPE_NAMES[t].capitalize()} cells") for t in non_hex_types]
+    if "graph" in layers:
+        for v in valences:
+            key = f"valence{int(v)}" if int(v) in VALENCE_COLORS else "valence_other"
+            out.append((key, f"Singular edge, valence {int(v)}"))
+        if has_pseudo:
+            out.append(("pseudo", "Pseudo-singular edge"))
+        if has_non_manifold:
+            out.append(("non_manifold", "Non-manifold edge"))
+    if "blocks" in layers:
+        out.append(("non_hex_block", "Non-hex block"))
+    if "sheet" in layers or "subsheets" in layers:
+        out += [("unmatched", "Red dot: unmatched vertex"),
+                ("shared", "Yellow dot: shared vertex"),
+                ("self_parallel", "Orange edge: self-parallel"),
+                ("self_intersecting", "Pink: self-intersecting")]
+    return out
+
+
+def beside(boxes, lo, hi, gap: float = 0.25):
+    """Offset (x, y, z) moving a new model with bounding box (lo, hi) to the right (+x) of the
+    models whose boxes (lo, hi) are given, `gap` of its width apart; none when there are none."""
+    if not boxes:
+        return (0.0, 0.0, 0.0)
+    right = max(float(b[1][0]) for b in boxes)
+    return (right + gap * float(hi[0] - lo[0]) - float(lo[0]), 0.0, 0.0)
+
 
 
 class Progress:

@@ -15,6 +15,8 @@
 
 from __future__ import annotations
 
+from collections import Counter
+
 import bpy
 import numpy as np
 
@@ -36,6 +38,8 @@ class Transaction:
 
     def __init__(self):
         self.created = []  # (collection name in bpy.data, datablock)
+        self.renamed = []  # (datablock, its name before)
+        self.retired = {}  # (root name, layer) -> the old layer collection, unlinked from its root
 
     def __enter__(self):
         return self
@@ -49,13 +53,33 @@ class Transaction:
         self.created.append((kind, block))
         return block
 
+    def rename(self, block, name):
+        """Renames an existing datablock; a rollback gives it its old name back."""
+        self.renamed.append((block, block.name))
+        block.name = name
+
     def rollback(self):
-        for kind, block in reversed(self.created):
+        ids = []
+        for _, block in reversed(self.created):
             try:
-                getattr(bpy.data, kind).remove(block)
-            except (ReferenceError, RuntimeError):
+                ids.append(block)
+                block.name  # noqa: B018 - raises ReferenceError for a block already gone
+            except ReferenceError:
+                ids.pop()
+        if ids:
+            bpy.data.batch_remove(ids)
+        for block, name in reversed(self.renamed):
+            try:
+                block.name = name
+            except ReferenceError:
                 pass
+        for (root_name, _), old in self.retired.items():
+            root = bpy.data.collections.get(root_name)
+            if root is not None and old.name not in root.children:
+                root.children.link(old)
         self.created.clear()
+        self.renamed.clear()
+        self.retired.clear()
 
     # factories
     def collection(self, name):
@@ -195,17 +219,15 @@ def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
         corner = np.repeat(fc, soup.face_sizes, axis=0) if len(fc) == nf else np.broadcast_to(fc[0], (len(soup.face_vertices), 4))
         col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "CORNER")
         col.data.foreach_set("color", np.ascontiguousarray(corner, np.float32).ravel())
-        _make_active_color(me, col)
+        make_active_color(me, col)
     me.update(calc_edges=True)
     return me
 
 
-def _make_active_color(me, attr):
-    try:
-        me.color_attributes.active_color = attr
-        me.color_attributes.render_color_index = me.color_attributes.active_color_index
-    except (AttributeError, TypeError):
-        pass
+def make_active_color(me, attr):
+    """Shown in Solid > Attribute (active) and used by renders (render colour)."""
+    me.color_attributes.active_color = attr
+    me.color_attributes.render_color_index = me.color_attributes.active_color_index
 
 
 def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None):
@@ -256,7 +278,7 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
     me.edges.foreach_set("vertices", np.ascontiguousarray(lines.edges, np.int32).ravel())
     col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "POINT")
     col.data.foreach_set("color", np.ascontiguousarray(lines.colors, np.float32).ravel())
-    _make_active_color(me, col)
+    make_active_color(me, col)
     poly = me.attributes.new("polyline", "INT", "POINT")
     poly.data.foreach_set("value", np.ascontiguousarray(lines.polyline, np.int32))
     me.update()
@@ -282,25 +304,57 @@ def find_layer(root, layer: str):
     return None
 
 
+def _tree(coll):
+    """The collection, its child collections, their objects and the objects' own data (data no
+    object outside the tree uses)."""
+    colls, stack = [], [coll]
+    while stack:
+        c = stack.pop()
+        colls.append(c)
+        stack.extend(c.children)
+    objects = {ob for c in colls for ob in c.objects}
+    uses = Counter(ob.data for ob in objects if ob.data is not None)
+    data = {d for d, n in uses.items() if d.users <= n}
+    return colls, objects, data
+
+
 def remove_collection_tree(coll):
-    """Removes a collection, its child collections, their objects and the objects' own data."""
-    for child in list(coll.children):
-        remove_collection_tree(child)
-    for ob in list(coll.objects):
-        data = ob.data
-        bpy.data.objects.remove(ob)
-        if data is not None and data.users == 0:
-            kind = {"MESH": "meshes", "CURVE": "curves"}.get(getattr(data, "id_type", ""), None)
-            if kind is None:
-                kind = "meshes" if isinstance(data, bpy.types.Mesh) else "curves"
-            getattr(bpy.data, kind).remove(data)
-    bpy.data.collections.remove(coll)
+    """Removes a collection with everything `_tree` lists, in one batch (removing objects one
+    by one costs time growing with the number of objects in the file for each)."""
+    colls, objects, data = _tree(coll)
+    # Objects first, then their data: one batch of both costs several times more (Blender
+    # remaps the users of the data still held by the objects).
+    for ids in (objects, data, colls):
+        if ids:
+            bpy.data.batch_remove(list(ids))
 
 
-def swap_layer(root, layer: str, new_coll):
-    """Puts a freshly built layer collection under root, replacing the old one (never both)."""
+def retire_layer(tx: Transaction, root, layer: str):
+    """Takes the layer about to be replaced out of the scene (its objects leave the view layer, so
+    renaming and removing them costs no view-layer update each) and renames its objects and
+    meshes, so the new ones get the plain names of a first build (no `.001`, no search for a free
+    number). A rollback links it back under its old names; swap_layer removes it."""
     old = find_layer(root, layer)
-    keep_hidden = (old.hide_viewport, old.hide_render) if old is not None else None
+    if old is None:
+        return None
+    root.children.unlink(old)
+    tx.retired[(root.name, layer)] = old
+    _, objects, data = _tree(old)
+    for block in list(objects) + list(data):
+        tx.rename(block, "~" + block.name[:60])
+    return old
+
+
+def swap_layer(root, layer: str, new_coll, tx: Transaction | None = None):
+    """Puts a freshly built layer collection under root, replacing the old one (never both): the
+    one retired into `tx`, else the one under root."""
+    old = tx.retired.pop((root.name, layer), None) if tx is not None else None
+    if old is None:
+        old = find_layer(root, layer)
+        if old is not None:
+            root.children.unlink(old)
+    # The old layer's eye and camera icons carry over (not when it was hidden for being stale).
+    keep_hidden = (old.hide_viewport, old.hide_render) if old is not None and not old.get("hbc_stale") else None
     final_name = P.layer_collection_name(root.name, layer)
     if old is not None:
         remove_collection_tree(old)
@@ -317,6 +371,7 @@ def remove_layer(root, layer: str) -> bool:
     old = find_layer(root, layer)
     if old is None:
         return False
+    root.children.unlink(old)
     remove_collection_tree(old)
     return True
 

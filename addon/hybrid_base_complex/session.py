@@ -31,13 +31,15 @@ def names():
     return list(_SESSIONS)
 
 
-def load(path: str, scale: float = 1.0, log=print) -> Structure:
+def load(path: str, scale: float = 1.0, log=print, offset=(0.0, 0.0, 0.0)) -> Structure:
     """Reads a mesh (raises hbc.MeshFormatError / OSError on a bad file)."""
     hbc = import_hbc()
     t = time.perf_counter()
     mesh = hbc.load(path)
     log(f"hbc: loaded {path}: {mesh.num_cells} cells in {time.perf_counter() - t:.2f} s")
-    return Structure(mesh, None, scale)
+    s = Structure(mesh, None, scale, offset)
+    s.source = path
+    return s
 
 
 def analyze(structure: Structure, rho: float = 0.8, log=print) -> Structure:
@@ -50,11 +52,13 @@ def analyze(structure: Structure, rho: float = 0.8, log=print) -> Structure:
     return structure
 
 
-def ensure(name: str, path: str, scale: float, rho: float, analyzed: bool, log=print) -> Structure:
-    """The cached structure of `name`, re-read from `path` when the cache lost it."""
+def ensure(name: str, path: str, scale: float, rho: float, analyzed: bool, log=print,
+           offset=(0.0, 0.0, 0.0)) -> Structure:
+    """The cached structure of `name`, re-read from `path` when the cache lost it or the mesh was
+    pointed at another file."""
     s = _SESSIONS.get(name)
-    if s is None:
-        s = load(path, scale, log)
+    if s is None or getattr(s, "source", path) != path:
+        s = load(path, scale, log, offset)
         _SESSIONS[name] = s
     if analyzed and s.analysis is None:
         analyze(s, rho, log)

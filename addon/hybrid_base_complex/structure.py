@@ -44,9 +44,13 @@ class Structure:
         self.mesh = mesh
         self.analysis = analysis
         self.scale = float(scale)
-        self.offset = np.asarray(offset, np.float32).reshape(3)
-        self.points = self._place(np.asarray(mesh.points, np.float32).reshape(-1, 3))
+        self.set_offset(offset)
         self._component_sheets = None
+
+    def set_offset(self, offset):
+        """Moves the model (every position made from now on) to `offset`."""
+        self.offset = np.asarray(offset, np.float32).reshape(3)
+        self.points = self._place(np.asarray(self.mesh.points, np.float32).reshape(-1, 3))
 
     def _place(self, positions) -> np.ndarray:
         return (np.asarray(positions, np.float32) * np.float32(self.scale) + self.offset).astype(np.float32)

@@ -19,13 +19,20 @@ py::str utf8_replace(const std::string& s) {
   return py::reinterpret_steal<py::str>(u);
 }
 
+// hbc.MeshFormatError's type object. A translator is a plain function, so it cannot capture it,
+// and looking it up by the name "hbc._core" fails where the package lives under another name (the
+// Blender add-on bundles it as hybrid_base_complex.hbc): the one piece of binding state, set once
+// when the module initialises and kept alive by the module's attribute (plus the reference held).
+py::handle& mesh_format_error_type() {
+  static py::handle type;
+  return type;
+}
+
 void translate(std::exception_ptr p) {
   try {
     if (p) std::rethrow_exception(p);
   } catch (const InputError& e) {
-    // The type is looked up through the module rather than kept in a static, so no state lives
-    // outside the module object.
-    py::object type = py::module_::import("hbc._core").attr("MeshFormatError");
+    py::handle type = mesh_format_error_type();
     py::object err = type(utf8_replace(e.what()));
     err.attr("file") = utf8_replace(e.file());
     err.attr("line") = optional_int(e.loc().line);
@@ -39,6 +46,7 @@ void translate(std::exception_ptr p) {
 
 void bind_errors(py::module_& m) {
   py::object type = py::exception<InputError>(m, "MeshFormatError", PyExc_ValueError);
+  mesh_format_error_type() = type.inc_ref();
   type.attr("__doc__") =
       "A mesh file (or arrays) that is not a valid mesh. str(err) is 'file:line: expected ...'; "
       "the attributes file, line (None for binary files), byte_offset (None for text files) and "
