@@ -73,7 +73,7 @@ class HBC_PT_main(_Base, bpy.types.Panel):
             return
         s = session.get(root.name)
         layout.label(text=f"{root.get('hbc_cells', '?')} cells", icon="MESH_CUBE")
-        layout.prop(root, "hbc_source", text="")
+        layout.prop(root, "hbc_path", text="")
         from . import sources
 
         try:

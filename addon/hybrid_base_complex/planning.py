@@ -451,9 +451,13 @@ LEGEND_COLORS = {
 }
 
 
+#: Longest legend words: beside a swatch at the default sidebar width about 20 characters show.
+LEGEND_MAX = 19
+
+
 def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_hex_types=()):
     """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
-    edge means."""
+    edge means (the swatch gives the colour, the words what it marks)."""
     out = []
     if "direct" in layers:
         out.append(("hex", "Boundary, hex cells"))
@@ -461,18 +465,18 @@ def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_he
     if "graph" in layers:
         for v in valences:
             key = f"valence{int(v)}" if int(v) in VALENCE_COLORS else "valence_other"
-            out.append((key, f"Singular edge, valence {int(v)}"))
+            out.append((key, f"Valence {int(v)} edge"))
         if has_pseudo:
-            out.append(("pseudo", "Pseudo-singular edge"))
+            out.append(("pseudo", "Pseudo-singular"))
         if has_non_manifold:
             out.append(("non_manifold", "Non-manifold edge"))
     if "blocks" in layers:
         out.append(("non_hex_block", "Non-hex block"))
     if "sheet" in layers or "subsheets" in layers:
-        out += [("unmatched", "Red dot: unmatched vertex"),
-                ("shared", "Yellow dot: shared vertex"),
-                ("self_parallel", "Orange edge: self-parallel"),
-                ("self_intersecting", "Pink: self-intersecting")]
+        out += [("unmatched", "Dot: unmatched"),
+                ("shared", "Dot: shared vertex"),
+                ("self_parallel", "Self-parallel edge"),
+                ("self_intersecting", "Self-intersecting")]
     return out
 
 

@@ -116,22 +116,28 @@ HBCSettings.__annotations__.update({f"legend_{k}": _legend_color(c) for k, c in 
 classes = (HBCSheetItem, HBCSettings)
 
 
-def _source_changed(root, context):
+def _get_source(root):
+    return root.get("hbc_source", "")
+
+
+def _set_source(root, value):
     from . import session
 
+    root["hbc_source"] = value
     session.drop(root.name)  # read again from the new path on the next build
 
 
 def register_props():
     bpy.types.Scene.hbc = PointerProperty(type=HBCSettings)
-    # The imported mesh's collection keeps its source path as a file path, so the panel shows a
-    # file browser to point the mesh at its file again (the value lives in the ID property
-    # "hbc_source", as before this property existed).
-    bpy.types.Collection.hbc_source = StringProperty(
-        name="Source", subtype="FILE_PATH", update=_source_changed,
+    # The source path lives in the ID property "hbc_source" (it marks a collection as an imported
+    # mesh); this file-path view of it gives the panel a file browser to point the mesh at its file
+    # again. A get/set property stores nothing itself, so both stay one value in every Blender
+    # (5.0 keeps bpy.props values apart from dictionary-style ID properties).
+    bpy.types.Collection.hbc_path = StringProperty(
+        name="Source", subtype="FILE_PATH", get=_get_source, set=_set_source,
         description="The mesh file the layers are built from (relative to the .blend when saved)")
 
 
 def unregister_props():
-    del bpy.types.Collection.hbc_source
+    del bpy.types.Collection.hbc_path
     del bpy.types.Scene.hbc

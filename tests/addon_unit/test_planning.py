@@ -102,3 +102,44 @@ def test_progress_reports_fractions():
     p.step("b")
     p.step("c")
     assert seen == [(0.5, "a"), (1.0, "b"), (1.0, "c")]
+
+
+def test_legend_words_fit_beside_a_swatch():
+    every = P.legend([k for k, _ in P.LAYERS], valences=[1, 2, 3, 4, 5, 6, 7], has_pseudo=True,
+                     has_non_manifold=True, non_hex_types=[1, 2, 3, 4])
+    assert all(key in P.LEGEND_COLORS for key, _ in every)
+    assert max(len(words) for _, words in every) <= P.LEGEND_MAX
+    # Valences without a colour of their own share the "other" colour.
+    assert ("valence_other", "Valence 4 edge") in every and ("valence5", "Valence 5 edge") in every
+    assert P.legend(["wireframe"]) == []
+
+
+def test_table1_text_markdown_and_csv():
+    stats = {"cells": 10, "hex_ratio": 0.5, "components": 4, "hex_components": 3}
+    md = P.table1_text("a|b", stats).splitlines()
+    # Header, rule and one row; '|' inside a cell is escaped.
+    assert len(md) == 3 and md[0].startswith("| Mesh | \\|C\\| |") and md[1] == "|" + "---|" * 15
+    assert md[2].startswith("| a\\|b | 10 | 50.0% | 4 | 75.0% | - |")
+    csv = P.table1_text("x,y", stats, "CSV").splitlines()
+    assert csv[0].split(",")[:3] == ["Mesh", "|C|", "|H|/|C|"] and csv[1].startswith('"x,y",10,50.0%,4,75.0%,-')
+    assert all(P.TABLE1_MEANING[label] for label, _ in P.table1_row(stats))
+
+
+def test_describe_error_and_subsheet_reason():
+    assert P.describe_error(ValueError("f.mesh:3: expected x")) == "f.mesh:3: expected x"
+    assert P.describe_error(FileNotFoundError(2, "No such file or directory", "/x.ovm")) == \
+        "/x.ovm: No such file or directory"
+    assert P.describe_error(RuntimeError()) == "unexpected failure (RuntimeError)"
+    assert P.subsheets_unavailable(3) is None
+    assert P.subsheets_unavailable(1).startswith("Sheet is type 1 (non-hex): only self-intersecting")
+    assert P.subsheets_unavailable(None) == "Pick a sheet in the list first"
+
+
+def test_sheet_order_and_placement():
+    types, cells = [3, 0, 2, 0], [5, 9, 9, 1]
+    assert P.sheet_order(types, cells, "INDEX") == [0, 1, 2, 3]
+    assert P.sheet_order(types, cells, "SIZE") == [1, 2, 0, 3]  # ties keep index order
+    assert P.sheet_order(types, cells, "TYPE") == [1, 3, 2, 0]
+    # A model spanning x in [-1, 1] beside one ending at x = 10: gap a quarter of its width (0.5).
+    assert P.beside([((0, 0, 0), (10, 5, 5))], (-1, -1, -1), (1, 1, 1)) == (11.5, 0.0, 0.0)
+    assert P.beside([], (0, 0, 0), (1, 1, 1)) == (0.0, 0.0, 0.0)

@@ -410,7 +410,7 @@ def test_source_gone_says_which_and_keeps_layers(clean_scene, data_dir, tmp_path
     assert S.datablock_names() == before and S.find_layer(root, "direct") is not None
     # Pointing the mesh at the file again (the panel's Source field) makes it build.
     shutil.copy(data_dir / "hybrid-base-complex" / "test_2.HYBRID", tmp_path / "again.HYBRID")
-    root.hbc_source = str(tmp_path / "again.HYBRID")
+    root.hbc_path = str(tmp_path / "again.HYBRID")
     assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
 
 
@@ -487,6 +487,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     every property drawn has a tooltip, the panel order is fixed, and the selection box is always
     there (it never appears or disappears, moving buttons)."""
     from hybrid_base_complex import panels
+    from hybrid_base_complex import scene as S
 
     root = import_mesh(data_dir)
     assert bpy.ops.hbc.build_all() == {"FINISHED"}
@@ -522,8 +523,14 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     # The legend names what the yellow and red dots mean once the picked-sheet layer is shown.
     assert bpy.ops.hbc.build_layer(layer="sheet") == {"FINISHED"}
     legend = [t for k, t, _ in draw_all(bpy.context) if k == "label"]
-    assert "Red dot: unmatched vertex" in legend and "Yellow dot: shared vertex" in legend
-    assert "Singular edge, valence 3" not in legend  # the graph layer is hidden after Build All
+    assert "Dot: unmatched" in legend and "Dot: shared vertex" in legend
+    from hybrid_base_complex import session
+
+    words = f"Valence {int(session.get(root.name).analysis.graph.chain_valence[0])} edge"
+    assert words not in legend  # the graph layer is hidden after Build All
+    S.find_layer(root, "graph").hide_viewport = False
+    legend = [t for k, t, _ in draw_all(bpy.context) if k == "label"]
+    assert words in legend
 
 
 def test_sheet_list_rows_filter_and_sort(clean_scene, data_dir):
