@@ -339,6 +339,8 @@ def test_build_all_shows_one_layer_and_reports(clean_scene, data_dir, capsys):
     # INFO report's sentence with its time.
     assert "hbc: [100%] built " + P.LAYER_TITLES["wireframe"] in out
     assert f"{root.name}: built 5 layers (" in out and " s; showing Blocks" in out
+    assert bpy.ops.hbc.analyze() == {"FINISHED"}
+    assert f"Info: Analyzed {root.name}: 1301 blocks, 20 sheets in " in capsys.readouterr().out
 
 
 def test_undo_handler_relinks_colour_attributes(clean_scene, data_dir):
@@ -360,7 +362,9 @@ def test_undo_handler_relinks_colour_attributes(clean_scene, data_dir):
 RESAVE_AND_REBUILD = """
 import sys
 sys.path.insert(0, {addon_parent!r})
-import bpy, hybrid_base_complex as addon
+import bpy
+bpy.ops.wm.open_mainfile(filepath=sys.argv[-1])
+import hybrid_base_complex as addon
 addon.register()
 root = next(c for c in bpy.data.collections if c.get("hbc_source") is not None)
 bpy.context.scene.hbc.active_mesh = root.name
@@ -371,8 +375,20 @@ print("SOURCE", root["hbc_source"])
 """
 
 
+def new_blender(script, *args):
+    """Runs `script` in a new Blender process: the Blender program, or (bpy as a Python module,
+    whose binary_path is no Blender) this Python."""
+    exe = bpy.app.binary_path
+    if exe and os.path.basename(exe).lower().startswith("blender"):
+        cmd = [exe, "-b", "--factory-startup", "--python-exit-code", "1", "--python", str(script), "--", *args]
+    else:
+        cmd = [sys.executable, str(script), *args]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+
+
 def test_save_move_reopen_rebuild(clean_scene, data_dir, tmp_path):
-    """Save the .blend beside its mesh, move the folder, reopen in a new Blender, rebuild."""
+    """Save the .blend beside its mesh, move the folder, reopen in a new Blender, rebuild: the
+    same objects come back, and saved from its new place the path is relative, the Blender way."""
     from conftest import addon_dir
 
     folder = tmp_path / "project"
@@ -384,12 +400,9 @@ def test_save_move_reopen_rebuild(clean_scene, data_dir, tmp_path):
     folder.rename(moved)
     script = tmp_path / "reopen.py"
     script.write_text(RESAVE_AND_REBUILD.format(addon_parent=str(addon_dir().parent)))
-    run = subprocess.run([bpy.app.binary_path, "-b", "--factory-startup", str(moved / "scene.blend"),
-                          "--python-exit-code", "1", "--python", str(script)],
-                         capture_output=True, text=True, timeout=120)
+    run = new_blender(script, str(moved / "scene.blend"))
     assert run.returncode == 0, run.stdout + run.stderr
     assert "RESULT {'FINISHED'} True" in run.stdout, run.stdout + run.stderr
-    # Saved from a known place, the path is relative to the .blend, the Blender way.
     assert "SOURCE //test_2.HYBRID" in run.stdout, run.stdout
 
 
