@@ -20,9 +20,12 @@ def view3d_regions(context):
 def frame_objects(context, objects) -> bool:
     """Frames `objects` in every 3D viewport (selects them, makes the first active). False when
     there is no viewport (background mode). context.temp_override exists from 3.2 on."""
-    objects = [ob for ob in objects if ob.name in context.view_layer.objects]
     regions = list(view3d_regions(context))
-    if not objects or not regions:
+    if not regions:
+        return False
+    context.view_layer.update()  # objects linked in this same operator join the view layer here
+    objects = [ob for ob in objects if ob.name in context.view_layer.objects]
+    if not objects:
         return False
     for ob in context.view_layer.objects:
         if ob.select_get():
