@@ -129,8 +129,7 @@ def test_import_every_shared_mesh(clean_scene, data_dir, index):
     from hybrid_base_complex.structure import import_hbc
 
     path = hbc_meshes(data_dir)[index]
-    analyze = True
-    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyze=analyze) == {"FINISHED"}
+    assert bpy.ops.import_mesh.hbc(filepath=str(path)) == {"FINISHED"}
     (root,) = roots()
     assert root.name in [c.name for c in bpy.context.scene.collection.children]
     mesh = import_hbc().load(str(path))
@@ -146,10 +145,8 @@ def test_import_every_shared_mesh(clean_scene, data_dir, index):
         owners = np.zeros(len(nh.data.polygons), np.int32)
         nh.data.attributes["owner"].data.foreach_get("value", owners)
         assert len(np.unique(owners)) == n_non_hex
-    if analyze:
-        st = bpy.context.scene.hbc
-        assert len(st.sheets) == s.num_sheets
-        build_every_layer_and_check(root, s)
+    assert len(bpy.context.scene.hbc.sheets) == s.num_sheets
+    build_every_layer_and_check(root, s)
 
 
 def build_every_layer_and_check(root, s):
@@ -175,6 +172,8 @@ def build_every_layer_and_check(root, s):
         assert len(np.unique(owners)) == s.num_components
     sheets = layer_objects(root, "sheets")
     assert len(sheets) == (s.num_sheets if s.num_sheets <= st.split_max else (1 if s.num_sheets else 0))
+    if 0 < s.num_sheets <= st.split_max:  # one object per sheet: only the picked one is visible
+        assert [o["hbc_sheet"] for o in sheets if not o.hide_viewport] == [st.sheet_index]
     wire = layer_objects(root, "wireframe")
     assert len(wire) <= 1
     # The picked sheet with its highlights, for each sheet type present.
