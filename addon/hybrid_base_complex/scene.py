@@ -40,6 +40,7 @@ class Transaction:
         self.created = []  # (collection name in bpy.data, datablock)
         self.renamed = []  # (datablock, its name before)
         self.retired = {}  # (root name, layer) -> the old layer collection, unlinked from its root
+        self.removed = []  # (collection, name, data, ID properties, colour, hidden) of objects removed early
 
     def __enter__(self):
         return self
@@ -73,6 +74,13 @@ class Transaction:
                 block.name = name
             except ReferenceError:
                 pass
+        for coll, name, data, props, color, hidden in self.removed:
+            ob = bpy.data.objects.new(name, data)
+            for k, v in props.items():
+                ob[k] = v
+            ob.color, ob.hide_viewport = color, hidden
+            coll.objects.link(ob)
+        self.removed.clear()
         for (root_name, _), old in self.retired.items():
             root = bpy.data.collections.get(root_name)
             if root is not None and old.name not in root.children:
@@ -331,17 +339,30 @@ def remove_collection_tree(coll):
 
 def retire_layer(tx: Transaction, root, layer: str):
     """Takes the layer about to be replaced out of the scene (its objects leave the view layer, so
-    renaming and removing them costs no view-layer update each) and renames its objects and
-    meshes, so the new ones get the plain names of a first build (no `.001`, no search for a free
-    number). A rollback links it back under its old names; swap_layer removes it."""
+    renaming and removing them costs no view-layer update each), removes its plain objects and
+    renames what stays (meshes, tube objects), so the new ones get the plain names of a first build
+    (no `.001`, no search for a free number). A rollback makes the removed objects again and links
+    the layer back under its old names; swap_layer removes the rest."""
     old = find_layer(root, layer)
     if old is None:
         return None
     root.children.unlink(old)
     tx.retired[(root.name, layer)] = old
-    _, objects, data = _tree(old)
-    for block in list(objects) + list(data):
+    colls, objects, data = _tree(old)
+    for block in data:
         tx.rename(block, "~" + block.name[:60])
+    # Plain mesh objects go now, while the file does not hold the new ones yet (Blender removes
+    # objects in time growing with the objects in the file); a rollback makes them again from
+    # what is kept here (their data stays until the swap). Objects with modifiers (tubes) stay.
+    home = {ob: c for c in colls for ob in c.objects}
+    plain = [ob for ob in objects if ob.type == "MESH" and not ob.modifiers]
+    tx.removed += [(home[ob], ob.name, ob.data, {k: ob[k] for k in ob.keys()}, tuple(ob.color), ob.hide_viewport)
+                   for ob in plain]
+    if plain:
+        bpy.data.batch_remove(plain)
+    for ob in objects:
+        if ob not in plain:
+            tx.rename(ob, "~" + ob.name[:60])
     return old
 
 
@@ -357,7 +378,14 @@ def swap_layer(root, layer: str, new_coll, tx: Transaction | None = None):
     keep_hidden = (old.hide_viewport, old.hide_render) if old is not None and not old.get("hbc_stale") else None
     final_name = P.layer_collection_name(root.name, layer)
     if old is not None:
+        old_colls = set(_tree(old)[0])
+        early = [d for coll, _, d, *_ in (tx.removed if tx is not None else []) if coll in old_colls]
         remove_collection_tree(old)
+        if tx is not None:
+            tx.removed = [r for r in tx.removed if r[2] not in early]
+        early = [d for d in early if d.users == 0]
+        if early:
+            bpy.data.batch_remove(early)
     new_coll["hbc_layer"] = layer
     new_coll["hbc_mesh"] = root.name
     root.children.link(new_coll)

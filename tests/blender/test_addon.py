@@ -292,24 +292,33 @@ def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
 
 def test_rebuild_gives_first_build_names_no_slower(clean_scene, data_dir):
     """1301 blocks, one object each: a rebuild makes the same names (no .001, so Blender never
-    searches a free numbered name). Its time is the first build's plus removing the old objects,
-    which Blender does in time growing with the objects in the file: measured 1.3 to 2.5 times the
-    first build on this (loaded) machine, 7 times before. Asserted: at most 3 times, + 0.2 s."""
+    searches a free numbered name). Its time is the first build's plus retiring the old layer
+    (removing its objects before the new ones exist, as Blender removes objects in time growing
+    with the objects in the file) and removing the old meshes: measured 1.3 to 2.2 times the first
+    build (7 times before; removal is the part no rebuild can skip). Asserted: at most 2.5 times,
+    plus 0.2 s for timer noise."""
     root = import_mesh(data_dir)
     bpy.context.scene.hbc.split_max = 100000
-    t = time.perf_counter()
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    first = time.perf_counter() - t
+
+    def timed_build():
+        t = time.perf_counter()
+        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+        return time.perf_counter() - t
+
+    # Best of two each, the shared machine's noise being larger than the difference measured.
+    firsts = []
+    for _ in range(2):
+        bpy.ops.hbc.clear_layer(layer="blocks")
+        firsts.append(timed_build())
     names = sorted(o.name for o in layer_objects(root, "blocks"))
     meshes = sorted(o.data.name for o in layer_objects(root, "blocks"))
     assert len(names) == 1301 and not any("." in n.rsplit(" ", 1)[-1] for n in names)
-    t = time.perf_counter()
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    again = time.perf_counter() - t
+    agains = [timed_build() for _ in range(2)]
     assert sorted(o.name for o in layer_objects(root, "blocks")) == names
     assert sorted(o.data.name for o in layer_objects(root, "blocks")) == meshes
-    assert again <= 3.0 * first + 0.2, (first, again)
+    first, again = min(firsts), min(agains)
     print(f"blocks: first build {first:.2f} s, rebuild {again:.2f} s")
+    assert again <= 2.5 * first + 0.2, (firsts, agains)
 
 
 def test_second_import_lands_beside_the_first(clean_scene, data_dir):
