@@ -202,10 +202,14 @@ NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
 
 def build_into(tx, root, layer, s, st):
     """Builds a layer into a new unlinked collection (registered in tx); returns it. The old
-    layer's objects are renamed first so the new ones get the same names a first build gives."""
-    S.retire_layer(tx, root, layer)
-    coll = tx.collection(P.layer_collection_name(root.name, layer) + " (building)")
-    BUILDERS[layer](tx, coll, s, st, root.name)
+    layer is retired first so the new objects get the names a first build gives. `root` is the
+    mesh's collection, or (blender_scripts/figures/render.py, which links the result itself) a
+    name: then nothing is retired."""
+    name = root if isinstance(root, str) else root.name
+    if not isinstance(root, str):
+        S.retire_layer(tx, root, layer)
+    coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
+    BUILDERS[layer](tx, coll, s, st, name)
     return coll
 
 

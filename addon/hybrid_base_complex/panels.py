@@ -121,12 +121,12 @@ class HBC_PT_table1(_Sub, bpy.types.Panel):
         row.operator("hbc.copy_table1", text="CSV", icon="COPYDOWN").format = "CSV"
 
 
-def layer_controls(layout, root, layer):
+def layer_controls(context, layout, root, layer):
     """Build / Rebuild and Clear for one layer; greyed out (reason in the tooltip) when the layer
     cannot be built now."""
     coll = S.find_layer(root, layer)
     row = layout.row(align=True)
-    row.enabled = unavailable(bpy.context, layer) is None
+    row.enabled = unavailable(context, layer) is None
     built = coll is not None
     stale = built and bool(coll.get("hbc_stale"))
     row.operator("hbc.build_layer", text="Rebuild" if built else "Build",
@@ -152,7 +152,7 @@ class _Layer(_Sub):
             self.layout.label(text="", icon="BLANK1")
 
     def draw(self, context):
-        layer_controls(self.layout, active_root(context), self.layer)
+        layer_controls(context, self.layout, active_root(context), self.layer)
         self.draw_options(self.layout.column(), context.scene.hbc)
 
     def draw_options(self, col, st):

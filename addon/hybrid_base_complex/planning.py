@@ -258,7 +258,7 @@ class Lines:
                      np.concatenate(poly).astype(np.int32))
 
 
-def polylines(positions, offsets, colors=None, alpha=None, keep=None, closed=None) -> Lines:
+def lines(positions, offsets, colors=None, alpha=None, keep=None, closed=None) -> Lines:
     """Polylines whose points (hbc.polylines' positions, one per CSR entry) are grouped by
     `offsets`. colors: one RGBA for all, or (k,4) per polyline; alpha: optional per point. keep:
     optional bool per polyline; closed: optional bool per polyline (an edge joins its last point to
@@ -306,6 +306,14 @@ def polylines(positions, offsets, colors=None, alpha=None, keep=None, closed=Non
 _OCT_V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], np.float32)
 _OCT_F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]],
                   np.int32)
+
+
+def polylines(points, offsets, vertices, colors=None, alpha=None, keep=None, closed=None) -> Lines:
+    """`lines` of mesh-vertex polylines given their vertices' positions `points`: kept only for
+    blender_scripts/figures/render.py (line 399), which the lead moves onto Structure.wireframe;
+    the add-on itself places line points with hbc.polylines (Structure._lines)."""
+    pts = np.asarray(points, np.float32).reshape(-1, 3)
+    return lines(pts[np.asarray(vertices, np.int64)], offsets, colors, alpha, keep, closed)
 
 
 def dots(centers, radius: float, owner=None) -> Soup:

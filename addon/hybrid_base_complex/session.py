@@ -52,6 +52,10 @@ def analyze(structure: Structure, rho: float = 0.8, log=print) -> Structure:
     return structure
 
 
+#: The spelling blender_scripts/figures/render.py still calls (issue 15 item 4: "analyze").
+analyse = analyze
+
+
 def ensure(name: str, path: str, scale: float, rho: float, analyzed: bool, log=print,
            offset=(0.0, 0.0, 0.0)) -> Structure:
     """The cached structure of `name`, re-read from `path` when the cache lost it or the mesh was

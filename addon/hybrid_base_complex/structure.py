@@ -68,7 +68,7 @@ class Structure:
         offsets = np.ascontiguousarray(offsets, np.int32)
         vertices = np.ascontiguousarray(vertices, np.int32)
         positions = self._place(import_hbc().polylines(self.mesh, offsets, vertices))
-        return P.polylines(positions, offsets, colors, alpha, keep, closed)
+        return P.lines(positions, offsets, colors, alpha, keep, closed)
 
     def _edges(self, edges, color) -> P.Lines:
         """Single mesh edges (m, 2) as 2-point polylines of one colour."""

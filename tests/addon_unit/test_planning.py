@@ -55,15 +55,18 @@ def test_polylines_colors_alpha_keep():
     pts = np.arange(24, dtype=np.float32).reshape(8, 3)
     off = np.array([0, 3, 5, 8])
     cols = P.palette_color([0, 1, 2])
-    lines = P.polylines(pts, off, cols, alpha=np.linspace(0, 1, 8), keep=[True, False, True])
+    lines = P.lines(pts, off, cols, alpha=np.linspace(0, 1, 8), keep=[True, False, True])
     assert len(lines.positions) == 6
     assert lines.edges.tolist() == [[0, 1], [1, 2], [3, 4], [4, 5]]
     assert lines.polyline.tolist() == [0, 0, 0, 1, 1, 1]
     np.testing.assert_allclose(lines.colors[3, :3], cols[2, :3])
     assert lines.colors[-1, 3] == pytest.approx(1.0)
-    ring = P.polylines(pts, off, closed=[True, False, False])
+    ring = P.lines(pts, off, closed=[True, False, False])
     assert ring.edges.tolist() == [[0, 1], [1, 2], [3, 4], [5, 6], [6, 7], [2, 0]]
-    both = P.Lines.concat([lines, P.polylines(pts[:2], [0, 2], (1, 0, 0, 1))])
+    both = P.Lines.concat([lines, P.lines(pts[:2], [0, 2], (1, 0, 0, 1))])
+    # The figure script's form: mesh-vertex ids into a point array.
+    same = P.polylines(pts[::-1], off, np.arange(7, -1, -1), cols, keep=[True, False, True])
+    np.testing.assert_array_equal(same.positions, lines.positions)
     assert both.num_polylines == 3 and both.edges[-1].tolist() == [6, 7]
 
 
