@@ -252,7 +252,7 @@ def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=
 def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of=None):
     """One object per owner (faces with equal owner), all sharing the Object Info material with
     ob.color set: for layers with few blocks, so that clicking a block selects it. Relies on
-    block_soup giving each owner a contiguous vertex range (vertex keys sort by owner)."""
+    hbc.block_soup giving each owner its own points (usually one contiguous range)."""
     mat = material(tx, "object")
     order = np.argsort(soup.face_owner, kind="stable")
     starts = soup.loop_starts()

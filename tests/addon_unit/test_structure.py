@@ -60,6 +60,8 @@ def test_grid_graph_and_sheets(grid):
     (name, color, lines), = s.singularity_lines()
     assert name == "Valence 1" and color == P.valence_color(1)
     assert lines.num_polylines == 12 and len(lines.edges) == 28
+    points_per_chain = np.bincount(lines.polyline)
+    assert sorted(points_per_chain.tolist()) == [3] * 8 + [4] * 4  # 8 chains of 2 edges, 4 of 3
     assert s.num_sheets == 3 and s.sheet_types().tolist() == [0, 0, 0]
     cells, comps = s.sheet_sizes()
     assert cells.tolist() == [12, 12, 12] and comps.tolist() == [1, 1, 1]
@@ -76,6 +78,7 @@ def test_grid_graph_and_sheets(grid):
 def test_sector_graph_and_components(sector5):
     m, a = sector5
     s = Structure(m, a)
+    assert s.num_cells == 40
     groups = {name: lines for name, _, lines in s.singularity_lines()}
     assert sorted(groups) == ["Valence 1", "Valence 5"]
     axis = groups["Valence 5"]

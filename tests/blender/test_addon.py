@@ -67,8 +67,9 @@ def import_error(path):
 
 @pytest.mark.parametrize("path", MALFORMED, ids=lambda p: f"{p.parent.name}/{p.name}")
 def test_malformed_file_cancels_with_its_message(clean_scene, path):
-    """Cancelled (Blender records an undo step only for FINISHED operators, so the undo history is
-    as it was), the scene unchanged, and a message naming the file with no Python class name."""
+    """Cancelled with a message naming the file and no Python class name, the scene unchanged.
+    (Cancelling is what keeps the undo history as it was: Blender pushes undo steps for FINISHED
+    operators only; background mode has no undo history to inspect.)"""
     from hybrid_base_complex import scene as S
 
     before = S.datablock_names()
