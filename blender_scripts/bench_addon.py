@@ -35,12 +35,8 @@ def main():
     import hybrid_base_complex as addon
     from hybrid_base_complex import layers as L
     from hybrid_base_complex import session
-    from hybrid_base_complex.structure import import_hbc
 
     addon.register()
-    analysed = hasattr(import_hbc().Mesh, "analyze")
-    if not analysed:
-        print("bench_addon: this hbc has no Mesh.analyze: only the direct view is measured", flush=True)
     rows = []
     failed = False
     for path in args.meshes:
@@ -49,24 +45,23 @@ def main():
         if args.split_max is not None:
             st.split_max = args.split_max
         t = time.perf_counter()
-        assert bpy.ops.import_mesh.hbc(filepath=path, analyse=analysed) == {"FINISHED"}
+        assert bpy.ops.import_mesh.hbc(filepath=path) == {"FINISHED"}
         t_import = time.perf_counter() - t
         root = L.find_root(st.active_mesh)
         s = session.get(root.name)
         times = {"import": t_import}
-        if analysed:
-            a = s.analysis
-            pick = int(a.largest_self_intersecting) if int(a.largest_self_intersecting) >= 0 else 0
-            st.sheet_index = pick if s.num_sheets else 0
-            layers = ["graph", "blocks", "sheets", "wireframe"]
-            if s.num_sheets:
-                layers.append("sheet")
-                if int(s.sheet_types()[st.sheet_index]) == 3:
-                    layers.append("subsheets")
-            for layer in layers:
-                t = time.perf_counter()
-                assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}, layer
-                times[layer] = time.perf_counter() - t
+        a = s.analysis
+        pick = int(a.largest_self_intersecting) if int(a.largest_self_intersecting) >= 0 else 0
+        st.sheet_index = pick if s.num_sheets else 0
+        layers = ["graph", "blocks", "sheets", "wireframe"]
+        if s.num_sheets:
+            layers.append("sheet")
+            if int(s.sheet_types()[st.sheet_index]) == 3:
+                layers.append("subsheets")
+        for layer in layers:
+            t = time.perf_counter()
+            assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}, layer
+            times[layer] = time.perf_counter() - t
         # Tubes are made by geometry nodes when the scene is evaluated (drawn or rendered): time it.
         t = time.perf_counter()
         bpy.context.evaluated_depsgraph_get().update()

@@ -22,7 +22,7 @@ except ImportError:  # plain Python (unit tests): only the bpy-free modules are 
     bpy = None
 
 if bpy is not None:
-    from . import operators, panels, properties
+    from . import handlers, operators, panels, properties
 
     _MODULES = (properties, operators, panels)
 
@@ -32,8 +32,10 @@ if bpy is not None:
                 bpy.utils.register_class(cls)
         properties.register_props()
         operators.register_menus()
+        handlers.register()
 
     def unregister():
+        handlers.unregister()
         operators.unregister_menus()
         properties.unregister_props()
         for module in reversed(_MODULES):

@@ -15,7 +15,6 @@ import numpy as np
 
 from . import planning as P
 from . import scene as S
-from .structure import concat_soups
 
 
 def _props(name, layer, **extra):
@@ -39,7 +38,7 @@ def build_direct(tx, coll, s, st, name):
                       _props(name, "direct", hbc_part="non_hex"))
         made += 1
     if st.direct_hex_cells and np.any(types == 0):
-        soup = s.direct_cells(hex_cells=True)
+        soup = s.hex_region()
         mat = S.material(tx, "flat", P.HEX_COLOR, 1.0)
         S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"))
         made += 1
@@ -84,10 +83,18 @@ def build_sheets(tx, coll, s, st, name):
         return _props(name, "sheets", hbc_sheet=i, hbc_sheet_type=P.SHEET_TYPES[int(types[i])])
 
     if n <= st.split_max:
-        return len(S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of))
+        objects = S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of)
+        show_sheets(objects, st)
+        return len(objects)
     S.soup_object(tx, coll, f"{name} sheets", soup, colors[soup.face_owner], None,
                   _props(name, "sheets", hbc_owner="sheet"))
     return 1
+
+
+def show_sheets(objects, st):
+    """All sheets share one space and z-fight: by default only the picked one is shown."""
+    for ob in objects:
+        ob.hide_viewport = not st.sheets_all and ob.get("hbc_sheet") != st.sheet_index
 
 
 def _dot_radius(s, st):
@@ -193,22 +200,30 @@ BUILDERS = {
 NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
 
 
-def build_into(tx, root_name, layer, s, st):
-    """Builds a layer into a new unlinked collection (registered in tx); returns it."""
-    coll = tx.collection(P.layer_collection_name(root_name, layer) + " (building)")
-    BUILDERS[layer](tx, coll, s, st, root_name)
+def build_into(tx, root, layer, s, st):
+    """Builds a layer into a new unlinked collection (registered in tx); returns it. The old
+    layer is retired first so the new objects get the names a first build gives. `root` is the
+    mesh's collection, or (blender_scripts/figures/render.py, which links the result itself) a
+    name: then nothing is retired."""
+    name = root if isinstance(root, str) else root.name
+    if not isinstance(root, str):
+        S.retire_layer(tx, root, layer)
+    coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
+    BUILDERS[layer](tx, coll, s, st, name)
     return coll
 
 
 def build_layer(root, layer, s, st, log=print):
-    """Builds one layer of the mesh under `root`, replacing the old one; all or nothing."""
+    """Builds one layer of the mesh under `root`, replacing the old one; all or nothing. Returns
+    (collection, a sentence saying what was built and how long it took)."""
     t = time.perf_counter()
     with S.Transaction() as tx:
-        coll = build_into(tx, root.name, layer, s, st)
-        S.swap_layer(root, layer, coll)
-    log(f"hbc: {root.name}: built {P.LAYER_TITLES[layer]} ({len(coll.all_objects)} objects) "
-        f"in {time.perf_counter() - t:.2f} s")
-    return coll
+        coll = build_into(tx, root, layer, s, st)
+        S.swap_layer(root, layer, coll, tx)
+    done = (f"{root.name}: built {P.LAYER_TITLES[layer]} ({len(coll.all_objects)} objects) "
+            f"in {time.perf_counter() - t:.2f} s")
+    log("hbc: " + done)
+    return coll, done
 
 
 def find_root(name):

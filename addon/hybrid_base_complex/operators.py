@@ -1,5 +1,7 @@
-"""Operators: import, analyse, build / clear layers. All undoable; a failure reports an error,
-cancels, and leaves the scene as it was."""
+"""Operators: import, analyze, build / clear layers, copy the Table 1 row, select a merged block.
+All undoable; a failure reports what went wrong (the message, not a Python class), cancels (so
+Blender records no undo step) and leaves the scene as it was; a success reports what was built and
+how long it took."""
 
 from __future__ import annotations
 
@@ -10,10 +12,11 @@ import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, StringProperty
 from bpy_extras.io_utils import ImportHelper
 
+from . import compat
 from . import layers as L
 from . import planning as P
 from . import scene as S
-from . import session
+from . import session, sources
 
 FILTER = "*.ovm;*.ovmb;*.mesh;*.HYBRID;*.hybrid;*.hedra;*.msh;*.vtk;*.vtu"
 LAYER_ITEMS = [(k, title, f"Build the {title.lower()} layer") for k, title in P.LAYERS]
@@ -80,9 +83,26 @@ def active_root(context):
     return root
 
 
-def structure_of(root, analysed, log, rho=0.8):
-    return session.ensure(root.name, root["hbc_source"], float(root.get("hbc_scale", 1.0)),
-                          float(root.get("hbc_rho", rho)), analysed, log)
+def structure_of(root, analyzed, log, rho=0.8):
+    """The mesh's Structure, read again from its source (sources.resolve) when not in memory; a
+    source found beside a moved .blend is stored as found."""
+    path = sources.resolve(root)
+    if os.path.normpath(bpy.path.abspath(root["hbc_source"])) != path:
+        root["hbc_source"] = sources.stored(path)
+    return session.ensure(root.name, path, float(root.get("hbc_scale", 1.0)),
+                          float(root.get("hbc_rho", rho)), analyzed, log, tuple(root.get("hbc_offset", (0, 0, 0))))
+
+
+def model_boxes():
+    """(lo, hi) world boxes of every imported mesh's objects (where new imports must not land)."""
+    import mathutils
+
+    boxes = []
+    for root in (c for c in bpy.data.collections if c.get("hbc_source") is not None):
+        pts = [ob.matrix_world @ mathutils.Vector(corner) for ob in root.all_objects for corner in ob.bound_box]
+        if pts:
+            boxes.append((tuple(min(p[i] for p in pts) for i in range(3)), tuple(max(p[i] for p in pts) for i in range(3))))
+    return boxes
 
 
 class _OnActiveMesh:
@@ -98,12 +118,12 @@ class _OnActiveMesh:
         """Reports a failure and cancels; the scene was not touched (builds are all or nothing)."""
         if prog is not None:
             prog.end(context)
-        self.report({"ERROR"}, f"{type(error).__name__}: {error}")
+        self.report({"ERROR"}, P.describe_error(error))
         return {"CANCELLED"}
 
 
 class HBC_OT_import(bpy.types.Operator, ImportHelper):
-    """Import a hex-dominant volume mesh and show it (optionally analysed)"""
+    """Import a hex-dominant volume mesh and show it (optionally analyzed)"""
 
     bl_idname = "import_mesh.hbc"
     bl_label = "Import Hex-dominant Mesh"
@@ -112,71 +132,96 @@ class HBC_OT_import(bpy.types.Operator, ImportHelper):
     filename_ext = ".mesh"
     filter_glob: StringProperty(default=FILTER, options={"HIDDEN"})
     scale: FloatProperty(name="Scale", default=1.0, min=1e-6, soft_max=100.0)
-    analyse: BoolProperty(name="Analyse on import", default=True,
-                          description="Compute the singularity graph, base complex, sheets and wireframe")
-    build_layers: BoolProperty(name="Build structure layers", default=False,
+    analyze: BoolProperty(name="Analyze", default=True,
+                          description="Analyze on import: singularity graph, base complex, sheets and wireframe")
+    build_layers: BoolProperty(name="Build layers", default=False,
                                description="Also build the singularity graph, blocks and wireframe layers")
+    beside: BoolProperty(name="Place beside", default=True,
+                         description="Place the mesh to the right of the meshes already imported")
+    frame: BoolProperty(name="Frame", default=True, description="Frame the imported mesh in the 3D views")
 
     def execute(self, context):
-        path = self.filepath
+        path = os.path.abspath(self.filepath)
         log = make_log(context)
         if not os.path.isfile(path):
             self.report({"ERROR"}, f"No such file: {path}")
             return {"CANCELLED"}
-        prog = _Progress(context, 2 + (1 if self.analyse else 0) + (3 if self.build_layers and self.analyse else 0))
+        layers = ["direct"] + (["graph", "blocks", "wireframe"] if self.build_layers and self.analyze else [])
+        prog = _Progress(context, 1 + (1 if self.analyze else 0) + len(layers))
         st = context.scene.hbc
         tx = S.Transaction()
         try:
             t0 = time.perf_counter()
             s = session.load(path, self.scale, log)
+            if self.beside:
+                s.set_offset(P.beside(model_boxes(), *s.bbox()))
             prog.step("loaded")
-            if self.analyse:
-                session.analyse(s, st.rho, log)
-                prog.step("analysed")
-            name = P.mesh_name_from_path(path)
+            if self.analyze:
+                session.analyze(s, st.rho, log)
+                prog.step("analyzed")
             with tx:
-                root = tx.collection(name)
-                root["hbc_source"] = os.path.abspath(path)
+                root = tx.collection(P.mesh_name_from_path(path))
+                root["hbc_source"] = sources.stored(path)
                 root["hbc_scale"] = float(self.scale)
+                root["hbc_offset"] = [float(x) for x in s.offset]
                 root["hbc_rho"] = float(st.rho)
                 root["hbc_cells"] = int(s.num_cells)
-                layers = ["direct"] + (["graph", "blocks", "wireframe"] if self.build_layers and self.analyse else [])
                 for layer in layers:
-                    coll = L.build_into(tx, root.name, layer, s, st)
-                    S.swap_layer(root, layer, coll)
+                    S.swap_layer(root, layer, L.build_into(tx, root, layer, s, st), tx)
                     prog.step(f"built {P.LAYER_TITLES[layer]}")
                 context.scene.collection.children.link(root)
         except Exception as e:  # noqa: BLE001 - any failure must cancel cleanly
             prog.end(context)
-            self.report({"ERROR"}, f"{type(e).__name__}: {e}")
+            self.report({"ERROR"}, P.describe_error(e))
             return {"CANCELLED"}
         prog.end(context)
         session.put(root.name, s)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
-        log(f"hbc: imported {root.name} in {time.perf_counter() - t0:.2f} s")
+        if self.frame:
+            compat.frame_objects(context, list(root.all_objects))
+        done = f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s"
+        log("hbc: " + done)
+        self.report({"INFO"}, done)
         return {"FINISHED"}
 
 
-class HBC_OT_analyse(_OnActiveMesh, bpy.types.Operator):
-    """Analyse the active hex-dominant mesh (again, with the current ρ)"""
+class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
+    """Analyze the active hex-dominant mesh (again, with the current ρ)"""
 
-    bl_idname = "hbc.analyse"
-    bl_label = "Analyse"
+    bl_idname = "hbc.analyze"
+    bl_label = "Analyze"
 
     def execute(self, context):
         root = active_root(context)
         st = context.scene.hbc
         log = make_log(context)
+        t0 = time.perf_counter()
         try:
             s = structure_of(root, False, log)
-            session.analyse(s, st.rho, log)
+            session.analyze(s, st.rho, log)
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)
         root["hbc_rho"] = float(st.rho)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
+        self.report({"INFO"}, f"Analyzed {root.name}: {s.num_components} blocks, {s.num_sheets} sheets "
+                              f"in {time.perf_counter() - t0:.2f} s")
         return {"FINISHED"}
+
+
+def picked_sheet_type(st):
+    """Type of the sheet picked in the list, None when none is."""
+    return st.sheets[st.sheet_index].type if 0 <= st.sheet_index < len(st.sheets) else None
+
+
+def unavailable(context, layer):
+    """Why `layer` cannot be built now (a sentence), or None."""
+    if layer == "subsheets":
+        return P.subsheets_unavailable(picked_sheet_type(context.scene.hbc))
+    if layer == "sheet" and picked_sheet_type(context.scene.hbc) is None:
+        return "Pick a sheet in the list first"
+    return None
 
 
 class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
@@ -187,9 +232,19 @@ class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
 
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
 
+    @classmethod
+    def description(cls, context, properties):
+        why = unavailable(context, properties.layer)
+        title = P.LAYER_TITLES[properties.layer].lower()
+        return f"Cannot build the {title} layer: {why}" if why else f"Build (or rebuild) the {title} layer"
+
     def execute(self, context):
         root = active_root(context)
         st = context.scene.hbc
+        why = unavailable(context, self.layer)
+        if why:
+            self.report({"ERROR"}, why)
+            return {"CANCELLED"}
         log = make_log(context)
         prog = _Progress(context, 2)
         try:
@@ -197,27 +252,33 @@ class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
             prog.step("analysis ready")
             if not len(st.sheets) and s.analysis is not None:
                 fill_sheet_list(st, s)
-            L.build_layer(root, self.layer, s, st, log)
+            _, done = L.build_layer(root, self.layer, s, st, log)
             prog.step(f"built {P.LAYER_TITLES[self.layer]}")
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e, prog)
         prog.end(context)
         st.active_mesh = root.name
+        self.report({"INFO"}, done)
         return {"FINISHED"}
 
 
+#: Build All's layers, and the one left visible (the others are a click away: their eye icons).
+BUILD_ALL = ("direct", "graph", "blocks", "sheets", "wireframe")
+BUILD_ALL_SHOWN = "blocks"
+
+
 class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
-    """Build every overview layer (direct view, singularity graph, blocks, sheets, wireframe)"""
+    """Build the overview layers (direct view, singularity graph, blocks, sheets, wireframe); only the blocks stay visible"""
 
     bl_idname = "hbc.build_all"
-    bl_label = "Build All Layers"
+    bl_label = "Build All"
 
     def execute(self, context):
         root = active_root(context)
         st = context.scene.hbc
         log = make_log(context)
-        todo = ["direct", "graph", "blocks", "sheets", "wireframe"]
-        prog = _Progress(context, len(todo) + 1)
+        prog = _Progress(context, len(BUILD_ALL) + 1)
+        t0 = time.perf_counter()
         try:
             s = structure_of(root, True, log, st.rho)
             if not len(st.sheets):
@@ -226,19 +287,24 @@ class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
             # All or nothing: build every layer first, swap them in at the end.
             with S.Transaction() as tx:
                 built = []
-                for layer in todo:
-                    built.append((layer, L.build_into(tx, root.name, layer, s, st)))
+                for layer in BUILD_ALL:
+                    built.append((layer, L.build_into(tx, root, layer, s, st)))
                     prog.step(f"built {P.LAYER_TITLES[layer]}")
                 for layer, coll in built:
-                    S.swap_layer(root, layer, coll)
+                    S.swap_layer(root, layer, coll, tx).hide_viewport = layer != BUILD_ALL_SHOWN
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e, prog)
         prog.end(context)
+        n = sum(len(S.find_layer(root, layer).all_objects) for layer in BUILD_ALL)
+        done = (f"{root.name}: built {len(BUILD_ALL)} layers ({n} objects) in {time.perf_counter() - t0:.2f} s; "
+                f"showing {P.LAYER_TITLES[BUILD_ALL_SHOWN]}")
+        log("hbc: " + done)
+        self.report({"INFO"}, done)
         return {"FINISHED"}
 
 
 class HBC_OT_clear_layer(_OnActiveMesh, bpy.types.Operator):
-    """Remove one layer of the active mesh"""
+    """Remove this layer of the active mesh"""
 
     bl_idname = "hbc.clear_layer"
     bl_label = "Clear Layer"
@@ -273,12 +339,98 @@ class HBC_OT_set_active(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class HBC_OT_copy_table1(_OnActiveMesh, bpy.types.Operator):
+    """Copy the active mesh's Table 1 row to the clipboard"""
+
+    bl_idname = "hbc.copy_table1"
+    bl_label = "Copy Row"
+    bl_options = {"REGISTER"}
+
+    format: EnumProperty(name="Format", items=[("MARKDOWN", "Markdown", "A Markdown table: header, rule, row"),
+                                               ("CSV", "CSV", "Comma-separated: header line, row line")])
+
+    def execute(self, context):
+        root = active_root(context)
+        s = session.get(root.name)
+        if s is None:
+            self.report({"ERROR"}, "The mesh is not in memory: Analyze it first")
+            return {"CANCELLED"}
+        context.window_manager.clipboard = P.table1_text(root.name, s.stats(), self.format)
+        self.report({"INFO"}, f"Copied the Table 1 row of {root.name} ({self.format.title()})")
+        return {"FINISHED"}
+
+
+class HBC_OT_explain(bpy.types.Operator):
+    """What a value means (shown as the tooltip)"""
+
+    bl_idname = "hbc.explain"
+    bl_label = "Explain"
+    bl_options = {"INTERNAL"}
+
+    text: StringProperty()
+
+    @classmethod
+    def description(cls, context, properties):
+        return properties.text
+
+    def execute(self, context):
+        self.report({"INFO"}, self.text)
+        return {"CANCELLED"}  # nothing changed: no undo step
+
+
+def merged_owner_faces(ob):
+    """(owner attribute values per face, active face's owner or None) of a merged-blocks mesh in
+    edit mode, through bmesh."""
+    import bmesh
+
+    bm = bmesh.from_edit_mesh(ob.data)
+    layer = bm.faces.layers.int.get(S.OWNER_ATTR)
+    if layer is None:
+        return bm, None, None
+    face = bm.faces.active
+    return bm, layer, (int(face[layer]) if face is not None else None)
+
+
+class HBC_OT_select_block(bpy.types.Operator):
+    """Select every face of the picked block (the active face's owner) in a merged mesh"""
+
+    bl_idname = "hbc.select_block"
+    bl_label = "Select Block"
+    bl_options = {"REGISTER", "UNDO"}
+
+    frame: BoolProperty(name="Frame", default=False, description="Also frame the block in the 3D views")
+
+    @classmethod
+    def poll(cls, context):
+        ob = context.active_object
+        return ob is not None and ob.mode == "EDIT" and ob.type == "MESH" and bool(ob.get("hbc_owner"))
+
+    def execute(self, context):
+        import bmesh
+
+        ob = context.active_object
+        bm, layer, owner = merged_owner_faces(ob)
+        if owner is None:
+            self.report({"ERROR"}, "Pick a face of the block first")
+            return {"CANCELLED"}
+        n = 0
+        for f in bm.faces:
+            f.select_set(f[layer] == owner)
+            n += f[layer] == owner
+        bm.select_flush_mode()
+        bmesh.update_edit_mesh(ob.data)
+        if self.frame:
+            compat.frame_edit_selection(context)
+        self.report({"INFO"}, f"Selected {ob['hbc_owner']} {owner}: {n} faces")
+        return {"FINISHED"}
+
+
 def menu_import(self, context):
     self.layout.operator(HBC_OT_import.bl_idname, text="Hex-dominant mesh (.ovm/.ovmb/.mesh/.HYBRID/.hedra)")
 
 
-classes = (HBC_OT_import, HBC_OT_analyse, HBC_OT_build_layer, HBC_OT_build_all, HBC_OT_clear_layer,
-           HBC_OT_set_active)
+classes = (HBC_OT_import, HBC_OT_analyze, HBC_OT_build_layer, HBC_OT_build_all, HBC_OT_clear_layer,
+           HBC_OT_set_active, HBC_OT_copy_table1, HBC_OT_explain, HBC_OT_select_block)
 
 
 def register_menus():

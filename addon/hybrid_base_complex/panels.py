@@ -1,4 +1,7 @@
-"""The "Hex Structure" sidebar panel (3D view > N) and the sheet list."""
+"""The "Hex Structure" sidebar (3D view > N): the mesh, its Table 1 row, one sub-panel per layer,
+a legend, and the selection. Laid out for the sidebar's default width: one short-labelled
+property per row, icons for actions, longer words in tooltips. Panel order is fixed (bl_order) and
+no panel appears or disappears with the selection, so buttons never move under the cursor."""
 
 from __future__ import annotations
 
@@ -7,32 +10,40 @@ import bpy
 from . import planning as P
 from . import scene as S
 from . import session
-from .operators import active_root
+from .operators import active_root, merged_owner_faces, unavailable
+
+#: Longest label a row may carry at the default sidebar width (about 30 characters across, a
+#: property's value taking the rest); tests/blender checks every drawn label against it.
+MAX_LABEL = 14
 
 
 class HBC_UL_sheets(bpy.types.UIList):
+    """Sheets: index, type, cells. Filter by type word, sort by index, type or size."""
+
     bl_idname = "HBC_UL_sheets"
 
     def draw_item(self, context, layout, data, item, icon, active_data, active_propname, index=0):
         row = layout.row(align=True)
         row.label(text=f"Sheet {item.index}")
-        row.label(text=P.SHEET_TYPES[item.type] if 0 <= item.type < len(P.SHEET_TYPES) else str(item.type))
-        row.label(text=f"{item.cells} cells / {item.components} blocks")
+        t = item.type
+        row.label(text=P.SHEET_TYPE_SHORT[t] if 0 <= t < len(P.SHEET_TYPE_SHORT) else str(t))
+        row.label(text=f"{item.cells} cells")
 
+    def draw_filter(self, context, layout):
+        row = layout.row(align=True)
+        row.prop(self, "filter_name", text="", icon="VIEWZOOM")
+        row.prop(context.scene.hbc, "sheet_sort", text="")
 
-def _layer_header(layout, root, layer, title):
-    box = layout.box()
-    row = box.row(align=True)
-    coll = S.find_layer(root, layer) if root is not None else None
-    if coll is not None:
-        row.prop(coll, "hide_viewport", text="", emboss=False)
-        row.prop(coll, "hide_render", text="", emboss=False)
-    row.label(text=title)
-    op = row.operator("hbc.build_layer", text="Rebuild" if coll is not None else "Build", icon="FILE_REFRESH")
-    op.layer = layer
-    if coll is not None:
-        row.operator("hbc.clear_layer", text="", icon="X").layer = layer
-    return box
+    def filter_items(self, context, data, propname):
+        items = getattr(data, propname)
+        words = self.filter_name.strip().lower()
+        flags = [self.bitflag_filter_item if not words or words in P.SHEET_TYPES[it.type].lower()
+                 or words == str(it.index) else 0 for it in items]
+        order = P.sheet_order([it.type for it in items], [it.cells for it in items], context.scene.hbc.sheet_sort)
+        new_order = [0] * len(order)
+        for position, i in enumerate(order):
+            new_order[i] = position
+        return flags, new_order
 
 
 class _Base:
@@ -44,83 +55,237 @@ class _Base:
 class HBC_PT_main(_Base, bpy.types.Panel):
     bl_idname = "HBC_PT_main"
     bl_label = "Hex Structure"
+    bl_order = 0
 
     def draw(self, context):
         layout = self.layout
         st = context.scene.hbc
         root = active_root(context)
-        layout.operator("import_mesh.hbc", icon="IMPORT")
+        layout.operator("import_mesh.hbc", text="Import", icon="IMPORT")
         roots = [c for c in bpy.data.collections if c.get("hbc_source") is not None]
         if len(roots) > 1:
             col = layout.column(align=True)
             for c in roots:
-                col.operator("hbc.set_active", text=c.name, depress=(root is not None and c == root)).name = c.name
+                col.operator("hbc.set_active", text=c.name, icon="MESH_CUBE",
+                             depress=(root is not None and c == root)).name = c.name
         if root is None:
-            layout.label(text="No mesh imported")
+            layout.label(text="No mesh yet", icon="INFO")
             return
         s = session.get(root.name)
-        layout.label(text=f"{root.name}: {root.get('hbc_cells', '?')} cells", icon="MESH_CUBE")
+        layout.label(text=f"{root.get('hbc_cells', '?')} cells", icon="MESH_CUBE")
+        layout.prop(root, "hbc_path", text="")
+        from . import sources
+
+        try:
+            sources.resolve(root)
+        except sources.SourceMissing:
+            layout.label(text="Source missing", icon="ERROR")
+        layout.prop(st, "rho")
         row = layout.row(align=True)
-        row.prop(st, "rho")
-        row.operator("hbc.analyse", text="Analyse" if s is None or s.analysis is None else "Re-analyse")
-        layout.operator("hbc.build_all", icon="SCENE_DATA")
-        if s is not None:
-            grid = layout.grid_flow(columns=2, even_columns=True, align=True)
-            for label, text in P.table1_row(s.stats()):
-                grid.label(text=label)
-                grid.label(text=text)
-        elif root is not None:
-            layout.label(text="Not in memory: Analyse to read the file again")
+        row.operator("hbc.analyze", text="Analyze" if s is None or s.analysis is None else "Re-analyze",
+                     icon="VIEWZOOM")
+        row.operator("hbc.build_all", text="Build All", icon="SCENE_DATA")
 
 
-class HBC_PT_layers(_Base, bpy.types.Panel):
-    bl_idname = "HBC_PT_layers"
-    bl_label = "Layers"
+class _Sub(_Base):
     bl_parent_id = "HBC_PT_main"
 
     @classmethod
     def poll(cls, context):
         return active_root(context) is not None
 
+
+class HBC_PT_table1(_Sub, bpy.types.Panel):
+    """The paper's Table 1 row: label and value on one line, the meaning as the label's tooltip."""
+
+    bl_idname = "HBC_PT_table1"
+    bl_label = "Table 1"
+    bl_order = 1
+
     def draw(self, context):
         layout = self.layout
-        st = context.scene.hbc
         root = active_root(context)
+        s = session.get(root.name)
+        if s is None:
+            layout.label(text="Not in memory", icon="INFO")
+            return
+        col = layout.column(align=True)
+        for label, text in P.table1_row(s.stats()):
+            split = col.split(factor=0.5, align=True)
+            split.operator("hbc.explain", text=label, emboss=False).text = P.TABLE1_MEANING[label]
+            right = split.row()
+            right.alignment = "RIGHT"
+            right.label(text=text)
+        row = layout.row(align=True)
+        row.operator("hbc.copy_table1", text="Markdown", icon="COPYDOWN").format = "MARKDOWN"
+        row.operator("hbc.copy_table1", text="CSV", icon="COPYDOWN").format = "CSV"
 
-        box = _layer_header(layout, root, "direct", "Direct view")
-        row = box.row(align=True)
-        row.prop(st, "direct_boundary")
-        row.prop(st, "direct_transparent")
-        row.prop(st, "boundary_alpha")
-        row = box.row(align=True)
-        row.prop(st, "direct_hex_cells")
-        row.prop(st, "direct_shrink")
 
-        box = _layer_header(layout, root, "graph", "Singularity graph")
-        box.prop(st, "line_radius")
+def layer_controls(context, layout, root, layer):
+    """Build / Rebuild and Clear for one layer; greyed out (reason in the tooltip) when the layer
+    cannot be built now."""
+    coll = S.find_layer(root, layer)
+    row = layout.row(align=True)
+    row.enabled = unavailable(context, layer) is None
+    built = coll is not None
+    stale = built and bool(coll.get("hbc_stale"))
+    row.operator("hbc.build_layer", text="Rebuild" if built else "Build",
+                 icon="ERROR" if stale else "FILE_REFRESH").layer = layer
+    if built:
+        row.operator("hbc.clear_layer", text="", icon="X").layer = layer
+    if stale:
+        layout.label(text="Stale: rebuild", icon="ERROR")
+    return coll
 
-        box = _layer_header(layout, root, "blocks", "Base complex blocks")
-        row = box.row(align=True)
-        row.prop(st, "shrink")
-        row.prop(st, "split_max")
 
-        box = _layer_header(layout, root, "sheets", "Sheets")
-        box.template_list("HBC_UL_sheets", "", st, "sheets", st, "sheet_index", rows=5)
-        picked = _layer_header(box, root, "sheet", "Picked sheet + highlights")
-        row = picked.row(align=True)
-        row.prop(st, "auto_show")
-        row.prop(st, "dot_radius")
-        sub = _layer_header(box, root, "subsheets", "Subsheets of picked sheet")
-        sub.prop(st, "spread")
-        if 0 <= st.sheet_index < len(st.sheets) and st.sheets[st.sheet_index].type != 3:
-            sub.label(text="Pick a self-intersecting (type 3) sheet", icon="INFO")
+class _Layer(_Sub):
+    """A layer's sub-panel: eye toggle in the header, Build/Rebuild/Clear, then its options."""
 
-        box = _layer_header(layout, root, "wireframe", "VSG wireframe")
-        box.prop(st, "wireframe_scope", expand=True)
-        row = box.row(align=True)
-        row.prop(st, "opacity_floor")
-        row.prop(st, "simplified")
-        box.prop(st, "line_radius")
+    layer = ""
+    bl_parent_id = "HBC_PT_layers"
+
+    def draw_header(self, context):
+        coll = S.find_layer(active_root(context), self.layer)
+        if coll is not None:
+            self.layout.prop(coll, "hide_viewport", text="", emboss=False)
+        else:
+            self.layout.label(text="", icon="BLANK1")
+
+    def draw(self, context):
+        layer_controls(context, self.layout, active_root(context), self.layer)
+        self.draw_options(self.layout.column(), context.scene.hbc)
+
+    def draw_options(self, col, st):
+        pass
+
+
+class HBC_PT_layers(_Sub, bpy.types.Panel):
+    bl_idname = "HBC_PT_layers"
+    bl_label = "Layers"
+    bl_order = 2
+
+    def draw(self, context):
+        pass
+
+
+class HBC_PT_layer_direct(_Layer, bpy.types.Panel):
+    bl_idname = "HBC_PT_layer_direct"
+    bl_label = "Direct view"
+    bl_order = 0
+    layer = "direct"
+
+    def draw_options(self, col, st):
+        col.prop(st, "direct_boundary")
+        col.prop(st, "direct_transparent")
+        col.prop(st, "boundary_alpha")
+        col.prop(st, "direct_hex_cells")
+        col.prop(st, "direct_shrink")
+
+
+class HBC_PT_layer_graph(_Layer, bpy.types.Panel):
+    bl_idname = "HBC_PT_layer_graph"
+    bl_label = "Singularities"
+    bl_order = 1
+    layer = "graph"
+
+    def draw_options(self, col, st):
+        col.prop(st, "line_radius")
+
+
+class HBC_PT_layer_blocks(_Layer, bpy.types.Panel):
+    bl_idname = "HBC_PT_layer_blocks"
+    bl_label = "Blocks"
+    bl_order = 2
+    layer = "blocks"
+
+    def draw_options(self, col, st):
+        col.prop(st, "shrink")
+        col.prop(st, "split_max")
+
+
+class HBC_PT_layer_sheets(_Layer, bpy.types.Panel):
+    bl_idname = "HBC_PT_layer_sheets"
+    bl_label = "Sheets"
+    bl_order = 3
+    layer = "sheets"
+
+    def draw_options(self, col, st):
+        col.prop(st, "sheets_all")
+        col.template_list("HBC_UL_sheets", "", st, "sheets", st, "sheet_index", rows=5)
+
+
+class HBC_PT_layer_sheet(_Layer, bpy.types.Panel):
+    bl_idname = "HBC_PT_layer_sheet"
+    bl_label = "Picked sheet"
+    bl_order = 4
+    layer = "sheet"
+
+    def draw_options(self, col, st):
+        col.prop(st, "auto_show")
+        col.prop(st, "dot_radius")
+
+
+class HBC_PT_layer_subsheets(_Layer, bpy.types.Panel):
+    bl_idname = "HBC_PT_layer_subsheets"
+    bl_label = "Subsheets"
+    bl_order = 5
+    layer = "subsheets"
+
+    def draw_options(self, col, st):
+        col.prop(st, "spread")
+        if unavailable(bpy.context, "subsheets"):
+            col.label(text="Needs type 3", icon="INFO")
+
+
+class HBC_PT_layer_wireframe(_Layer, bpy.types.Panel):
+    bl_idname = "HBC_PT_layer_wireframe"
+    bl_label = "Wireframe"
+    bl_order = 6
+    layer = "wireframe"
+
+    def draw_options(self, col, st):
+        col.row().prop(st, "wireframe_scope", expand=True)
+        col.prop(st, "opacity_floor")
+        col.prop(st, "simplified")
+        col.prop(st, "line_radius")
+
+
+def legend_entries(context):
+    """planning.legend for the active mesh's built, visible layers."""
+    import numpy as np
+
+    root = active_root(context)
+    s = session.get(root.name) if root is not None else None
+    shown = [layer for layer, _ in P.LAYERS
+             if root is not None and (c := S.find_layer(root, layer)) is not None and not c.hide_viewport]
+    if s is None:
+        return P.legend(shown)
+    types = np.asarray(s.mesh.cell_types)
+    kwargs = {"non_hex_types": sorted(int(t) for t in np.unique(types) if t != 0)}
+    if s.analysis is not None:
+        cls = np.asarray(s.analysis.graph.edge_class)
+        kwargs.update(valences=[int(v) for v in np.unique(s.analysis.graph.chain_valence)],
+                      has_pseudo=bool(np.any(cls == 2)), has_non_manifold=bool(np.any(cls == 3)))
+    return P.legend(shown, **kwargs)
+
+
+class HBC_PT_legend(_Sub, bpy.types.Panel):
+    """What the colours, dots and edges of the visible layers mean."""
+
+    bl_idname = "HBC_PT_legend"
+    bl_label = "Legend"
+    bl_order = 3
+
+    def draw(self, context):
+        st = context.scene.hbc
+        entries = legend_entries(context)
+        if not entries:
+            self.layout.label(text="No layer shown", icon="INFO")
+        col = self.layout.column(align=True)
+        for key, words in entries:
+            split = col.split(factor=0.15, align=True)
+            split.prop(st, f"legend_{key}", text="")
+            split.label(text=words)
 
 
 def picked_block(context):
@@ -133,48 +298,51 @@ def picked_block(context):
         return int(ob["hbc_component"]), "component", ob
     owner_kind = ob.get("hbc_owner")
     if owner_kind and ob.mode == "EDIT" and ob.type == "MESH":
-        import bmesh
-
-        bm = bmesh.from_edit_mesh(ob.data)
-        layer = bm.faces.layers.int.get("owner")
-        face = bm.faces.active
-        if layer is not None and face is not None:
-            return int(face[layer]), owner_kind, ob
+        _, _, owner = merged_owner_faces(ob)
+        if owner is not None:
+            return owner, owner_kind, ob
     return None, owner_kind, ob
 
 
 class HBC_PT_selection(_Base, bpy.types.Panel):
+    """Always present (and last), so the panels above never move when the selection changes."""
+
     bl_idname = "HBC_PT_selection"
     bl_label = "Selection"
     bl_parent_id = "HBC_PT_main"
-
-    @classmethod
-    def poll(cls, context):
-        ob = context.active_object
-        return ob is not None and ob.get("hbc_mesh") is not None
+    bl_order = 4
 
     def draw(self, context):
         layout = self.layout
         ob = context.active_object
+        if ob is None or ob.get("hbc_mesh") is None:
+            layout.label(text="Nothing picked", icon="RESTRICT_SELECT_OFF")
+            return
         layout.label(text=ob.name, icon="OBJECT_DATA")
+        col = layout.column(align=True)
         for key in ("hbc_layer", "hbc_sheet", "hbc_sheet_type", "hbc_subsheet", "hbc_highlight", "hbc_count",
                     "hbc_group", "hbc_polylines"):
             if key in ob:
-                layout.label(text=f"{key[4:].replace('_', ' ')}: {ob[key]}")
+                split = col.split(factor=0.45, align=True)
+                split.label(text=key[4:].replace("_", " "))
+                split.label(text=str(ob[key]))
         owner, kind, _ = picked_block(context)
         if owner is None:
             if kind:
-                layout.label(text=f"Merged {kind}s: Edit Mode, pick a face", icon="INFO")
+                layout.label(text="Edit Mode: pick", icon="INFO")
             return
         layout.label(text=f"{kind}: {owner}")
+        if kind != "component" or ob.get("hbc_component") is None:
+            row = layout.row(align=True)
+            row.operator("hbc.select_block", text="Select", icon="RESTRICT_SELECT_OFF").frame = False
+            row.operator("hbc.select_block", text="Frame", icon="ZOOM_SELECTED").frame = True
         s = session.get(ob["hbc_mesh"])
         if kind == "component" and s is not None and s.analysis is not None and owner < s.num_components:
             layout.label(text=f"kind: {P.COMPONENT_KINDS[int(s.component_kinds()[owner])]}")
-            try:
-                sheets = s.component_sheets(owner)
-                layout.label(text="sheets: " + (", ".join(str(int(x)) for x in sheets) or "none"))
-            except AttributeError:
-                pass
+            sheets = s.component_sheets(owner)
+            layout.label(text="sheets: " + (", ".join(str(int(x)) for x in sheets) or "none"))
 
 
-classes = (HBC_UL_sheets, HBC_PT_main, HBC_PT_layers, HBC_PT_selection)
+classes = (HBC_UL_sheets, HBC_PT_main, HBC_PT_table1, HBC_PT_layers, HBC_PT_layer_direct, HBC_PT_layer_graph,
+           HBC_PT_layer_blocks, HBC_PT_layer_sheets, HBC_PT_layer_sheet, HBC_PT_layer_subsheets,
+           HBC_PT_layer_wireframe, HBC_PT_legend, HBC_PT_selection)

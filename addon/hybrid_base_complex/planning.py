@@ -1,6 +1,6 @@
 """Everything the add-on decides without Blender: palettes, colour and opacity mapping, the names
-of collections and layers, and the geometry of every layer as flat numpy arrays (block soups,
-polylines, dots). No ``bpy`` here, so plain pytest tests it (tests/addon_unit).
+of collections and layers, and the containers of every layer's geometry as flat numpy arrays
+(soups, polylines, dots); the faces and line points themselves come from hbc. No ``bpy`` here, so plain pytest tests it (tests/addon_unit).
 
 Arrays follow the hbc module's conventions: int32 ids, float32 positions, CSR lists as
 (offsets, items) pairs.
@@ -100,7 +100,9 @@ SELF_PARALLEL_EDGE_COLOR = (1.0, 0.55, 0.0, 1.0)
 SELF_INTERSECTING_COLOR = (0.85, 0.1, 0.85, 1.0)
 
 COMPONENT_KINDS = ("cube", "ring", "other", "non-hex")
-SHEET_TYPES = ("perfect", "type 1", "type 2 (self-parallel)", "type 3 (self-intersecting)")
+SHEET_TYPES = ("perfect", "type 1 (non-hex)", "type 2 (self-parallel)", "type 3 (self-intersecting)")
+#: One short word per sheet type for narrow list rows.
+SHEET_TYPE_SHORT = ("perfect", "non-hex", "self-par.", "self-int.")
 
 
 def palette_color(index) -> np.ndarray:
@@ -182,21 +184,6 @@ def csr_invert(offsets, items, n_items: int):
     return inv_offsets, rows[order].astype(np.int32)
 
 
-def label_cells(num_cells: int, offsets, items, rows=None) -> np.ndarray:
-    """int32 label per cell: the row (of a rows->cells CSR) holding it, -1 for none. With `rows`
-    only those rows are labelled (their position in `rows` is the label)."""
-    offsets = np.asarray(offsets, np.int64)
-    items = np.asarray(items, np.int64)
-    label = np.full(num_cells, -1, np.int32)
-    if rows is None:
-        label[items] = np.repeat(np.arange(len(offsets) - 1, dtype=np.int32), np.diff(offsets))
-    else:
-        rows = np.asarray(rows, np.int64)
-        sizes = offsets[rows + 1] - offsets[rows]
-        label[csr_rows(offsets, items, rows)] = np.repeat(np.arange(len(rows), dtype=np.int32), sizes)
-    return label
-
-
 # ---------------------------------------------------------------------------------------------
 # Geometry as flat arrays
 
@@ -209,7 +196,6 @@ class Soup:
     face_sizes: np.ndarray
     face_vertices: np.ndarray
     face_owner: np.ndarray
-    face_cell: np.ndarray | None = None  # mesh cell each face was taken from, when known
 
     @property
     def num_faces(self) -> int:
@@ -237,59 +223,6 @@ class Soup:
         used, inverse = np.unique(fv, return_inverse=True)
         return Soup(self.positions[used], self.face_sizes[face_mask], inverse.astype(np.int32),
                     self.face_owner[face_mask])
-
-
-def block_soup(points, face_offsets, face_vertices, face_cells, cell_offsets, cell_faces,
-               cell_face_flip, cell_label, shrink: float = 0.0) -> Soup:
-    """Surfaces of blocks given by a label per cell (-1: not shown). A face is drawn for the block
-    of each labelled cell it bounds when the cell on its other side has another label (or there is
-    none), oriented outward from that cell; each block gets its own copy of its vertices, pulled
-    towards the block's vertex centroid by `shrink` (0 none, 1 to a point). face_owner = label."""
-    points = np.asarray(points, np.float32).reshape(-1, 3)
-    face_offsets = np.asarray(face_offsets, np.int64)
-    face_vertices = np.asarray(face_vertices, np.int64)
-    face_cells = np.asarray(face_cells, np.int64).reshape(-1, 2)
-    cell_offsets = np.asarray(cell_offsets, np.int64)
-    cell_faces = np.asarray(cell_faces, np.int64)
-    flip = np.asarray(cell_face_flip, np.uint8) if cell_face_flip is not None else np.zeros(len(cell_faces), np.uint8)
-    label = np.asarray(cell_label, np.int64)
-
-    # One entry per (cell, face) incidence whose cell is labelled.
-    inc_cell = np.repeat(np.arange(len(cell_offsets) - 1), np.diff(cell_offsets))
-    keep = label[inc_cell] >= 0
-    inc_cell, inc_face, inc_flip = inc_cell[keep], cell_faces[keep], flip[keep]
-    fc = face_cells[inc_face]
-    other = np.where(fc[:, 0] == inc_cell, fc[:, 1], fc[:, 0])
-    other_label = np.where(other >= 0, label[np.maximum(other, 0)], -1)
-    own = label[inc_cell]
-    show = other_label != own
-    inc_cell, inc_face, inc_flip, own = inc_cell[show], inc_face[show], inc_flip[show], own[show]
-    if inc_face.size == 0:
-        return Soup.empty()
-
-    sizes = (face_offsets[inc_face + 1] - face_offsets[inc_face]).astype(np.int32)
-    starts = face_offsets[inc_face]
-    total = int(sizes.sum())
-    loop_face = np.repeat(np.arange(len(sizes)), sizes)
-    pos_in_face = np.arange(total) - np.repeat(np.cumsum(sizes) - sizes, sizes)
-    # Reversed loops for flipped incidences (the cell sees the stored loop reversed).
-    rev = np.repeat(inc_flip.astype(bool), sizes)
-    k = np.where(rev, (np.repeat(sizes, sizes) - pos_in_face) % np.repeat(sizes, sizes), pos_in_face)
-    loops = face_vertices[np.repeat(starts, sizes) + k]
-
-    # One vertex copy per (label, mesh vertex).
-    owner_per_loop = own[loop_face]
-    key = owner_per_loop * (len(points) + 1) + loops
-    ukey, inverse = np.unique(key, return_inverse=True)
-    vert = ukey % (len(points) + 1)
-    vlabel = ukey // (len(points) + 1)
-    pos = points[vert].astype(np.float32)
-    if shrink > 0.0:
-        ulab, vgroup = np.unique(vlabel, return_inverse=True)
-        counts = np.bincount(vgroup).astype(np.float64)
-        centroid = np.stack([np.bincount(vgroup, weights=pos[:, i]) for i in range(3)], axis=1) / counts[:, None]
-        pos = (centroid[vgroup] + (pos - centroid[vgroup]) * (1.0 - float(shrink))).astype(np.float32)
-    return Soup(pos, sizes, inverse.astype(np.int32), own.astype(np.int32), inc_cell.astype(np.int32))
 
 
 @dataclass
@@ -325,15 +258,15 @@ class Lines:
                      np.concatenate(poly).astype(np.int32))
 
 
-def polylines(points, offsets, vertices, colors=None, alpha=None, keep=None, closed=None) -> Lines:
-    """Polylines given by mesh-vertex CSR (offsets, vertices). colors: one RGBA for all, or (k,4)
-    per polyline; alpha: optional per point (aligned with vertices). keep: optional bool per
-    polyline; closed: optional bool per polyline (an edge joins its last point to its first, the
-    hbc convention for closed chains and curves, which do not repeat their first vertex). Every
-    polyline gets its own copies of its points."""
-    points = np.asarray(points, np.float32).reshape(-1, 3)
+def lines(positions, offsets, colors=None, alpha=None, keep=None, closed=None) -> Lines:
+    """Polylines whose points (hbc.polylines' positions, one per CSR entry) are grouped by
+    `offsets`. colors: one RGBA for all, or (k,4) per polyline; alpha: optional per point. keep:
+    optional bool per polyline; closed: optional bool per polyline (an edge joins its last point to
+    its first, the hbc convention for closed chains and curves, which do not repeat their first
+    vertex). Every polyline keeps its own copies of its points."""
+    positions = np.asarray(positions, np.float32).reshape(-1, 3)
     offsets = np.asarray(offsets, np.int64)
-    vertices = np.asarray(vertices, np.int64)
+    n = len(positions)
     k = len(offsets) - 1
     sizes = np.diff(offsets)
     point_poly = np.repeat(np.arange(k), sizes)
@@ -344,17 +277,17 @@ def polylines(points, offsets, vertices, colors=None, alpha=None, keep=None, clo
     point_colors = np.array(per_poly[point_poly], np.float32) if k else np.zeros((0, 4), np.float32)
     if alpha is not None:
         point_colors[:, 3] = np.asarray(alpha, np.float32)
-    point_mask = np.ones(len(vertices), bool)
+    point_mask = np.ones(n, bool)
     if keep is not None:
         keep = np.asarray(keep, bool)
         point_mask = keep[point_poly]
     # Edges between consecutive points of one polyline.
-    idx = np.arange(len(vertices))
+    idx = np.arange(n)
     nxt = idx[:-1]
-    same = point_poly[1:] == point_poly[:-1] if len(vertices) else np.zeros(0, bool)
+    same = point_poly[1:] == point_poly[:-1] if n else np.zeros(0, bool)
     mask = same & point_mask[:-1]
-    edges = np.stack([nxt[mask], nxt[mask] + 1], axis=1) if len(vertices) else np.zeros((0, 2), np.int64)
-    if closed is not None and len(vertices):
+    edges = np.stack([nxt[mask], nxt[mask] + 1], axis=1) if n else np.zeros((0, 2), np.int64)
+    if closed is not None and n:
         closed = np.asarray(closed, bool) & (sizes > 2)
         if keep is not None:
             closed &= keep
@@ -362,20 +295,11 @@ def polylines(points, offsets, vertices, colors=None, alpha=None, keep=None, clo
         edges = np.concatenate([edges, np.stack([offsets[rows + 1] - 1, offsets[rows]], axis=1)])
     # Drop unused points (filtered polylines) and renumber.
     new_id = np.cumsum(point_mask) - 1
-    lines = Lines(points[vertices[point_mask]], new_id[edges].astype(np.int32).reshape(-1, 2),
+    lines = Lines(positions[point_mask], new_id[edges].astype(np.int32).reshape(-1, 2),
                   point_colors[point_mask], np.zeros(0, np.int32))
-    kept_poly = point_poly[point_mask]
-    _, lines.polyline = np.unique(kept_poly, return_inverse=True)
+    _, lines.polyline = np.unique(point_poly[point_mask], return_inverse=True)
     lines.polyline = lines.polyline.astype(np.int32)
     return lines
-
-
-def edge_lines(points, edges, color) -> Lines:
-    """Single mesh edges (m,2) as 2-point polylines of one colour."""
-    edges = np.asarray(edges, np.int64).reshape(-1, 2)
-    m = len(edges)
-    offsets = np.arange(0, 2 * m + 1, 2)
-    return polylines(points, offsets, edges.ravel(), color)
 
 
 # Unit octahedron: dots that render in every engine without instancing.
@@ -421,23 +345,27 @@ def spread_translation(index: int, points, gap: float = 0.25, below: bool = Fals
 # Table 1 row
 
 TABLE1_FIELDS = (
-    ("cells", "|C|", "{:d}"),
-    ("hex_ratio", "|H|/|C|", "{:.1%}"),
-    ("components", "|C_B|", "{:d}"),
-    ("hex_component_ratio", "|H_B|/|C_B|", "{:.1%}"),
-    ("sheets", "#Sheets", "{:d}"),
-    ("sheets_type1", "#Type 1", "{:d}"),
-    ("sheets_type2", "#Type 2", "{:d}"),
-    ("sheets_type3", "#Type 3", "{:d}"),
-    ("subsheets_of_largest_self_intersecting", "#Subsheets", "{:d}"),
+    ("cells", "|C|", "{:d}", "Cells of the mesh"),
+    ("hex_ratio", "|H|/|C|", "{:.1%}", "Share of the cells that are hexahedra"),
+    ("components", "|C_B|", "{:d}", "Blocks (components) of the base complex"),
+    ("hex_component_ratio", "|H_B|/|C_B|", "{:.1%}", "Share of the blocks made of hexahedra"),
+    ("sheets", "#Sheets", "{:d}", "Sheets of the base complex"),
+    ("sheets_type1", "#Type 1", "{:d}", "Imperfect sheets of type 1 (corners shared through non-hex cells)"),
+    ("sheets_type2", "#Type 2", "{:d}", "Self-parallel sheets (type 2)"),
+    ("sheets_type3", "#Type 3", "{:d}", "Self-intersecting sheets (type 3)"),
+    ("subsheets_of_largest_self_intersecting", "#Subsheets", "{:d}",
+     "Subsheets of the largest self-intersecting sheet"),
 )
 TIMING_FIELDS = (
-    ("singularity_graph", "T_GS"),
-    ("base_complex", "T_GB"),
-    ("vsg_wireframe", "T_VSGW"),
-    ("sheets", "T_GSH"),
-    ("subsheets", "T_GSH*"),
+    ("singularity_graph", "T_GS", "Time to extract the hybrid singularity graph"),
+    ("base_complex", "T_GB", "Time to build the base complex"),
+    ("vsg_wireframe", "T_VSGW", "Time to compute the VSG wireframe"),
+    ("sheets", "T_GSH", "Time to extract and classify the sheets"),
+    ("subsheets", "T_GSH*", "Time to decompose the self-intersecting sheets into subsheets"),
 )
+#: Table 1 label -> what it means, in words (the panel's tooltips).
+TABLE1_MEANING = {label: meaning for _, label, _, meaning in TABLE1_FIELDS}
+TABLE1_MEANING.update({label: meaning for _, label, meaning in TIMING_FIELDS})
 
 
 def table1_row(stats: dict):
@@ -445,17 +373,121 @@ def table1_row(stats: dict):
     rows = []
     if "hex_component_ratio" not in stats and stats.get("components"):
         stats = dict(stats, hex_component_ratio=stats.get("hex_components", 0) / stats["components"])
-    for key, label, fmt in TABLE1_FIELDS:
+    for key, label, fmt, _ in TABLE1_FIELDS:
         v = stats.get(key)
         if v is None or (isinstance(v, (int, np.integer)) and v < 0):
             rows.append((label, "-"))
         else:
             rows.append((label, fmt.format(int(v) if "d" in fmt else float(v))))
     timings = stats.get("timings") or {}
-    for key, label in TIMING_FIELDS:
+    for key, label, _ in TIMING_FIELDS:
         v = timings.get(key)
         rows.append((label, "-" if v is None else f"{1000.0 * float(v):.0f} ms"))
     return rows
+
+
+def table1_text(name: str, stats: dict, fmt: str = "MARKDOWN") -> str:
+    """The Table 1 row of one mesh as a Markdown table (header, rule, row) or as CSV (header, row)."""
+    rows = table1_row(stats)
+    head = ["Mesh"] + [label for label, _ in rows]
+    values = [name] + [text for _, text in rows]
+    if fmt == "CSV":
+        def cell(t):
+            return '"' + t.replace('"', '""') + '"' if any(ch in t for ch in ',"\n') else t
+        return ",".join(cell(t) for t in head) + "\n" + ",".join(cell(t) for t in values) + "\n"
+    def md(cells):
+        return "| " + " | ".join(t.replace("|", "\\|") for t in cells) + " |"
+    return "\n".join([md(head), "|" + "---|" * len(head), md(values)]) + "\n"
+
+
+# ---------------------------------------------------------------------------------------------
+# Words for the panel
+
+def describe_error(error: BaseException) -> str:
+    """What a failure says to a user: the message itself (hbc's name the file, the line and what
+    was expected), never the Python class; the class only when there is no message at all."""
+    text = str(error).strip()
+    if isinstance(error, OSError) and error.filename and error.strerror:
+        text = f"{error.filename}: {error.strerror}"
+    return text or f"unexpected failure ({type(error).__name__})"
+
+
+def subsheets_unavailable(sheet_type) -> str | None:
+    """Why the subsheets layer cannot be built for a picked sheet of this type, or None."""
+    if sheet_type is None:
+        return "Pick a sheet in the list first"
+    if int(sheet_type) != 3:
+        return (f"Sheet is {SHEET_TYPES[int(sheet_type)]}: only self-intersecting (type 3) sheets "
+                "have subsheets")
+    return None
+
+
+def sheet_order(types, cells, by: str) -> list:
+    """Sheet indices in list order: by "TYPE" (then size, largest first), by "SIZE" (cells,
+    largest first), else by index."""
+    types = np.asarray(types, np.int64)
+    cells = np.asarray(cells, np.int64)
+    idx = np.arange(len(types))
+    if by == "TYPE":
+        return np.lexsort((idx, -cells, types)).tolist()
+    if by == "SIZE":
+        return np.lexsort((idx, -cells)).tolist()
+    return idx.tolist()
+
+
+#: Every colour a legend can show, by key (the panel draws each as a swatch property).
+LEGEND_COLORS = {
+    "hex": HEX_COLOR,
+    **{CELL_TYPE_NAMES[t]: tuple(float(x) for x in CELL_TYPE_COLORS[t]) for t in range(1, 5)},
+    **{f"valence{v}": c for v, c in VALENCE_COLORS.items()},
+    "valence_other": OTHER_VALENCE_COLOR,
+    "pseudo": PSEUDO_COLOR,
+    "non_manifold": NON_MANIFOLD_COLOR,
+    "non_hex_block": NON_HEX_COLOR,
+    "unmatched": UNMATCHED_COLOR,
+    "shared": SHARED_COLOR,
+    "self_parallel": SELF_PARALLEL_EDGE_COLOR,
+    "self_intersecting": SELF_INTERSECTING_COLOR,
+}
+
+
+#: Longest legend words: beside a swatch at the default sidebar width about 20 characters show.
+LEGEND_MAX = 19
+
+
+def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_hex_types=()):
+    """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
+    edge means (the swatch gives the colour, the words what it marks)."""
+    out = []
+    if "direct" in layers:
+        out.append(("hex", "Boundary, hex cells"))
+        out += [(CELL_TYPE_NAMES[t], f"{CELL_TYPE_NAMES[t].capitalize()} cells") for t in non_hex_types]
+    if "graph" in layers:
+        for v in valences:
+            key = f"valence{int(v)}" if int(v) in VALENCE_COLORS else "valence_other"
+            out.append((key, f"Valence {int(v)} edge"))
+        if has_pseudo:
+            out.append(("pseudo", "Pseudo-singular"))
+        if has_non_manifold:
+            out.append(("non_manifold", "Non-manifold edge"))
+    if "blocks" in layers:
+        out.append(("non_hex_block", "Non-hex block"))
+    if "sheet" in layers or "subsheets" in layers:
+        out += [("unmatched", "Dot: unmatched"),
+                ("shared", "Dot: shared vertex"),
+                ("self_parallel", "Self-parallel edge"),
+                ("self_intersecting", "Self-intersecting")]
+    return out
+
+
+def beside(boxes, lo, hi, gap: float = 0.25):
+    """Offset (x, y, z) moving a new model with bounding box (lo, hi) to the right (+x) of the
+    models whose boxes (lo, hi) are given, `gap` of its width apart; none when there are none."""
+    if not boxes:
+        return (0.0, 0.0, 0.0)
+    right = max(float(b[1][0]) for b in boxes)
+    return (right + gap * float(hi[0] - lo[0]) - float(lo[0]), 0.0, 0.0)
+
 
 
 class Progress:

@@ -15,6 +15,8 @@
 
 from __future__ import annotations
 
+from collections import Counter
+
 import bpy
 import numpy as np
 
@@ -34,6 +36,9 @@ class Transaction:
 
     def __init__(self):
         self.created = []  # (collection name in bpy.data, datablock)
+        self.renamed = []  # (datablock, its name before)
+        self.retired = {}  # (root name, layer) -> the old layer collection, unlinked from its root
+        self.removed = []  # (collection, name, data, ID properties, colour, hidden) of objects removed early
 
     def __enter__(self):
         return self
@@ -47,13 +52,40 @@ class Transaction:
         self.created.append((kind, block))
         return block
 
+    def rename(self, block, name):
+        """Renames an existing datablock; a rollback gives it its old name back."""
+        self.renamed.append((block, block.name))
+        block.name = name
+
     def rollback(self):
-        for kind, block in reversed(self.created):
+        ids = []
+        for _, block in reversed(self.created):
             try:
-                getattr(bpy.data, kind).remove(block)
-            except (ReferenceError, RuntimeError):
+                ids.append(block)
+                block.name  # noqa: B018 - raises ReferenceError for a block already gone
+            except ReferenceError:
+                ids.pop()
+        if ids:
+            bpy.data.batch_remove(ids)
+        for block, name in reversed(self.renamed):
+            try:
+                block.name = name
+            except ReferenceError:
                 pass
+        for coll, name, data, props, color, hidden in self.removed:
+            ob = bpy.data.objects.new(name, data)
+            for k, v in props.items():
+                ob[k] = v
+            ob.color, ob.hide_viewport = color, hidden
+            coll.objects.link(ob)
+        self.removed.clear()
+        for (root_name, _), old in self.retired.items():
+            root = bpy.data.collections.get(root_name)
+            if root is not None and old.name not in root.children:
+                root.children.link(old)
         self.created.clear()
+        self.renamed.clear()
+        self.retired.clear()
 
     # factories
     def collection(self, name):
@@ -176,7 +208,7 @@ def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=
 def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of=None):
     """One object per owner (faces with equal owner), all sharing the Object Info material with
     ob.color set: for layers with few blocks, so that clicking a block selects it. Relies on
-    block_soup giving each owner a contiguous vertex range (vertex keys sort by owner)."""
+    hbc.block_soup giving each owner its own points (usually one contiguous range)."""
     mat = material(tx, "object")
     order = np.argsort(soup.face_owner, kind="stable")
     starts = soup.loop_starts()
@@ -238,28 +270,80 @@ def find_layer(root, layer: str):
     return None
 
 
+def _tree(coll):
+    """The collection, its child collections, their objects and the objects' own data (data no
+    object outside the tree uses)."""
+    colls, stack = [], [coll]
+    while stack:
+        c = stack.pop()
+        colls.append(c)
+        stack.extend(c.children)
+    objects = {ob for c in colls for ob in c.objects}
+    uses = Counter(ob.data for ob in objects if ob.data is not None)
+    data = {d for d, n in uses.items() if d.users <= n}
+    return colls, objects, data
+
+
 def remove_collection_tree(coll):
-    """Removes a collection, its child collections, their objects and the objects' own data."""
-    for child in list(coll.children):
-        remove_collection_tree(child)
-    for ob in list(coll.objects):
-        data = ob.data
-        bpy.data.objects.remove(ob)
-        if data is not None and data.users == 0:
-            kind = {"MESH": "meshes", "CURVE": "curves"}.get(getattr(data, "id_type", ""), None)
-            if kind is None:
-                kind = "meshes" if isinstance(data, bpy.types.Mesh) else "curves"
-            getattr(bpy.data, kind).remove(data)
-    bpy.data.collections.remove(coll)
+    """Removes a collection with everything `_tree` lists, in one batch (removing objects one
+    by one costs time growing with the number of objects in the file for each)."""
+    colls, objects, data = _tree(coll)
+    # Objects first, then their data: one batch of both costs several times more (Blender
+    # remaps the users of the data still held by the objects).
+    for ids in (objects, data, colls):
+        if ids:
+            bpy.data.batch_remove(list(ids))
 
 
-def swap_layer(root, layer: str, new_coll):
-    """Puts a freshly built layer collection under root, replacing the old one (never both)."""
+def retire_layer(tx: Transaction, root, layer: str):
+    """Takes the layer about to be replaced out of the scene (its objects leave the view layer, so
+    renaming and removing them costs no view-layer update each), removes its plain objects and
+    renames what stays (meshes, tube objects), so the new ones get the plain names of a first build
+    (no `.001`, no search for a free number). A rollback makes the removed objects again and links
+    the layer back under its old names; swap_layer removes the rest."""
     old = find_layer(root, layer)
-    keep_hidden = (old.hide_viewport, old.hide_render) if old is not None else None
+    if old is None:
+        return None
+    root.children.unlink(old)
+    tx.retired[(root.name, layer)] = old
+    colls, objects, data = _tree(old)
+    for block in data:
+        tx.rename(block, "~" + block.name[:60])
+    # Plain mesh objects go now, while the file does not hold the new ones yet (Blender removes
+    # objects in time growing with the objects in the file); a rollback makes them again from
+    # what is kept here (their data stays until the swap). Objects with modifiers (tubes) stay.
+    home = {ob: c for c in colls for ob in c.objects}
+    plain = [ob for ob in objects if ob.type == "MESH" and not ob.modifiers]
+    tx.removed += [(home[ob], ob.name, ob.data, {k: ob[k] for k in ob.keys()}, tuple(ob.color), ob.hide_viewport)
+                   for ob in plain]
+    if plain:
+        bpy.data.batch_remove(plain)
+    for ob in objects:
+        if ob not in plain:
+            tx.rename(ob, "~" + ob.name[:60])
+    return old
+
+
+def swap_layer(root, layer: str, new_coll, tx: Transaction | None = None):
+    """Puts a freshly built layer collection under root, replacing the old one (never both): the
+    one retired into `tx`, else the one under root."""
+    old = tx.retired.pop((root.name, layer), None) if tx is not None else None
+    if old is None:
+        old = find_layer(root, layer)
+        if old is not None:
+            root.children.unlink(old)
+    # The old layer's eye and camera icons carry over (not when it was hidden for being stale).
+    keep_hidden = (old.hide_viewport, old.hide_render) if old is not None and not old.get("hbc_stale") else None
     final_name = P.layer_collection_name(root.name, layer)
     if old is not None:
+        old_colls = set(_tree(old)[0])
+        early = [d for coll, _, d, *_ in (tx.removed if tx is not None else []) if coll in old_colls]
         remove_collection_tree(old)
+        if tx is not None:
+            tx.removed = [r for r in tx.removed if r[2] not in early]
+        early = [d for d in early if d.users == 0]
+        if early:
+            bpy.data.batch_remove(early)
     new_coll["hbc_layer"] = layer
     new_coll["hbc_mesh"] = root.name
     root.children.link(new_coll)
@@ -275,6 +359,7 @@ def remove_layer(root, layer: str) -> bool:
     old = find_layer(root, layer)
     if old is None:
         return False
+    root.children.unlink(old)
     remove_collection_tree(old)
     return True
 

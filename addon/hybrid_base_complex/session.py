@@ -1,5 +1,5 @@
-"""Loaded meshes and their analyses, kept in memory by mesh name (Blender data cannot hold Python
-objects). After a .blend is reopened the cache is empty: `ensure` loads and analyses the file
+"""Loaded meshes and their analyzes, kept in memory by mesh name (Blender data cannot hold Python
+objects). After a .blend is reopened the cache is empty: `ensure` loads and analyzes the file
 again from the path stored on the mesh's collection. No ``bpy`` here."""
 
 from __future__ import annotations
@@ -31,33 +31,35 @@ def names():
     return list(_SESSIONS)
 
 
-def load(path: str, scale: float = 1.0, log=print) -> Structure:
+def load(path: str, scale: float = 1.0, log=print, offset=(0.0, 0.0, 0.0)) -> Structure:
     """Reads a mesh (raises hbc.MeshFormatError / OSError on a bad file)."""
     hbc = import_hbc()
     t = time.perf_counter()
     mesh = hbc.load(path)
     log(f"hbc: loaded {path}: {mesh.num_cells} cells in {time.perf_counter() - t:.2f} s")
-    return Structure(mesh, None, scale)
+    s = Structure(mesh, None, scale, offset)
+    s.source = path
+    return s
 
 
-def analyse(structure: Structure, rho: float = 0.8, log=print) -> Structure:
+def analyze(structure: Structure, rho: float = 0.8, log=print) -> Structure:
     """Runs the whole analysis on a loaded mesh (sheets, subsheets, wireframe)."""
-    if not hasattr(structure.mesh, "analyze"):
-        raise RuntimeError("this hbc module has no Mesh.analyze (built without the analysis binding)")
     t = time.perf_counter()
     structure.analysis = structure.mesh.analyze(rho=rho, level="complex", sheets=True, subsheets=True,
                                                 wireframe=True)
     structure.rho = rho
-    log(f"hbc: analysed in {time.perf_counter() - t:.2f} s")
+    log(f"hbc: analyzed in {time.perf_counter() - t:.2f} s")
     return structure
 
 
-def ensure(name: str, path: str, scale: float, rho: float, analysed: bool, log=print) -> Structure:
-    """The cached structure of `name`, re-read from `path` when the cache lost it."""
+def ensure(name: str, path: str, scale: float, rho: float, analyzed: bool, log=print,
+           offset=(0.0, 0.0, 0.0)) -> Structure:
+    """The cached structure of `name`, re-read from `path` when the cache lost it or the mesh was
+    pointed at another file."""
     s = _SESSIONS.get(name)
-    if s is None:
-        s = load(path, scale, log)
+    if s is None or getattr(s, "source", path) != path:
+        s = load(path, scale, log, offset)
         _SESSIONS[name] = s
-    if analysed and s.analysis is None:
-        analyse(s, rho, log)
+    if analyzed and s.analysis is None:
+        analyze(s, rho, log)
     return s

@@ -1,8 +1,9 @@
 """The analysis of one mesh, turned into the flat geometry of every layer (still no ``bpy``).
 
-`Structure` holds an ``hbc.Mesh`` and (optionally) its analysis, read only through the names of
-the hbc Python API; tests pass stand-ins with the same attributes. Every method returns planning
-`Soup`/`Lines` objects ready for the scene builders.
+`Structure` holds an ``hbc.Mesh`` and (optionally) its analysis. Every face and line point comes
+from hbc (``hbc.block_soup``, ``hbc.polylines``: C++ is the one source of render geometry); this
+module only picks what each layer shows and its colours, as planning `Soup`/`Lines` objects ready
+for the scene builders.
 """
 
 from __future__ import annotations
@@ -25,7 +26,8 @@ def import_hbc():
 
 def _csr(obj, name):
     """(offsets, items) of the CSR `name` on obj: `<name>_offsets` with `<name>_items`, or the
-    items under another suffix (`_cells`, `_vertices`, ...)."""
+    items named after what they list (`_cells`, `_vertices`, ...) where the binding still does
+    (issue 15 item 4 renames them all to `_items`)."""
     offsets = getattr(obj, f"{name}_offsets")
     for suffix in ("items", "cells", "vertices", "components", "curves"):
         items = getattr(obj, f"{name}_{suffix}", None)
@@ -35,12 +37,43 @@ def _csr(obj, name):
 
 
 class Structure:
-    def __init__(self, mesh, analysis=None, scale: float = 1.0):
+    """A loaded mesh (hbc.Mesh) and, once analyzed, its hbc.Analysis; positions are placed with
+    `scale` then `offset` (where the mesh sits beside earlier imports)."""
+
+    def __init__(self, mesh, analysis=None, scale: float = 1.0, offset=(0.0, 0.0, 0.0)):
         self.mesh = mesh
         self.analysis = analysis
         self.scale = float(scale)
-        self.points = np.asarray(mesh.points, np.float32).reshape(-1, 3) * np.float32(self.scale)
+        self.set_offset(offset)
         self._component_sheets = None
+
+    def set_offset(self, offset):
+        """Moves the model (every position made from now on) to `offset`."""
+        self.offset = np.asarray(offset, np.float32).reshape(3)
+        self.points = self._place(np.asarray(self.mesh.points, np.float32).reshape(-1, 3))
+
+    def _place(self, positions) -> np.ndarray:
+        return (np.asarray(positions, np.float32) * np.float32(self.scale) + self.offset).astype(np.float32)
+
+    # -- geometry, all made by hbc (render_geometry.hpp) -----------------------------------------
+    def _soup(self, what: str, sheet: int = -1, shrink: float = 0.0) -> P.Soup:
+        """hbc.block_soup as a planning Soup, placed like self.points."""
+        soup = P.Soup.from_dict(import_hbc().block_soup(self.mesh, self.analysis, what, sheet=int(sheet),
+                                                        shrink=float(shrink)))
+        soup.positions = self._place(soup.positions)
+        return soup
+
+    def _lines(self, offsets, vertices, colors, alpha=None, keep=None, closed=None) -> P.Lines:
+        """Polylines of mesh vertices (a CSR), their points placed by hbc.polylines."""
+        offsets = np.ascontiguousarray(offsets, np.int32)
+        vertices = np.ascontiguousarray(vertices, np.int32)
+        positions = self._place(import_hbc().polylines(self.mesh, offsets, vertices))
+        return P.lines(positions, offsets, colors, alpha, keep, closed)
+
+    def _edges(self, edges, color) -> P.Lines:
+        """Single mesh edges (m, 2) as 2-point polylines of one colour."""
+        edges = np.asarray(edges, np.int32).reshape(-1, 2)
+        return self._lines(np.arange(0, 2 * len(edges) + 1, 2), edges.ravel(), color)
 
     # -- basic facts -----------------------------------------------------------------------
     @property
@@ -61,52 +94,21 @@ class Structure:
     def length(self) -> float:
         return P.characteristic_length(self.points)
 
-    def _native_soup(self, what, sheet=-1, shrink=0.0):
-        """hbc.block_soup (native, much faster) as a planning Soup, or None when the module has
-        none; positions scaled like self.points."""
-        if self.analysis is None:
-            return None
-        try:
-            hbc = import_hbc()
-        except ImportError:
-            return None
-        fn = getattr(hbc, "block_soup", None) or getattr(getattr(hbc, "_core", None), "block_soup", None)
-        if fn is None or not isinstance(self.mesh, hbc.Mesh):  # stand-ins in tests: numpy path
-            return None
-        soup = P.Soup.from_dict(fn(self.mesh, self.analysis, what, sheet=int(sheet), shrink=float(shrink)))
-        if self.scale != 1.0:
-            soup.positions = soup.positions * np.float32(self.scale)
-        return soup
-
-    def _soup(self, label, shrink=0.0) -> P.Soup:
-        m = self.mesh
-        return P.block_soup(self.points, m.face_offsets, m.face_vertices, m.face_cells, m.cell_offsets,
-                            m.cell_faces, m.cell_face_flip, label, shrink)
+    def bbox(self):
+        return P.bbox(self.points)
 
     # -- direct view ----------------------------------------------------------------------
     def direct_boundary(self) -> P.Soup:
-        """The mesh's boundary surface (outward loops), owner = cell of each face."""
-        soup = self._soup(np.zeros(self.num_cells, np.int32))
-        soup.face_owner = soup.face_cell
-        return soup
+        """The mesh's boundary surface (outward loops), owner = cell type of each face's cell."""
+        return self._soup("boundary")
 
-    def direct_cells(self, hex_cells: bool) -> P.Soup:
-        """Surface of the hex (or of the non-hex) region, owner = cell type."""
-        types = np.asarray(self.mesh.cell_types, np.int32)
-        mask = (types == 0) if hex_cells else (types != 0)
-        label = np.where(mask, 0, -1)
-        soup = self._soup(label)
-        soup.face_owner = np.zeros_like(soup.face_owner)
-        return soup
+    def hex_region(self) -> P.Soup:
+        """Surface of the hex region, owner 0."""
+        return self._soup("hex")
 
     def non_hex_cells(self, shrink=0.0) -> P.Soup:
         """Every non-hex cell as its own block, owner = cell id (colour by its type)."""
-        native = self._native_soup("non_hex", shrink=shrink)
-        if native is not None:
-            return native
-        types = np.asarray(self.mesh.cell_types, np.int32)
-        label = np.where(types != 0, np.arange(len(types)), -1)
-        return self._soup(label, shrink)
+        return self._soup("non_hex", shrink=shrink)
 
     def cell_type_colors(self, owners) -> np.ndarray:
         types = np.asarray(self.mesh.cell_types, np.int64)
@@ -119,18 +121,18 @@ class Structure:
         g = self.analysis.graph
         offsets, verts = np.asarray(g.chain_offsets), np.asarray(g.chain_vertices)
         valence = np.asarray(g.chain_valence)
-        closed = getattr(g, "chain_closed", None)
+        closed = np.asarray(g.chain_closed, bool)
         groups = []
         for v in np.unique(valence):
             keep = valence == v
             color = P.valence_color(v)
-            groups.append((f"Valence {int(v)}", color, P.polylines(self.points, offsets, verts, color, keep=keep, closed=closed)))
+            groups.append((f"Valence {int(v)}", color, self._lines(offsets, verts, color, keep=keep, closed=closed)))
         cls = np.asarray(g.edge_class)
         edges = np.asarray(self.mesh.edges).reshape(-1, 2)
         for value, name, color in ((2, "Pseudo-singular", P.PSEUDO_COLOR), (3, "Non-manifold", P.NON_MANIFOLD_COLOR)):
             sel = edges[cls == value]
             if len(sel):
-                groups.append((name, color, P.edge_lines(self.points, sel, color)))
+                groups.append((name, color, self._edges(sel, color)))
         return groups
 
     # -- base complex -----------------------------------------------------------------------
@@ -143,11 +145,7 @@ class Structure:
 
     def blocks(self, shrink: float) -> P.Soup:
         """Every component as a block, owner = component id."""
-        native = self._native_soup("components", shrink=shrink)
-        if native is not None:
-            return native
-        label = np.asarray(self.analysis.complex.cell_component, np.int32)
-        return self._soup(label, shrink)
+        return self._soup("components", shrink=shrink)
 
     def component_colors(self) -> np.ndarray:
         return P.component_colors(self.component_kinds())
@@ -163,8 +161,7 @@ class Structure:
     # -- sheets -------------------------------------------------------------------------------
     @property
     def num_sheets(self) -> int:
-        a = self.analysis
-        return int(a.num_sheets) if a is not None and getattr(a, "num_sheets", None) is not None else 0
+        return int(self.analysis.num_sheets) if self.analysis is not None else 0
 
     def sheet_types(self) -> np.ndarray:
         return np.asarray(self.analysis.sheet_type, np.uint8)
@@ -182,30 +179,11 @@ class Structure:
     def all_sheets(self, shrink: float) -> P.Soup:
         """Every sheet as one large block (the boundary of its cell set), owner = sheet id; a cell
         in two sheets is in both blocks."""
-        native = self._native_soup("sheets", shrink=shrink)
-        if native is not None:
-            return native
-        off, items = _csr(self.analysis, "sheet_cell")
-        return self._cell_sets(off, items, range(self.num_sheets), shrink)
-
-    def _cell_sets(self, off, items, rows, shrink) -> P.Soup:
-        parts = []
-        for r in rows:
-            label = np.full(self.num_cells, -1, np.int32)
-            label[P.csr_row(off, items, r)] = 0
-            parts.append(self._soup(label, shrink))
-        return concat_soups(parts, owners=list(rows))
+        return self._soup("sheets", shrink=shrink)
 
     def sheet_blocks(self, sheet: int, shrink: float) -> P.Soup:
         """One sheet's cells with the component partition kept (its blocks), owner = component."""
-        native = self._native_soup("sheet", sheet, shrink)
-        if native is not None:
-            return native
-        cells = self.sheet_cells(sheet)
-        label = np.full(self.num_cells, -1, np.int32)
-        comp = np.asarray(self.analysis.complex.cell_component, np.int32)
-        label[cells] = comp[cells]
-        return self._soup(label, shrink)
+        return self._soup("sheet", sheet, shrink)
 
     def sheet_highlights(self, sheet: int, radius: float):
         """Highlights per SPEC §6: (unmatched dots, shared dots, self-parallel edge lines,
@@ -219,18 +197,16 @@ class Structure:
         curves = P.csr_row(off, items, sheet)
         cx = a.complex
         if len(curves):
-            closed = getattr(cx, "curve_closed", None)
-            closed = None if closed is None else np.asarray(closed, bool)[np.asarray(curves, np.int64)]
-            lines = P.polylines(self.points, *self._curve_subset(cx, curves), P.SELF_PARALLEL_EDGE_COLOR,
-                                closed=closed)
+            closed = np.asarray(cx.curve_closed, bool)[np.asarray(curves, np.int64)]
+            lines = self._lines(*self._curve_subset(cx, curves), P.SELF_PARALLEL_EDGE_COLOR, closed=closed)
         else:
             lines = P.Lines.concat([])
         off, items = _csr(a, "sheet_self_intersecting")
         comps = P.csr_row(off, items, sheet)
         if len(comps):
-            coff, citems = _csr(cx, "component")
-            label = P.label_cells(self.num_cells, coff, citems, comps)
-            cells = self._soup(label, 0.0)
+            # The blocks (components) holding a type-3 pair, each its own piece.
+            blocks = self._soup("components")
+            cells = blocks.select(np.isin(blocks.face_owner, comps))
         else:
             cells = P.Soup.empty()
         return (P.dots(self.points[unmatched], radius, unmatched), P.dots(self.points[shared], radius * 0.8, shared),
@@ -250,17 +226,10 @@ class Structure:
 
     def subsheet_soup(self, sheet: int, sub, shrink: float) -> P.Soup:
         """Every subsheet of `sheet` (sub = self.subsheets(sheet)) as a block, owner = subsheet."""
-        native = self._native_soup("subsheets", sheet, shrink)
-        if native is not None:
-            return native
-        off, items = _csr(sub, "cell")
-        return self._cell_sets(off, items, range(int(sub.count)), shrink)
+        return self._soup("subsheets", sheet, shrink)
 
     def subsheet_unmatched(self, sub, index: int) -> np.ndarray:
-        try:
-            off, items = _csr(sub, "unmatched")
-        except AttributeError:
-            return np.zeros(0, np.int32)
+        off, items = _csr(sub, "unmatched")
         return P.csr_row(off, items, index)
 
     # -- VSG wireframe ------------------------------------------------------------------------
@@ -276,26 +245,8 @@ class Structure:
         off = np.asarray(w.polyline_offsets)
         verts = np.asarray(w.polyline_vertices)
         k = len(off) - 1
-        color_idx = np.asarray(getattr(w, "color", np.zeros(k, np.int32)), np.int64)
-        colors = P.palette_color(color_idx) if k else np.zeros((0, 4), np.float32)
-        shown = getattr(w, "shown", None)
-        keep = np.asarray(shown, bool) if (simplified and shown is not None) else None
+        colors = P.palette_color(np.asarray(w.color, np.int64)) if k else np.zeros((0, 4), np.float32)
+        keep = np.asarray(w.shown, bool) if simplified else None
         alpha = P.opacity_alpha(np.asarray(w.point_opacity, np.float32), floor)
-        return P.polylines(self.points, off, verts, colors, alpha, keep)
+        return self._lines(off, verts, colors, alpha, keep)
 
-
-def concat_soups(parts, owners=None) -> P.Soup:
-    """Soups side by side; with `owners`, every face of part i gets owner owners[i]."""
-    parts = list(parts)
-    if not parts:
-        return P.Soup.empty()
-    pos, sizes, fv, own = [], [], [], []
-    nv = 0
-    for i, s in enumerate(parts):
-        pos.append(s.positions)
-        sizes.append(s.face_sizes)
-        fv.append(s.face_vertices + nv)
-        own.append(np.full(s.num_faces, owners[i], np.int32) if owners is not None else s.face_owner)
-        nv += len(s.positions)
-    return P.Soup(np.concatenate(pos).astype(np.float32), np.concatenate(sizes).astype(np.int32),
-                  np.concatenate(fv).astype(np.int32), np.concatenate(own).astype(np.int32))

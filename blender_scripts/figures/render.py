@@ -265,7 +265,7 @@ class Subject:
         self.name = addon.P.mesh_name_from_path(path)
         t = time.perf_counter()
         s = addon.session.load(path, 1.0, log)
-        addon.session.analyse(s, args.rho, log)
+        addon.session.analyze(s, args.rho, log)
         self.s = s
         self.t_analysis = time.perf_counter() - t
         self.points = s.points
@@ -402,7 +402,7 @@ class Subject:
         if not keep.any():
             return None
         colors = P.palette_color(np.asarray(w.color, np.int64))
-        return P.polylines(self.points, off, verts, colors, None, keep)
+        return self.s._lines(off, verts, colors, None, keep)
 
     def panel_vsg(self):
         if self.sheet is None:

@@ -10,7 +10,7 @@ namespace hbc {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, SoupKind>, 8> kSoupNames{{
+constexpr std::array<std::pair<std::string_view, SoupKind>, 9> kSoupNames{{
     {"cells", SoupKind::Cells},
     {"components", SoupKind::Components},
     {"sheets", SoupKind::Sheets},
@@ -19,6 +19,7 @@ constexpr std::array<std::pair<std::string_view, SoupKind>, 8> kSoupNames{{
     {"sheet_non_hex", SoupKind::SheetNonHex},
     {"non_hex", SoupKind::NonHex},
     {"boundary", SoupKind::Boundary},
+    {"hex", SoupKind::Hex},
 }};
 
 // The cell on the other side of face f from cell c (-1 on the boundary).
@@ -95,6 +96,14 @@ OwnedFaces soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_t s
     case SoupKind::NonHex:
       for (int32_t c = 0; c < nc; ++c)
         if (!m.is_hex(static_cast<size_t>(c))) add_cell_faces(m, c, c, out, all);
+      break;
+    case SoupKind::Hex:
+      for (int32_t c = 0; c < nc; ++c)
+        if (m.is_hex(static_cast<size_t>(c)))
+          add_cell_faces(m, c, 0, out, [&](int32_t f) {
+            const int32_t o = across(m, f, c);
+            return o < 0 || !m.is_hex(static_cast<size_t>(o));
+          });
       break;
     case SoupKind::Components: {
       // Non-separation faces are inside a component, so the separation faces of a component's

@@ -1,11 +1,10 @@
-"""Plain-pytest tests of the add-on's bpy-free planning (palette, opacity, block soups, lines)."""
+"""Plain-pytest tests of the add-on's bpy-free planning (palette, opacity, CSR helpers, line and dot
+containers, Table 1 row); the geometry of real meshes is in test_structure.py."""
 
 import numpy as np
 import pytest
 
-from fakes import FakeMesh
 from hybrid_base_complex import planning as P
-from hybrid_base_complex.structure import Structure, concat_soups
 
 
 def test_package_imports_without_bpy():
@@ -48,79 +47,35 @@ def test_csr_helpers():
     inv_off, rows = P.csr_invert(np.array([0, 2, 3]), np.array([0, 1, 1]), 3)
     np.testing.assert_array_equal(inv_off, [0, 1, 3, 3])
     np.testing.assert_array_equal(rows, [0, 0, 1])
-    cells_off, cells = np.array([0, 2, 3, 5]), np.array([0, 1, 5, 2, 3])
-    assert P.label_cells(6, cells_off, cells).tolist() == [0, 0, 2, 2, -1, 1]
-    assert P.label_cells(6, cells_off, cells, rows=[2, 1]).tolist() == [-1, -1, 0, 0, -1, 1]
 
-
-def _soup(mesh, label, shrink=0.0):
-    return P.block_soup(mesh.points, mesh.face_offsets, mesh.face_vertices, mesh.face_cells, mesh.cell_offsets,
-                        mesh.cell_faces, mesh.cell_face_flip, label, shrink)
-
-
-def test_block_soup_one_block_is_its_outer_surface():
-    m = FakeMesh(3, 2, 2)
-    soup = _soup(m, np.zeros(m.num_cells, np.int32))
-    # Outer surface of a 3x2x2 box: 2*(3*2 + 3*2 + 2*2) quads, vertices on the box surface only.
-    assert soup.num_faces == 2 * (6 + 6 + 4)
-    assert len(soup.positions) == 4 * 3 * 3 - 2 * 1  # (4*3*3 grid points) minus the 2 interior ones
-    assert set(soup.face_owner) == {0}
-
-
-def test_block_soup_faces_point_outward():
-    m = FakeMesh(2, 2, 1)
-    soup = _soup(m, np.arange(m.num_cells, dtype=np.int32), shrink=0.0)
-    starts = soup.loop_starts()
-    centre_of_block = {o: m.points[m.face_vertices[m.face_offsets[m.cell_faces[m.cell_offsets[o]:m.cell_offsets[o + 1]]]]].mean(0)
-                       for o in range(m.num_cells)}
-    for f in range(soup.num_faces):
-        loop = soup.positions[soup.face_vertices[starts[f]:starts[f] + soup.face_sizes[f]]]
-        normal = np.cross(loop[1] - loop[0], loop[2] - loop[0])
-        outward = loop.mean(0) - centre_of_block[soup.face_owner[f]]
-        assert np.dot(normal, outward) > 0
-
-
-def test_block_soup_partition_and_shrink():
-    m = FakeMesh(4, 1, 1)
-    label = np.array([0, 0, 1, -1], np.int32)
-    soup = _soup(m, label, shrink=0.5)
-    # Block 0: 2x1x1 box (10 quads), block 1: a cube (6 quads); cell 3 hidden.
-    assert np.bincount(soup.face_owner).tolist() == [10, 6]
-    # Shrunk block 1 (the unit cube at x in [2,3]) lies within [2.25, 2.75].
-    pos1 = soup.positions[np.unique(soup.face_vertices[np.repeat(soup.face_owner == 1, soup.face_sizes)])]
-    assert pos1[:, 0].min() == pytest.approx(2.25) and pos1[:, 0].max() == pytest.approx(2.75)
-    # Vertex copies per block are contiguous (split_soup_objects relies on it).
-    first = np.repeat(soup.face_owner, soup.face_sizes)
-    verts_by_owner = [soup.face_vertices[first == o] for o in (0, 1)]
-    assert verts_by_owner[0].max() < verts_by_owner[1].min()
-
-
-def test_soup_select_and_concat():
-    m = FakeMesh(2, 1, 1)
-    soup = _soup(m, np.array([0, 1], np.int32))
-    part = soup.select(soup.face_owner == 1)
-    assert part.num_faces == 6 and len(part.positions) == 8
-    both = concat_soups([part, part], owners=[5, 6])
-    assert both.num_faces == 12 and set(both.face_owner) == {5, 6}
-    assert both.face_vertices.max() == 15
-    assert P.Soup.empty().num_faces == 0
 
 
 def test_polylines_colors_alpha_keep():
-    pts = np.arange(30, dtype=np.float32).reshape(10, 3)
+    # Three polylines of 3, 2 and 3 points (positions as hbc.polylines gives them, one per entry).
+    pts = np.arange(24, dtype=np.float32).reshape(8, 3)
     off = np.array([0, 3, 5, 8])
-    verts = np.array([0, 1, 2, 3, 4, 5, 6, 7])
     cols = P.palette_color([0, 1, 2])
-    lines = P.polylines(pts, off, verts, cols, alpha=np.linspace(0, 1, 8), keep=[True, False, True])
+    lines = P.lines(pts, off, cols, alpha=np.linspace(0, 1, 8), keep=[True, False, True])
     assert len(lines.positions) == 6
     assert lines.edges.tolist() == [[0, 1], [1, 2], [3, 4], [4, 5]]
     assert lines.polyline.tolist() == [0, 0, 0, 1, 1, 1]
     np.testing.assert_allclose(lines.colors[3, :3], cols[2, :3])
     assert lines.colors[-1, 3] == pytest.approx(1.0)
-    ring = P.polylines(pts, off, verts, closed=[True, False, False])
+    ring = P.lines(pts, off, closed=[True, False, False])
     assert ring.edges.tolist() == [[0, 1], [1, 2], [3, 4], [5, 6], [6, 7], [2, 0]]
-    both = P.Lines.concat([lines, P.edge_lines(pts, [[0, 9]], (1, 0, 0, 1))])
+    both = P.Lines.concat([lines, P.lines(pts[:2], [0, 2], (1, 0, 0, 1))])
     assert both.num_polylines == 3 and both.edges[-1].tolist() == [6, 7]
+
+
+def test_soup_select():
+    # Two unit squares (owners 0 and 1) with their own 4 points each; keeping owner 1 keeps its
+    # 4 points, renumbered 0..3.
+    pos = np.arange(24, dtype=np.float32).reshape(8, 3)
+    soup = P.Soup(pos, np.array([4, 4], np.int32), np.arange(8, dtype=np.int32), np.array([0, 1], np.int32))
+    part = soup.select(soup.face_owner == 1)
+    assert part.num_faces == 1 and part.face_vertices.tolist() == [0, 1, 2, 3]
+    np.testing.assert_array_equal(part.positions, pos[4:])
+    assert P.Soup.empty().num_faces == 0
 
 
 def test_dots():
@@ -149,36 +104,42 @@ def test_progress_reports_fractions():
     assert seen == [(0.5, "a"), (1.0, "b"), (1.0, "c")]
 
 
-def test_structure_layers_on_fake_analysis():
-    m = FakeMesh(4, 2, 1, non_hex_last=True)
-    s = Structure(m, m.analyze(), scale=2.0)
-    assert s.points.max() == pytest.approx(8.0)
-    assert s.num_components == 4 + 1 - 0  # 8 cells in pairs, the last (non-hex) cell on its own
-    blocks = s.blocks(0.1)
-    assert set(blocks.face_owner) == set(range(s.num_components))
-    assert s.num_sheets == 3
-    cells, comps = s.sheet_sizes()
-    assert comps.tolist() == [2, s.num_components, 1]
-    np.testing.assert_array_equal(s.component_sheets(0), [0, 1])
-    sheets = s.all_sheets(0.0)
-    assert set(sheets.face_owner) == {0, 1, 2}
-    unmatched, shared, edges, si_cells = s.sheet_highlights(1, 0.1)
-    assert unmatched.num_faces == 16 and shared.num_faces == 0 and si_cells.num_faces > 0
-    _, shared2, edges2, _ = s.sheet_highlights(2, 0.1)
-    assert shared2.num_faces == 8 and edges2.num_polylines == 2
-    groups = s.singularity_lines()
-    assert [g[0] for g in groups] == ["Valence 3", "Valence 5", "Pseudo-singular", "Non-manifold"]
-    assert groups[0][2].num_polylines == 2
-    w = s.wireframe(floor=0.3)
-    assert w.num_polylines == 3  # the 4th is not shown in the simplified wireframe
-    assert w.colors[:, 3].min() == pytest.approx(0.3)
-    assert s.wireframe(simplified=False).num_polylines == 4
-    sub = s.subsheets(1)
-    assert sub.count == 2
-    subs = s.subsheet_soup(1, sub, 0.0)
-    assert set(subs.face_owner) == {0, 1}
-    assert s.subsheet_unmatched(sub, 0).size == 0
-    direct = s.direct_boundary()
-    assert direct.num_faces == int(m.face_boundary.sum())
-    assert s.non_hex_cells().num_faces == 6
-    assert s.direct_cells(hex_cells=True).num_faces > 0
+def test_legend_words_fit_beside_a_swatch():
+    every = P.legend([k for k, _ in P.LAYERS], valences=[1, 2, 3, 4, 5, 6, 7], has_pseudo=True,
+                     has_non_manifold=True, non_hex_types=[1, 2, 3, 4])
+    assert all(key in P.LEGEND_COLORS for key, _ in every)
+    assert max(len(words) for _, words in every) <= P.LEGEND_MAX
+    # Valences without a colour of their own share the "other" colour.
+    assert ("valence_other", "Valence 4 edge") in every and ("valence5", "Valence 5 edge") in every
+    assert P.legend(["wireframe"]) == []
+
+
+def test_table1_text_markdown_and_csv():
+    stats = {"cells": 10, "hex_ratio": 0.5, "components": 4, "hex_components": 3}
+    md = P.table1_text("a|b", stats).splitlines()
+    # Header, rule and one row; '|' inside a cell is escaped.
+    assert len(md) == 3 and md[0].startswith("| Mesh | \\|C\\| |") and md[1] == "|" + "---|" * 15
+    assert md[2].startswith("| a\\|b | 10 | 50.0% | 4 | 75.0% | - |")
+    csv = P.table1_text("x,y", stats, "CSV").splitlines()
+    assert csv[0].split(",")[:3] == ["Mesh", "|C|", "|H|/|C|"] and csv[1].startswith('"x,y",10,50.0%,4,75.0%,-')
+    assert all(P.TABLE1_MEANING[label] for label, _ in P.table1_row(stats))
+
+
+def test_describe_error_and_subsheet_reason():
+    assert P.describe_error(ValueError("f.mesh:3: expected x")) == "f.mesh:3: expected x"
+    assert P.describe_error(FileNotFoundError(2, "No such file or directory", "/x.ovm")) == \
+        "/x.ovm: No such file or directory"
+    assert P.describe_error(RuntimeError()) == "unexpected failure (RuntimeError)"
+    assert P.subsheets_unavailable(3) is None
+    assert P.subsheets_unavailable(1).startswith("Sheet is type 1 (non-hex): only self-intersecting")
+    assert P.subsheets_unavailable(None) == "Pick a sheet in the list first"
+
+
+def test_sheet_order_and_placement():
+    types, cells = [3, 0, 2, 0], [5, 9, 9, 1]
+    assert P.sheet_order(types, cells, "INDEX") == [0, 1, 2, 3]
+    assert P.sheet_order(types, cells, "SIZE") == [1, 2, 0, 3]  # ties keep index order
+    assert P.sheet_order(types, cells, "TYPE") == [1, 3, 2, 0]
+    # A model spanning x in [-1, 1] beside one ending at x = 10: gap a quarter of its width (0.5).
+    assert P.beside([((0, 0, 0), (10, 5, 5))], (-1, -1, -1), (1, 1, 1)) == (11.5, 0.0, 0.0)
+    assert P.beside([], (0, 0, 0), (1, 1, 1)) == (0.0, 0.0, 0.0)

@@ -13,7 +13,6 @@ import pytest
 bpy = pytest.importorskip("bpy")
 
 HERE = pathlib.Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parents[0] / "addon_unit"))  # the fakes
 
 MESH_SUFFIXES = (".ovm", ".ovmb", ".mesh", ".hybrid", ".hedra")
 

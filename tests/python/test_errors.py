@@ -115,3 +115,12 @@ def test_wrong_format_for_the_content(shared_data_dir):
     path = shared_data_dir / "hybrid-base-complex" / "teapot.hedra"
     with pytest.raises(hbc.MeshFormatError, match=re.escape(f"{path}:1: ")):
         hbc.load(path, format="mesh")
+
+
+def test_non_utf8_token_reaches_python_as_mesh_format_error(tmp_path):
+    # The reader quotes the rejected token (b"z\xff\xfe" is not UTF-8): the message must still
+    # arrive whole, file and line included, with U+FFFD for each undecodable byte.
+    path = tmp_path / "latin1.mesh"
+    path.write_bytes(MEDIT_BAD_INDEX.replace("1 0 0 0", "1 z\udcff\udcfe 0 0").encode("utf-8", "surrogateescape"))
+    err = expect_error(path, 6, "z\ufffd\ufffd")
+    assert "\ufffd" in str(err)

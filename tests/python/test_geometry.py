@@ -28,7 +28,8 @@ def rows(offsets, items):
 def kinds(a):
     """(what, sheet, number of possible owners) for every block set the analysis allows."""
     out = [("cells", -1, a.mesh.num_cells), ("components", -1, len(a.complex.component_kind)),
-           ("sheets", -1, a.num_sheets), ("non_hex", -1, a.mesh.num_cells), ("boundary", -1, 5)]
+           ("sheets", -1, a.num_sheets), ("non_hex", -1, a.mesh.num_cells), ("boundary", -1, 5),
+           ("hex", -1, 1)]
     for s in range(min(a.num_sheets, 3)):
         out += [("sheet", s, len(a.complex.component_kind)), ("sheet_non_hex", s, a.mesh.num_cells)]
     for s in a.self_intersecting_sheets:
@@ -114,6 +115,14 @@ def test_soup_face_counts(analysed, name):
     assert np.array_equal(np.sort(boundary["face_source"]), bf)
     order = np.argsort(boundary["face_source"])
     assert np.array_equal(boundary["face_owner"][order], m.cell_types[m.face_cells[bf, 0]])
+    # The hex region's surface: every face with a hex on exactly one side (the boundary counts as
+    # not hex), seen from that hex, owner 0.
+    hex_soup = hbc.block_soup(m, a, "hex")
+    is_hex = np.append(hexes, False)  # index -1 (no cell) is not a hex
+    fc = m.face_cells
+    expected = np.flatnonzero(is_hex[fc[:, 0]] != is_hex[fc[:, 1]])
+    assert np.array_equal(np.sort(hex_soup["face_source"]), expected)
+    assert np.all(hex_soup["face_owner"] == 0)
     # Components: separation faces, once per side; interior ones twice.
     comps = hbc.block_soup(m, a, "components")
     sep = a.complex.face_separation
@@ -268,3 +277,15 @@ def test_polylines(analysed):
         hbc.polylines(m, [0, 3, 2, 3], [0, 1, 2])
     with pytest.raises(ValueError, match="out of range"):
         hbc.polylines(m, [0, 2], [0, m.num_vertices])
+
+
+def test_mesh_only_soups_need_no_analysis(analysed):
+    # The boundary, the cells, the non-hex cells and the hex region are the mesh's own: with no
+    # analysis they are the same soups; anything of the analysis is refused by name.
+    m, a = analysed[TABLE1 + "twistcube_s.mesh"]
+    for what in ("boundary", "cells", "non_hex", "hex"):
+        with_a, without = hbc.block_soup(m, a, what), hbc.block_soup(m, None, what)
+        for key in with_a:
+            assert np.array_equal(with_a[key], without[key]), (what, key)
+    with pytest.raises(ValueError, match="'components' needs an analysis"):
+        hbc.block_soup(m, None, "components")

@@ -30,9 +30,11 @@ enum class SoupKind : uint8_t {
   SheetNonHex,  // the non-hex cells adjacent to one sheet, all their faces (cell id)
   NonHex,       // every non-hex cell, all its faces (cell id)
   Boundary,     // the mesh boundary faces (CellType of the face's cell, as an integer)
+  Hex,          // the surface of the hex region: faces of hex cells not shared with another hex (0)
 };
 
-// "cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary".
+// "cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary",
+// "hex".
 // Throws std::invalid_argument listing the accepted names for anything else.
 SoupKind soup_kind_from_name(std::string_view name);
 bool soup_kind_needs_sheet(SoupKind kind);

@@ -87,13 +87,19 @@ void bind_wireframe(py::module_& m) {
 
 py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
                     double shrink) {
-  if (analysis->mesh.get() != mesh.get())
-    throw std::invalid_argument("block_soup: the analysis was computed on another mesh");
   const SoupKind kind = soup_kind_from_name(what);
+  // Cells, non-hex cells, the hex region and the boundary are the mesh's own: a mesh shown
+  // before (or without) its analysis draws them with an empty one.
+  const bool mesh_only = kind == SoupKind::Cells || kind == SoupKind::NonHex || kind == SoupKind::Hex ||
+                         kind == SoupKind::Boundary;
+  if (!analysis && !mesh_only) throw std::invalid_argument("block_soup: '" + what + "' needs an analysis");
+  if (analysis && analysis->mesh.get() != mesh.get())
+    throw std::invalid_argument("block_soup: the analysis was computed on another mesh");
+  const Analysis none;
   BlockSoup s;
   {
     py::gil_scoped_release unlocked;
-    s = hbc::block_soup(mesh->mesh, analysis->analysis, kind, sheet, shrink);
+    s = hbc::block_soup(mesh->mesh, analysis ? analysis->analysis : none, kind, sheet, shrink);
   }
   const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces()), nfv = ssize(s.face_vertices.size());
   py::dict d;
@@ -123,15 +129,16 @@ py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArr
 
 void bind_geometry(py::module_& m) {
   bind_wireframe(m);
-  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis"), py::arg("what"), py::arg("sheet") = -1,
+  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = -1,
         py::arg("shrink") = 0.0,
         "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
-        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type). Returns a dict: "
+        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex' (the hex region's surface, owner 0). Returns a dict: "
         "positions float32 (np, 3), point_vertex int32 (np,), face_sizes int32 (nf,), face_vertices "
         "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
-        "Loops are outward; faces grouped by increasing owner.");
+        "Loops are outward; faces grouped by increasing owner. analysis may be None for 'cells', "
+        "'non_hex', 'hex' and 'boundary'.");
   m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("vertices"),
         "float32 (len(vertices), 3): the positions of the polyline points given as a CSR of mesh "
         "vertex ids (offsets start at 0 and end at len(vertices)).");

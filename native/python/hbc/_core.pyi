@@ -10,7 +10,7 @@ __version__: str
 
 Format = Literal["ovm", "ovmb", "mesh", "medit", "hybrid", "hedra", "msh", "vtk", "vtu"]
 Level = Literal["complex", "mesh"]
-SoupWhat = Literal["cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary"]
+SoupWhat = Literal["cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary", "hex"]
 I32 = npt.NDArray[np.int32]
 U8 = npt.NDArray[np.uint8]
 Bool = npt.NDArray[np.bool_]
@@ -421,7 +421,7 @@ class Analysis:
     def wireframe(self, sheet: int | None = None, subsheet: int | None = None) -> Wireframe: ...
     def to_vtu(self, path: str, sheet: int | None = None, ascii: bool = False) -> str: ...
 
-def block_soup(mesh: Mesh, analysis: Analysis, what: SoupWhat, sheet: int = -1, shrink: float = 0.0) -> BlockSoup: ...
+def block_soup(mesh: Mesh, analysis: Analysis | None, what: SoupWhat, sheet: int = -1, shrink: float = 0.0) -> BlockSoup: ...
 def polylines(mesh: Mesh, offsets: npt.ArrayLike, vertices: npt.ArrayLike) -> npt.NDArray[np.float32]: ...
 
 class CellQuality(TypedDict):
