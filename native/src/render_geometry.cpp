@@ -35,6 +35,7 @@ void add_cell_faces(const Mesh& m, int32_t c, int32_t owner, OwnedFaces& out, Ke
     if (!keep(f)) continue;
     out.owner.push_back(owner);
     out.face.push_back(f);
+    out.cell.push_back(c);
     out.reversed.push_back(m.cell_face_flip[static_cast<size_t>(i)]);
   }
 }
@@ -149,14 +150,16 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
   if (!(shrink >= 0.0 && shrink < 1.0))
     throw std::invalid_argument("shrink must be in [0, 1), not " + std::to_string(shrink));
   const size_t n = in.face.size();
-  if (in.owner.size() != n || in.reversed.size() != n)
-    throw std::invalid_argument("owned faces: owner, face and reversed differ in length");
+  if (in.owner.size() != n || in.reversed.size() != n || in.cell.size() != n)
+    throw std::invalid_argument("owned faces: owner, face, cell and reversed differ in length");
   int32_t num_owners = 0;
   size_t corners = 0;  // face corners: the soup's face_vertices and an upper bound on its points
   for (size_t i = 0; i < n; ++i) {
     if (in.owner[i] < 0) throw std::invalid_argument("owned faces: negative owner");
     if (in.face[i] < 0 || static_cast<size_t>(in.face[i]) >= m.num_faces())
       throw std::invalid_argument("owned faces: face id out of range: " + std::to_string(in.face[i]));
+    if (in.cell[i] < 0 || static_cast<size_t>(in.cell[i]) >= m.num_cells())
+      throw std::invalid_argument("owned faces: cell id out of range: " + std::to_string(in.cell[i]));
     num_owners = std::max(num_owners, in.owner[i] + 1);
     corners += static_cast<size_t>(m.face_verts.count(static_cast<size_t>(in.face[i])));
   }
@@ -174,6 +177,7 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
   s.face_sizes.reserve(n);
   s.face_owner.reserve(n);
   s.face_source.reserve(n);
+  s.face_cell.reserve(n);
   s.face_vertices.reserve(corners);
   s.point_vertex.reserve(corners);
   s.positions.reserve(3 * corners);
@@ -188,6 +192,7 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
       s.face_sizes.push_back(static_cast<int32_t>(loop.size()));
       s.face_owner.push_back(o);
       s.face_source.push_back(in.face[i]);
+      s.face_cell.push_back(in.cell[i]);
       for (size_t j = 0; j < loop.size(); ++j) {
         const int32_t v = in.reversed[i] ? loop[loop.size() - 1 - j] : loop[j];
         if (seen[static_cast<size_t>(v)] != o) {
@@ -216,6 +221,26 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
 
 BlockSoup block_soup(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet, double shrink) {
   return build_soup(m, soup_faces(m, a, kind, sheet), shrink);
+}
+
+std::vector<double> cell_centroids(const Mesh& m) {
+  const size_t nc = m.num_cells();
+  std::vector<double> out(3 * nc, 0.0);
+  // `seen` holds the last cell that counted a vertex, so no clearing is needed between cells.
+  std::vector<int32_t> seen(m.num_vertices(), -1);
+  for (size_t c = 0; c < nc; ++c) {
+    size_t count = 0;
+    for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i)
+      for (int32_t v : m.face_verts[static_cast<size_t>(m.cell_faces.items[static_cast<size_t>(i)])]) {
+        if (seen[static_cast<size_t>(v)] == static_cast<int32_t>(c)) continue;
+        seen[static_cast<size_t>(v)] = static_cast<int32_t>(c);
+        ++count;
+        for (int d = 0; d < 3; ++d) out[3 * c + d] += m.points[3 * static_cast<size_t>(v) + d];
+      }
+    if (count)
+      for (int d = 0; d < 3; ++d) out[3 * c + d] /= static_cast<double>(count);
+  }
+  return out;
 }
 
 std::vector<float> polyline_positions(const Mesh& m, std::span<const int32_t> offsets,

@@ -2,6 +2,8 @@
 subsheets, one sheet's blocks, non-hex cells, the boundary) with outward loops, one vertex copy
 per owner, shrinking toward each owner's centroid; and polyline point positions."""
 
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -268,3 +270,51 @@ def test_polylines(analysed):
         hbc.polylines(m, [0, 3, 2, 3], [0, 1, 2])
     with pytest.raises(ValueError, match="out of range"):
         hbc.polylines(m, [0, 2], [0, m.num_vertices])
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_soup_face_cell(analysed, name):
+    """face_cell is a cell the face bounds, on the owner's side: the face's owner is that cell (cell
+    kinds), its component (components, one sheet's blocks), or a sheet holding it (sheets)."""
+    m, a = analysed[name]
+    comp = a.complex.cell_component
+    fc = m.face_cells
+    sheet_cells = rows(a.sheet_cell_offsets, a.sheet_cell_items)
+    for what, sheet, _ in kinds(a):
+        d = hbc.block_soup(m, a, what, sheet=sheet)
+        cell, src, owner = d["face_cell"], d["face_source"], d["face_owner"]
+        assert cell.dtype == np.int32 and cell.shape == src.shape, what
+        assert np.all((fc[src, 0] == cell) | (fc[src, 1] == cell)), what
+        if what in ("cells", "non_hex", "sheet_non_hex"):
+            assert np.array_equal(cell, owner), what
+        elif what in ("components", "sheet"):
+            assert np.array_equal(comp[cell], owner), what
+        elif what == "boundary":
+            assert np.array_equal(m.cell_types[cell], owner), what
+        elif what == "sheets":
+            for i in range(0, len(owner), max(1, len(owner) // 100)):
+                assert cell[i] in sheet_cells[owner[i]], what
+
+
+def test_cell_centroids_grid(hbc_cli, tmp_path):
+    """A 2x1x1 grid of spacing 0.5 from the origin: centroids (0.25, .25, .25) and (0.75, .25, .25)."""
+    out = tmp_path / "grid.ovm"
+    subprocess.run([hbc_cli, "generate", "grid", "--size", "2", "1", "1", "--spacing", "0.5", "-o", str(out)],
+                   check=True, capture_output=True)
+    m = hbc.load(out)
+    c = hbc.cell_centroids(m)
+    assert c.dtype == np.float64 and c.shape == (2, 3)
+    order = np.argsort(c[:, 0])
+    assert np.allclose(c[order] - m.points64.min(axis=0), [[0.25, 0.25, 0.25], [0.75, 0.25, 0.25]])
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_cell_centroids_mean_of_distinct_vertices(analysed, name):
+    m, _ = analysed[name]
+    c = hbc.cell_centroids(m)
+    assert c.shape == (m.num_cells, 3)
+    pts = m.points64
+    for cell in range(0, m.num_cells, max(1, m.num_cells // 50)):
+        faces = m.cell_faces[m.cell_offsets[cell]:m.cell_offsets[cell + 1]]
+        verts = np.unique(np.concatenate([m.face_vertices[m.face_offsets[f]:m.face_offsets[f + 1]] for f in faces]))
+        assert np.allclose(c[cell], pts[verts].mean(axis=0))

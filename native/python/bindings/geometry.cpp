@@ -94,6 +94,7 @@ py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const 
   d["face_vertices"] = adopt(std::move(s.face_vertices), {nfv});
   d["face_owner"] = adopt(std::move(s.face_owner), {nf});
   d["face_source"] = adopt(std::move(s.face_source), {nf});
+  d["face_cell"] = adopt(std::move(s.face_cell), {nf});
   d["point_vertex"] = adopt(std::move(s.point_vertex), {np});
   return d;
 }
@@ -111,6 +112,16 @@ py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArr
   return adopt(std::move(pos), {n, 3});
 }
 
+py::array cell_centroid_array(const PyMeshPtr& mesh) {
+  std::vector<double> c;
+  {
+    py::gil_scoped_release unlocked;
+    c = cell_centroids(mesh->mesh);
+  }
+  const py::ssize_t nc = ssize(c.size() / 3);
+  return adopt(std::move(c), {nc, 3});
+}
+
 }  // namespace
 
 void bind_geometry(py::module_& m) {
@@ -122,8 +133,11 @@ void bind_geometry(py::module_& m) {
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
         "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type). Returns a dict: "
         "positions float32 (np, 3), point_vertex int32 (np,), face_sizes int32 (nf,), face_vertices "
-        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
+        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids, "
+        "face_cell int32 (nf,) the mesh cell on the owner's side (the face points out of it). "
         "Loops are outward; faces grouped by increasing owner.");
+  m.def("cell_centroids", &cell_centroid_array, py::arg("mesh"),
+        "float64 (num_cells, 3): the mean of each cell's distinct vertices.");
   m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("vertices"),
         "float32 (len(vertices), 3): the positions of the polyline points given as a CSR of mesh "
         "vertex ids (offsets start at 0 and end at len(vertices)).");

@@ -22,6 +22,7 @@ from ._core import (
     Wireframe,
     __version__,
     block_soup,
+    cell_centroids,
     cell_depth,
     cell_quality,
     load,
@@ -31,5 +32,5 @@ from ._core import (
 __all__ = [
     "Mesh", "MeshFormatError", "load", "__version__",
     "Analysis", "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe", "block_soup", "polylines",
-    "cell_quality", "cell_depth",
+    "cell_quality", "cell_depth", "cell_centroids",
 ]

@@ -181,6 +181,7 @@ class BlockSoup(TypedDict):
     face_vertices: I32  # (face_sizes.sum(),) point ids, loops outward
     face_owner: I32  # (nf,) grouped by increasing owner
     face_source: I32  # (nf,) mesh face ids
+    face_cell: I32  # (nf,) mesh cell on the owner's side (the face points out of it)
 
 class SingularityGraph:
     """Views into an Analysis (SPEC section 1). Chains: a closed one does not repeat its first vertex."""
@@ -412,6 +413,8 @@ class Analysis:
     def wireframe(self, sheet: int | None = None, subsheet: int | None = None) -> Wireframe: ...
 
 def block_soup(mesh: Mesh, analysis: Analysis, what: SoupWhat, sheet: int = -1, shrink: float = 0.0) -> BlockSoup: ...
+def cell_centroids(mesh: Mesh) -> npt.NDArray[np.float64]:
+    """(num_cells, 3) the mean of each cell's distinct vertices."""
 def polylines(mesh: Mesh, offsets: npt.ArrayLike, vertices: npt.ArrayLike) -> npt.NDArray[np.float32]: ...
 
 class CellQuality(TypedDict):
