@@ -85,6 +85,10 @@ bool soup_kind_needs_sheet(SoupKind kind) {
   return kind == SoupKind::Subsheets || kind == SoupKind::Sheet || kind == SoupKind::SheetNonHex;
 }
 
+bool soup_kind_needs_analysis(SoupKind kind) {
+  return kind != SoupKind::Cells && kind != SoupKind::NonHex && kind != SoupKind::Boundary;
+}
+
 OwnedFaces soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet) {
   OwnedFaces out;
   const int32_t nc = static_cast<int32_t>(m.num_cells());

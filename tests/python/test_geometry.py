@@ -318,3 +318,15 @@ def test_cell_centroids_mean_of_distinct_vertices(analysed, name):
         faces = m.cell_faces[m.cell_offsets[cell]:m.cell_offsets[cell + 1]]
         verts = np.unique(np.concatenate([m.face_vertices[m.face_offsets[f]:m.face_offsets[f + 1]] for f in faces]))
         assert np.allclose(c[cell], pts[verts].mean(axis=0))
+
+
+def test_mesh_only_soups_without_analysis(analysed):
+    """'cells', 'non_hex' and 'boundary' read only the mesh: analysis=None gives the same soup; the
+    other kinds refuse None."""
+    m, a = analysed[MESHES[0]]
+    for what in ("cells", "non_hex", "boundary"):
+        with_a, without = hbc.block_soup(m, a, what), hbc.block_soup(m, None, what)
+        for k, v in with_a.items():
+            assert np.array_equal(v, without[k]), (what, k)
+    with pytest.raises(ValueError, match="needs an analysis"):
+        hbc.block_soup(m, None, "components")

@@ -36,6 +36,8 @@ enum class SoupKind : uint8_t {
 // Throws std::invalid_argument listing the accepted names for anything else.
 SoupKind soup_kind_from_name(std::string_view name);
 bool soup_kind_needs_sheet(SoupKind kind);
+// Cells, NonHex and Boundary read only the mesh (any Analysis, even an empty one, will do).
+bool soup_kind_needs_analysis(SoupKind kind);
 
 // The faces to draw, one entry per (owner, face) in all four arrays; `cell` is the mesh cell the
 // face was taken from (on the owner's side: the face points out of it); `reversed` = 1 when the

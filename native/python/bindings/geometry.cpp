@@ -79,13 +79,18 @@ void bind_wireframe(py::module_& m) {
 
 py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
                     double shrink) {
-  if (analysis->mesh.get() != mesh.get())
-    throw std::invalid_argument("block_soup: the analysis was computed on another mesh");
   const SoupKind kind = soup_kind_from_name(what);
+  if (!analysis && soup_kind_needs_analysis(kind))
+    throw std::invalid_argument("block_soup: '" + what + "' needs an analysis (only 'cells', 'non_hex' and "
+                                "'boundary' take analysis=None)");
+  if (analysis && analysis->mesh.get() != mesh.get())
+    throw std::invalid_argument("block_soup: the analysis was computed on another mesh");
   BlockSoup s;
   {
     py::gil_scoped_release unlocked;
-    s = hbc::block_soup(mesh->mesh, analysis->analysis, kind, sheet, shrink);
+    // The mesh-only kinds never read the analysis: an empty one stands in for None.
+    s = analysis ? hbc::block_soup(mesh->mesh, analysis->analysis, kind, sheet, shrink)
+                 : hbc::block_soup(mesh->mesh, Analysis{}, kind, sheet, shrink);
   }
   const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces()), nfv = ssize(s.face_vertices.size());
   py::dict d;
@@ -126,9 +131,10 @@ py::array cell_centroid_array(const PyMeshPtr& mesh) {
 
 void bind_geometry(py::module_& m) {
   bind_wireframe(m);
-  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis"), py::arg("what"), py::arg("sheet") = -1,
+  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = -1,
         py::arg("shrink") = 0.0,
-        "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
+        "Faces of a set of blocks as a polygon soup (analysis may be None for 'cells', 'non_hex' and "
+        "'boundary'), each block (owner) with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
         "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type). Returns a dict: "
