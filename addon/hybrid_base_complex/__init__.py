@@ -22,20 +22,22 @@ except ImportError:  # plain Python (unit tests): only the bpy-free modules are 
     bpy = None
 
 if bpy is not None:
-    from . import operators, panels, properties
+    from . import inspect, operators, panels, properties
 
-    _MODULES = (properties, operators, panels)
+    _MODULES = (properties, operators, panels, inspect)
 
     def register():
         for module in _MODULES:
             for cls in module.classes:
                 bpy.utils.register_class(cls)
         properties.register_props()
+        inspect.register_props()
         operators.register_menus()
 
     def unregister():
         operators.unregister_menus()
         properties.unregister_props()
+        inspect.unregister_props()
         for module in reversed(_MODULES):
             for cls in reversed(module.classes):
                 bpy.utils.unregister_class(cls)
