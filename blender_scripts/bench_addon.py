@@ -9,6 +9,12 @@ Targets (issue 7): every layer of teapot.hedra under 2 s; a generated 100k-cell 
 (`hbc generate grid --size 50 40 50 -o x.mesh`, or a split grid as .ovm) under 20 s. The picked
 sheet and subsheet layers use the largest self-intersecting sheet when there is one, else sheet 0.
 Exit status 1 when a target is missed (--no-targets to only report).
+
+--inspect (issue 17) adds the direct view's cells (every cell, with the inspection attributes and
+the filter modifier; column `cells`) and times one update of the sliced direct view: the slicing
+plane (an Empty through the mesh centre) is moved and the scene evaluated, median of --repeat
+moves (column `slice`; target 0.2 s at 10^6 cells). --no-analysis imports without analysing (the
+direct view needs none), e.g. for `hbc generate grid --size 100 100 100 -o grid100.ovm`.
 """
 
 import argparse
@@ -25,8 +31,39 @@ def parse():
     ap.add_argument("--addon", required=True, help="the add-on package folder (built tree)")
     ap.add_argument("--split-max", type=int, default=None, help="blocks up to this many as separate objects")
     ap.add_argument("--no-targets", action="store_true")
+    ap.add_argument("--inspect", action="store_true", help="time the sliced direct view (issue 17)")
+    ap.add_argument("--no-analysis", action="store_true", help="import without analysing")
+    ap.add_argument("--repeat", type=int, default=3, help="plane moves timed for --inspect")
     ap.add_argument("meshes", nargs="+")
     return ap.parse_args(argv)
+
+
+def time_slice(root, s, repeat):
+    """{'cells': build of the direct view with every cell, 'slice': median seconds of one plane
+    move + evaluation of the sliced direct view}."""
+    import statistics
+
+    from hybrid_base_complex import inspect as I
+
+    t = time.perf_counter()
+    bpy.context.scene.hbc_inspect.direct_cells = True  # rebuilds the direct view with its cells
+    dg = bpy.context.evaluated_depsgraph_get()
+    dg.update()
+    out = {"cells": time.perf_counter() - t}
+    cells = next(o for o in root.all_objects if o.get("hbc_part") == "cells")
+    lo, hi = s.points.min(axis=0), s.points.max(axis=0)
+    plane = I.add_plane(bpy.context, tuple(float(x) for x in (lo + hi) / 2), (1.0, 0.3, 0.2))
+    dg.update()
+    spans = []
+    for i in range(repeat):
+        plane.location.x = float(lo[0] + (hi[0] - lo[0]) * (0.4 + 0.2 * i / max(repeat - 1, 1)))
+        t = time.perf_counter()
+        dg.update()
+        faces = len(cells.evaluated_get(dg).data.polygons)
+        spans.append(time.perf_counter() - t)
+        print(f"bench_addon: slice update {spans[-1]:.3f} s ({faces} faces shown)", flush=True)
+    out["slice"] = statistics.median(spans)
+    return out
 
 
 def main():
@@ -38,7 +75,7 @@ def main():
     from hybrid_base_complex.structure import import_hbc
 
     addon.register()
-    analysed = hasattr(import_hbc().Mesh, "analyze")
+    analysed = hasattr(import_hbc().Mesh, "analyze") and not args.no_analysis
     if not analysed:
         print("bench_addon: this hbc has no Mesh.analyze: only the direct view is measured", flush=True)
     rows = []
@@ -71,7 +108,12 @@ def main():
         t = time.perf_counter()
         bpy.context.evaluated_depsgraph_get().update()
         times["evaluate"] = time.perf_counter() - t
-        total = sum(times.values())
+        if args.inspect:
+            times.update(time_slice(root, s, args.repeat))
+        total = sum(v for k, v in times.items() if k != "slice")
+        if args.inspect and not args.no_targets and s.num_cells >= 10 ** 6 and times["slice"] > 0.2:
+            failed = True
+            print(f"bench_addon: {path}: slice update {times['slice']:.2f} s is over the 0.2 s target", flush=True)
         rows.append((os.path.basename(path), s.num_cells, len(bpy.data.objects), times, total))
         cells = s.num_cells
         limit = 2.0 if cells < 20000 else 20.0
@@ -80,6 +122,8 @@ def main():
             print(f"bench_addon: {path}: {total:.2f} s is over the {limit:.0f} s target", flush=True)
 
     keys = ["import", "graph", "blocks", "sheets", "wireframe", "sheet", "subsheets", "evaluate"]
+    if args.inspect:
+        keys += ["cells", "slice"]
     print("\n| mesh | cells | objects | " + " | ".join(keys) + " | total (s) |")
     print("|---|---:|---:|" + "---:|" * len(keys) + "---:|")
     for name, cells, objects, times, total in rows:

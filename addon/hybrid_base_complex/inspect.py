@@ -297,18 +297,28 @@ def type_mask(ins) -> int:
     return sum(1 << t for t, n in enumerate(TYPE_NAMES) if getattr(ins, f"show_{n}"))
 
 
-def apply_to_object(ob, ins):
+def filter_values(ins) -> dict:
+    """The modifier inputs for the settings Scene.hbc_inspect holds."""
+    return {"Plane": ins.plane, "Slice": bool(ins.slice and ins.plane is not None), "Flip": bool(ins.flip),
+            "Peel": int(ins.peel), "Types": type_mask(ins), "Filter Quality": bool(ins.filter_quality),
+            "Quality Min": float(ins.quality_min), "Quality Max": float(ins.quality_max)}
+
+
+def set_filters(ob, values, enabled=True):
+    """Sets the filter modifier's inputs (socket name -> value) of an equipped object."""
     mod = ob.modifiers.get(MODIFIER)
-    if mod is None or ins is None:
+    if mod is None:
         return
-    values = {"Plane": ins.plane, "Slice": bool(ins.slice and ins.plane is not None), "Flip": bool(ins.flip),
-              "Peel": int(ins.peel), "Types": type_mask(ins), "Filter Quality": bool(ins.filter_quality),
-              "Quality Min": float(ins.quality_min), "Quality Max": float(ins.quality_max)}
     for k, v in values.items():
         if compat.get_modifier_input(mod, k) != v:
             compat.set_modifier_input(mod, k, v)
-    mod.show_viewport = mod.show_render = bool(ins.enabled)
+    mod.show_viewport = mod.show_render = bool(enabled)
     ob.update_tag()
+
+
+def apply_to_object(ob, ins):
+    if ins is not None:
+        set_filters(ob, filter_values(ins), ins.enabled)
 
 
 def inspected_objects(root):
