@@ -227,6 +227,21 @@ BlockSoup block_soup(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sh
   return build_soup(m, soup_faces(m, a, kind, sheet), shrink);
 }
 
+BlockSoup kept_surface_soup(const Mesh& m, std::span<const uint8_t> kept, double shrink) {
+  if (kept.size() != m.num_cells())
+    throw std::invalid_argument("kept: " + std::to_string(kept.size()) + " entries for " +
+                                std::to_string(m.num_cells()) + " cells");
+  OwnedFaces out;
+  for (int32_t c = 0; c < static_cast<int32_t>(m.num_cells()); ++c) {
+    if (!kept[static_cast<size_t>(c)]) continue;
+    add_cell_faces(m, c, c, out, [&](int32_t f) {
+      const int32_t o = across(m, f, c);
+      return o < 0 || !kept[static_cast<size_t>(o)];
+    });
+  }
+  return build_soup(m, out, shrink);
+}
+
 std::vector<double> cell_centroids(const Mesh& m) {
   const size_t nc = m.num_cells();
   std::vector<double> out(3 * nc, 0.0);

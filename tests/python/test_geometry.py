@@ -330,3 +330,29 @@ def test_mesh_only_soups_without_analysis(analysed):
             assert np.array_equal(v, without[k]), (what, k)
     with pytest.raises(ValueError, match="needs an analysis"):
         hbc.block_soup(m, None, "components")
+
+
+def test_kept_surface_soup_of_a_grid(hbc_cli, tmp_path):
+    """A 4x4x4 grid: all cells kept gives the 96 boundary faces; the inner 2x2x2 block alone its 24
+    outer faces; nothing kept, nothing. Faces point out of their (kept) cell."""
+    out = tmp_path / "grid.ovm"
+    subprocess.run([hbc_cli, "generate", "grid", "--size", "4", "4", "4", "-o", str(out)], check=True,
+                   capture_output=True)
+    m = hbc.load(out)
+    every = hbc.kept_surface_soup(m, np.ones(64, bool))
+    assert len(every["face_sizes"]) == 96
+    assert np.array_equal(np.sort(every["face_source"]), np.flatnonzero(m.face_boundary))
+    inner = hbc.cell_depth(m) >= 1
+    d = hbc.kept_surface_soup(m, inner)
+    assert len(d["face_sizes"]) == 24 and set(d["face_cell"]) == set(np.flatnonzero(inner))
+    assert np.array_equal(d["face_owner"], d["face_cell"])
+    # Outward: the loop's normal points from the cell's centroid to the face's centre.
+    cen = hbc.cell_centroids(m)
+    starts = np.concatenate(([0], np.cumsum(d["face_sizes"])))
+    for i in range(len(d["face_sizes"])):
+        p = d["positions"][d["face_vertices"][starts[i]:starts[i + 1]]].astype(float)
+        n = np.cross(p[1] - p[0], p[2] - p[0])
+        assert np.dot(n, p.mean(axis=0) - cen[d["face_cell"][i]]) > 0
+    assert len(hbc.kept_surface_soup(m, np.zeros(64, bool))["face_sizes"]) == 0
+    with pytest.raises(ValueError, match="entries for 64 cells"):
+        hbc.kept_surface_soup(m, np.ones(3, bool))

@@ -81,6 +81,12 @@ BlockSoup build_soup(const Mesh& mesh, const OwnedFaces& faces, double shrink = 
 BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1,
                      double shrink = 0.0);
 
+// The surface of a set of cells (kept[c] != 0; nc entries, else std::invalid_argument): every face
+// of a kept cell whose other side is not kept or is the boundary, owner = cell id, pointing out of
+// the kept cell. What a viewer draws of a filtered (sliced, peeled, ...) cell view: the faces
+// between two kept cells are never seen, so only this surface is rebuilt when a filter changes.
+BlockSoup kept_surface_soup(const Mesh& mesh, std::span<const uint8_t> kept, double shrink = 0.0);
+
 // The vertex centroid of every cell: 3 * nc doubles, the mean of the cell's distinct vertices
 // (the point the add-on's slicing plane tests, so a cell is on one side or the other as a whole).
 std::vector<double> cell_centroids(const Mesh& mesh);

@@ -77,6 +77,31 @@ void bind_wireframe(py::module_& m) {
       "reference_components, shown_components.");
 }
 
+py::dict soup_dict(BlockSoup&& s) {
+  const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces()), nfv = ssize(s.face_vertices.size());
+  py::dict d;
+  d["positions"] = adopt(std::move(s.positions), {np, 3});
+  d["face_sizes"] = adopt(std::move(s.face_sizes), {nf});
+  d["face_vertices"] = adopt(std::move(s.face_vertices), {nfv});
+  d["face_owner"] = adopt(std::move(s.face_owner), {nf});
+  d["face_source"] = adopt(std::move(s.face_source), {nf});
+  d["face_cell"] = adopt(std::move(s.face_cell), {nf});
+  d["point_vertex"] = adopt(std::move(s.point_vertex), {np});
+  return d;
+}
+
+using MaskArray = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>;
+
+py::dict kept_surface(const PyMeshPtr& mesh, const MaskArray& kept, double shrink) {
+  if (kept.ndim() != 1) throw std::invalid_argument("kept_surface_soup: kept must be 1-D");
+  BlockSoup s;
+  {
+    py::gil_scoped_release unlocked;
+    s = kept_surface_soup(mesh->mesh, {kept.data(), static_cast<size_t>(kept.size())}, shrink);
+  }
+  return soup_dict(std::move(s));
+}
+
 py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
                     double shrink) {
   const SoupKind kind = soup_kind_from_name(what);
@@ -92,16 +117,7 @@ py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const 
     s = analysis ? hbc::block_soup(mesh->mesh, analysis->analysis, kind, sheet, shrink)
                  : hbc::block_soup(mesh->mesh, Analysis{}, kind, sheet, shrink);
   }
-  const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces()), nfv = ssize(s.face_vertices.size());
-  py::dict d;
-  d["positions"] = adopt(std::move(s.positions), {np, 3});
-  d["face_sizes"] = adopt(std::move(s.face_sizes), {nf});
-  d["face_vertices"] = adopt(std::move(s.face_vertices), {nfv});
-  d["face_owner"] = adopt(std::move(s.face_owner), {nf});
-  d["face_source"] = adopt(std::move(s.face_source), {nf});
-  d["face_cell"] = adopt(std::move(s.face_cell), {nf});
-  d["point_vertex"] = adopt(std::move(s.point_vertex), {np});
-  return d;
+  return soup_dict(std::move(s));
 }
 
 py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArray& vertices) {
@@ -142,6 +158,10 @@ void bind_geometry(py::module_& m) {
         "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids, "
         "face_cell int32 (nf,) the mesh cell on the owner's side (the face points out of it). "
         "Loops are outward; faces grouped by increasing owner.");
+  m.def("kept_surface_soup", &kept_surface, py::arg("mesh"), py::arg("kept"), py::arg("shrink") = 0.0,
+        "The surface of a set of cells as block_soup's dict (owner = cell): every face of a kept cell "
+        "(kept: (num_cells,) bool/uint8) whose other side is not kept or is the boundary, pointing out "
+        "of the kept cell.");
   m.def("cell_centroids", &cell_centroid_array, py::arg("mesh"),
         "float64 (num_cells, 3): the mean of each cell's distinct vertices.");
   m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("vertices"),
