@@ -232,9 +232,8 @@ def _set_attr(me, name, kind, values):
     attr.data.foreach_set(key, np.ascontiguousarray(values).ravel())
 
 
-def equip_object(tx, ob, data, in_sheet):
-    """Writes the per-face attributes of ob's faces and adds the shared filter modifier."""
-    me = ob.data
+def write_attributes(me, data, in_sheet):
+    """The per-face attributes of a mesh with `hbc_cell`, copied from the per-cell arrays."""
     cells = _face_cells(me)
     _set_attr(me, "hbc_cell_type", "INT", data["type"][cells])
     _set_attr(me, "hbc_quality", "FLOAT", data["quality"][cells])
@@ -242,9 +241,17 @@ def equip_object(tx, ob, data, in_sheet):
     _set_attr(me, "hbc_block", "INT", data["block"][cells])
     _set_attr(me, "hbc_in_sheet", "INT", in_sheet[cells])
     _set_attr(me, "hbc_centroid", "FLOAT_VECTOR", data["centroid"][cells])
+
+
+def equip_object(tx, ob, data, in_sheet):
+    """Writes the per-face attributes of ob's faces and adds the shared filter modifier (a live
+    surface object gets no modifier: its filters are applied when its surface is rebuilt)."""
+    write_attributes(ob.data, data, in_sheet)
+    ob["hbc_inspect"] = True
+    if ob.get("hbc_surface"):
+        return
     mod = ob.modifiers.get(MODIFIER) or ob.modifiers.new(MODIFIER, "NODES")
     mod.node_group = inspect_group(tx)
-    ob["hbc_inspect"] = True
     apply_to_object(ob, settings())
 
 
@@ -280,14 +287,128 @@ def cell_colors(s, soup, by_quality: bool) -> np.ndarray:
 
 
 def build_direct_cells(tx, coll, s, st, name):
-    """The direct view's every cell (for looking inside), when Scene.hbc_inspect.direct_cells."""
+    """The direct view's every cell (for looking inside), when Scene.hbc_inspect.direct_cells.
+    Above `surface_above` cells, a live surface object instead (see `refresh_surface`)."""
     ins = settings()
     if ins is None or not ins.direct_cells or s.num_cells == 0:
         return 0
-    soup = cell_soup(s, getattr(st, "direct_shrink", 0.0))
-    S.soup_object(tx, coll, f"{name} cells", soup, cell_colors(s, soup, ins.color_by_quality), None,
-                  {"hbc_mesh": name, "hbc_layer": "direct", "hbc_part": "cells"})
+    shrink = float(getattr(st, "direct_shrink", 0.0))
+    props = {"hbc_mesh": name, "hbc_layer": "direct", "hbc_part": "cells", "hbc_shrink": shrink}
+    if s.num_cells > ins.surface_above:
+        props["hbc_surface"] = True
+        soup = surface_soup(s, kept_cells(s, ins, None), shrink)
+    else:
+        soup = cell_soup(s, shrink)
+    S.soup_object(tx, coll, f"{name} cells", soup, cell_colors(s, soup, ins.color_by_quality), None, props)
     return 1
+
+
+# ---------------------------------------------------------------------------------------------
+# Live surface: for large meshes the direct view's cells are not all in Blender; the filters are
+# applied to the cells here (numpy masks over the per-cell arrays) and C++ rebuilds the surface of
+# the kept cells (hbc.kept_surface_soup), which replaces the object's mesh. Same rules as the node
+# group: a cell is hidden whole, by its centroid, depth, type and scaled Jacobian.
+
+def _placement(ob):
+    """ob's matrix now: matrix_world lags behind a moved object until the depsgraph evaluates, its
+    own location/rotation/scale (matrix_basis) do not."""
+    return ob.matrix_basis if ob.parent is None else ob.matrix_world
+
+
+def _relative(ob, plane):
+    return _placement(ob).inverted() @ _placement(plane) if ob is not None else _placement(plane)
+
+
+def plane_in(ob, plane):
+    """(point, unit normal) of the plane Empty in ob's coordinates (Object Info's Relative)."""
+    from mathutils import Vector
+
+    rel = _relative(ob, plane)
+    n = rel.to_quaternion() @ Vector((0.0, 0.0, 1.0))
+    return np.array(rel.translation, np.float64), np.array(n, np.float64)
+
+
+def kept_cells(s, ins, ob) -> np.ndarray:
+    """(nc,) bool: the cells the settings keep, as the node group decides for faces."""
+    data = cell_data(s)
+    keep = np.ones(s.num_cells, bool)
+    if not ins.enabled:
+        return keep
+    if ins.slice and ins.plane is not None:
+        p, n = plane_in(ob, ins.plane)
+        far = (data["centroid"] - p.astype(np.float32)) @ n.astype(np.float32) > 0
+        keep &= far == bool(ins.flip)
+    if ins.peel > 0:
+        keep &= data["depth"] >= ins.peel
+    keep &= ((type_mask(ins) >> data["type"]) & 1).astype(bool)
+    if ins.filter_quality:
+        keep &= (data["quality"] >= ins.quality_min) & (data["quality"] <= ins.quality_max)
+    return keep
+
+
+def surface_soup(s, keep, shrink=0.0) -> P.Soup:
+    soup = P.Soup.from_dict(_hbc().kept_surface_soup(s.mesh, np.asarray(keep, np.uint8), shrink=float(shrink)))
+    if s.scale != 1.0:
+        soup.positions = soup.positions * np.float32(s.scale)
+    return soup
+
+
+def _surface_key(ob, ins):
+    """What the surface depends on beyond the settings' update callbacks: the plane's placement."""
+    if ins.plane is None:
+        return ()
+    return tuple(round(x, 7) for row in _relative(ob, ins.plane) for x in row)
+
+
+def refresh_surface(ob, s, ins):
+    """Rebuilds a live surface object's mesh for the current settings."""
+    soup = surface_soup(s, kept_cells(s, ins, ob), ob.get("hbc_shrink", 0.0))
+    old = ob.data
+    with S.Transaction() as tx:
+        me = S._mesh_from_soup(tx, old.name, soup, cell_colors(s, soup, ins.color_by_quality))
+    for mat in old.materials:
+        me.materials.append(mat)
+    hbc_settings = getattr(bpy.context.scene, "hbc", None)
+    write_attributes(me, cell_data(s), sheet_mask(s, int(getattr(hbc_settings, "sheet_index", -1))))
+    name = old.name
+    ob.data = me
+    bpy.data.meshes.remove(old)
+    me.name = name
+    ob["hbc_surface_key"] = _surface_key(ob, ins)
+
+
+_REFRESHING = []
+
+
+def refresh_all(context=None, only_moved=False):
+    """Rebuilds the live surfaces of the active mesh (with only_moved, those whose plane moved)."""
+    if _REFRESHING:
+        return
+    context = context or bpy.context
+    ins = settings(context.scene)
+    root = _active_root(context)
+    s = session.get(root.name) if root is not None else None
+    if ins is None or s is None:
+        return
+    _REFRESHING.append(True)
+    try:
+        for ob in inspected_objects(root):
+            if ob.get("hbc_surface") and not (only_moved and tuple(ob.get("hbc_surface_key", ())) == _surface_key(ob, ins)):
+                refresh_surface(ob, s, ins)
+    finally:
+        _REFRESHING.clear()
+
+
+@bpy.app.handlers.persistent  # kept when a file is opened
+def _on_depsgraph(scene, depsgraph=None):
+    """Dragging the plane: rebuild the live surfaces when it moved."""
+    ins = getattr(scene, "hbc_inspect", None)
+    if ins is None or ins.plane is None or not ins.direct_cells:
+        return
+    try:
+        refresh_all(bpy.context, only_moved=True)
+    except Exception as e:  # noqa: BLE001 - a handler cannot report; the surface stays as it was
+        print(f"hbc: live surface: {e}")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -317,7 +438,7 @@ def set_filters(ob, values, enabled=True):
 
 
 def apply_to_object(ob, ins):
-    if ins is not None:
+    if ins is not None and not ob.get("hbc_surface"):
         set_filters(ob, filter_values(ins), ins.enabled)
 
 
@@ -337,6 +458,7 @@ def apply(context=None):
     ins = settings(context.scene)
     for ob in inspected_objects(_active_root(context)):
         apply_to_object(ob, ins)
+    refresh_all(context)
 
 
 def recolor(context=None):
@@ -344,7 +466,7 @@ def recolor(context=None):
     context = context or bpy.context
     ins = settings(context.scene)
     for ob in inspected_objects(_active_root(context)):
-        if ob.get("hbc_part") != "cells":
+        if ob.get("hbc_part") != "cells" or ob.get("hbc_surface"):
             continue
         me = ob.data
         n = len(me.polygons)
@@ -392,6 +514,7 @@ def _upd(self, context):
 
 def _upd_color(self, context):
     recolor(context)
+    refresh_all(context)
 
 
 def _upd_cells(self, context):
@@ -426,6 +549,11 @@ class HBCInspectSettings(bpy.types.PropertyGroup):
                                  description="Show only the cells whose scaled Jacobian is in [min, max]")
     quality_min: FloatProperty(name="Min", default=-1.0, min=-1.0, max=1.0, update=_upd)
     quality_max: FloatProperty(name="Max", default=1.0, min=-1.0, max=1.0, update=_upd)
+    surface_above: IntProperty(name="Live surface above", default=100000, min=0,
+                               description="Meshes with more cells show only the surface of the kept cells in "
+                                           "the direct view, rebuilt in C++ when a filter or the plane changes "
+                                           "(fast for 10^6 cells); smaller ones hold every cell, filtered by "
+                                           "geometry nodes")
     # Legend swatches: the colour map at LEGEND_VALUES (display only).
     for _i, _c in enumerate(quality_colors(LEGEND_VALUES)):
         __annotations__[f"legend_{_i}"] = FloatVectorProperty(
@@ -477,6 +605,7 @@ class HBC_PT_inspect(bpy.types.Panel):
         row.prop(ins, "plane", text="")
         row.operator("hbc.add_cut_plane", text="", icon="ADD")
         box.prop(ins, "peel")
+        box.prop(ins, "surface_above")
         row = box.row(align=True)
         for n in TYPE_NAMES:
             row.prop(ins, f"show_{n}", toggle=True)
@@ -512,7 +641,10 @@ classes = (HBCInspectSettings, HBC_OT_add_cut_plane, HBC_PT_inspect)
 
 def register_props():
     bpy.types.Scene.hbc_inspect = PointerProperty(type=HBCInspectSettings)
+    bpy.app.handlers.depsgraph_update_post.append(_on_depsgraph)
 
 
 def unregister_props():
+    if _on_depsgraph in bpy.app.handlers.depsgraph_update_post:
+        bpy.app.handlers.depsgraph_update_post.remove(_on_depsgraph)
     del bpy.types.Scene.hbc_inspect

@@ -67,6 +67,7 @@ def reset(clean_scene):
         setattr(ins, key, False)
     ins.peel = 0
     ins.plane = None
+    ins.enabled = True
     for n in ("hex", "tet", "prism", "pyramid", "polyhedron"):
         setattr(ins, f"show_{n}", True)
     yield ins
@@ -182,3 +183,37 @@ def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
     reset.enabled = False
     assert sum(evaluated_cells(o)[0] for o in S.find_layer(root, "blocks").all_objects) == before
     reset.enabled = True
+
+
+def test_live_surface_of_a_large_mesh(reset, tmp_path):
+    """Above `surface_above` cells the direct view holds only the surface of the kept cells, rebuilt
+    by C++ when a filter changes or the plane moves: counts on a 10x10x10 grid (cell centroids at
+    integer + 1/2 along each axis, in grid units)."""
+    from hybrid_base_complex import inspect as I
+
+    reset.surface_above = 100
+    try:
+        root = import_mesh(generate(tmp_path, "grid", "--size", "10", "10", "10"))
+        ob = cells_object(root)
+        assert ob.get("hbc_surface") and ob.modifiers.get(I.MODIFIER) is None
+        assert evaluated_cells(ob)[0] == 600  # the boundary of the whole grid
+        reset.peel = 1
+        nf, cells = evaluated_cells(cells_object(root))
+        assert nf == 6 * 64 and len(cells) == 8 ** 3 - 6 ** 3
+        reset.peel = 0
+        _, cen = cell_arrays(cells_object(root))
+        lo, hi = cen.min(axis=0), cen.max(axis=0)
+        # Halfway: the 5 layers with centroid x below the plane, a 5x10x10 box: 2 (50 + 50 + 100) faces.
+        I.add_plane(bpy.context, tuple(lo + (hi - lo) * 0.5), (1, 0, 0))
+        assert evaluated_cells(cells_object(root))[0] == 400
+        reset.flip = True
+        assert evaluated_cells(cells_object(root))[0] == 400
+        reset.flip = False
+        # Dragging the plane (the depsgraph handler rebuilds): 3 layers left, 2 (30 + 30 + 100) faces.
+        reset.plane.location.x = float(lo[0] + (hi[0] - lo[0]) * 0.25)
+        bpy.context.view_layer.update()
+        assert evaluated_cells(cells_object(root))[0] == 320
+        reset.show_hex = False
+        assert evaluated_cells(cells_object(root))[0] == 0
+    finally:
+        reset.surface_above = 100000
