@@ -10,10 +10,11 @@ Targets (issue 7): every layer of teapot.hedra under 2 s; a generated 100k-cell 
 sheet and subsheet layers use the largest self-intersecting sheet when there is one, else sheet 0.
 Exit status 1 when a target is missed (--no-targets to only report).
 
---inspect (issue 17) adds the direct view's cells (every cell, with the inspection attributes and
-the filter modifier; column `cells`) and times one update of the sliced direct view: the slicing
-plane (an Empty through the mesh centre) is moved and the scene evaluated, median of --repeat
-moves (column `slice`; target 0.2 s at 10^6 cells). --no-analysis imports without analysing (the
+--inspect (issue 17) adds the direct view's cells (column `cells`: every cell with the filter
+modifier, or above the add-on's live-surface threshold the surface of the kept cells) and times
+one update of the sliced direct view: the slicing plane (an Empty through the mesh centre) is
+moved and the scene evaluated, which rebuilds the live surface, median of --repeat moves (column
+`slice`; target 0.2 s at 10^6 cells). --no-analysis imports without analysing (the
 direct view needs none), e.g. for `hbc generate grid --size 100 100 100 -o grid100.ovm`.
 """
 
@@ -34,6 +35,9 @@ def parse():
     ap.add_argument("--inspect", action="store_true", help="time the sliced direct view (issue 17)")
     ap.add_argument("--no-analysis", action="store_true", help="import without analysing")
     ap.add_argument("--repeat", type=int, default=3, help="plane moves timed for --inspect")
+    ap.add_argument("--surface-above", type=int, default=None,
+                    help="the add-on's live-surface threshold (cells) for --inspect; a large value times "
+                         "the geometry-nodes filter on every cell instead")
     ap.add_argument("meshes", nargs="+")
     return ap.parse_args(argv)
 
@@ -76,7 +80,7 @@ def main():
 
     addon.register()
     analysed = hasattr(import_hbc().Mesh, "analyze") and not args.no_analysis
-    if not analysed:
+    if not analysed and not args.no_analysis:
         print("bench_addon: this hbc has no Mesh.analyze: only the direct view is measured", flush=True)
     rows = []
     failed = False
@@ -109,6 +113,8 @@ def main():
         bpy.context.evaluated_depsgraph_get().update()
         times["evaluate"] = time.perf_counter() - t
         if args.inspect:
+            if args.surface_above is not None:
+                bpy.context.scene.hbc_inspect.surface_above = args.surface_above
             times.update(time_slice(root, s, args.repeat))
         total = sum(v for k, v in times.items() if k != "slice")
         if args.inspect and not args.no_targets and s.num_cells >= 10 ** 6 and times["slice"] > 0.2:

@@ -340,7 +340,8 @@ def kept_cells(s, ins, ob) -> np.ndarray:
         keep &= far == bool(ins.flip)
     if ins.peel > 0:
         keep &= data["depth"] >= ins.peel
-    keep &= ((type_mask(ins) >> data["type"]) & 1).astype(bool)
+    if type_mask(ins) != ALL_TYPES:
+        keep &= ((type_mask(ins) >> data["type"]) & 1).astype(bool)
     if ins.filter_quality:
         keep &= (data["quality"] >= ins.quality_min) & (data["quality"] <= ins.quality_max)
     return keep

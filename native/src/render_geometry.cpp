@@ -27,6 +27,13 @@ int32_t across(const Mesh& m, int32_t f, int32_t c) {
   return a == c ? b : a;
 }
 
+// cell_face_flip of face f in cell c's row (f must be a face of c).
+uint8_t face_flip(const Mesh& m, int32_t f, int32_t c) {
+  for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i)
+    if (m.cell_faces.items[static_cast<size_t>(i)] == f) return m.cell_face_flip[static_cast<size_t>(i)];
+  return 0;
+}
+
 // Appends the faces of cell c (oriented out of c) for which keep(face) holds.
 template <class Keep>
 void add_cell_faces(const Mesh& m, int32_t c, int32_t owner, OwnedFaces& out, Keep keep) {
@@ -231,13 +238,18 @@ BlockSoup kept_surface_soup(const Mesh& m, std::span<const uint8_t> kept, double
   if (kept.size() != m.num_cells())
     throw std::invalid_argument("kept: " + std::to_string(kept.size()) + " entries for " +
                                 std::to_string(m.num_cells()) + " cells");
+  // One pass over the faces in order (streaming face_cells): this runs on every drag of a slicing
+  // plane, and a pass over the cells' faces reads face_cells at random, several times slower.
   OwnedFaces out;
-  for (int32_t c = 0; c < static_cast<int32_t>(m.num_cells()); ++c) {
-    if (!kept[static_cast<size_t>(c)]) continue;
-    add_cell_faces(m, c, c, out, [&](int32_t f) {
-      const int32_t o = across(m, f, c);
-      return o < 0 || !kept[static_cast<size_t>(o)];
-    });
+  for (size_t f = 0; f < m.num_faces(); ++f) {
+    const auto [a, b] = m.face_cells[f];
+    const bool ka = kept[static_cast<size_t>(a)] != 0, kb = b >= 0 && kept[static_cast<size_t>(b)] != 0;
+    if (ka == kb) continue;
+    const int32_t c = ka ? a : b;
+    out.owner.push_back(c);
+    out.face.push_back(static_cast<int32_t>(f));
+    out.cell.push_back(c);
+    out.reversed.push_back(face_flip(m, static_cast<int32_t>(f), c));
   }
   return build_soup(m, out, shrink);
 }
