@@ -18,6 +18,12 @@ How it works:
   Moving or turning the Empty re-evaluates the modifier (a depsgraph relation), so the cut follows
   the drag; the panel's settings (Scene.hbc_inspect) set the modifier inputs of every equipped
   object of the active mesh through their update callbacks.
+- Large meshes. Above `surface_above` cells (Scene.hbc_inspect, 100 000) the direct view's cells
+  object is a live surface instead: only the surface of the kept cells, made by C++
+  (hbc.kept_surface_soup) from a mask computed here with the same rules, and rebuilt by the
+  update callbacks and, when the plane moves, by a depsgraph handler. The node group over every
+  cell costs seconds per move at 10^6 cells; the live surface well under 0.2 s
+  (blender_scripts/bench_addon.py --inspect).
 - The cut. A cell is kept or hidden whole, by its centroid: the cells the plane crosses whose
   centroid is on the near side keep all their faces, so the cut surface is made of whole cells
   standing out of the plane by up to half a cell (HexaLab's look), never of sliced polygons. On the
