@@ -8,13 +8,14 @@ How it works:
   in C++ (hbc.cell_quality, hbc.cell_depth, hbc.cell_centroids, the analysis' cell_component and
   the picked sheet's cells) onto the faces, as FACE attributes: `hbc_cell_type` (int, CellType),
   `hbc_quality` (float, scaled Jacobian), `hbc_depth` (int), `hbc_block` (int, component id, -1
-  without an analysis), `hbc_in_sheet` (int 0/1: the cell is in the sheet picked when the layer was
-  built), `hbc_centroid` (float vector, the cell's vertex centroid, in the object's coordinates).
+  without an analysis), `hbc_in_sheet` (int 0/1: the cell is in the picked sheet; rewritten when
+  another sheet is picked), `hbc_centroid` (float vector, the cell's vertex centroid, in the object's coordinates).
 - Filters. One shared geometry-nodes group (`HBC Inspect`) on every equipped object deletes the
   faces whose cell is hidden: centroid on the far side of the plane (the +Z side of the plane
   Empty, read with Object Info relative to the object; `Flip` swaps the sides), depth < `Peel`, cell
   type not in the `Types` bit mask (bit t for CellType t: 1 hex, 2 tet, 4 prism, 8 pyramid, 16
-  polyhedron), scaled Jacobian outside [`Quality Min`, `Quality Max`] when `Filter Quality` is on.
+  polyhedron), scaled Jacobian outside [`Quality Min`, `Quality Max`] when `Filter Quality` is on,
+  cell outside the picked sheet when `Sheet Only` is on.
   Moving or turning the Empty re-evaluates the modifier (a depsgraph relation), so the cut follows
   the drag; the panel's settings (Scene.hbc_inspect) set the modifier inputs of every equipped
   object of the active mesh through their update callbacks.
@@ -45,7 +46,7 @@ from . import scene as S
 from . import session
 
 GROUP = "HBC Inspect"
-GROUP_VERSION = 1
+GROUP_VERSION = 2
 MODIFIER = "HBC Inspect"
 CELL_ATTR = S.CELL_ATTR
 INSPECT_LAYERS = ("direct", "blocks", "sheets", "sheet", "subsheets")
@@ -184,6 +185,7 @@ def inspect_group(tx):
     sock("NodeSocketBool", "Filter Quality", False)
     sock("NodeSocketFloat", "Quality Min", -1.0)
     sock("NodeSocketFloat", "Quality Max", 1.0)
+    sock("NodeSocketBool", "Sheet Only", False)
     compat.group_socket(ng, "OUTPUT", "NodeSocketGeometry", "Geometry")
     compat.mark_modifier_group(ng)
     gi, go = ng.nodes.new("NodeGroupInput"), ng.nodes.new("NodeGroupOutput")
@@ -208,7 +210,8 @@ def inspect_group(tx):
     delete.domain = "FACE"
     delete.mode = "ALL"
     ng.links.new(g["Geometry"], delete.inputs["Geometry"])
-    ng.links.new(_any(ng, cut, peeled, typed, bad), delete.inputs["Selection"])
+    outside = _math(ng, "MULTIPLY", g["Sheet Only"], _math(ng, "LESS_THAN", _named(ng, "hbc_in_sheet", "INT"), 0.5))
+    ng.links.new(_any(ng, cut, peeled, typed, bad, outside), delete.inputs["Selection"])
     ng.links.new(delete.outputs["Geometry"], go.inputs["Geometry"])
     return ng
 
@@ -271,9 +274,11 @@ def equip_layer(tx, coll, layer, s, st):
     if not obs:
         return 0
     data = cell_data(s)
-    in_sheet = sheet_mask(s, int(getattr(st, "sheet_index", -1)))
+    sheet = int(getattr(st, "sheet_index", -1))
+    in_sheet = sheet_mask(s, sheet)
     for ob in obs:
         equip_object(tx, ob, data, in_sheet)
+        ob["hbc_in_sheet_of"] = sheet
     return len(obs)
 
 
@@ -348,6 +353,8 @@ def kept_cells(s, ins, ob) -> np.ndarray:
         keep &= data["depth"] >= ins.peel
     if type_mask(ins) != ALL_TYPES:
         keep &= ((type_mask(ins) >> data["type"]) & 1).astype(bool)
+    if ins.sheet_only:
+        keep &= sheet_mask(s, _picked_sheet()).astype(bool)
     if ins.filter_quality:
         keep &= (data["quality"] >= ins.quality_min) & (data["quality"] <= ins.quality_max)
     return keep
@@ -375,8 +382,8 @@ def refresh_surface(ob, s, ins):
         me = S._mesh_from_soup(tx, old.name, soup, cell_colors(s, soup, ins.color_by_quality))
     for mat in old.materials:
         me.materials.append(mat)
-    hbc_settings = getattr(bpy.context.scene, "hbc", None)
-    write_attributes(me, cell_data(s), sheet_mask(s, int(getattr(hbc_settings, "sheet_index", -1))))
+    write_attributes(me, cell_data(s), sheet_mask(s, _picked_sheet()))
+    ob["hbc_in_sheet_of"] = _picked_sheet()
     name = old.name
     ob.data = me
     bpy.data.meshes.remove(old)
@@ -406,14 +413,43 @@ def refresh_all(context=None, only_moved=False):
         _REFRESHING.clear()
 
 
+def _picked_sheet() -> int:
+    return int(getattr(getattr(bpy.context.scene, "hbc", None), "sheet_index", -1))
+
+
+def follow_picked_sheet(context=None):
+    """Rewrites `hbc_in_sheet` of the objects built for another sheet than the picked one (the
+    sheet list's pick changes Scene.hbc.sheet_index, which the depsgraph handler notices)."""
+    if _REFRESHING:
+        return
+    context = context or bpy.context
+    root = _active_root(context)
+    s = session.get(root.name) if root is not None else None
+    if s is None:
+        return
+    sheet, mask = _picked_sheet(), None
+    for ob in inspected_objects(root):
+        if ob.get("hbc_in_sheet_of", -1) == sheet:
+            continue
+        mask = sheet_mask(s, sheet) if mask is None else mask
+        _set_attr(ob.data, "hbc_in_sheet", "INT", mask[_face_cells(ob.data)])
+        ob["hbc_in_sheet_of"] = sheet
+        ob.data.update()
+        if ob.get("hbc_surface"):
+            refresh_surface(ob, s, settings(context.scene))
+
+
 @bpy.app.handlers.persistent  # kept when a file is opened
 def _on_depsgraph(scene, depsgraph=None):
-    """Dragging the plane: rebuild the live surfaces when it moved."""
+    """Dragging the plane: rebuild the live surfaces when it moved; a newly picked sheet: its
+    membership attribute."""
     ins = getattr(scene, "hbc_inspect", None)
-    if ins is None or ins.plane is None or not ins.direct_cells:
+    if ins is None:
         return
     try:
-        refresh_all(bpy.context, only_moved=True)
+        follow_picked_sheet(bpy.context)
+        if ins.plane is not None and ins.direct_cells:
+            refresh_all(bpy.context, only_moved=True)
     except Exception as e:  # noqa: BLE001 - a handler cannot report; the surface stays as it was
         print(f"hbc: live surface: {e}")
 
@@ -429,7 +465,8 @@ def filter_values(ins) -> dict:
     """The modifier inputs for the settings Scene.hbc_inspect holds."""
     return {"Plane": ins.plane, "Slice": bool(ins.slice and ins.plane is not None), "Flip": bool(ins.flip),
             "Peel": int(ins.peel), "Types": type_mask(ins), "Filter Quality": bool(ins.filter_quality),
-            "Quality Min": float(ins.quality_min), "Quality Max": float(ins.quality_max)}
+            "Quality Min": float(ins.quality_min), "Quality Max": float(ins.quality_max),
+            "Sheet Only": bool(ins.sheet_only)}
 
 
 def set_filters(ob, values, enabled=True):
@@ -556,6 +593,8 @@ class HBCInspectSettings(bpy.types.PropertyGroup):
                                  description="Show only the cells whose scaled Jacobian is in [min, max]")
     quality_min: FloatProperty(name="Min", default=-1.0, min=-1.0, max=1.0, update=_upd)
     quality_max: FloatProperty(name="Max", default=1.0, min=-1.0, max=1.0, update=_upd)
+    sheet_only: BoolProperty(name="Picked sheet only", default=False, update=_upd,
+                             description="Show only the cells of the sheet picked in the sheet list")
     surface_above: IntProperty(name="Live surface above", default=100000, min=0,
                                description="Meshes with more cells show only the surface of the kept cells in "
                                            "the direct view, rebuilt in C++ when a filter or the plane changes "
@@ -620,6 +659,7 @@ class HBC_PT_inspect(bpy.types.Panel):
         row.prop(ins, "filter_quality")
         row.prop(ins, "quality_min")
         row.prop(ins, "quality_max")
+        box.prop(ins, "sheet_only")
         self.draw_quality(layout, context, ins)
 
     @staticmethod

@@ -63,7 +63,7 @@ def cell_arrays(ob):
 @pytest.fixture
 def reset(clean_scene):
     ins = bpy.context.scene.hbc_inspect
-    for key in ("slice", "flip", "filter_quality", "direct_cells", "color_by_quality"):
+    for key in ("slice", "flip", "filter_quality", "direct_cells", "color_by_quality", "sheet_only"):
         setattr(ins, key, False)
     ins.peel = 0
     ins.plane = None
@@ -217,3 +217,22 @@ def test_live_surface_of_a_large_mesh(reset, tmp_path):
         assert evaluated_cells(cells_object(root))[0] == 0
     finally:
         reset.surface_above = 100000
+
+
+def test_picked_sheet_only_follows_the_pick(reset, data_dir):
+    """'Picked sheet only' keeps exactly the picked sheet's cells in the direct view; picking
+    another sheet in the list (Scene.hbc.sheet_index) moves the attribute and the view with it."""
+    from hybrid_base_complex import session
+
+    root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyse=True)
+    s = session.get(root.name)
+    st = bpy.context.scene.hbc
+    st.auto_show = False
+    st.sheet_index = 0
+    assert bpy.ops.hbc.build_layer(layer="direct") == {"FINISHED"}
+    reset.sheet_only = True
+    for sheet in (0, 1, 2):
+        st.sheet_index = sheet
+        bpy.context.view_layer.update()
+        shown = evaluated_cells(cells_object(root))[1]
+        assert np.array_equal(shown, np.sort(s.sheet_cells(sheet))), sheet
