@@ -9,6 +9,13 @@ Targets (issue 7): every layer of teapot.hedra under 2 s; a generated 100k-cell 
 (`hbc generate grid --size 50 40 50 -o x.mesh`, or a split grid as .ovm) under 20 s. The picked
 sheet and subsheet layers use the largest self-intersecting sheet when there is one, else sheet 0.
 Exit status 1 when a target is missed (--no-targets to only report).
+
+--inspect (issue 17) adds the direct view's cells (column `cells`: every cell with the filter
+modifier, or above the add-on's live-surface threshold the surface of the kept cells) and times
+one update of the sliced direct view: the slicing plane (an Empty through the mesh centre) is
+moved and the scene evaluated, which rebuilds the live surface, median of --repeat moves (column
+`slice`; target 0.2 s at 10^6 cells). --no-analysis imports without analysing (the
+direct view needs none), e.g. for `hbc generate grid --size 100 100 100 -o grid100.ovm`.
 """
 
 import argparse
@@ -25,8 +32,42 @@ def parse():
     ap.add_argument("--addon", required=True, help="the add-on package folder (built tree)")
     ap.add_argument("--split-max", type=int, default=None, help="blocks up to this many as separate objects")
     ap.add_argument("--no-targets", action="store_true")
+    ap.add_argument("--inspect", action="store_true", help="time the sliced direct view (issue 17)")
+    ap.add_argument("--no-analysis", action="store_true", help="import without analysing")
+    ap.add_argument("--repeat", type=int, default=3, help="plane moves timed for --inspect")
+    ap.add_argument("--surface-above", type=int, default=None,
+                    help="the add-on's live-surface threshold (cells) for --inspect; a large value times "
+                         "the geometry-nodes filter on every cell instead")
     ap.add_argument("meshes", nargs="+")
     return ap.parse_args(argv)
+
+
+def time_slice(root, s, repeat):
+    """{'cells': build of the direct view with every cell, 'slice': median seconds of one plane
+    move + evaluation of the sliced direct view}."""
+    import statistics
+
+    from hybrid_base_complex import inspect as I
+
+    t = time.perf_counter()
+    bpy.context.scene.hbc_inspect.direct_cells = True  # rebuilds the direct view with its cells
+    dg = bpy.context.evaluated_depsgraph_get()
+    dg.update()
+    out = {"cells": time.perf_counter() - t}
+    cells = next(o for o in root.all_objects if o.get("hbc_part") == "cells")
+    lo, hi = s.points.min(axis=0), s.points.max(axis=0)
+    plane = I.add_plane(bpy.context, tuple(float(x) for x in (lo + hi) / 2), (1.0, 0.3, 0.2))
+    dg.update()
+    spans = []
+    for i in range(repeat):
+        plane.location.x = float(lo[0] + (hi[0] - lo[0]) * (0.4 + 0.2 * i / max(repeat - 1, 1)))
+        t = time.perf_counter()
+        dg.update()
+        faces = len(cells.evaluated_get(dg).data.polygons)
+        spans.append(time.perf_counter() - t)
+        print(f"bench_addon: slice update {spans[-1]:.3f} s ({faces} faces shown)", flush=True)
+    out["slice"] = statistics.median(spans)
+    return out
 
 
 def main():
@@ -37,6 +78,7 @@ def main():
     from hybrid_base_complex import session
 
     addon.register()
+    analysed = not args.no_analysis
     rows = []
     failed = False
     for path in args.meshes:
@@ -45,16 +87,17 @@ def main():
         if args.split_max is not None:
             st.split_max = args.split_max
         t = time.perf_counter()
-        assert bpy.ops.import_mesh.hbc(filepath=path) == {"FINISHED"}
+        assert bpy.ops.import_mesh.hbc(filepath=path, analyze=analysed) == {"FINISHED"}
         t_import = time.perf_counter() - t
         root = L.find_root(st.active_mesh)
         s = session.get(root.name)
         times = {"import": t_import}
-        a = s.analysis
-        pick = int(a.largest_self_intersecting) if int(a.largest_self_intersecting) >= 0 else 0
-        st.sheet_index = pick if s.num_sheets else 0
-        layers = ["graph", "blocks", "sheets", "wireframe"]
-        if s.num_sheets:
+        layers = ["graph", "blocks", "sheets", "wireframe"] if analysed else []
+        if analysed:
+            a = s.analysis
+            pick = int(a.largest_self_intersecting) if int(a.largest_self_intersecting) >= 0 else 0
+            st.sheet_index = pick if s.num_sheets else 0
+        if analysed and s.num_sheets:
             layers.append("sheet")
             if int(s.sheet_types()[st.sheet_index]) == 3:
                 layers.append("subsheets")
@@ -66,7 +109,14 @@ def main():
         t = time.perf_counter()
         bpy.context.evaluated_depsgraph_get().update()
         times["evaluate"] = time.perf_counter() - t
-        total = sum(times.values())
+        if args.inspect:
+            if args.surface_above is not None:
+                bpy.context.scene.hbc_inspect.surface_above = args.surface_above
+            times.update(time_slice(root, s, args.repeat))
+        total = sum(v for k, v in times.items() if k != "slice")
+        if args.inspect and not args.no_targets and s.num_cells >= 10 ** 6 and times["slice"] > 0.2:
+            failed = True
+            print(f"bench_addon: {path}: slice update {times['slice']:.2f} s is over the 0.2 s target", flush=True)
         rows.append((os.path.basename(path), s.num_cells, len(bpy.data.objects), times, total))
         cells = s.num_cells
         limit = 2.0 if cells < 20000 else 20.0
@@ -75,6 +125,8 @@ def main():
             print(f"bench_addon: {path}: {total:.2f} s is over the {limit:.0f} s target", flush=True)
 
     keys = ["import", "graph", "blocks", "sheets", "wireframe", "sheet", "subsheets", "evaluate"]
+    if args.inspect:
+        keys += ["cells", "slice"]
     print("\n| mesh | cells | objects | " + " | ".join(keys) + " | total (s) |")
     print("|---|---:|---:|" + "---:|" * len(keys) + "---:|")
     for name, cells, objects, times, total in rows:

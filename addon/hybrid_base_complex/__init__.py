@@ -22,15 +22,16 @@ except ImportError:  # plain Python (unit tests): only the bpy-free modules are 
     bpy = None
 
 if bpy is not None:
-    from . import handlers, operators, panels, properties
+    from . import handlers, inspect, operators, panels, properties
 
-    _MODULES = (properties, operators, panels)
+    _MODULES = (properties, operators, panels, inspect)
 
     def register():
         for module in _MODULES:
             for cls in module.classes:
                 bpy.utils.register_class(cls)
         properties.register_props()
+        inspect.register_props()
         operators.register_menus()
         handlers.register()
 
@@ -38,6 +39,7 @@ if bpy is not None:
         handlers.unregister()
         operators.unregister_menus()
         properties.unregister_props()
+        inspect.unregister_props()
         for module in reversed(_MODULES):
             for cls in reversed(module.classes):
                 bpy.utils.unregister_class(cls)

@@ -8,6 +8,8 @@ is unambiguous, and on `bpy.app.version` otherwise; each branch names the releas
   strength default 0, `Specular` -> `Specular IOR Level`, ...): sockets are found by name only;
   node-group sockets through `ng.interface.new_socket`; `is_modifier` on geometry-node groups;
   `MeshPolygon.loop_total` read-only (derived from `loop_start`).
+- 4.2: Object Info's Rotation output is a Rotation socket (was an Euler vector): turned vectors
+  use Rotate Vector instead of Vector Rotate (checked on the socket's type).
 - 4.2: `Material.blend_method` -> `surface_render_method`, `show_transparent_back` ->
   `use_transparency_overlap`; EEVEE is `BLENDER_EEVEE_NEXT` (until 4.5, `BLENDER_EEVEE` again
   from 5.0).
@@ -131,6 +133,21 @@ def mark_modifier_group(ng):
     """Geometry-node groups are offered as modifiers only when flagged so (4.0+)."""
     if hasattr(ng, "is_modifier"):
         ng.is_modifier = True
+
+
+def rotate_by_object_rotation(ng, vector, rotation):
+    """A node output: `vector` (a constant) turned by Object Info's Rotation output. 3.x-4.x give an
+    Euler vector (Vector Rotate, Euler XYZ); where the output is a Rotation socket (4.2+), the
+    Rotate Vector node takes it as it is."""
+    if getattr(rotation, "type", "VECTOR") == "ROTATION":
+        node = ng.nodes.new("FunctionNodeRotateVector")
+        node.inputs["Vector"].default_value = vector
+    else:
+        node = ng.nodes.new("ShaderNodeVectorRotate")
+        node.rotation_type = "EULER_XYZ"
+        node.inputs["Vector"].default_value = vector
+    ng.links.new(rotation, node.inputs["Rotation"])
+    return node.outputs["Vector"]
 
 
 def _input_identifier(ng, name: str) -> str:

@@ -13,6 +13,7 @@ import time
 import bpy
 import numpy as np
 
+from . import inspect
 from . import planning as P
 from . import scene as S
 
@@ -42,7 +43,7 @@ def build_direct(tx, coll, s, st, name):
         mat = S.material(tx, "flat", P.HEX_COLOR, 1.0)
         S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"))
         made += 1
-    return made
+    return made + inspect.build_direct_cells(tx, coll, s, st, name)
 
 
 def build_graph(tx, coll, s, st, name):
@@ -210,6 +211,7 @@ def build_into(tx, root, layer, s, st):
         S.retire_layer(tx, root, layer)
     coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
     BUILDERS[layer](tx, coll, s, st, name)
+    inspect.equip_layer(tx, coll, layer, s, st)
     return coll
 
 

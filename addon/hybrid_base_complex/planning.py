@@ -213,7 +213,8 @@ class Soup:
     def from_dict(d) -> "Soup":
         return Soup(np.asarray(d["positions"], np.float32).reshape(-1, 3),
                     np.asarray(d["face_sizes"], np.int32), np.asarray(d["face_vertices"], np.int32),
-                    np.asarray(d["face_owner"], np.int32))
+                    np.asarray(d["face_owner"], np.int32),
+                    np.asarray(d["face_cell"], np.int32) if "face_cell" in d else None)
 
     def select(self, face_mask) -> "Soup":
         """The faces where mask holds, with only the vertices they use."""
@@ -222,7 +223,7 @@ class Soup:
         fv = self.face_vertices[loop_mask]
         used, inverse = np.unique(fv, return_inverse=True)
         return Soup(self.positions[used], self.face_sizes[face_mask], inverse.astype(np.int32),
-                    self.face_owner[face_mask])
+                    self.face_owner[face_mask], None if self.face_cell is None else self.face_cell[face_mask])
 
 
 @dataclass

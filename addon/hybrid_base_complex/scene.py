@@ -25,6 +25,7 @@ from . import planning as P
 
 COLOR_ATTR = "hbc_color"
 OWNER_ATTR = "owner"
+CELL_ATTR = "hbc_cell"
 TUBE_GROUP = "HBC Tube"
 
 
@@ -184,6 +185,8 @@ def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
     compat.set_polygons(me, soup.loop_starts(), np.ascontiguousarray(soup.face_sizes, np.int32))
     owner = me.attributes.new(OWNER_ATTR, "INT", "FACE")
     owner.data.foreach_set("value", np.ascontiguousarray(soup.face_owner, np.int32))
+    if soup.face_cell is not None:  # the cell of each face, for the inspection filters (inspect.py)
+        me.attributes.new(CELL_ATTR, "INT", "FACE").data.foreach_set("value", np.ascontiguousarray(soup.face_cell, np.int32))
     if face_colors is not None:
         fc = np.asarray(face_colors, np.float32).reshape(-1, 4)
         corner = np.repeat(fc, soup.face_sizes, axis=0) if len(fc) == nf else np.broadcast_to(fc[0], (len(soup.face_vertices), 4))
@@ -226,6 +229,8 @@ def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of
         else:
             used, inverse = np.unique(loops, return_inverse=True)
             part = P.Soup(soup.positions[used], sizes, inverse.astype(np.int32), soup.face_owner[faces])
+        if soup.face_cell is not None:
+            part.face_cell = soup.face_cell[faces]
         name = name_of(int(owner)) if name_of else f"{prefix} {int(owner)}"
         rgba = tuple(float(c) for c in colors[int(owner)])
         # The colour also as the object's colour attribute, so Solid > Attribute shows it.

@@ -21,9 +21,16 @@ PANELS = (
     ("wireframe", "f", "Simplified VSG wireframe"),
     ("subsheets", "g", "Subsheets"),
 )
-PANEL_KEYS = tuple(k for k, _, _ in PANELS)
-PANEL_LETTER = {k: l for k, l, _ in PANELS}
-PANEL_TITLE = {k: t for k, _, t in PANELS}
+#: Inspection panels (issue 17), rendered only when asked for with --panels: the base complex
+#: blocks cut by a plane, and the cells coloured by scaled Jacobian (viridis), cut the same way.
+INSPECT_PANELS = (
+    ("cut", "h", "Base complex, cut"),
+    ("quality", "i", "Scaled Jacobian (viridis, 0 purple to 1 yellow), cut"),
+)
+PANEL_KEYS = tuple(k for k, _, _ in PANELS)  # the default set
+ALL_PANEL_KEYS = PANEL_KEYS + tuple(k for k, _, _ in INSPECT_PANELS)
+PANEL_LETTER = {k: l for k, l, _ in PANELS + INSPECT_PANELS}
+PANEL_TITLE = {k: t for k, _, t in PANELS + INSPECT_PANELS}
 
 #: Rows of the comparison figure (the paper's Figs. 8-10): mesh, singularity graph, base complex,
 #: VSG wireframe of the whole mesh, a representative (imperfect) sheet.
@@ -69,7 +76,10 @@ def parser():
                     help="sheet of panels d-g (default: the largest self-intersecting sheet, else the "
                          "largest imperfect one, else the largest)")
     ap.add_argument("--panels", default=",".join(PANEL_KEYS),
-                    help="comma-separated subset of " + ",".join(PANEL_KEYS))
+                    help="comma-separated subset of " + ",".join(ALL_PANEL_KEYS) + " (default: the first seven)")
+    ap.add_argument("--cut-plane", type=float, nargs=6, metavar=("PX", "PY", "PZ", "NX", "NY", "NZ"), default=None,
+                    help="plane of the cut and quality panels: a point and a normal pointing to the hidden "
+                         "side (default: through the bounding-box centre, facing the camera)")
     ap.add_argument("--max-subsheets", type=int, default=4, help="largest subsheets shown in panel g")
     ap.add_argument("--up", choices=("x", "y", "z"), default="z", help="the mesh's up axis")
     ap.add_argument("--azimuth", type=float, default=-50.0, help="view azimuth in degrees around up")
@@ -94,15 +104,29 @@ def parse(argv):
     if args.samples is not None and args.samples < 1:
         ap.error("--samples must be at least 1")
     keys = [k.strip() for k in args.panels.split(",") if k.strip()]
-    bad = [k for k in keys if k not in PANEL_KEYS]
+    bad = [k for k in keys if k not in ALL_PANEL_KEYS]
     if bad or not keys:
-        ap.error(f"--panels: unknown {','.join(bad) or '(none)'}; choose from {','.join(PANEL_KEYS)}")
-    args.panels = [k for k in PANEL_KEYS if k in keys]
+        ap.error(f"--panels: unknown {','.join(bad) or '(none)'}; choose from {','.join(ALL_PANEL_KEYS)}")
+    args.panels = [k for k in ALL_PANEL_KEYS if k in keys]
+    if args.cut_plane is not None and not np.any(np.asarray(args.cut_plane[3:])):
+        ap.error("--cut-plane: the normal must not be zero")
     if args.max_subsheets < 1:
         ap.error("--max-subsheets must be at least 1")
     if args.samples is None:
         args.samples = 16
     return args
+
+
+def cut_plane(points, direction, requested=None):
+    """(point, unit normal) of the cut panels: `requested` (px py pz nx ny nz), else through the
+    bounding-box centre with the normal towards the camera (`direction`), so the near half is
+    hidden and the cut faces the viewer."""
+    if requested is not None:
+        p, n = np.asarray(requested[:3], np.float64), np.asarray(requested[3:], np.float64)
+    else:
+        pts = np.asarray(points, np.float64).reshape(-1, 3)
+        p, n = (pts.min(axis=0) + pts.max(axis=0)) / 2.0, np.asarray(direction, np.float64)
+    return p, n / np.linalg.norm(n)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -56,6 +56,7 @@ class Addon:
         self.structure = importlib.import_module(name + ".structure")
         self.properties = importlib.import_module(name + ".properties")
         self.compat = importlib.import_module(name + ".compat")
+        self.inspect = importlib.import_module(name + ".inspect")
 
     def settings(self, **overrides):
         """The panel's settings with the add-on's defaults (read from its property definitions)."""
@@ -448,6 +449,52 @@ class Subject:
                 if ob is not None:
                     ob["hbc_subsheet"] = k
         return coll, picked, int(sub.count)
+
+    def cut_plane_object(self):
+        """The Empty cutting the cut and quality panels (made once; empties do not render)."""
+        if "plane" not in self.shared:
+            p, n = plan.cut_plane(self.points, self.direction, self.args.cut_plane)
+            ob = bpy.data.objects.new(f"{self.name} cut plane", None)
+            ob.location = tuple(p)
+            ob.rotation_euler = self.addon.inspect.plane_rotation(tuple(n))
+            self.scene.collection.objects.link(ob)
+            self.shared["plane"] = ob
+        return self.shared["plane"]
+
+    def cut(self, coll):
+        """Turns on the slicing filter of every equipped object of coll."""
+        plane = self.cut_plane_object()
+        for ob in coll.all_objects:
+            self.addon.inspect.set_filters(ob, {"Plane": plane, "Slice": True})
+        return plane
+
+    def kept_by_cut(self, soup):
+        """Faces of a soup (with face_cell) whose cell the cut keeps, for outlines."""
+        p, n = plan.cut_plane(self.points, self.direction, self.args.cut_plane)
+        cen = self.addon.inspect.cell_data(self.s)["centroid"][soup.face_cell]
+        return soup.select((cen - p) @ n <= 0)
+
+    def panel_cut(self):
+        """The base complex blocks sliced by the plane (whole cells kept by their centroid)."""
+        coll = self.build("cut", "blocks")
+        self.cut(coll)
+        with self.addon.S.Transaction() as tx:
+            self.outline(tx, coll, f"{self.name} cut block outlines", self.kept_by_cut(self.s.blocks(self.st().shrink)))
+        return [coll]
+
+    def panel_quality(self):
+        """Every cell coloured by its scaled Jacobian (viridis), sliced by the plane."""
+        I, S = self.addon.inspect, self.addon.S
+        coll = self._new_coll("quality")
+        with S.Transaction() as tx:
+            soup = I.cell_soup(self.s)
+            ob = S.soup_object(tx, coll, f"{self.name} cells by quality", soup, I.cell_colors(self.s, soup, True),
+                               None, {"hbc_mesh": self.name, "hbc_layer": "direct", "hbc_part": "cells"})
+            I.equip_object(tx, ob, I.cell_data(self.s), I.sheet_mask(self.s, -1))
+            self.outline(tx, coll, f"{self.name} cut cell edges", self.kept_by_cut(soup), color=MESH_EDGE_COLOR,
+                         every_edge=True, scale=0.35)
+        self.cut(coll)
+        return [coll]
 
     def no_shadows(self, coll, parts=("boundary", "shell")):
         """See-through surfaces and thin edges cast no shadows (Cycles samples transparent

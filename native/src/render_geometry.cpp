@@ -28,6 +28,13 @@ int32_t across(const Mesh& m, int32_t f, int32_t c) {
   return a == c ? b : a;
 }
 
+// cell_face_flip of face f in cell c's row (f must be a face of c).
+uint8_t face_flip(const Mesh& m, int32_t f, int32_t c) {
+  for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i)
+    if (m.cell_faces.items[static_cast<size_t>(i)] == f) return m.cell_face_flip[static_cast<size_t>(i)];
+  return 0;
+}
+
 // Appends the faces of cell c (oriented out of c) for which keep(face) holds.
 template <class Keep>
 void add_cell_faces(const Mesh& m, int32_t c, int32_t owner, OwnedFaces& out, Keep keep) {
@@ -36,6 +43,7 @@ void add_cell_faces(const Mesh& m, int32_t c, int32_t owner, OwnedFaces& out, Ke
     if (!keep(f)) continue;
     out.owner.push_back(owner);
     out.face.push_back(f);
+    out.cell.push_back(c);
     out.reversed.push_back(m.cell_face_flip[static_cast<size_t>(i)]);
   }
 }
@@ -83,6 +91,10 @@ SoupKind soup_kind_from_name(std::string_view name) {
 
 bool soup_kind_needs_sheet(SoupKind kind) {
   return kind == SoupKind::Subsheets || kind == SoupKind::Sheet || kind == SoupKind::SheetNonHex;
+}
+
+bool soup_kind_needs_analysis(SoupKind kind) {
+  return kind != SoupKind::Cells && kind != SoupKind::NonHex && kind != SoupKind::Hex && kind != SoupKind::Boundary;
 }
 
 OwnedFaces soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet) {
@@ -158,14 +170,16 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
   if (!(shrink >= 0.0 && shrink < 1.0))
     throw std::invalid_argument("shrink must be in [0, 1), not " + std::to_string(shrink));
   const size_t n = in.face.size();
-  if (in.owner.size() != n || in.reversed.size() != n)
-    throw std::invalid_argument("owned faces: owner, face and reversed differ in length");
+  if (in.owner.size() != n || in.reversed.size() != n || in.cell.size() != n)
+    throw std::invalid_argument("owned faces: owner, face, cell and reversed differ in length");
   int32_t num_owners = 0;
   size_t corners = 0;  // face corners: the soup's face_vertices and an upper bound on its points
   for (size_t i = 0; i < n; ++i) {
     if (in.owner[i] < 0) throw std::invalid_argument("owned faces: negative owner");
     if (in.face[i] < 0 || static_cast<size_t>(in.face[i]) >= m.num_faces())
       throw std::invalid_argument("owned faces: face id out of range: " + std::to_string(in.face[i]));
+    if (in.cell[i] < 0 || static_cast<size_t>(in.cell[i]) >= m.num_cells())
+      throw std::invalid_argument("owned faces: cell id out of range: " + std::to_string(in.cell[i]));
     num_owners = std::max(num_owners, in.owner[i] + 1);
     corners += static_cast<size_t>(m.face_verts.count(static_cast<size_t>(in.face[i])));
   }
@@ -183,6 +197,7 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
   s.face_sizes.reserve(n);
   s.face_owner.reserve(n);
   s.face_source.reserve(n);
+  s.face_cell.reserve(n);
   s.face_vertices.reserve(corners);
   s.point_vertex.reserve(corners);
   s.positions.reserve(3 * corners);
@@ -197,6 +212,7 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
       s.face_sizes.push_back(static_cast<int32_t>(loop.size()));
       s.face_owner.push_back(o);
       s.face_source.push_back(in.face[i]);
+      s.face_cell.push_back(in.cell[i]);
       for (size_t j = 0; j < loop.size(); ++j) {
         const int32_t v = in.reversed[i] ? loop[loop.size() - 1 - j] : loop[j];
         if (seen[static_cast<size_t>(v)] != o) {
@@ -225,6 +241,46 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
 
 BlockSoup block_soup(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet, double shrink) {
   return build_soup(m, soup_faces(m, a, kind, sheet), shrink);
+}
+
+BlockSoup kept_surface_soup(const Mesh& m, std::span<const uint8_t> kept, double shrink) {
+  if (kept.size() != m.num_cells())
+    throw std::invalid_argument("kept: " + std::to_string(kept.size()) + " entries for " +
+                                std::to_string(m.num_cells()) + " cells");
+  // One pass over the faces in order (streaming face_cells): this runs on every drag of a slicing
+  // plane, and a pass over the cells' faces reads face_cells at random, several times slower.
+  OwnedFaces out;
+  for (size_t f = 0; f < m.num_faces(); ++f) {
+    const auto [a, b] = m.face_cells[f];
+    const bool ka = kept[static_cast<size_t>(a)] != 0, kb = b >= 0 && kept[static_cast<size_t>(b)] != 0;
+    if (ka == kb) continue;
+    const int32_t c = ka ? a : b;
+    out.owner.push_back(c);
+    out.face.push_back(static_cast<int32_t>(f));
+    out.cell.push_back(c);
+    out.reversed.push_back(face_flip(m, static_cast<int32_t>(f), c));
+  }
+  return build_soup(m, out, shrink);
+}
+
+std::vector<double> cell_centroids(const Mesh& m) {
+  const size_t nc = m.num_cells();
+  std::vector<double> out(3 * nc, 0.0);
+  // `seen` holds the last cell that counted a vertex, so no clearing is needed between cells.
+  std::vector<int32_t> seen(m.num_vertices(), -1);
+  for (size_t c = 0; c < nc; ++c) {
+    size_t count = 0;
+    for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i)
+      for (int32_t v : m.face_verts[static_cast<size_t>(m.cell_faces.items[static_cast<size_t>(i)])]) {
+        if (seen[static_cast<size_t>(v)] == static_cast<int32_t>(c)) continue;
+        seen[static_cast<size_t>(v)] = static_cast<int32_t>(c);
+        ++count;
+        for (int d = 0; d < 3; ++d) out[3 * c + d] += m.points[3 * static_cast<size_t>(v) + d];
+      }
+    if (count)
+      for (int d = 0; d < 3; ++d) out[3 * c + d] /= static_cast<double>(count);
+  }
+  return out;
 }
 
 std::vector<float> polyline_positions(const Mesh& m, std::span<const int32_t> offsets,

@@ -170,6 +170,51 @@ TEST(RenderGeometry, SplitGrid) {
   EXPECT_GT(with_pyramids, 0u);
 }
 
+TEST(RenderGeometry, FaceCellAndCentroids) {
+  // face_cell is the cell on the owner's side: the owner itself for cell kinds, a cell of the
+  // owner component for components; every face bounds its face_cell.
+  const Analysed g = split3();
+  const Mesh& m = g.mesh;
+  for (SoupKind kind : {SoupKind::Cells, SoupKind::NonHex, SoupKind::Components, SoupKind::Boundary}) {
+    const BlockSoup s = block_soup(m, g.analysis, kind);
+    ASSERT_EQ(s.face_cell.size(), s.num_faces());
+    for (size_t f = 0; f < s.num_faces(); ++f) {
+      const auto [a, b] = m.face_cells[static_cast<size_t>(s.face_source[f])];
+      EXPECT_TRUE(s.face_cell[f] == a || s.face_cell[f] == b);
+      if (kind == SoupKind::Cells || kind == SoupKind::NonHex) EXPECT_EQ(s.face_cell[f], s.face_owner[f]);
+      if (kind == SoupKind::Components)
+        EXPECT_EQ(g.analysis.complex.cell_component[static_cast<size_t>(s.face_cell[f])], s.face_owner[f]);
+    }
+  }
+  // Centroids of a 2x1x1 grid of spacing 1: (0.5, 0.5, 0.5) and (1.5, 0.5, 0.5), in some order.
+  const Mesh two = build_mesh(generate_grid(2, 1, 1));
+  const std::vector<double> c = cell_centroids(two);
+  ASSERT_EQ(c.size(), 6u);
+  std::set<std::array<double, 3>> got{{c[0], c[1], c[2]}, {c[3], c[4], c[5]}};
+  EXPECT_EQ(got, (std::set<std::array<double, 3>>{{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}}));
+}
+
+TEST(RenderGeometry, KeptSurface) {
+  // 3x3x3 split grid (26 hexes + 6 pyramids filling the centre cell): all kept gives the 54
+  // boundary faces; the pyramids alone give their 6 quad bases (against the hex neighbours; their
+  // triangles are shared between pyramids); none kept, nothing; one cell alone, its closed surface.
+  const Analysed g = split3();
+  const Mesh& m = g.mesh;
+  std::vector<uint8_t> kept(m.num_cells(), 1);
+  EXPECT_EQ(kept_surface_soup(m, kept).num_faces(), 54u);
+  for (size_t c = 0; c < m.num_cells(); ++c) kept[c] = m.is_hex(c) ? 0 : 1;
+  const BlockSoup pyr = kept_surface_soup(m, kept);
+  EXPECT_EQ(pyr.num_faces(), 6u);
+  for (int32_t n : pyr.face_sizes) EXPECT_EQ(n, 4);
+  std::fill(kept.begin(), kept.end(), 0);
+  EXPECT_EQ(kept_surface_soup(m, kept).num_faces(), 0u);
+  kept[0] = 1;
+  const BlockSoup one = kept_surface_soup(m, kept);
+  EXPECT_EQ(one.num_faces(), m.cell_faces.count(0));
+  expect_closed_oriented(one, 0);
+  EXPECT_THROW(kept_surface_soup(m, std::vector<uint8_t>(3, 1)), std::invalid_argument);
+}
+
 TEST(RenderGeometry, Polylines) {
   const Analysed g = grid2();
   const std::vector<int32_t> offsets{0, 2, 5}, verts{0, 1, 26, 25, 24};

@@ -2,6 +2,8 @@
 subsheets, one sheet's blocks, non-hex cells, the boundary) with outward loops, one vertex copy
 per owner, shrinking toward each owner's centroid; and polyline point positions."""
 
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -289,3 +291,89 @@ def test_mesh_only_soups_need_no_analysis(analysed):
             assert np.array_equal(with_a[key], without[key]), (what, key)
     with pytest.raises(ValueError, match="'components' needs an analysis"):
         hbc.block_soup(m, None, "components")
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_soup_face_cell(analysed, name):
+    """face_cell is a cell the face bounds, on the owner's side: the face's owner is that cell (cell
+    kinds), its component (components, one sheet's blocks), or a sheet holding it (sheets)."""
+    m, a = analysed[name]
+    comp = a.complex.cell_component
+    fc = m.face_cells
+    sheet_cells = rows(a.sheet_cell_offsets, a.sheet_cell_items)
+    for what, sheet, _ in kinds(a):
+        d = hbc.block_soup(m, a, what, sheet=sheet)
+        cell, src, owner = d["face_cell"], d["face_source"], d["face_owner"]
+        assert cell.dtype == np.int32 and cell.shape == src.shape, what
+        assert np.all((fc[src, 0] == cell) | (fc[src, 1] == cell)), what
+        if what in ("cells", "non_hex", "sheet_non_hex"):
+            assert np.array_equal(cell, owner), what
+        elif what in ("components", "sheet"):
+            assert np.array_equal(comp[cell], owner), what
+        elif what == "boundary":
+            assert np.array_equal(m.cell_types[cell], owner), what
+        elif what == "sheets":
+            for i in range(0, len(owner), max(1, len(owner) // 100)):
+                assert cell[i] in sheet_cells[owner[i]], what
+
+
+def test_cell_centroids_grid(hbc_cli, tmp_path):
+    """A 2x1x1 grid of spacing 0.5 from the origin: centroids (0.25, .25, .25) and (0.75, .25, .25)."""
+    out = tmp_path / "grid.ovm"
+    subprocess.run([hbc_cli, "generate", "grid", "--size", "2", "1", "1", "--spacing", "0.5", "-o", str(out)],
+                   check=True, capture_output=True)
+    m = hbc.load(out)
+    c = hbc.cell_centroids(m)
+    assert c.dtype == np.float64 and c.shape == (2, 3)
+    order = np.argsort(c[:, 0])
+    assert np.allclose(c[order] - m.points64.min(axis=0), [[0.25, 0.25, 0.25], [0.75, 0.25, 0.25]])
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_cell_centroids_mean_of_distinct_vertices(analysed, name):
+    m, _ = analysed[name]
+    c = hbc.cell_centroids(m)
+    assert c.shape == (m.num_cells, 3)
+    pts = m.points64
+    for cell in range(0, m.num_cells, max(1, m.num_cells // 50)):
+        faces = m.cell_faces[m.cell_offsets[cell]:m.cell_offsets[cell + 1]]
+        verts = np.unique(np.concatenate([m.face_vertices[m.face_offsets[f]:m.face_offsets[f + 1]] for f in faces]))
+        assert np.allclose(c[cell], pts[verts].mean(axis=0))
+
+
+def test_mesh_only_soups_without_analysis(analysed):
+    """'cells', 'non_hex' and 'boundary' read only the mesh: analysis=None gives the same soup; the
+    other kinds refuse None."""
+    m, a = analysed[MESHES[0]]
+    for what in ("cells", "non_hex", "boundary"):
+        with_a, without = hbc.block_soup(m, a, what), hbc.block_soup(m, None, what)
+        for k, v in with_a.items():
+            assert np.array_equal(v, without[k]), (what, k)
+    with pytest.raises(ValueError, match="needs an analysis"):
+        hbc.block_soup(m, None, "components")
+
+
+def test_kept_surface_soup_of_a_grid(hbc_cli, tmp_path):
+    """A 4x4x4 grid: all cells kept gives the 96 boundary faces; the inner 2x2x2 block alone its 24
+    outer faces; nothing kept, nothing. Faces point out of their (kept) cell."""
+    out = tmp_path / "grid.ovm"
+    subprocess.run([hbc_cli, "generate", "grid", "--size", "4", "4", "4", "-o", str(out)], check=True,
+                   capture_output=True)
+    m = hbc.load(out)
+    every = hbc.kept_surface_soup(m, np.ones(64, bool))
+    assert len(every["face_sizes"]) == 96
+    assert np.array_equal(np.sort(every["face_source"]), np.flatnonzero(m.face_boundary))
+    inner = hbc.cell_depth(m) >= 1
+    d = hbc.kept_surface_soup(m, inner)
+    assert len(d["face_sizes"]) == 24 and set(d["face_cell"]) == set(np.flatnonzero(inner))
+    assert np.array_equal(d["face_owner"], d["face_cell"])
+    # Outward: the loop's normal points from the cell's centroid to the face's centre.
+    cen = hbc.cell_centroids(m)
+    starts = np.concatenate(([0], np.cumsum(d["face_sizes"])))
+    for i in range(len(d["face_sizes"])):
+        p = d["positions"][d["face_vertices"][starts[i]:starts[i + 1]]].astype(float)
+        n = np.cross(p[1] - p[0], p[2] - p[0])
+        assert np.dot(n, p.mean(axis=0) - cen[d["face_cell"][i]]) > 0
+    assert len(hbc.kept_surface_soup(m, np.zeros(64, bool))["face_sizes"]) == 0
+    with pytest.raises(ValueError, match="entries for 64 cells"):
+        hbc.kept_surface_soup(m, np.ones(3, bool))

@@ -36,7 +36,8 @@ def public(names):
 def test_package_reexports_core():
     assert set(hbc.__all__) == {"Mesh", "MeshFormatError", "load", "__version__", "Analysis",
                                 "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe",
-                                "block_soup", "polylines", "cell_quality", "cell_depth"}
+                                "block_soup", "polylines", "cell_quality", "cell_depth", "cell_centroids",
+                                "kept_surface_soup"}
     for name in hbc.__all__:
         assert getattr(hbc, name) is getattr(_core, name)
     assert issubclass(hbc.MeshFormatError, ValueError)

@@ -38,12 +38,16 @@ enum class SoupKind : uint8_t {
 // Throws std::invalid_argument listing the accepted names for anything else.
 SoupKind soup_kind_from_name(std::string_view name);
 bool soup_kind_needs_sheet(SoupKind kind);
+// Cells, NonHex and Boundary read only the mesh (any Analysis, even an empty one, will do).
+bool soup_kind_needs_analysis(SoupKind kind);
 
-// The faces to draw, one entry per (owner, face) in all three arrays; `reversed` = 1 when the
-// face's stored loop must be walked backwards to point out of the owner's cell.
+// The faces to draw, one entry per (owner, face) in all four arrays; `cell` is the mesh cell the
+// face was taken from (on the owner's side: the face points out of it); `reversed` = 1 when the
+// face's stored loop must be walked backwards to point out of that cell.
 struct OwnedFaces {
   std::vector<int32_t> owner;
   std::vector<int32_t> face;
+  std::vector<int32_t> cell;
   std::vector<uint8_t> reversed;
 };
 
@@ -63,6 +67,8 @@ struct BlockSoup {
   std::vector<int32_t> face_vertices;  // sum(face_sizes): point ids, loops outward (right-hand rule)
   std::vector<int32_t> face_owner;     // nf
   std::vector<int32_t> face_source;    // nf: mesh face id
+  std::vector<int32_t> face_cell;      // nf: mesh cell on the owner's side of the face (the cell
+                                       // whose faces were selected), for per-cell attributes
 
   size_t num_points() const { return point_vertex.size(); }
   size_t num_faces() const { return face_sizes.size(); }
@@ -76,6 +82,16 @@ BlockSoup build_soup(const Mesh& mesh, const OwnedFaces& faces, double shrink = 
 // soup_faces then build_soup.
 BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1,
                      double shrink = 0.0);
+
+// The surface of a set of cells (kept[c] != 0; nc entries, else std::invalid_argument): every face
+// of a kept cell whose other side is not kept or is the boundary, owner = cell id, pointing out of
+// the kept cell. What a viewer draws of a filtered (sliced, peeled, ...) cell view: the faces
+// between two kept cells are never seen, so only this surface is rebuilt when a filter changes.
+BlockSoup kept_surface_soup(const Mesh& mesh, std::span<const uint8_t> kept, double shrink = 0.0);
+
+// The vertex centroid of every cell: 3 * nc doubles, the mean of the cell's distinct vertices
+// (the point the add-on's slicing plane tests, so a cell is on one side or the other as a whole).
+std::vector<double> cell_centroids(const Mesh& mesh);
 
 // float32 positions (3 per entry) of the mesh vertices listed in `vertices`, a CSR row set whose
 // `offsets` must start at 0, not decrease and end at vertices.size(); vertex ids must be in range.

@@ -43,25 +43,21 @@ void bind_wireframe(py::module_& m) {
             "int32 (count + 1,): row offsets of polyline_vertices.");
   wire_prop(c, "polyline_vertices", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
             "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
-  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.style.point_opacity; },
+  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.point_opacity; },
             "float32, aligned with polyline_vertices: opacity in [floor, 1].");
-  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
+  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 VSG chain, 1 trace.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
-            "int32 (count,): region valence of the chain's first edge.");
+            "int32 (count,): chain valence; traces the valence of their regular edges.");
   wire_prop(c, "stop", [](const VsgWireframe& w) -> auto& { return w.stop; },
-            "uint8 (count,): the chain's last vertex: 0 closed chain, 1 singular, 2 boundary, 3 neither.");
+            "uint8 (count,): why a trace ended: 0 not a trace, 1 VSG vertex, 2 boundary, 3 no continuation.");
   wire_prop(c, "shown", [](const VsgWireframe& w) -> auto& { return w.shown; },
-            "bool (count,): every edge of the chain lies on the simplified wireframe.", true);
+            "bool (count,): in the simplified wireframe (important or reactivated).", true);
   wire_prop(c, "non_important", [](const VsgWireframe& w) -> auto& { return w.non_important; },
-            "uint8 (count,): 0 kept, 1 both ends redundant, 2 in a removable pair at a singular vertex.");
+            "uint8 (count,): 0 important, else the simplification criterion (1, 2, 3) that hid it.");
   wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
-            "bool (count,): non-important but kept: it continues a kept chain.", true);
-  wire_prop(c, "simplified_offsets", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.offsets; },
-            "int32 (counts['wireframe_edges_simplified'] + 1,): row offsets of simplified_vertices.");
-  wire_prop(c, "simplified_vertices", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.items; },
-            "int32: mesh vertices along each simplified polyline (kept chains re-chained).");
-  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
-  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },
+            "bool (count,): non-important but shown again to keep the wireframe connected.", true);
+  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.color; }, "int32 (count,): palette index.");
+  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.color_class; },
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
   c.def_property_readonly(
       "counts",
@@ -73,34 +69,15 @@ void bind_wireframe(py::module_& m) {
         d["wireframe_edges_simplified"] = w.wireframe_edges_simplified();
         d["vsg_chains"] = w.vsg_chains;
         d["singular_vertices"] = w.singular_vertices.size();
-        d["vsg_mesh_edges"] = w.vsg_mesh_edges;
-        d["wireframe_mesh_edges"] = w.wireframe_mesh_edges;
-        d["wireframe_mesh_edges_simplified"] = w.simplified_mesh_edges;
         d["reference_components"] = w.reference_components;
         d["shown_components"] = w.shown_components;
         return d;
       },
       "dict: vsg_edges, wireframe_edges, wireframe_edges_simplified, vsg_chains, singular_vertices, "
-      "vsg_mesh_edges, wireframe_mesh_edges, wireframe_mesh_edges_simplified (distinct mesh edges covered), "
       "reference_components, shown_components.");
 }
 
-py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
-                    double shrink) {
-  const SoupKind kind = soup_kind_from_name(what);
-  // Cells, non-hex cells, the hex region and the boundary are the mesh's own: a mesh shown
-  // before (or without) its analysis draws them with an empty one.
-  const bool mesh_only = kind == SoupKind::Cells || kind == SoupKind::NonHex || kind == SoupKind::Hex ||
-                         kind == SoupKind::Boundary;
-  if (!analysis && !mesh_only) throw std::invalid_argument("block_soup: '" + what + "' needs an analysis");
-  if (analysis && analysis->mesh.get() != mesh.get())
-    throw std::invalid_argument("block_soup: the analysis was computed on another mesh");
-  const Analysis none;
-  BlockSoup s;
-  {
-    py::gil_scoped_release unlocked;
-    s = hbc::block_soup(mesh->mesh, analysis ? analysis->analysis : none, kind, sheet, shrink);
-  }
+py::dict soup_dict(BlockSoup&& s) {
   const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces()), nfv = ssize(s.face_vertices.size());
   py::dict d;
   d["positions"] = adopt(std::move(s.positions), {np, 3});
@@ -108,8 +85,39 @@ py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const 
   d["face_vertices"] = adopt(std::move(s.face_vertices), {nfv});
   d["face_owner"] = adopt(std::move(s.face_owner), {nf});
   d["face_source"] = adopt(std::move(s.face_source), {nf});
+  d["face_cell"] = adopt(std::move(s.face_cell), {nf});
   d["point_vertex"] = adopt(std::move(s.point_vertex), {np});
   return d;
+}
+
+using MaskArray = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>;
+
+py::dict kept_surface(const PyMeshPtr& mesh, const MaskArray& kept, double shrink) {
+  if (kept.ndim() != 1) throw std::invalid_argument("kept_surface_soup: kept must be 1-D");
+  BlockSoup s;
+  {
+    py::gil_scoped_release unlocked;
+    s = kept_surface_soup(mesh->mesh, {kept.data(), static_cast<size_t>(kept.size())}, shrink);
+  }
+  return soup_dict(std::move(s));
+}
+
+py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
+                    double shrink) {
+  const SoupKind kind = soup_kind_from_name(what);
+  if (!analysis && soup_kind_needs_analysis(kind))
+    throw std::invalid_argument("block_soup: '" + what + "' needs an analysis (only 'cells', 'non_hex', 'hex' and "
+                                "'boundary' take analysis=None)");
+  if (analysis && analysis->mesh.get() != mesh.get())
+    throw std::invalid_argument("block_soup: the analysis was computed on another mesh");
+  BlockSoup s;
+  {
+    py::gil_scoped_release unlocked;
+    // The mesh-only kinds never read the analysis: an empty one stands in for None.
+    s = analysis ? hbc::block_soup(mesh->mesh, analysis->analysis, kind, sheet, shrink)
+                 : hbc::block_soup(mesh->mesh, Analysis{}, kind, sheet, shrink);
+  }
+  return soup_dict(std::move(s));
 }
 
 py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArray& vertices) {
@@ -125,20 +133,38 @@ py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArr
   return adopt(std::move(pos), {n, 3});
 }
 
+py::array cell_centroid_array(const PyMeshPtr& mesh) {
+  std::vector<double> c;
+  {
+    py::gil_scoped_release unlocked;
+    c = cell_centroids(mesh->mesh);
+  }
+  const py::ssize_t nc = ssize(c.size() / 3);
+  return adopt(std::move(c), {nc, 3});
+}
+
 }  // namespace
 
 void bind_geometry(py::module_& m) {
   bind_wireframe(m);
   m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = -1,
         py::arg("shrink") = 0.0,
-        "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
+        "Faces of a set of blocks as a polygon soup (analysis may be None for 'cells', 'non_hex', 'hex' "
+        "and 'boundary'), each block (owner) with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
-        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex' (the hex region's surface, owner 0). Returns a dict: "
+        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex' (the hex region's "
+        "surface, owner 0). Returns a dict: "
         "positions float32 (np, 3), point_vertex int32 (np,), face_sizes int32 (nf,), face_vertices "
-        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
-        "Loops are outward; faces grouped by increasing owner. analysis may be None for 'cells', "
-        "'non_hex', 'hex' and 'boundary'.");
+        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids, "
+        "face_cell int32 (nf,) the mesh cell on the owner's side (the face points out of it). "
+        "Loops are outward; faces grouped by increasing owner.");
+  m.def("kept_surface_soup", &kept_surface, py::arg("mesh"), py::arg("kept"), py::arg("shrink") = 0.0,
+        "The surface of a set of cells as block_soup's dict (owner = cell): every face of a kept cell "
+        "(kept: (num_cells,) bool/uint8) whose other side is not kept or is the boundary, pointing out "
+        "of the kept cell.");
+  m.def("cell_centroids", &cell_centroid_array, py::arg("mesh"),
+        "float64 (num_cells, 3): the mean of each cell's distinct vertices.");
   m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("vertices"),
         "float32 (len(vertices), 3): the positions of the polyline points given as a CSR of mesh "
         "vertex ids (offsets start at 0 and end at len(vertices)).");

@@ -22,8 +22,10 @@ from ._core import (
     Wireframe,
     __version__,
     block_soup,
+    cell_centroids,
     cell_depth,
     cell_quality,
+    kept_surface_soup,
     load,
     polylines,
 )
@@ -31,5 +33,5 @@ from ._core import (
 __all__ = [
     "Mesh", "MeshFormatError", "load", "__version__",
     "Analysis", "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe", "block_soup", "polylines",
-    "cell_quality", "cell_depth",
+    "cell_quality", "cell_depth", "cell_centroids", "kept_surface_soup",
 ]

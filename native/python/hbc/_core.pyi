@@ -184,6 +184,7 @@ class BlockSoup(TypedDict):
     face_vertices: I32  # (face_sizes.sum(),) point ids, loops outward
     face_owner: I32  # (nf,) grouped by increasing owner
     face_source: I32  # (nf,) mesh face ids
+    face_cell: I32  # (nf,) mesh cell on the owner's side (the face points out of it)
 
 class SingularityGraph:
     """Views into an Analysis (SPEC section 1). Chains: a closed one does not repeat its first vertex."""
@@ -422,6 +423,10 @@ class Analysis:
     def to_vtu(self, path: str, sheet: int | None = None, ascii: bool = False) -> str: ...
 
 def block_soup(mesh: Mesh, analysis: Analysis | None, what: SoupWhat, sheet: int = -1, shrink: float = 0.0) -> BlockSoup: ...
+def kept_surface_soup(mesh: Mesh, kept: npt.ArrayLike, shrink: float = 0.0) -> BlockSoup:
+    """Faces of kept cells (kept: (num_cells,) bool) whose other side is not kept; owner = cell."""
+def cell_centroids(mesh: Mesh) -> npt.NDArray[np.float64]:
+    """(num_cells, 3) the mean of each cell's distinct vertices."""
 def polylines(mesh: Mesh, offsets: npt.ArrayLike, vertices: npt.ArrayLike) -> npt.NDArray[np.float32]: ...
 
 class CellQuality(TypedDict):

@@ -156,3 +156,27 @@ def test_failures_exit_non_zero(tmp_path, args, pattern):
     assert p.returncode != 0
     assert re.search(pattern, p.stdout + p.stderr), (p.stdout[-2000:], p.stderr[-2000:])
     assert not list(tmp_path.glob("*.png"))
+
+
+def test_cut_and_quality_panels(tmp_path):
+    """--panels complex,cut,quality: both inspection panels are drawn, in the contact sheet, and
+    differ from the uncut blocks; the cut (near half hidden) draws fewer pixels than the blocks."""
+    p = run([data("twistcube_s.mesh"), "--out", tmp_path, "--engine", "workbench", "--resolution", W, H,
+             "--panels", "complex,cut,quality"])
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
+    names = [pathlib.Path(f).name for f in written(p)]
+    assert names == ["twistcube_s_c_complex.png", "twistcube_s_h_cut.png", "twistcube_s_i_quality.png",
+                     "twistcube_s_contact.png"]
+    imgs = {k: load(tmp_path / n) for k, n in zip(("complex", "cut", "quality"), names)}
+    for k, img in imgs.items():
+        assert C.pixel_std(img) > MIN_STD, k
+    assert C.differs(imgs["complex"], imgs["cut"]) and C.differs(imgs["cut"], imgs["quality"])
+
+    def drawn(img):
+        x0, y0, x1, y1 = C.foreground_bbox(img, tol=0.03)
+        return (x1 - x0) * (y1 - y0)
+
+    assert drawn(imgs["cut"]) < drawn(imgs["complex"])
+    sheet = load(tmp_path / names[-1])
+    label_h = max(14, round(H * 0.07))
+    assert sheet.shape[:2][::-1] == C.sheet_size([1] * 3, C.contact_columns([1] * 3), W, H, label_h)

@@ -109,3 +109,22 @@ def test_feature_edges_of_a_cube_and_a_flat_patch():
     assert len(e) == 6 and [1, 4] not in e.tolist()
     assert len(plan.all_edges([4, 4], [0, 1, 4, 3, 1, 2, 5, 4])) == 7
     assert plan.feature_edges(np.zeros((0, 3)), [], []).shape == (0, 2)
+
+
+def test_inspect_panels_only_when_asked():
+    """cut and quality are not in the default set; asked for, they come after the pipeline panels."""
+    assert "cut" not in plan.parse(["m.mesh", "--out", "o"]).panels
+    a = plan.parse(["m.mesh", "--out", "o", "--panels", "quality,complex,cut", "--cut-plane", "1", "2", "3", "0", "0", "2"])
+    assert a.panels == ["complex", "cut", "quality"] and a.cut_plane == [1, 2, 3, 0, 0, 2]
+    assert (plan.PANEL_LETTER["cut"], plan.PANEL_LETTER["quality"]) == ("h", "i")
+    with pytest.raises(SystemExit):
+        plan.parse(["m.mesh", "--out", "o", "--cut-plane", "0", "0", "0", "0", "0", "0"])
+
+
+def test_cut_plane():
+    """Default: through the bounding-box centre, normal = the (normalised) view direction; else as given."""
+    pts = np.array([[0, 0, 0], [2, 4, 6], [1, 1, 1]], float)
+    p, n = plan.cut_plane(pts, (0, 0, 3))
+    assert np.allclose(p, (1, 2, 3)) and np.allclose(n, (0, 0, 1))
+    p, n = plan.cut_plane(pts, (0, 0, 3), [5, 5, 5, 3, 0, 4])
+    assert np.allclose(p, (5, 5, 5)) and np.allclose(n, (0.6, 0, 0.8))

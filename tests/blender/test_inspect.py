@@ -1,0 +1,238 @@
+"""The inspection filters (issue 17) in Blender background mode, counted on the evaluated meshes: a
+plane through a generated grid hides exactly the cells on one side, peeling one layer of a
+10x10x10 grid leaves the inner 8x8x8 cells, the type filter on a split grid leaves exactly its
+non-hex cells, the quality range and the blocks/sheets layers."""
+
+import os
+import pathlib
+import subprocess
+
+import bpy
+import numpy as np
+import pytest
+
+
+def hbc_cli():
+    """The `hbc` command of the build holding the add-on (<build>/addon/hybrid_base_complex)."""
+    value = os.environ.get("HBC_CLI")
+    if value:
+        return value
+    build = pathlib.Path(os.environ["HBC_ADDON_DIR"]).resolve().parents[1]
+    return str(build / "bin" / "hbc")
+
+
+def generate(tmp_path, *args):
+    out = tmp_path / "generated.ovm"
+    subprocess.run([hbc_cli(), "generate", *args, "-o", str(out)], check=True, capture_output=True)
+    return out
+
+
+def import_mesh(path, analyse=False):
+    from hybrid_base_complex import layers as L
+
+    ins = bpy.context.scene.hbc_inspect
+    ins.direct_cells = True
+    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyse=analyse) == {"FINISHED"}
+    return L.find_root(bpy.context.scene.hbc.active_mesh)
+
+
+def cells_object(root):
+    from hybrid_base_complex import scene as S
+
+    return next(o for o in S.find_layer(root, "direct").all_objects if o.get("hbc_part") == "cells")
+
+
+def evaluated_cells(ob):
+    """(number of faces, distinct cells) of the object after its modifiers."""
+    me = ob.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
+    cells = np.zeros(len(me.polygons), np.int32)
+    if len(me.polygons):
+        me.attributes["hbc_cell"].data.foreach_get("value", cells)
+    return len(me.polygons), np.unique(cells)
+
+
+def cell_arrays(ob):
+    me = ob.data
+    n = len(me.polygons)
+    cells, cen = np.zeros(n, np.int32), np.zeros(3 * n, np.float32)
+    me.attributes["hbc_cell"].data.foreach_get("value", cells)
+    me.attributes["hbc_centroid"].data.foreach_get("vector", cen)
+    return cells, cen.reshape(-1, 3)
+
+
+@pytest.fixture
+def reset(clean_scene):
+    ins = bpy.context.scene.hbc_inspect
+    for key in ("slice", "flip", "filter_quality", "direct_cells", "color_by_quality", "sheet_only"):
+        setattr(ins, key, False)
+    ins.peel = 0
+    ins.plane = None
+    ins.enabled = True
+    for n in ("hex", "tet", "prism", "pyramid", "polyhedron"):
+        setattr(ins, f"show_{n}", True)
+    yield ins
+
+
+def test_unfiltered_cells_object_has_every_cell(reset, tmp_path):
+    root = import_mesh(generate(tmp_path, "grid", "--size", "4", "3", "2"))
+    nf, cells = evaluated_cells(cells_object(root))
+    assert nf == 6 * 24 and len(cells) == 24
+
+
+@pytest.mark.parametrize("normal,flip", [((1, 0, 0), False), ((1, 0, 0), True), ((0.3, -1, 0.2), False)])
+def test_plane_hides_the_cells_on_one_side(reset, tmp_path, normal, flip):
+    """A 6x5x4 grid cut by a plane through a point off the cell centres: the kept cells are exactly
+    those whose centroid is on the plane's -normal side (+normal with flip), all 6 faces each."""
+    from hybrid_base_complex import inspect as I
+
+    root = import_mesh(generate(tmp_path, "grid", "--size", "6", "5", "4"))
+    ob = cells_object(root)
+    cells, cen = cell_arrays(ob)
+    lo, hi = cen.min(axis=0), cen.max(axis=0)
+    point = lo + (hi - lo) * np.array([0.43, 0.51, 0.37])
+    I.add_plane(bpy.context, tuple(point), normal)
+    reset.flip = flip
+    side = (cen - point) @ (np.asarray(normal, np.float64) / np.linalg.norm(normal))
+    keep = np.unique(cells[(side > 0) if flip else (side < 0)])
+    assert 0 < len(keep) < 120
+    nf, shown = evaluated_cells(ob)
+    assert np.array_equal(shown, keep)
+    assert nf == 6 * len(keep)
+    # Moving the Empty moves the cut: past the mesh, nothing (or everything) is hidden.
+    reset.plane.location = tuple(hi + 1.0) if not flip else tuple(lo - 1.0)
+    if np.dot(normal, (1, 1, 1)) > 0:
+        assert evaluated_cells(ob)[0] == 6 * 120
+
+
+def test_peeling_one_layer_leaves_the_inner_block(reset, tmp_path):
+    root = import_mesh(generate(tmp_path, "grid", "--size", "10", "10", "10"))
+    ob = cells_object(root)
+    reset.peel = 1
+    nf, cells = evaluated_cells(ob)
+    assert len(cells) == 8 * 8 * 8 and nf == 6 * 8 * 8 * 8
+    reset.peel = 3
+    assert len(evaluated_cells(ob)[1]) == 4 * 4 * 4
+    reset.peel = 0
+    assert len(evaluated_cells(ob)[1]) == 1000
+
+
+def test_type_filter_leaves_the_non_hex_cells(reset, tmp_path):
+    from hybrid_base_complex import session
+
+    root = import_mesh(generate(tmp_path, "split", "--size", "4", "4", "4", "--split", "pyramids",
+                                "--cells", "1,1,1;2,3,0"))
+    types = np.asarray(session.get(root.name).mesh.cell_types)
+    non_hex = np.flatnonzero(types != 0)
+    assert len(non_hex) > 0
+    ob = cells_object(root)
+    reset.show_hex = False
+    nf, cells = evaluated_cells(ob)
+    assert np.array_equal(cells, non_hex)
+    reset.show_pyramid = False
+    assert evaluated_cells(ob)[0] == 0
+    reset.show_hex = True
+    assert np.array_equal(evaluated_cells(ob)[1], np.flatnonzero(types == 0))
+
+
+def test_quality_range_and_colours(reset, tmp_path):
+    """Pyramids of a split grid are not ideal (scaled Jacobian < 1): [0.99, 1] keeps the hexes."""
+    from hybrid_base_complex import inspect as I
+    from hybrid_base_complex import session
+    from hybrid_base_complex.structure import import_hbc
+
+    root = import_mesh(generate(tmp_path, "split", "--size", "3", "3", "3", "--split", "pyramids",
+                                "--cells", "1,1,1"))
+    s = session.get(root.name)
+    sj = import_hbc().cell_quality(s.mesh)["scaled_jacobian"]
+    ob = cells_object(root)
+    reset.quality_min, reset.quality_max, reset.filter_quality = 0.99, 1.0, True
+    assert np.array_equal(evaluated_cells(ob)[1], np.flatnonzero((sj >= 0.99) & (sj <= 1.0)))
+    reset.color_by_quality = True
+    col = np.zeros(4 * len(ob.data.loops), np.float32)
+    ob.data.attributes["hbc_color"].data.foreach_get("color", col)
+    assert np.allclose(col.reshape(-1, 4)[0], I.quality_colors([sj[I._face_cells(ob.data)[0]]])[0], atol=1e-5)
+    labels, counts = I.cell_data(s)["histogram"]
+    assert sum(counts) == s.num_cells and len(labels) == len(counts)
+
+
+def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
+    """Every block and sheet object carries the attributes and the modifier; peeling far enough
+    (past the deepest cell) empties them all; the block attribute is the face's cell's component."""
+    from hybrid_base_complex import inspect as I
+    from hybrid_base_complex import scene as S
+    from hybrid_base_complex import session
+
+    root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyse=True)
+    s = session.get(root.name)
+    for layer in ("blocks", "sheets"):
+        assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}
+    comp = np.asarray(s.analysis.complex.cell_component)
+    deepest = int(I.cell_data(s)["depth"].max())
+    for layer in ("blocks", "sheets"):
+        obs = [o for o in S.find_layer(root, layer).all_objects if o.type == "MESH"]
+        assert obs and all(o.modifiers.get(I.MODIFIER) for o in obs), layer
+        ob = obs[0]
+        block = np.zeros(len(ob.data.polygons), np.int32)
+        ob.data.attributes["hbc_block"].data.foreach_get("value", block)
+        assert np.array_equal(block, comp[I._face_cells(ob.data)])
+    before = sum(evaluated_cells(o)[0] for o in S.find_layer(root, "blocks").all_objects)
+    assert before > 0
+    reset.peel = deepest + 1
+    for layer in ("blocks", "sheets"):
+        assert sum(evaluated_cells(o)[0] for o in S.find_layer(root, layer).all_objects) == 0
+    reset.enabled = False
+    assert sum(evaluated_cells(o)[0] for o in S.find_layer(root, "blocks").all_objects) == before
+    reset.enabled = True
+
+
+def test_live_surface_of_a_large_mesh(reset, tmp_path):
+    """Above `surface_above` cells the direct view holds only the surface of the kept cells, rebuilt
+    by C++ when a filter changes or the plane moves: counts on a 10x10x10 grid (cell centroids at
+    integer + 1/2 along each axis, in grid units)."""
+    from hybrid_base_complex import inspect as I
+
+    reset.surface_above = 100
+    try:
+        root = import_mesh(generate(tmp_path, "grid", "--size", "10", "10", "10"))
+        ob = cells_object(root)
+        assert ob.get("hbc_surface") and ob.modifiers.get(I.MODIFIER) is None
+        assert evaluated_cells(ob)[0] == 600  # the boundary of the whole grid
+        reset.peel = 1
+        nf, cells = evaluated_cells(cells_object(root))
+        assert nf == 6 * 64 and len(cells) == 8 ** 3 - 6 ** 3
+        reset.peel = 0
+        _, cen = cell_arrays(cells_object(root))
+        lo, hi = cen.min(axis=0), cen.max(axis=0)
+        # Halfway: the 5 layers with centroid x below the plane, a 5x10x10 box: 2 (50 + 50 + 100) faces.
+        I.add_plane(bpy.context, tuple(lo + (hi - lo) * 0.5), (1, 0, 0))
+        assert evaluated_cells(cells_object(root))[0] == 400
+        reset.flip = True
+        assert evaluated_cells(cells_object(root))[0] == 400
+        reset.flip = False
+        # Dragging the plane (the depsgraph handler rebuilds): 3 layers left, 2 (30 + 30 + 100) faces.
+        reset.plane.location.x = float(lo[0] + (hi[0] - lo[0]) * 0.25)
+        bpy.context.view_layer.update()
+        assert evaluated_cells(cells_object(root))[0] == 320
+        reset.show_hex = False
+        assert evaluated_cells(cells_object(root))[0] == 0
+    finally:
+        reset.surface_above = 100000
+
+
+def test_picked_sheet_only_follows_the_pick(reset, data_dir):
+    """'Picked sheet only' keeps exactly the picked sheet's cells in the direct view; picking
+    another sheet in the list (Scene.hbc.sheet_index) moves the attribute and the view with it."""
+    from hybrid_base_complex import session
+
+    root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyse=True)
+    s = session.get(root.name)
+    st = bpy.context.scene.hbc
+    st.auto_show = False
+    st.sheet_index = 0
+    assert bpy.ops.hbc.build_layer(layer="direct") == {"FINISHED"}
+    reset.sheet_only = True
+    for sheet in (0, 1, 2):
+        st.sheet_index = sheet
+        bpy.context.view_layer.update()
+        shown = evaluated_cells(cells_object(root))[1]
+        assert np.array_equal(shown, np.sort(s.sheet_cells(sheet))), sheet
