@@ -43,21 +43,25 @@ void bind_wireframe(py::module_& m) {
             "int32 (count + 1,): row offsets of polyline_vertices.");
   wire_prop(c, "polyline_vertices", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
             "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
-  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.point_opacity; },
+  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.style.point_opacity; },
             "float32, aligned with polyline_vertices: opacity in [floor, 1].");
-  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 VSG chain, 1 trace.");
+  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
-            "int32 (count,): chain valence; traces the valence of their regular edges.");
+            "int32 (count,): region valence of the chain's first edge.");
   wire_prop(c, "stop", [](const VsgWireframe& w) -> auto& { return w.stop; },
-            "uint8 (count,): why a trace ended: 0 not a trace, 1 VSG vertex, 2 boundary, 3 no continuation.");
+            "uint8 (count,): the chain's last vertex: 0 closed chain, 1 singular, 2 boundary, 3 neither.");
   wire_prop(c, "shown", [](const VsgWireframe& w) -> auto& { return w.shown; },
-            "bool (count,): in the simplified wireframe (important or reactivated).", true);
+            "bool (count,): every edge of the chain lies on the simplified wireframe.", true);
   wire_prop(c, "non_important", [](const VsgWireframe& w) -> auto& { return w.non_important; },
-            "uint8 (count,): 0 important, else the simplification criterion (1, 2, 3) that hid it.");
+            "uint8 (count,): 0 kept, 1 both ends redundant, 2 in a removable pair at a singular vertex.");
   wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
-            "bool (count,): non-important but shown again to keep the wireframe connected.", true);
-  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.color; }, "int32 (count,): palette index.");
-  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.color_class; },
+            "bool (count,): non-important but kept: it continues a kept chain.", true);
+  wire_prop(c, "simplified_offsets", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.offsets; },
+            "int32 (counts['wireframe_edges_simplified'] + 1,): row offsets of simplified_vertices.");
+  wire_prop(c, "simplified_vertices", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.items; },
+            "int32: mesh vertices along each simplified polyline (kept chains re-chained).");
+  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
+  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
   c.def_property_readonly(
       "counts",
@@ -69,11 +73,15 @@ void bind_wireframe(py::module_& m) {
         d["wireframe_edges_simplified"] = w.wireframe_edges_simplified();
         d["vsg_chains"] = w.vsg_chains;
         d["singular_vertices"] = w.singular_vertices.size();
+        d["vsg_mesh_edges"] = w.vsg_mesh_edges;
+        d["wireframe_mesh_edges"] = w.wireframe_mesh_edges;
+        d["wireframe_mesh_edges_simplified"] = w.simplified_mesh_edges;
         d["reference_components"] = w.reference_components;
         d["shown_components"] = w.shown_components;
         return d;
       },
       "dict: vsg_edges, wireframe_edges, wireframe_edges_simplified, vsg_chains, singular_vertices, "
+      "vsg_mesh_edges, wireframe_mesh_edges, wireframe_mesh_edges_simplified (distinct mesh edges covered), "
       "reference_components, shown_components.");
 }
 
@@ -149,16 +157,15 @@ void bind_geometry(py::module_& m) {
   bind_wireframe(m);
   m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = -1,
         py::arg("shrink") = 0.0,
-        "Faces of a set of blocks as a polygon soup (analysis may be None for 'cells', 'non_hex', 'hex' "
-        "and 'boundary'), each block (owner) with its own vertex copies, "
+        "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
-        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex' (the hex region's "
-        "surface, owner 0). Returns a dict: "
+        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex' (the hex region's surface, owner 0). Returns a dict: "
         "positions float32 (np, 3), point_vertex int32 (np,), face_sizes int32 (nf,), face_vertices "
-        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids, "
+        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
         "face_cell int32 (nf,) the mesh cell on the owner's side (the face points out of it). "
-        "Loops are outward; faces grouped by increasing owner.");
+        "Loops are outward; faces grouped by increasing owner. analysis may be None for 'cells', "
+        "'non_hex', 'hex' and 'boundary'.");
   m.def("kept_surface_soup", &kept_surface, py::arg("mesh"), py::arg("kept"), py::arg("shrink") = 0.0,
         "The surface of a set of cells as block_soup's dict (owner = cell): every face of a kept cell "
         "(kept: (num_cells,) bool/uint8) whose other side is not kept or is the boundary, pointing out "
