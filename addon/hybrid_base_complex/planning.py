@@ -196,6 +196,7 @@ class Soup:
     face_sizes: np.ndarray
     face_vertices: np.ndarray
     face_owner: np.ndarray
+    face_cell: np.ndarray | None = None  # mesh cell each face was taken from, when known
 
     @property
     def num_faces(self) -> int:
