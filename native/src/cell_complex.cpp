@@ -6,10 +6,6 @@
 
 namespace hbc {
 
-const char* complex_level_name(ComplexLevel level) {
-  return level == ComplexLevel::Mesh ? "mesh" : "complex";
-}
-
 namespace {
 
 // Which mesh faces / edges / vertices lie on the boundary of the region of mesh cells flagged in
@@ -92,7 +88,7 @@ CellComplex complex_from_mesh(const Mesh& m) {
 
 CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cells) {
   CellComplex cx;
-  cx.level = ComplexLevel::Mesh;
+  cx.level = Level::Mesh;
   const std::vector<uint8_t> in_cell = flags_of(region_cells, m.num_cells(), "cell");
   const RegionBoundary rb = region_boundary(m, in_cell);
   const size_t ne = m.num_edges(), nv = m.num_vertices();
@@ -175,7 +171,7 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc) {
 CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
                               std::span<const int32_t> region_components) {
   CellComplex cx;
-  cx.level = ComplexLevel::Complex;
+  cx.level = Level::Complex;
   const std::vector<uint8_t> in_comp = flags_of(region_components, bc.num_components(), "component");
   std::vector<uint8_t> in_cell(m.num_cells());
   for (size_t c = 0; c < in_cell.size(); ++c) in_cell[c] = in_comp[bc.cell_component[c]];

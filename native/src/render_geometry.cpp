@@ -295,14 +295,14 @@ std::vector<int32_t> region_cells(const Mesh& m, const Analysis& a, int32_t shee
   return cells;
 }
 
-VsgWireframe region_wireframe(const Mesh& m, const Analysis& a, ComplexLevel level,
+VsgWireframe region_wireframe(const Mesh& m, const Analysis& a, Level level,
                               const WireframeOptions& options, int32_t sheet, int32_t subsheet) {
   CellComplex cx;
   if (sheet < 0 && subsheet < 0) {
-    cx = level == ComplexLevel::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m);
+    cx = level == Level::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m);
   } else {
     const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);
-    cx = level == ComplexLevel::Complex ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
+    cx = level == Level::Complex ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
                                         : complex_from_mesh(m, cells);
   }
   return vsg_wireframe(cx, options);

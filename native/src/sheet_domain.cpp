@@ -56,7 +56,7 @@ Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<s
 
 }  // namespace
 
-SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, SheetLevel level) {
+SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
   SheetDomain d;
   d.level = level;
   const size_t nc = m.num_cells(), nf = m.num_faces();
@@ -64,7 +64,7 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, SheetLevel level)
   d.face_joins.assign(nf, 0);
   std::vector<int32_t> buf;
 
-  if (level == SheetLevel::Complex) {
+  if (level == Level::Complex) {
     std::vector<int32_t> comp_unit(bc.num_components(), -1);
     for (size_t k = 0; k < bc.num_components(); ++k) {
       if (bc.component_kind[k] == ComponentKind::NonHex) continue;

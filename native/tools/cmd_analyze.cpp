@@ -17,8 +17,8 @@ int cmd_analyze(const Args& args_in) {
   if (auto rho = take_option(args, "--rho")) opt.wireframe_options.rho = std::stod(*rho);
   if (auto level = take_option(args, "--level")) {
     if (*level == "mesh") {
-      opt.sheet_level = SheetLevel::Mesh;
-      opt.wireframe_level = ComplexLevel::Mesh;
+      opt.sheet_level = Level::Mesh;
+      opt.wireframe_level = Level::Mesh;
     }
     else if (*level != "complex") throw std::invalid_argument("--level takes complex or mesh");
   }

@@ -29,7 +29,7 @@ int cmd_sheets(const Args& args_in) {
   AnalysisOptions opt;
   opt.wireframe = false;
   if (auto level = take_option(args, "--level")) {
-    if (*level == "mesh") opt.sheet_level = SheetLevel::Mesh;
+    if (*level == "mesh") opt.sheet_level = Level::Mesh;
     else if (*level != "complex") throw std::invalid_argument("--level takes complex or mesh");
   }
   const Format format = take_format(args);
@@ -39,7 +39,7 @@ int cmd_sheets(const Args& args_in) {
   const Sheets& sh = a.sheets;
   if (json) {
     JsonWriter w;
-    w.begin().str("file", args[0]).str("level", opt.sheet_level == SheetLevel::Mesh ? "mesh" : "complex");
+    w.begin().str("file", args[0]).str("level", opt.sheet_level == Level::Mesh ? "mesh" : "complex");
     w.num("largest_self_intersecting", a.largest_self_intersecting);
     w.begin("sheets");
     for (size_t s = 0; s < sh.size(); ++s) {

@@ -40,7 +40,7 @@ void append_real(std::string& out, double v) {
   out += buf;
 }
 
-std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level, int sheet,
+std::string json_text(const Mesh& m, const std::string& file, Level level, int sheet,
                       const WireframeOptions& opt, const VsgWireframe& w, double seconds) {
   std::string o = "{\n";
   auto key = [&](const char* k) { (o += "  \"") += k, o += "\": "; };
@@ -51,7 +51,7 @@ std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level
     o += c;
   }
   o += "\",\n";
-  key("level"), o += std::string("\"") + complex_level_name(level) + "\",\n";
+  key("level"), o += std::string("\"") + level_name(level) + "\",\n";
   key("sheet"), o += std::to_string(sheet) + ",\n";
   key("rho"), append_real(o, opt.rho), o += ",\n";
   key("opacity_floor"), append_real(o, opt.opacity_floor), o += ",\n";
@@ -142,9 +142,9 @@ int cmd_wireframe(const Args& args_in) {
   const auto sheet_arg = take_option(args, "--sheet");
   const auto out_path = take_option(args, "-o");
   if (args.size() != 1 || (obj && json)) throw std::invalid_argument(kUsage);
-  ComplexLevel level = ComplexLevel::Complex;
+  Level level = Level::Complex;
   if (level_name) {
-    if (*level_name == "mesh") level = ComplexLevel::Mesh;
+    if (*level_name == "mesh") level = Level::Mesh;
     else if (*level_name != "complex") throw std::invalid_argument("--level is complex or mesh, not " + *level_name);
   }
   WireframeOptions opt;
@@ -165,7 +165,7 @@ int cmd_wireframe(const Args& args_in) {
   const BaseComplex bc = base_complex(m, singularity_graph(m));
   std::vector<int32_t> region_cells;
   if (sheet >= 0) {
-    const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, SheetLevel::Complex));
+    const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, Level::Complex));
     if (static_cast<size_t>(sheet) >= sheets.size())
       throw std::invalid_argument("--sheet " + std::to_string(sheet) + ": the mesh has " +
                                   std::to_string(sheets.size()) + " sheets");
@@ -174,7 +174,7 @@ int cmd_wireframe(const Args& args_in) {
   }
   const auto t1 = std::chrono::steady_clock::now();
   CellComplex cx;
-  if (level == ComplexLevel::Mesh) {
+  if (level == Level::Mesh) {
     cx = sheet >= 0 ? complex_from_mesh(m, region_cells) : complex_from_mesh(m);
   } else {
     cx = sheet >= 0 ? complex_from_base(m, bc, components_of_cells(bc, region_cells)) : complex_from_base(m, bc);

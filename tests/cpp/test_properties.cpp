@@ -218,8 +218,8 @@ bool check_case(const Case& cs, std::mt19937& rng, const AnalysisOptions& opt) {
 AnalysisOptions level_options(bool mesh_level) {
   AnalysisOptions o;
   if (mesh_level) {
-    o.sheet_level = SheetLevel::Mesh;
-    o.wireframe_level = ComplexLevel::Mesh;
+    o.sheet_level = Level::Mesh;
+    o.wireframe_level = Level::Mesh;
   }
   return o;
 }

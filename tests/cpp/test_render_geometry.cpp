@@ -21,7 +21,7 @@ struct Analysed {
   Analysis analysis;
 };
 
-Analysed grid2(SheetLevel level = SheetLevel::Complex) {
+Analysed grid2(Level level = Level::Complex) {
   Analysed r{build_mesh(generate_grid(2, 2, 2)), {}};
   AnalysisOptions opt;
   opt.sheet_level = level;
@@ -121,7 +121,7 @@ TEST(RenderGeometry, GridSheets) {
 
   // Mesh level: 6 one-cell-thick slabs of 2×2×1 cells; each slab's boundary has 8 + 8 quads and
   // 18 vertices, and within the one component it stays one block.
-  const Analysed fine = grid2(SheetLevel::Mesh);
+  const Analysed fine = grid2(Level::Mesh);
   ASSERT_EQ(fine.analysis.sheets.size(), 6u);
   const BlockSoup slabs = block_soup(fine.mesh, fine.analysis, SoupKind::Sheets);
   EXPECT_EQ(slabs.num_faces(), 96u);
@@ -189,7 +189,7 @@ TEST(RenderGeometry, RegionsAndClasses) {
   EXPECT_EQ(region_cells(g.mesh, g.analysis, -1).size(), 8u);
   EXPECT_EQ(region_cells(g.mesh, g.analysis, 0).size(), 8u);
   EXPECT_THROW(region_cells(g.mesh, g.analysis, 0, 0), std::invalid_argument);  // not type 3
-  const VsgWireframe whole = region_wireframe(g.mesh, g.analysis, ComplexLevel::Complex, {}, -1);
+  const VsgWireframe whole = region_wireframe(g.mesh, g.analysis, Level::Complex, {}, -1);
   EXPECT_EQ(whole.wireframe_edges(), g.analysis.wireframe.wireframe_edges());
   const ClassArrays k = flatten_classes(g.analysis.domain, g.analysis.sheets.classes);
   EXPECT_EQ(k.type, std::vector<uint8_t>(3, 0));  // a grid's sheets are perfect
@@ -197,7 +197,7 @@ TEST(RenderGeometry, RegionsAndClasses) {
   EXPECT_EQ(k.unmatched.rows(), 3u);
   const Csr<int32_t> comps = units_as_components(g.analysis.domain, g.analysis.sheets.sheet_units);
   EXPECT_EQ(comps.items, std::vector<int32_t>(3, 0));
-  const Analysed fine = grid2(SheetLevel::Mesh);
+  const Analysed fine = grid2(Level::Mesh);
   const Csr<int32_t> fine_comps = units_as_components(fine.analysis.domain, fine.analysis.sheets.sheet_units);
   EXPECT_EQ(fine_comps.items, std::vector<int32_t>(6, 0));  // 4 cells per slab, one component
 }

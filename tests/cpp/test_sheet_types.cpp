@@ -4,7 +4,7 @@
 // vertices, self-parallel curves, self-intersecting blocks). The derivations are in the comments.
 // Every mesh is also analysed randomly renumbered, and must give the same sheets up to renumbering.
 //
-// Notation. At the mesh level (SheetLevel::Mesh) units are hex cells and curves mesh edges; a
+// Notation. At the mesh level (Level::Mesh) units are hex cells and curves mesh edges; a
 // sheet is a class of the union-find joining the 4 parallel edges of each direction of every hex
 // cell (adjacent hex cells share a face and so its edges), split into face-connected groups of
 // hex cells. Curves are written as vertex pairs, cells by their input index.
@@ -115,7 +115,7 @@ std::vector<SheetView> views(const Mesh& m, const Analysis& a, const Maps& mp = 
   return out;
 }
 
-Analysis run(const Mesh& m, SheetLevel level) {
+Analysis run(const Mesh& m, Level level) {
   AnalysisOptions o;
   o.sheet_level = level;
   o.wireframe = false;
@@ -131,7 +131,7 @@ std::set<std::set<Edge>> single_edges(const std::vector<Edge>& edges) {
 // Item 4: a randomly renumbered copy gives the same sheets (cells, curves, types and highlight
 // sets mapped back; for unmatched vertices only their number, since which end of a path a
 // maximum matching leaves uncovered is a free choice).
-void expect_same_after_renumbering(const Mesh& m, SheetLevel level, uint32_t seed) {
+void expect_same_after_renumbering(const Mesh& m, Level level, uint32_t seed) {
   std::mt19937 rng(seed);
   Maps mp;
   mp.vert.resize(m.num_vertices());
@@ -219,13 +219,13 @@ Mesh prism_ring_mesh() {
   return build_mesh(from_cells(pts, cells));
 }
 
-void check_prism_ring(SheetLevel level) {
+void check_prism_ring(Level level) {
   const Mesh m = prism_ring_mesh();
   ASSERT_EQ(m.num_cells(), 5u);
   ASSERT_EQ(m.num_hex_cells(), 4u);
   ASSERT_EQ(m.cell_type[4], CellType::Prism);
   const Analysis a = run(m, level);
-  if (level == SheetLevel::Complex) {
+  if (level == Level::Complex) {
     ASSERT_EQ(a.complex.num_components(), 5u);
     EXPECT_EQ(a.complex.num_hex_components(), 4u);
     for (size_t f = 0; f < m.num_faces(); ++f) EXPECT_TRUE(a.complex.face_separation[f]) << "face " << f;
@@ -298,13 +298,13 @@ void check_prism_ring(SheetLevel level) {
   EXPECT_TRUE(by_curves[Z.curves].unmatched.empty());
 }
 
-TEST(SheetTypes, Type1PrismRingMeshLevel) { check_prism_ring(SheetLevel::Mesh); }
-TEST(SheetTypes, Type1PrismRingComplexLevel) { check_prism_ring(SheetLevel::Complex); }
+TEST(SheetTypes, Type1PrismRingMeshLevel) { check_prism_ring(Level::Mesh); }
+TEST(SheetTypes, Type1PrismRingLevel) { check_prism_ring(Level::Complex); }
 TEST(SheetTypes, Type1PrismRingRenumbered) {
   const Mesh m = prism_ring_mesh();
   for (uint32_t seed : {1u, 2u, 3u}) {
-    expect_same_after_renumbering(m, SheetLevel::Mesh, seed);
-    expect_same_after_renumbering(m, SheetLevel::Complex, seed);
+    expect_same_after_renumbering(m, Level::Mesh, seed);
+    expect_same_after_renumbering(m, Level::Complex, seed);
   }
 }
 
@@ -364,7 +364,7 @@ TEST(SheetTypes, Type2TwistedRingMeshLevel) {
   ASSERT_EQ(m.num_cells(), 6u);
   ASSERT_EQ(m.num_hex_cells(), 6u);
   ASSERT_EQ(m.num_vertices(), 18u);
-  const Analysis a = run(m, SheetLevel::Mesh);
+  const Analysis a = run(m, Level::Mesh);
   auto w = [](int k, int y, int z) { return 6 * k + 2 * y + z; };
   auto cell = [](int c, int k) { return 2 * k + c; };
   std::vector<Edge> y_edges, z_edges;
@@ -430,7 +430,7 @@ TEST(SheetTypes, Type2TwistedRingMeshLevel) {
 
 TEST(SheetTypes, Type2TwistedRingRenumbered) {
   const Mesh m = twisted_2x1_ring(3);
-  for (uint32_t seed : {4u, 5u, 6u}) expect_same_after_renumbering(m, SheetLevel::Mesh, seed);
+  for (uint32_t seed : {4u, 5u, 6u}) expect_same_after_renumbering(m, Level::Mesh, seed);
 }
 
 // 3. Type 3: cross-section 1 × 1, n = 5 sections, turned by 90° at the seam. Section k has
@@ -494,7 +494,7 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
   for (int t = 0; t + 1 < 4 * n; ++t)
     EXPECT_LT(edge_id(m, v(t / 4, t % 4), v(t / 4, t % 4 + 1)),
               edge_id(m, v((t + 1) / 4, (t + 1) % 4), v((t + 1) / 4, (t + 1) % 4 + 1)));
-  const Analysis a = run(m, SheetLevel::Mesh);
+  const Analysis a = run(m, Level::Mesh);
   ASSERT_EQ(a.sheets.size(), static_cast<size_t>(n + 1));
   EXPECT_EQ(a.sheets.count(SheetType::Perfect), static_cast<size_t>(n));
   EXPECT_EQ(a.sheets.count(SheetType::Type3), 1u);
@@ -560,7 +560,7 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
 
 TEST(SheetTypes, Type3TwistedRingRenumbered) {
   const Mesh m = twisted_1x1_ring(5);
-  for (uint32_t seed : {7u, 8u, 9u}) expect_same_after_renumbering(m, SheetLevel::Mesh, seed);
+  for (uint32_t seed : {7u, 8u, 9u}) expect_same_after_renumbering(m, Level::Mesh, seed);
 }
 
 // Complex level of both twisted rings: the only singular edges are the valence-1 longitudinal
@@ -575,13 +575,13 @@ TEST(SheetTypes, Type3TwistedRingRenumbered) {
 // components"); either way no curve has an end, so no sheet of this level can be imperfect: the
 // twist is invisible to the complex-level sheets of these meshes, which is why types 2 and 3 are
 // derived at the mesh level above.
-TEST(SheetTypes, TwistedRingsComplexLevel) {
+TEST(SheetTypes, TwistedRingsLevel) {
   struct Case {
     Mesh mesh;
     size_t curves;
   };
   for (const Case& c : {Case{twisted_2x1_ring(3), 2}, Case{twisted_1x1_ring(5), 1}}) {
-    const Analysis a = run(c.mesh, SheetLevel::Complex);
+    const Analysis a = run(c.mesh, Level::Complex);
     ASSERT_EQ(a.complex.num_components(), 1u);
     // A solid torus: its boundary surface has Euler characteristic 0, so it is ring-like.
     EXPECT_EQ(a.complex.component_kind[0], ComponentKind::Ring);

@@ -39,7 +39,7 @@ TEST(Structure, Grid) {
   for (const SheetClass& k : a.sheets.classes) EXPECT_EQ(k.type, SheetType::Perfect);
   // Mesh level: one sheet per layer of cells, 3 + 4 + 5.
   AnalysisOptions mesh_level;
-  mesh_level.sheet_level = SheetLevel::Mesh;
+  mesh_level.sheet_level = Level::Mesh;
   const Analysis b = analyze(m, mesh_level);
   EXPECT_EQ(b.sheets.size(), 12u);
   EXPECT_EQ(b.sheets.count(SheetType::Perfect), 12u);

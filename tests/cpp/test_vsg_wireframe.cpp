@@ -120,7 +120,7 @@ TEST(VsgWireframe, PlainGridHidesTheBoxEdgesAtTheCorners) {
   for (auto cx : {complex_from_mesh(m), complex_from_base(m, base_complex(m, singularity_graph(m)))}) {
     const VsgWireframe w = vsg_wireframe(cx);
     EXPECT_EQ(w.vsg_chains, 12);
-    EXPECT_EQ(w.vsg_edges, cx.level == ComplexLevel::Mesh ? 48 : 12);
+    EXPECT_EQ(w.vsg_edges, cx.level == Level::Mesh ? 48 : 12);
     EXPECT_EQ(w.wireframe_edges(), 12);
     EXPECT_EQ(w.singular_vertices.size(), 8u);
     for (size_t i = 0; i < w.size(); ++i) {
@@ -234,7 +234,7 @@ TEST(VsgWireframe, PaperFigure5) {
   const Mesh m = test::load_data("hybrid-base-complex/test_2.HYBRID");
   const BaseComplex bc = base_complex(m, singularity_graph(m));
   for (const CellComplex& cx : {complex_from_mesh(m), complex_from_base(m, bc)}) {
-    SCOPED_TRACE(complex_level_name(cx.level));
+    SCOPED_TRACE(level_name(cx.level));
     const VsgWireframe w = vsg_wireframe(cx);
     EXPECT_EQ(w.vsg_chains, 13);
     ASSERT_EQ(w.wireframe_edges(), 23);
@@ -414,7 +414,7 @@ void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& 
   for (auto [a, b] : m.edge_verts) mesh_edges.insert({a, b});
   ASSERT_EQ(w.point_opacity.size(), w.polylines.items.size());
   // The oracle holds for the whole fine mesh (a region has its own irregular edges and graph).
-  const bool whole_mesh = cx.level == ComplexLevel::Mesh && cx.num_cells() == m.num_cells();
+  const bool whole_mesh = cx.level == Level::Mesh && cx.num_cells() == m.num_cells();
   const std::vector<int32_t> hops = whole_mesh ? hop_distances(m) : std::vector<int32_t>{};
   for (size_t i = 0; i < w.size(); ++i) {
     const auto poly = w.polylines[i];
@@ -479,7 +479,7 @@ TEST(VsgWireframe, SheetRegions) {
   EXPECT_EQ(a.polylines.items, b.polylines.items);
   EXPECT_EQ(a.shown, b.shown);
   // Every sheet with its adjacent non-hex cells, at both levels.
-  const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, SheetLevel::Complex));
+  const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, Level::Complex));
   ASSERT_EQ(sheets.size(), 23u);
   for (size_t k = 0; k < sheets.size(); ++k) {
     std::vector<int32_t> cells;

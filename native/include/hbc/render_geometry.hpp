@@ -105,7 +105,7 @@ std::vector<int32_t> region_cells(const Mesh& mesh, const Analysis& analysis, in
 
 // The VSG wireframe of that region (whole mesh when sheet < 0) at `level`, as `hbc wireframe`
 // computes it for a sheet.
-VsgWireframe region_wireframe(const Mesh& mesh, const Analysis& analysis, ComplexLevel level,
+VsgWireframe region_wireframe(const Mesh& mesh, const Analysis& analysis, Level level,
                               const WireframeOptions& options, int32_t sheet, int32_t subsheet = -1);
 
 }  // namespace hbc

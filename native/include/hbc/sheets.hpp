@@ -12,11 +12,10 @@
 
 #include "hbc/base_complex.hpp"
 #include "hbc/csr.hpp"
+#include "hbc/level.hpp"
 #include "hbc/mesh.hpp"
 
 namespace hbc {
-
-enum class SheetLevel : uint8_t { Complex = 0, Mesh = 1 };
 
 // Perfect, or the highest imperfect configuration present (type 3 > type 2 > type 1).
 enum class SheetType : uint8_t { Perfect = 0, Type1 = 1, Type2 = 2, Type3 = 3 };
@@ -35,7 +34,7 @@ struct SheetClass {
 // The curve/unit structure sheets are computed on (see the file comment). Curves are given by
 // their mesh edges; units by their mesh cells.
 struct SheetDomain {
-  SheetLevel level = SheetLevel::Complex;
+  Level level = Level::Complex;
   std::vector<int32_t> cell_unit;        // nc: unit of a hex cell's component / the hex cell, -1 for non-hex
   Csr<int32_t> unit_cells;               // nunit rows: mesh cells of each unit
   Csr<int32_t> unit_curves;              // nunit rows: curves each unit holds, sorted
@@ -51,10 +50,10 @@ struct SheetDomain {
   std::vector<uint8_t> face_joins;
 };
 
-SheetDomain sheet_domain(const Mesh& mesh, const BaseComplex& bc, SheetLevel level);
+SheetDomain sheet_domain(const Mesh& mesh, const BaseComplex& bc, Level level);
 
 struct Sheets {
-  SheetLevel level = SheetLevel::Complex;
+  Level level = Level::Complex;
   // Per sheet (numbered by their lowest unit):
   Csr<int32_t> sheet_units;          // units (hex components or hex cells), sorted
   Csr<int32_t> sheet_cells;          // mesh hex cells, sorted

@@ -97,20 +97,14 @@ void class_arrays(py::class_<H, Opts...>& cls, const std::string& prefix, Get ge
   }
 }
 
-ComplexLevel level_from_name(const std::string& level) {
-  if (level == "complex") return ComplexLevel::Complex;
-  if (level == "mesh") return ComplexLevel::Mesh;
-  throw std::invalid_argument("level must be 'complex' or 'mesh', not '" + level + "'");
-}
-
 PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool sheets, bool subsheets,
                       bool wireframe) {
   if (!(rho >= 0.0 && rho <= 1.0)) throw std::invalid_argument("rho must be in [0, 1], not " + std::to_string(rho));
   auto out = std::make_shared<PyAnalysis>();
   out->mesh = std::move(mesh);
   AnalysisOptions& o = out->options;
-  const ComplexLevel lv = level_from_name(level);
-  o.sheet_level = lv == ComplexLevel::Mesh ? SheetLevel::Mesh : SheetLevel::Complex;
+  const Level lv = level_from_name(level);
+  o.sheet_level = lv;
   o.wireframe_level = lv;
   o.wireframe_options.rho = rho;
   o.sheets = sheets;
@@ -304,7 +298,7 @@ void bind_analysis(py::module_& m) {
                                           "The structure of a mesh (Mesh.analyze()): singularity graph, base complex, "
                                           "sheets, subsheets, VSG wireframe. Arrays are read-only views.");
   c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analysed hbc.Mesh.");
-  c.def_property_readonly("level", [](const PyAnalysis& p) { return complex_level_name(p.options.wireframe_level); });
+  c.def_property_readonly("level", [](const PyAnalysis& p) { return level_name(p.options.wireframe_level); });
   c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; });
   c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.has_sheets; });
   c.def_property_readonly("has_subsheets", [](const PyAnalysis& p) { return p.analysis.has_subsheets; });
