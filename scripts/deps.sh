@@ -2,7 +2,8 @@
 # Installs the Debian packages the project needs, only those missing (idempotent).
 set -euo pipefail
 PKGS=(cmake g++ make pkg-config python3-dev python3-numpy python3-pytest pybind11-dev python3-pybind11
-      libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev libbenchmark-dev blender)
+      libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev libbenchmark-dev blender
+      libcli11-dev nlohmann-json3-dev)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

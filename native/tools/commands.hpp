@@ -1,29 +1,45 @@
 #pragma once
-// The hbc command's subcommands, one file each. Each returns the process exit status:
-// 0 success, 1 usage error, 2 bad input (message on stderr naming file and line).
+// The hbc command's subcommands, one file each, on CLI11. Each add_<command> registers its
+// subcommand on the top-level app: its options (typed, with ranges and choices, so CLI11 rejects
+// bad values before any work) and a callback that runs the command once the line has parsed.
+// Exit status (SPEC §5, set in hbc_main.cpp): 0 success; 1 a malformed command line (unknown
+// option, missing argument); 2 bad input: a value an option cannot take (`--rho abc`, `--rho 7`),
+// or a file that cannot be read (message on stderr naming file and line).
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "hbc/io.hpp"
+#include "hbc/level.hpp"
 
 namespace hbc::cli {
 
-using Args = std::vector<std::string>;
+void add_info(CLI::App& app);
+void add_generate(CLI::App& app);
+void add_export_surface(CLI::App& app);
+void add_analyze(CLI::App& app);
+void add_wireframe(CLI::App& app);
+void add_sheets(CLI::App& app);
+void add_table(CLI::App& app);
 
-int cmd_info(const Args& args);
-int cmd_generate(const Args& args);
-int cmd_export_surface(const Args& args);
-int cmd_analyze(const Args& args);
-int cmd_wireframe(const Args& args);
-int cmd_sheets(const Args& args);
-int cmd_table(const Args& args);
+// The mesh file every reading command takes: FILE and --format NAME (default: by extension).
+struct InputArgs {
+  std::string file;
+  std::string format;  // empty: by extension; else a name format_from_name accepts
+  Format parsed_format() const { return format.empty() ? Format::Auto : format_from_name(format); }
+};
+void add_input(CLI::App& cmd, InputArgs& in);
+// --format NAME alone (for writers).
+void add_format(CLI::App& cmd, std::string& format);
+// --level complex|mesh, parsed by level_from_name (the binding's parser too).
+void add_level(CLI::App& cmd, std::string& level, const std::string& help);
 
-// Small shared helpers for argument handling.
-bool take_flag(Args& args, const std::string& flag);                       // removes it if present
-std::optional<std::string> take_option(Args& args, const std::string& opt);  // "--opt value"
-Format take_format(Args& args);                                            // --format NAME or Auto
+// An integer option's range [min, INT32_MAX] (CLI11's NonNegativeNumber prints DBL_MAX).
+CLI::Range at_least(int min);
+
 // Loads a mesh and prints its warnings on stderr.
-Mesh load_for_cli(const std::string& path, Format format, double* seconds = nullptr);
+Mesh load_for_cli(const InputArgs& in, double* seconds = nullptr);
+// Writes `text` to `path`, or to stdout when there is none.
+void write_output(const std::string& text, const std::optional<std::string>& path);
 
 }  // namespace hbc::cli

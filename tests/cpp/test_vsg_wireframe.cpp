@@ -16,6 +16,7 @@
 #include "hbc/sheets.hpp"
 #include "hbc/singularity_graph.hpp"
 #include "hbc/vsg_wireframe.hpp"
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -512,36 +513,27 @@ TEST(VsgWireframe, ColoursSeparateAdjacentClasses) {
   EXPECT_LE(conflicts, adjacent / 20) << conflicts << " of " << adjacent;
 }
 
-std::string run_cli(const std::string& args, int* status) {
-  std::string out;
-  FILE* p = popen((std::string(HBC_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!p) return out;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  *status = pclose(p);
-  return out;
-}
-
 TEST(VsgWireframe, CommandLine) {
   HBC_REQUIRE_DATA("hybrid-base-complex/test_2.HYBRID");
   const std::string file = test::data_path("hybrid-base-complex/test_2.HYBRID");
-  int status = -1;
-  std::string out = run_cli("wireframe " + file + " --json", &status);
-  EXPECT_EQ(status, 0) << out;
-  EXPECT_NE(out.find("\"wireframe_edges\": 23,"), std::string::npos) << out.substr(0, 600);
-  EXPECT_NE(out.find("\"wireframe_edges_simplified\": 7,"), std::string::npos);
-  EXPECT_NE(out.find("\"level\": \"complex\""), std::string::npos);
-  out = run_cli("wireframe " + file + " --obj --level mesh", &status);
-  EXPECT_EQ(status, 0) << out;
+  test::CliRun r = test::run_cli("wireframe " + file + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j["wireframe_edges"], 23);
+  EXPECT_EQ(j["wireframe_edges_simplified"], 7);
+  EXPECT_EQ(j["level"], "complex");
+  EXPECT_EQ(j["edges"].size(), 23u);
+  r = test::run_cli("wireframe " + file + " --obj --level mesh");
+  EXPECT_EQ(r.status, 0) << r.err;
   size_t lines = 0;
-  for (size_t k = out.find("\nl "); k != std::string::npos; k = out.find("\nl ", k + 1)) ++lines;
+  for (size_t k = r.out.find("\nl "); k != std::string::npos; k = r.out.find("\nl ", k + 1)) ++lines;
   EXPECT_EQ(lines, 7u);
-  out = run_cli("wireframe " + file + " --level coarse", &status);
-  EXPECT_NE(status, 0);
-  out = run_cli("wireframe " + file + " --sheet 9999", &status);
-  EXPECT_NE(status, 0);
-  EXPECT_NE(out.find("sheets"), std::string::npos) << out;
+  r = test::run_cli("wireframe " + file + " --level coarse");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--level"), std::string::npos) << r.err;
+  r = test::run_cli("wireframe " + file + " --sheet 9999");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("sheets"), std::string::npos) << r.err;
 }
 
 }  // namespace
