@@ -117,7 +117,7 @@ class Structure:
         """[(name, colour, Lines)]: one group per singularity valence, then pseudo-singular and
         non-manifold edges."""
         g = self.analysis.graph
-        offsets, verts = np.asarray(g.chain_offsets), np.asarray(g.chain_vertices)
+        offsets, verts = np.asarray(g.chain_vertex_offsets), np.asarray(g.chain_vertex_items)
         valence = np.asarray(g.chain_valence)
         closed = getattr(g, "chain_closed", None)
         groups = []
@@ -274,7 +274,7 @@ class Structure:
                 kwargs["subsheet"] = int(subsheet)
         w = a.wireframe(**kwargs)
         off = np.asarray(w.polyline_offsets)
-        verts = np.asarray(w.polyline_vertices)
+        verts = np.asarray(w.polyline_items)
         k = len(off) - 1
         color_idx = np.asarray(getattr(w, "color", np.zeros(k, np.int32)), np.int64)
         colors = P.palette_color(color_idx) if k else np.zeros((0, 4), np.float32)

@@ -95,11 +95,11 @@ class FakeAnalysis:
             ncomp += 1
         self.complex = SimpleNamespace(
             cell_component=comp, component_kind=kinds,
-            component_offsets=None, component_cells=None, curve_offsets=None, curve_vertices=None)
-        self.complex.component_offsets, self.complex.component_cells = _csr(
+            component_cell_offsets=None, component_cell_items=None, curve_vertex_offsets=None, curve_vertex_items=None)
+        self.complex.component_cell_offsets, self.complex.component_cell_items = _csr(
             [list(np.nonzero(comp == c)[0]) for c in range(ncomp)])
         e = mesh.edges
-        self.complex.curve_offsets, self.complex.curve_vertices = _csr([list(e[0]), list(e[1]), list(e[2])])
+        self.complex.curve_vertex_offsets, self.complex.curve_vertex_items = _csr([list(e[0]), list(e[1]), list(e[2])])
         ne = len(e)
         edge_class = np.zeros(ne, np.uint8)
         edge_class[:3] = 1
@@ -107,7 +107,7 @@ class FakeAnalysis:
         edge_class[5] = 3
         chains = [list(e[0]), list(e[1]), list(e[2])]
         self.graph = SimpleNamespace(edge_class=edge_class, chain_valence=np.array([3, 5, 3], np.int32))
-        self.graph.chain_offsets, self.graph.chain_vertices = _csr(chains)
+        self.graph.chain_vertex_offsets, self.graph.chain_vertex_items = _csr(chains)
         sheet_components = [[0, 1] if ncomp > 1 else [0], list(range(ncomp)), [ncomp - 1]]
         self.num_sheets = 3
         self.sheet_type = np.array([0, 3, 2], np.uint8)
@@ -144,7 +144,7 @@ class FakeAnalysis:
         k = 4 if sheet is None else 2
         polys = [list(e[i]) for i in range(k)]
         off, verts = _csr(polys)
-        return SimpleNamespace(polyline_offsets=off, polyline_vertices=verts,
+        return SimpleNamespace(polyline_offsets=off, polyline_items=verts,
                                point_opacity=np.linspace(0.15, 1.0, len(verts)).astype(np.float32),
                                kind=np.zeros(k, np.uint8), shown=np.array([True] * (k - 1) + [False]),
                                color=np.arange(k, dtype=np.int32))

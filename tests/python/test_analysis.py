@@ -152,14 +152,14 @@ def test_graph_arrays(analysed, name):
     assert np.all(g.edge_class[g.pseudo_singular_edges] == 2)
     ns = g.num_singularities
     assert ns == s["singularities"]
-    check_csr(g.chain_offsets, g.chain_vertices, ns)
-    check_csr(g.chain_edge_offsets, g.chain_edges, ns)
+    check_csr(g.chain_vertex_offsets, g.chain_vertex_items, ns)
+    check_csr(g.chain_edge_offsets, g.chain_edge_items, ns)
     assert g.chain_valence.dtype == np.int32 and g.chain_valence.shape == (ns,)
     for arr in (g.chain_boundary, g.chain_closed):
         assert arr.dtype == np.bool_ and arr.shape == (ns,)
-    assert np.all(g.edge_class[g.chain_edges] == 1)
-    assert np.array_equal(np.sort(g.chain_edges), np.flatnonzero(g.edge_class == 1))
-    assert_chains_of_edges(m, g.chain_offsets, g.chain_vertices, g.chain_closed)
+    assert np.all(g.edge_class[g.chain_edge_items] == 1)
+    assert np.array_equal(np.sort(g.chain_edge_items), np.flatnonzero(g.edge_class == 1))
+    assert_chains_of_edges(m, g.chain_vertex_offsets, g.chain_vertex_items, g.chain_closed)
     assert len(g.singular_vertices) == s["singular_vertices"]
     for arr in (g.singular_vertices, g.pseudo_singular_vertices):
         assert arr.dtype == np.int32 and np.all(np.diff(arr) > 0)
@@ -175,15 +175,15 @@ def test_complex_arrays(analysed, name):
     ncomp = s["components"]
     assert c.cell_component.shape == (m.num_cells,) and c.cell_component.dtype == np.int32
     assert c.component_kind.dtype == np.uint8 and c.component_kind.shape == (ncomp,)
-    check_csr(c.component_offsets, c.component_cells, ncomp)
+    check_csr(c.component_cell_offsets, c.component_cell_items, ncomp)
     # Every cell in exactly one component, the one cell_component names.
-    owner = np.repeat(np.arange(ncomp), np.diff(c.component_offsets))
-    assert np.array_equal(np.sort(c.component_cells), np.arange(m.num_cells))
-    assert np.array_equal(c.cell_component[c.component_cells], owner)
+    owner = np.repeat(np.arange(ncomp), np.diff(c.component_cell_offsets))
+    assert np.array_equal(np.sort(c.component_cell_items), np.arange(m.num_cells))
+    assert np.array_equal(c.cell_component[c.component_cell_items], owner)
     # Non-hex components are single non-hex cells.
     nonhex = c.component_kind == 3
-    assert np.all(np.diff(c.component_offsets)[nonhex] == 1)
-    assert np.all(m.cell_types[c.component_cells[c.component_offsets[:-1][nonhex]]] != 0)
+    assert np.all(np.diff(c.component_cell_offsets)[nonhex] == 1)
+    assert np.all(m.cell_types[c.component_cell_items[c.component_cell_offsets[:-1][nonhex]]] != 0)
     check_csr(c.component_adjacency_offsets, c.component_adjacency_items, ncomp)
     assert c.face_separation.dtype == np.bool_ and c.face_separation.shape == (m.num_faces,)
     assert c.face_patch.shape == (m.num_faces,)
@@ -195,11 +195,11 @@ def test_complex_arrays(analysed, name):
     across = c.cell_component[fc[inner, 0]] != c.cell_component[fc[inner, 1]]
     assert np.all(c.face_separation[inner][across])
     assert c.num_patches == s["patches"] and c.num_curves == s["curves"]
-    check_csr(c.patch_offsets, c.patch_faces, c.num_patches)
-    check_csr(c.curve_offsets, c.curve_vertices, c.num_curves)
-    check_csr(c.curve_edge_offsets, c.curve_edges, c.num_curves)
+    check_csr(c.patch_face_offsets, c.patch_face_items, c.num_patches)
+    check_csr(c.curve_vertex_offsets, c.curve_vertex_items, c.num_curves)
+    check_csr(c.curve_edge_offsets, c.curve_edge_items, c.num_curves)
     assert c.curve_closed.dtype == np.bool_ and c.curve_closed.shape == (c.num_curves,)
-    assert_chains_of_edges(m, c.curve_offsets, c.curve_vertices, c.curve_closed)
+    assert_chains_of_edges(m, c.curve_vertex_offsets, c.curve_vertex_items, c.curve_closed)
     assert len(c.corners) == s["corners"] and c.corners.dtype == np.int32
     assert len(c.self_adjacent_faces) == s["self_adjacent_faces"]
 
@@ -263,9 +263,9 @@ def test_subsheets(analysed, name):
 
 def check_wireframe(m, w, counts=None):
     n = w.count
-    check_csr(w.polyline_offsets, w.polyline_vertices, n)
+    check_csr(w.polyline_offsets, w.polyline_items, n)
     assert np.all(np.diff(w.polyline_offsets) >= 2)
-    assert w.point_opacity.dtype == np.float32 and w.point_opacity.shape == w.polyline_vertices.shape
+    assert w.point_opacity.dtype == np.float32 and w.point_opacity.shape == w.polyline_items.shape
     assert np.all((w.point_opacity >= 0.15 - 1e-6) & (w.point_opacity <= 1.0))
     for arr, dtype in ((w.kind, np.uint8), (w.non_important, np.uint8), (w.stop, np.uint8),
                        (w.shown, np.bool_), (w.reactivated, np.bool_), (w.color, np.int32),
@@ -280,7 +280,7 @@ def check_wireframe(m, w, counts=None):
     assert not np.any(w.reactivated & (w.non_important == 0))
     assert np.all(w.color >= 0)
     assert np.all(w.color_class[w.color_class] == w.color_class), "a class is named by one of its edges"
-    assert_chains_of_edges(m, w.polyline_offsets, w.polyline_vertices)
+    assert_chains_of_edges(m, w.polyline_offsets, w.polyline_items)
     c = w.counts
     assert c["wireframe_edges"] == n and c["wireframe_edges_simplified"] == int(w.shown.sum())
     assert c["vsg_chains"] == int(np.count_nonzero(w.kind == 0))
@@ -294,7 +294,7 @@ def test_wireframe_whole(analysed, name):
     s = a.stats
     w = a.wireframe()
     check_wireframe(m, w, {k: s[k] for k in ("vsg_edges", "wireframe_edges", "wireframe_edges_simplified")})
-    assert not w.polyline_vertices.flags.writeable
+    assert not w.polyline_items.flags.writeable
 
 
 @pytest.mark.parametrize("name", [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh"])
@@ -316,7 +316,7 @@ def test_wireframe_regions(analysed, name):
         # At the complex level the region is the components of those cells.
         comps = np.unique(a.complex.cell_component[cells])
         region = np.flatnonzero(np.isin(a.complex.cell_component, comps))
-        assert np.all(np.isin(w.polyline_vertices, region_vertices(region)))
+        assert np.all(np.isin(w.polyline_items, region_vertices(region)))
     big = a.largest_self_intersecting
     sub = a.subsheets(big)
     for k in range(sub.count):
@@ -334,8 +334,8 @@ def test_wireframe_regions(analysed, name):
 def test_arrays_outlive_their_objects(shared_data_dir):
     m = hbc.load(shared_data_dir / TABLE1 / "cube_twist-comp.obj.HYBRID")
     a = m.analyze()
-    kept = {"edge_class": a.graph.edge_class, "component_cells": a.complex.component_cells,
-            "sheet_cell_items": a.sheet_cell_items, "polyline_vertices": a.wireframe().polyline_vertices,
+    kept = {"edge_class": a.graph.edge_class, "component_cell_items": a.complex.component_cell_items,
+            "sheet_cell_items": a.sheet_cell_items, "polyline_items": a.wireframe().polyline_items,
             "region": a.wireframe(sheet=0).point_opacity}
     copies = {k: v.copy() for k, v in kept.items()}
     assert a.mesh is m

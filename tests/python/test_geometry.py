@@ -255,11 +255,11 @@ def test_soup_arrays_are_owned(analysed):
 def test_polylines(analysed):
     m, a = analysed[TABLE1 + "teapot.hedra"]
     c = a.complex
-    p = hbc.polylines(m, c.curve_offsets, c.curve_vertices)
-    assert p.dtype == np.float32 and p.shape == (len(c.curve_vertices), 3)
-    assert np.array_equal(p, m.points[c.curve_vertices])
+    p = hbc.polylines(m, c.curve_vertex_offsets, c.curve_vertex_items)
+    assert p.dtype == np.float32 and p.shape == (len(c.curve_vertex_items), 3)
+    assert np.array_equal(p, m.points[c.curve_vertex_items])
     w = a.wireframe()
-    assert np.array_equal(hbc.polylines(m, w.polyline_offsets, w.polyline_vertices), m.points[w.polyline_vertices])
+    assert np.array_equal(hbc.polylines(m, w.polyline_offsets, w.polyline_items), m.points[w.polyline_items])
     assert hbc.polylines(m, [0, 2, 3], [0, 1, 2]).shape == (3, 3)  # any integer sequence
     assert hbc.polylines(m, [0], []).shape == (0, 3)
     with pytest.raises(ValueError, match="offsets"):

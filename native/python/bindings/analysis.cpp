@@ -209,9 +209,9 @@ void bind_graph(py::module_& m) {
        "bool (ne,): valence other than 4 inside / 2 on the boundary.");
   prop(g, "edge_chain", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.edge_chain, s); },
        "int32 (ne,): singularity of a singular edge, else -1.");
-  csr(g, "chain_offsets", "chain_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; },
+  csr(g, "chain_vertex_offsets", "chain_vertex_items", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; },
       "ordered vertices of each singularity (a closed chain does not repeat its first vertex).");
-  csr(g, "chain_edge_offsets", "chain_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; },
+  csr(g, "chain_edge_offsets", "chain_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; },
       "ordered edges of each singularity; edge i joins chain vertices i and i+1 (mod n).");
   prop(g, "chain_valence", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.chain_valence, s); },
        "int32 (ns,): valence of each singularity.");
@@ -237,7 +237,7 @@ void bind_complex(py::module_& m) {
        "int32 (nc,): component of each cell.");
   prop(c, "component_kind", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.complex.component_kind, s); },
        "uint8 (ncomp,): 0 cube, 1 ring, 2 other, 3 non-hex.");
-  csr(c, "component_offsets", "component_cells", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; },
+  csr(c, "component_cell_offsets", "component_cell_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; },
       "sorted cells of each component.");
   csr(c, "component_adjacency_offsets", "component_adjacency_items",
       [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_adjacency; },
@@ -246,11 +246,11 @@ void bind_complex(py::module_& m) {
        "bool (nf,): separation face.");
   prop(c, "face_patch", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.face_patch, s); },
        "int32 (nf,): patch of a separation face, else -1.");
-  csr(c, "patch_offsets", "patch_faces", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; },
+  csr(c, "patch_face_offsets", "patch_face_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; },
       "sorted mesh faces of each patch.");
-  csr(c, "curve_offsets", "curve_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; },
+  csr(c, "curve_vertex_offsets", "curve_vertex_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; },
       "mesh vertex polyline of each curve (a closed curve does not repeat its first vertex).");
-  csr(c, "curve_edge_offsets", "curve_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; },
+  csr(c, "curve_edge_offsets", "curve_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; },
       "ordered mesh edges of each curve.");
   prop(c, "curve_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.curve_closed, s); },
        "bool (ncurve,): a closed curve (no corner on it).");

@@ -40,11 +40,11 @@ void bind_wireframe(py::module_& m) {
                             "opacity and per-polyline kind, simplification flags and colours. Arrays are views.");
   c.def_property_readonly("count", [](const PyWireframe& p) { return p.w->size(); }, "Number of polylines.");
   wire_prop(c, "polyline_offsets", [](const VsgWireframe& w) -> auto& { return w.polylines.offsets; },
-            "int32 (count + 1,): row offsets of polyline_vertices.");
-  wire_prop(c, "polyline_vertices", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
+            "int32 (count + 1,): row offsets of polyline_items.");
+  wire_prop(c, "polyline_items", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
             "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
   wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.point_opacity; },
-            "float32, aligned with polyline_vertices: opacity in [floor, 1].");
+            "float32, aligned with polyline_items: opacity in [floor, 1].");
   wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 VSG chain, 1 trace.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
             "int32 (count,): chain valence; traces the valence of their regular edges.");
