@@ -7,7 +7,7 @@
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
-#include "hbc/structure_surfaces.hpp"
+#include "hbc/face_selection.hpp"
 #include "hbc/surface.hpp"
 
 namespace hbc::cli {

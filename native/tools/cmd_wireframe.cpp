@@ -11,7 +11,7 @@
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
-#include "hbc/render_geometry.hpp"
+#include "hbc/region.hpp"
 #include "json.hpp"
 
 namespace hbc::cli {

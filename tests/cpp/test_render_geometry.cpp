@@ -11,6 +11,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
+#include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
 
 namespace hbc {

@@ -12,7 +12,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
-#include "hbc/structure_surfaces.hpp"
+#include "hbc/face_selection.hpp"
 #include "hbc/surface.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"

@@ -1,5 +1,5 @@
 """hbc.block_soup() and hbc.polylines(): polygon soups of blocks (cells, components, sheets,
-subsheets, one sheet's blocks, non-hex cells, the boundary) with outward loops, one vertex copy
+subsheets, one sheet's blocks, non-hex cells, the boundary, the hex region) with outward loops, one vertex copy
 per owner, shrinking toward each owner's centroid; and polyline point positions."""
 
 import numpy as np
@@ -28,7 +28,8 @@ def rows(offsets, items):
 def kinds(a):
     """(what, sheet, number of possible owners) for every block set the analysis allows."""
     out = [("cells", -1, a.mesh.num_cells), ("components", -1, len(a.complex.component_kind)),
-           ("sheets", -1, a.num_sheets), ("non_hex", -1, a.mesh.num_cells), ("boundary", -1, 5)]
+           ("sheets", -1, a.num_sheets), ("non_hex", -1, a.mesh.num_cells), ("boundary", -1, 5),
+           ("hex_region", -1, 1)]
     for s in range(min(a.num_sheets, 3)):
         out += [("sheet", s, len(a.complex.component_kind)), ("sheet_non_hex", s, a.mesh.num_cells)]
     for s in a.self_intersecting_sheets:
@@ -114,6 +115,15 @@ def test_soup_face_counts(analysed, name):
     assert np.array_equal(np.sort(boundary["face_source"]), bf)
     order = np.argsort(boundary["face_source"])
     assert np.array_equal(boundary["face_owner"][order], m.cell_types[m.face_cells[bf, 0]])
+    # The hex region: one block (owner 0), the faces with a hex cell on exactly one side (a
+    # boundary face of a hex cell counts: its other side is no cell), each seen from its hex cell.
+    region = hbc.block_soup(m, a, "hex_region")
+    hex_side = np.append(hexes, False)[m.face_cells]  # face_cells -1 picks the appended False
+    expected = np.flatnonzero(hex_side[:, 0] != hex_side[:, 1])
+    assert np.array_equal(np.sort(region["face_source"]), expected)
+    assert np.all(region["face_owner"] == 0)
+    if hexes.all():
+        assert np.array_equal(expected, bf)  # an all-hex mesh: the region's surface is the boundary
     # Components: separation faces, once per side; interior ones twice.
     comps = hbc.block_soup(m, a, "components")
     sep = a.complex.face_separation

@@ -10,6 +10,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/mesh.hpp"
+#include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
 
 namespace hbc::python {

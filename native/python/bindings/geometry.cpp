@@ -120,7 +120,8 @@ void bind_geometry(py::module_& m) {
         "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
-        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type). Returns a dict: "
+        "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex_region' (one "
+        "block, owner 0: the surface of the hex cells). Returns a dict: "
         "positions float32 (np, 3), point_vertex int32 (np,), face_sizes int32 (nf,), face_vertices "
         "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
         "Loops are outward; faces grouped by increasing owner.");

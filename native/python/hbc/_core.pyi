@@ -10,7 +10,8 @@ __version__: str
 
 Format = Literal["ovm", "ovmb", "mesh", "medit", "hybrid", "hedra"]
 Level = Literal["complex", "mesh"]
-SoupWhat = Literal["cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary"]
+SoupWhat = Literal["cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary",
+                   "hex_region"]
 I32 = npt.NDArray[np.int32]
 U8 = npt.NDArray[np.uint8]
 Bool = npt.NDArray[np.bool_]
