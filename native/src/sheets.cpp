@@ -62,10 +62,10 @@ void sort_unique(std::vector<int32_t>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
-SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const UnitMask& in_units) {
-  SheetClass k;
-  // (end vertex, curve) for every open curve.
-  std::vector<std::pair<int32_t, int32_t>> ends;
+// (end vertex, curve) for every end of an open curve, sorted: curves sharing an end are adjacent.
+using CurveEnds = std::vector<std::pair<int32_t, int32_t>>;
+CurveEnds sorted_curve_ends(const SheetDomain& d, const std::vector<int32_t>& curves) {
+  CurveEnds ends;
   for (int32_t c : curves) {
     const auto [a, b] = d.curve_ends[c];
     if (a < 0) continue;
@@ -73,124 +73,161 @@ SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, co
     if (b != a) ends.push_back({b, c});
   }
   std::sort(ends.begin(), ends.end());
+  return ends;
+}
+
+// The configuration of two parallel curves a and b sharing an end (SPEC §3): type 3 when a unit
+// of the sheet holds both, type 2 when they lie in adjacent units, type 1 otherwise.
+void classify_pair(const SheetDomain& d, int32_t a, int32_t b, const UnitMask& in_units, SheetClass& k) {
+  bool common = false;
+  for (int32_t u : d.curve_units[a])
+    if (in_units(u) && contains(d.curve_units[b], u)) {
+      common = true;
+      k.self_intersecting_units.push_back(u);
+    }
+  if (common) {
+    k.type3 = true;
+    return;
+  }
+  bool adjacent = false;
+  for (int32_t ua : d.curve_units[a]) {
+    if (!in_units(ua)) continue;
+    for (int32_t ub : d.curve_units[b])
+      if (in_units(ub) && contains(d.unit_adjacency[ua], ub)) adjacent = true;
+  }
+  if (adjacent) {
+    k.type2 = true;
+    k.self_parallel_curves.push_back(a);
+    k.self_parallel_curves.push_back(b);
+  } else {
+    k.type1 = true;
+  }
+}
+
+// Every configuration present among the curves sharing an end, and the sheet's type.
+void detect_configurations(const SheetDomain& d, const CurveEnds& ends, const UnitMask& in_units, SheetClass& k) {
   for (size_t i = 0; i < ends.size();) {
     size_t j = i;
     while (j < ends.size() && ends[j].first == ends[i].first) ++j;
     if (j - i >= 2) k.shared_vertices.push_back(ends[i].first);
     for (size_t p = i; p < j; ++p)
-      for (size_t q = p + 1; q < j; ++q) {
-        const int32_t a = ends[p].second, b = ends[q].second;
-        bool common = false;
-        for (int32_t u : d.curve_units[a])
-          if (in_units(u) && contains(d.curve_units[b], u)) {
-            common = true;
-            k.self_intersecting_units.push_back(u);
-          }
-        if (common) {
-          k.type3 = true;
-          continue;
-        }
-        bool adjacent = false;
-        for (int32_t ua : d.curve_units[a]) {
-          if (!in_units(ua)) continue;
-          for (int32_t ub : d.curve_units[b])
-            if (in_units(ub) && contains(d.unit_adjacency[ua], ub)) adjacent = true;
-        }
-        if (adjacent) {
-          k.type2 = true;
-          k.self_parallel_curves.push_back(a);
-          k.self_parallel_curves.push_back(b);
-        } else {
-          k.type1 = true;
-        }
-      }
+      for (size_t q = p + 1; q < j; ++q) classify_pair(d, ends[p].second, ends[q].second, in_units, k);
     i = j;
   }
   sort_unique(k.self_intersecting_units);
   sort_unique(k.self_parallel_curves);
   k.type = k.type3 ? SheetType::Type3 : k.type2 ? SheetType::Type2 : k.type1 ? SheetType::Type1 : SheetType::Perfect;
+}
 
-  // Maximum cardinality matching (Edmonds) on (curve ends, curves): the ends it leaves uncovered
-  // are what the figures highlight. Curves ending at a vertex of degree one are matched first (some
-  // maximum matching always holds such a curve), which settles most of the graph cheaply; what is
-  // left, the tangled part around shared ends, goes to Boost's Edmonds.
-  if (k.type != SheetType::Perfect) {
-    // `ends` is sorted by vertex: local vertex ids in that order.
-    std::vector<int32_t> verts;
-    for (auto [v, c] : ends)
-      if (verts.empty() || verts.back() != v) verts.push_back(v);
-    auto local = [&](int32_t v) {
-      return static_cast<int32_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
-    };
-    std::vector<std::pair<int32_t, int32_t>> edges;
-    for (int32_t c : curves) {
-      const auto [a, b] = d.curve_ends[c];
-      if (a < 0 || a == b) continue;
-      const int32_t la = local(a), lb = local(b);
-      edges.push_back({std::min(la, lb), std::max(la, lb)});
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    const size_t nv = verts.size();
-    Csr<int32_t> adj;
-    adj.offsets.assign(nv + 1, 0);
-    for (auto [a, b] : edges) {
-      ++adj.offsets[a + 1];
-      ++adj.offsets[b + 1];
-    }
-    for (size_t i = 0; i < nv; ++i) adj.offsets[i + 1] += adj.offsets[i];
-    adj.items.resize(adj.offsets.back());
-    {
-      std::vector<int32_t> fill(adj.offsets.begin(), adj.offsets.end() - 1);
-      for (auto [a, b] : edges) {
-        adj.items[fill[a]++] = b;
-        adj.items[fill[b]++] = a;
-      }
-    }
-    std::vector<int32_t> deg(nv), queue;
-    std::vector<uint8_t> alive(nv, 1);
-    for (size_t i = 0; i < nv; ++i) {
-      deg[i] = adj.count(i);
-      if (deg[i] == 1) queue.push_back(static_cast<int32_t>(i));
-    }
-    auto drop = [&](int32_t u) {  // u leaves the graph; its neighbours lose a degree
-      alive[u] = 0;
-      for (int32_t w : adj[u]) {
-        if (!alive[w]) continue;
-        if (--deg[w] == 1) queue.push_back(w);
-        else if (deg[w] == 0) {
-          alive[w] = 0;
-          k.unmatched_vertices.push_back(verts[w]);
-        }
-      }
-    };
-    for (size_t q = 0; q < queue.size(); ++q) {
-      const int32_t v = queue[q];
-      if (!alive[v] || deg[v] != 1) continue;
-      int32_t u = -1;
-      for (int32_t w : adj[v])
-        if (alive[w]) u = w;
-      alive[v] = 0;
-      drop(u);
-    }
-    std::vector<int32_t> rest, gid(nv, -1);
-    for (size_t i = 0; i < nv; ++i)
-      if (alive[i]) {
-        gid[i] = static_cast<int32_t>(rest.size());
-        rest.push_back(static_cast<int32_t>(i));
-      }
-    if (!rest.empty()) {
-      using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
-      Graph g(rest.size());
-      for (auto [a, b] : edges)
-        if (gid[a] >= 0 && gid[b] >= 0) boost::add_edge(static_cast<size_t>(gid[a]), static_cast<size_t>(gid[b]), g);
-      std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(rest.size());
-      boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
-      for (size_t i = 0; i < rest.size(); ++i)
-        if (mate[i] == boost::graph_traits<Graph>::null_vertex()) k.unmatched_vertices.push_back(verts[rest[i]]);
-    }
-    std::sort(k.unmatched_vertices.begin(), k.unmatched_vertices.end());
+// The graph the matching runs on: vertices the distinct curve ends (local ids in increasing
+// mesh-vertex order), edges the open curves with two distinct ends (each vertex pair once).
+struct EndGraph {
+  std::vector<int32_t> verts;                       // nv: mesh vertex of each local vertex
+  std::vector<std::pair<int32_t, int32_t>> edges;  // sorted (low, high) local pairs
+  Csr<int32_t> adj;                                 // nv rows: neighbours
+};
+
+EndGraph end_graph(const SheetDomain& d, const std::vector<int32_t>& curves, const CurveEnds& ends) {
+  EndGraph g;
+  for (auto [v, c] : ends)
+    if (g.verts.empty() || g.verts.back() != v) g.verts.push_back(v);
+  auto local = [&](int32_t v) {
+    return static_cast<int32_t>(std::lower_bound(g.verts.begin(), g.verts.end(), v) - g.verts.begin());
+  };
+  for (int32_t c : curves) {
+    const auto [a, b] = d.curve_ends[c];
+    if (a < 0 || a == b) continue;
+    const int32_t la = local(a), lb = local(b);
+    g.edges.push_back({std::min(la, lb), std::max(la, lb)});
   }
+  std::sort(g.edges.begin(), g.edges.end());
+  g.edges.erase(std::unique(g.edges.begin(), g.edges.end()), g.edges.end());
+  const size_t nv = g.verts.size();
+  g.adj.offsets.assign(nv + 1, 0);
+  for (auto [a, b] : g.edges) {
+    ++g.adj.offsets[a + 1];
+    ++g.adj.offsets[b + 1];
+  }
+  for (size_t i = 0; i < nv; ++i) g.adj.offsets[i + 1] += g.adj.offsets[i];
+  g.adj.items.resize(g.adj.offsets.back());
+  std::vector<int32_t> fill(g.adj.offsets.begin(), g.adj.offsets.end() - 1);
+  for (auto [a, b] : g.edges) {
+    g.adj.items[fill[a]++] = b;
+    g.adj.items[fill[b]++] = a;
+  }
+  return g;
+}
+
+// Matches every vertex of degree one with its neighbour (some maximum matching always holds such
+// an edge), repeatedly; vertices left without neighbours are unmatched. Returns which vertices
+// are still in the graph: the tangled part around shared ends.
+std::vector<uint8_t> match_leaves(const EndGraph& g, std::vector<int32_t>& unmatched) {
+  const size_t nv = g.verts.size();
+  std::vector<int32_t> deg(nv), queue;
+  std::vector<uint8_t> alive(nv, 1);
+  for (size_t i = 0; i < nv; ++i) {
+    deg[i] = g.adj.count(i);
+    if (deg[i] == 1) queue.push_back(static_cast<int32_t>(i));
+  }
+  auto drop = [&](int32_t u) {  // u leaves the graph; its neighbours lose a degree
+    alive[u] = 0;
+    for (int32_t w : g.adj[u]) {
+      if (!alive[w]) continue;
+      if (--deg[w] == 1) queue.push_back(w);
+      else if (deg[w] == 0) {
+        alive[w] = 0;
+        unmatched.push_back(g.verts[w]);
+      }
+    }
+  };
+  for (size_t q = 0; q < queue.size(); ++q) {
+    const int32_t v = queue[q];
+    if (!alive[v] || deg[v] != 1) continue;
+    int32_t u = -1;
+    for (int32_t w : g.adj[v])
+      if (alive[w]) u = w;
+    alive[v] = 0;
+    drop(u);
+  }
+  return alive;
+}
+
+// Boost's Edmonds maximum cardinality matching on the vertices still alive.
+void match_rest(const EndGraph& eg, const std::vector<uint8_t>& alive, std::vector<int32_t>& unmatched) {
+  std::vector<int32_t> rest, gid(eg.verts.size(), -1);
+  for (size_t i = 0; i < eg.verts.size(); ++i)
+    if (alive[i]) {
+      gid[i] = static_cast<int32_t>(rest.size());
+      rest.push_back(static_cast<int32_t>(i));
+    }
+  if (rest.empty()) return;
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+  Graph g(rest.size());
+  for (auto [a, b] : eg.edges)
+    if (gid[a] >= 0 && gid[b] >= 0) boost::add_edge(static_cast<size_t>(gid[a]), static_cast<size_t>(gid[b]), g);
+  std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(rest.size());
+  boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
+  for (size_t i = 0; i < rest.size(); ++i)
+    if (mate[i] == boost::graph_traits<Graph>::null_vertex()) unmatched.push_back(eg.verts[rest[i]]);
+}
+
+// The curve ends a maximum cardinality matching on (curve ends, curves) leaves uncovered, sorted:
+// what the figures highlight. Leaves are matched first, which settles most of the graph cheaply.
+std::vector<int32_t> unmatched_vertices(const SheetDomain& d, const std::vector<int32_t>& curves,
+                                        const CurveEnds& ends) {
+  const EndGraph g = end_graph(d, curves, ends);
+  std::vector<int32_t> unmatched;
+  const std::vector<uint8_t> alive = match_leaves(g, unmatched);
+  match_rest(g, alive, unmatched);
+  std::sort(unmatched.begin(), unmatched.end());
+  return unmatched;
+}
+
+SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const UnitMask& in_units) {
+  SheetClass k;
+  const CurveEnds ends = sorted_curve_ends(d, curves);
+  detect_configurations(d, ends, in_units, k);
+  if (k.type != SheetType::Perfect) k.unmatched_vertices = unmatched_vertices(d, curves, ends);
   return k;
 }
 
