@@ -240,14 +240,13 @@ SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curv
   return classify(d, curves, mask);
 }
 
-Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
-  Sheets s;
-  s.level = d.level;
-  const size_t nc = m.num_cells(), ne = m.num_edges(), nunits = d.unit_cells.rows();
-  // Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
-  // orthogonal directions of two hex cells across a joining face.
-  UnionFind uf(ne);
-  for (size_t c = 0; c < nc; ++c) {
+namespace {
+
+// Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
+// orthogonal directions of two hex cells across a joining face.
+UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
+  UnionFind uf(m.num_edges());
+  for (size_t c = 0; c < m.num_cells(); ++c) {
     if (!m.is_hex(c)) continue;
     for (int32_t f : m.cell_faces[c]) {
       auto fe = m.face_edges[f];
@@ -260,12 +259,23 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
     const auto fc = m.face_cells[f];
     uf.unite(orthogonal_edge(m, fc[0], static_cast<int32_t>(f)), orthogonal_edge(m, fc[1], static_cast<int32_t>(f)));
   }
+  return uf;
+}
 
+// The parallel classes with dense ids, and the units and curves of each.
+struct ParallelClasses {
+  int32_t count = 0;
+  Csr<int32_t> units;   // count rows: units with a direction in the class (a unit once per direction)
+  Csr<int32_t> curves;  // count rows: curves of the class, increasing
+};
+
+ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
+  UnionFind uf = join_parallel_edges(m, d);
+  const size_t nc = m.num_cells();
   // Dense class ids in order of first appearance over the cells; a hex cell's three directions
   // are the classes of its first face's two edge directions and of the edge across that face.
-  std::vector<int32_t> class_of_root(ne, -1);
-  int32_t nclass = 0;
-  Csr<int32_t> cell_classes;  // (class, unit) pairs as a CSR keyed by class after the transpose
+  std::vector<int32_t> class_of_root(m.num_edges(), -1);
+  ParallelClasses pc;
   std::vector<std::array<int32_t, 3>> dirs(nc, {-1, -1, -1});
   for (size_t c = 0; c < nc; ++c) {
     if (d.cell_unit[c] < 0) continue;
@@ -273,47 +283,47 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
     const int32_t reps[3] = {m.face_edges[f][0], m.face_edges[f][1], orthogonal_edge(m, static_cast<int32_t>(c), f)};
     for (int k = 0; k < 3; ++k) {
       const int32_t r = uf.find(reps[k]);
-      if (class_of_root[r] < 0) class_of_root[r] = nclass++;
+      if (class_of_root[r] < 0) class_of_root[r] = pc.count++;
       dirs[c][k] = class_of_root[r];
     }
   }
-  // Units of each class (sorted, distinct) by counting sort.
-  Csr<int32_t> class_units;
-  class_units.offsets.assign(static_cast<size_t>(nclass) + 1, 0);
+  // Units of each class by counting sort (cells in increasing order).
+  pc.units.offsets.assign(static_cast<size_t>(pc.count) + 1, 0);
   for (size_t c = 0; c < nc; ++c)
     if (dirs[c][0] >= 0)
-      for (int32_t k : dirs[c]) ++class_units.offsets[k + 1];
-  for (int32_t k = 0; k < nclass; ++k) class_units.offsets[k + 1] += class_units.offsets[k];
-  class_units.items.resize(class_units.offsets.back());
-  {
-    std::vector<int32_t> fill(class_units.offsets.begin(), class_units.offsets.end() - 1);
-    for (size_t c = 0; c < nc; ++c)
-      if (dirs[c][0] >= 0)
-        for (int32_t k : dirs[c]) class_units.items[fill[k]++] = d.cell_unit[c];
+      for (int32_t k : dirs[c]) ++pc.units.offsets[k + 1];
+  for (int32_t k = 0; k < pc.count; ++k) pc.units.offsets[k + 1] += pc.units.offsets[k];
+  pc.units.items.resize(pc.units.offsets.back());
+  std::vector<int32_t> fill(pc.units.offsets.begin(), pc.units.offsets.end() - 1);
+  for (size_t c = 0; c < nc; ++c)
+    if (dirs[c][0] >= 0)
+      for (int32_t k : dirs[c]) pc.units.items[fill[k]++] = d.cell_unit[c];
+  Csr<int32_t> curve_class;
+  for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
+    const int32_t cls = class_of_root[uf.find(d.curve_edges[k][0])];
+    if (cls >= 0) curve_class.items.push_back(cls);
+    curve_class.offsets.push_back(static_cast<int32_t>(curve_class.items.size()));
   }
-  // Curves of each class.
-  Csr<int32_t> class_curves;
-  {
-    Csr<int32_t> curve_class;
-    for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
-      const int32_t cls = class_of_root[uf.find(d.curve_edges[k][0])];
-      if (cls >= 0) curve_class.items.push_back(cls);
-      curve_class.offsets.push_back(static_cast<int32_t>(curve_class.items.size()));
-    }
-    class_curves = transpose(curve_class, static_cast<size_t>(nclass));
-  }
+  pc.curves = transpose(curve_class, static_cast<size_t>(pc.count));
+  return pc;
+}
 
-  // Each class split into face-connected groups of units: one sheet per group.
-  struct Group {
-    std::vector<int32_t> units, curves;
-  };
+// A sheet before it is written out: its units and parallel curves.
+struct Group {
+  std::vector<int32_t> units, curves;
+};
+
+// Each class split into face-connected groups of its units: one sheet per group. first[k] ..
+// first[k + 1] are the groups of class k.
+std::vector<Group> unit_groups(const SheetDomain& d, const ParallelClasses& pc, std::vector<size_t>& first) {
+  const size_t nunits = d.unit_cells.rows();
   std::vector<Group> groups;
   std::vector<int32_t> stamp(nunits, -1), seen(nunits, -1), stack;
-  std::vector<size_t> class_groups(static_cast<size_t>(nclass) + 1, 0);  // groups of class k: [k], [k+1])
-  for (int32_t k = 0; k < nclass; ++k) {
-    class_groups[k] = groups.size();
-    for (int32_t u : class_units[k]) stamp[u] = k;
-    for (int32_t u0 : class_units[k]) {
+  first.assign(static_cast<size_t>(pc.count) + 1, 0);
+  for (int32_t k = 0; k < pc.count; ++k) {
+    first[k] = groups.size();
+    for (int32_t u : pc.units[k]) stamp[u] = k;
+    for (int32_t u0 : pc.units[k]) {
       if (seen[u0] == k) continue;
       Group g;
       stack.assign(1, u0);
@@ -332,58 +342,76 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
       groups.push_back(std::move(g));
     }
   }
-  class_groups[nclass] = groups.size();
-  // Curves of a class go to the groups of the units holding them (group of a unit per class).
-  {
-    std::vector<int32_t> unit_group(nunits, -1);
-    for (int32_t k = 0; k < nclass; ++k) {
-      for (size_t g = class_groups[k]; g < class_groups[k + 1]; ++g)
-        for (int32_t u : groups[g].units) unit_group[u] = static_cast<int32_t>(g);
-      for (int32_t u : class_units[k]) stamp[u] = k;
-      for (int32_t curve : class_curves[k]) {
-        int32_t last = -1;
-        for (int32_t u : d.curve_units[curve]) {
-          const int32_t g = stamp[u] == k ? unit_group[u] : -1;
-          if (g >= 0 && g != last) {
-            auto& cv = groups[static_cast<size_t>(g)].curves;
-            if (cv.empty() || cv.back() != curve) cv.push_back(curve);
-            last = g;
-          }
+  first[pc.count] = groups.size();
+  return groups;
+}
+
+// Curves of a class go to the groups of the units holding them (one group per unit and class).
+void assign_curves(const SheetDomain& d, const ParallelClasses& pc, const std::vector<size_t>& first,
+                   std::vector<Group>& groups) {
+  const size_t nunits = d.unit_cells.rows();
+  std::vector<int32_t> unit_group(nunits, -1), stamp(nunits, -1);
+  for (int32_t k = 0; k < pc.count; ++k) {
+    for (size_t g = first[k]; g < first[k + 1]; ++g)
+      for (int32_t u : groups[g].units) unit_group[u] = static_cast<int32_t>(g);
+    for (int32_t u : pc.units[k]) stamp[u] = k;
+    for (int32_t curve : pc.curves[k]) {
+      int32_t last = -1;
+      for (int32_t u : d.curve_units[curve]) {
+        const int32_t g = stamp[u] == k ? unit_group[u] : -1;
+        if (g >= 0 && g != last) {
+          auto& cv = groups[static_cast<size_t>(g)].curves;
+          if (cv.empty() || cv.back() != curve) cv.push_back(curve);
+          last = g;
         }
       }
     }
   }
+}
+
+// Sorted, distinct rows[r] for r in `keys`, concatenated, as one row of `out`.
+void push_union_row(const Csr<int32_t>& rows, const std::vector<int32_t>& keys, std::vector<int32_t>& buf,
+                    Csr<int32_t>& out) {
+  buf.clear();
+  for (int32_t r : keys)
+    for (int32_t x : rows[r]) buf.push_back(x);
+  sort_unique(buf);
+  out.push_row(buf.begin(), buf.end());
+}
+
+// The sheets in a stable order (lowest unit, then lowest curve), with their cells, curves, edges,
+// adjacent non-hex cells and classification.
+Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups) {
   std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
     if (a.units[0] != b.units[0]) return a.units[0] < b.units[0];
     const int32_t ca = a.curves.empty() ? -1 : a.curves[0], cb = b.curves.empty() ? -1 : b.curves[0];
     return ca < cb;
   });
-
-  UnitMask mask(nunits);
+  Sheets s;
+  s.level = d.level;
+  UnitMask mask(d.unit_cells.rows());
   std::vector<int32_t> buf;
   for (Group& g : groups) {
     sort_unique(g.curves);
     s.sheet_units.push_row(g.units.begin(), g.units.end());
-    buf.clear();
-    for (int32_t u : g.units)
-      for (int32_t c : d.unit_cells[u]) buf.push_back(c);
-    sort_unique(buf);
-    s.sheet_cells.push_row(buf.begin(), buf.end());
+    push_union_row(d.unit_cells, g.units, buf, s.sheet_cells);
     s.sheet_curves.push_row(g.curves.begin(), g.curves.end());
-    buf.clear();
-    for (int32_t k : g.curves)
-      for (int32_t e : d.curve_edges[k]) buf.push_back(e);
-    sort_unique(buf);
-    s.sheet_edges.push_row(buf.begin(), buf.end());
-    buf.clear();
-    for (int32_t k : g.curves)
-      for (int32_t c : d.curve_non_hex_cells[k]) buf.push_back(c);
-    sort_unique(buf);
-    s.sheet_non_hex_cells.push_row(buf.begin(), buf.end());
+    push_union_row(d.curve_edges, g.curves, buf, s.sheet_edges);
+    push_union_row(d.curve_non_hex_cells, g.curves, buf, s.sheet_non_hex_cells);
     mask.set(g.units);
     s.classes.push_back(classify(d, g.curves, mask));
   }
   return s;
+}
+
+}  // namespace
+
+Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
+  const ParallelClasses pc = parallel_classes(m, d);
+  std::vector<size_t> first;
+  std::vector<Group> groups = unit_groups(d, pc, first);
+  assign_curves(d, pc, first, groups);
+  return write_sheets(d, groups);
 }
 
 Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sheet) {
