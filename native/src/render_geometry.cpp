@@ -169,7 +169,7 @@ ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClas
     out.shared.push_row(k.shared_vertices.begin(), k.shared_vertices.end());
     out.self_parallel.push_row(k.self_parallel_curves.begin(), k.self_parallel_curves.end());
     comps.clear();
-    for (int32_t u : k.self_intersecting_units) comps.push_back(domain.unit_component[static_cast<size_t>(u)]);
+    for (int32_t u : k.self_intersecting_blocks) comps.push_back(domain.block_component[static_cast<size_t>(u)]);
     std::sort(comps.begin(), comps.end());
     comps.erase(std::unique(comps.begin(), comps.end()), comps.end());
     out.self_intersecting.push_row(comps.begin(), comps.end());
@@ -177,12 +177,12 @@ ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClas
   return out;
 }
 
-Csr<int32_t> units_as_components(const SheetDomain& domain, const Csr<int32_t>& units) {
+Csr<int32_t> blocks_as_components(const SheetDomain& domain, const Csr<int32_t>& blocks) {
   Csr<int32_t> out;
   std::vector<int32_t> comps;
-  for (size_t r = 0; r < units.rows(); ++r) {
+  for (size_t r = 0; r < blocks.rows(); ++r) {
     comps.clear();
-    for (int32_t u : units[r]) comps.push_back(domain.unit_component[static_cast<size_t>(u)]);
+    for (int32_t u : blocks[r]) comps.push_back(domain.block_component[static_cast<size_t>(u)]);
     std::sort(comps.begin(), comps.end());
     comps.erase(std::unique(comps.begin(), comps.end()), comps.end());
     out.push_row(comps.begin(), comps.end());

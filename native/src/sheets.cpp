@@ -44,15 +44,15 @@ int32_t orthogonal_edge(const Mesh& m, int32_t c, int32_t f) {
   return -1;
 }
 
-// Membership of units in the current sheet without a search per query: a stamp per unit.
-struct UnitMask {
+// Membership of blocks in the current sheet without a search per query: a stamp per block.
+struct BlockMask {
   std::vector<int32_t> stamp;
   int32_t current = 0;
-  explicit UnitMask(size_t nunits) : stamp(nunits, 0) {}
+  explicit BlockMask(size_t nblocks) : stamp(nblocks, 0) {}
   template <class Range>
-  void set(const Range& units) {
+  void set(const Range& blocks) {
     ++current;
-    for (int32_t u : units) stamp[u] = current;
+    for (int32_t u : blocks) stamp[u] = current;
   }
   bool operator()(int32_t u) const { return stamp[u] == current; }
 };
@@ -76,24 +76,24 @@ CurveEnds sorted_curve_ends(const SheetDomain& d, const std::vector<int32_t>& cu
   return ends;
 }
 
-// The configuration of two parallel curves a and b sharing an end (SPEC §3): type 3 when a unit
-// of the sheet holds both, type 2 when they lie in adjacent units, type 1 otherwise.
-void classify_pair(const SheetDomain& d, int32_t a, int32_t b, const UnitMask& in_units, SheetClass& k) {
+// The configuration of two parallel curves a and b sharing an end (SPEC §3): type 3 when a block
+// of the sheet holds both, type 2 when they lie in adjacent blocks, type 1 otherwise.
+void classify_pair(const SheetDomain& d, int32_t a, int32_t b, const BlockMask& in_blocks, SheetClass& k) {
   bool common = false;
-  for (int32_t u : d.curve_units[a])
-    if (in_units(u) && contains(d.curve_units[b], u)) {
+  for (int32_t u : d.curve_blocks[a])
+    if (in_blocks(u) && contains(d.curve_blocks[b], u)) {
       common = true;
-      k.self_intersecting_units.push_back(u);
+      k.self_intersecting_blocks.push_back(u);
     }
   if (common) {
     k.type3 = true;
     return;
   }
   bool adjacent = false;
-  for (int32_t ua : d.curve_units[a]) {
-    if (!in_units(ua)) continue;
-    for (int32_t ub : d.curve_units[b])
-      if (in_units(ub) && contains(d.unit_adjacency[ua], ub)) adjacent = true;
+  for (int32_t ua : d.curve_blocks[a]) {
+    if (!in_blocks(ua)) continue;
+    for (int32_t ub : d.curve_blocks[b])
+      if (in_blocks(ub) && contains(d.block_adjacency[ua], ub)) adjacent = true;
   }
   if (adjacent) {
     k.type2 = true;
@@ -105,16 +105,16 @@ void classify_pair(const SheetDomain& d, int32_t a, int32_t b, const UnitMask& i
 }
 
 // Every configuration present among the curves sharing an end, and the sheet's type.
-void detect_configurations(const SheetDomain& d, const CurveEnds& ends, const UnitMask& in_units, SheetClass& k) {
+void detect_configurations(const SheetDomain& d, const CurveEnds& ends, const BlockMask& in_blocks, SheetClass& k) {
   for (size_t i = 0; i < ends.size();) {
     size_t j = i;
     while (j < ends.size() && ends[j].first == ends[i].first) ++j;
     if (j - i >= 2) k.shared_vertices.push_back(ends[i].first);
     for (size_t p = i; p < j; ++p)
-      for (size_t q = p + 1; q < j; ++q) classify_pair(d, ends[p].second, ends[q].second, in_units, k);
+      for (size_t q = p + 1; q < j; ++q) classify_pair(d, ends[p].second, ends[q].second, in_blocks, k);
     i = j;
   }
-  sort_unique(k.self_intersecting_units);
+  sort_unique(k.self_intersecting_blocks);
   sort_unique(k.self_parallel_curves);
   k.type = k.type3 ? SheetType::Type3 : k.type2 ? SheetType::Type2 : k.type1 ? SheetType::Type1 : SheetType::Perfect;
 }
@@ -223,10 +223,10 @@ std::vector<int32_t> unmatched_vertices(const SheetDomain& d, const std::vector<
   return unmatched;
 }
 
-SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const UnitMask& in_units) {
+SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const BlockMask& in_blocks) {
   SheetClass k;
   const CurveEnds ends = sorted_curve_ends(d, curves);
-  detect_configurations(d, ends, in_units, k);
+  detect_configurations(d, ends, in_blocks, k);
   if (k.type != SheetType::Perfect) k.unmatched_vertices = unmatched_vertices(d, curves, ends);
   return k;
 }
@@ -234,9 +234,9 @@ SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, co
 }  // namespace
 
 SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curves,
-                          const std::vector<int32_t>& units) {
-  UnitMask mask(d.unit_cells.rows());
-  mask.set(units);
+                          const std::vector<int32_t>& blocks) {
+  BlockMask mask(d.block_cells.rows());
+  mask.set(blocks);
   return classify(d, curves, mask);
 }
 
@@ -262,10 +262,10 @@ UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
   return uf;
 }
 
-// The parallel classes with dense ids, and the units and curves of each.
+// The parallel classes with dense ids, and the blocks and curves of each.
 struct ParallelClasses {
   int32_t count = 0;
-  Csr<int32_t> units;   // count rows: units with a direction in the class (a unit once per direction)
+  Csr<int32_t> blocks;   // count rows: blocks with a direction in the class (a block once per direction)
   Csr<int32_t> curves;  // count rows: curves of the class, increasing
 };
 
@@ -278,7 +278,7 @@ ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
   ParallelClasses pc;
   std::vector<std::array<int32_t, 3>> dirs(nc, {-1, -1, -1});
   for (size_t c = 0; c < nc; ++c) {
-    if (d.cell_unit[c] < 0) continue;
+    if (d.cell_block[c] < 0) continue;
     const int32_t f = m.cell_faces[c][0];
     const int32_t reps[3] = {m.face_edges[f][0], m.face_edges[f][1], orthogonal_edge(m, static_cast<int32_t>(c), f)};
     for (int k = 0; k < 3; ++k) {
@@ -287,17 +287,17 @@ ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
       dirs[c][k] = class_of_root[r];
     }
   }
-  // Units of each class by counting sort (cells in increasing order).
-  pc.units.offsets.assign(static_cast<size_t>(pc.count) + 1, 0);
+  // Blocks of each class by counting sort (cells in increasing order).
+  pc.blocks.offsets.assign(static_cast<size_t>(pc.count) + 1, 0);
   for (size_t c = 0; c < nc; ++c)
     if (dirs[c][0] >= 0)
-      for (int32_t k : dirs[c]) ++pc.units.offsets[k + 1];
-  for (int32_t k = 0; k < pc.count; ++k) pc.units.offsets[k + 1] += pc.units.offsets[k];
-  pc.units.items.resize(pc.units.offsets.back());
-  std::vector<int32_t> fill(pc.units.offsets.begin(), pc.units.offsets.end() - 1);
+      for (int32_t k : dirs[c]) ++pc.blocks.offsets[k + 1];
+  for (int32_t k = 0; k < pc.count; ++k) pc.blocks.offsets[k + 1] += pc.blocks.offsets[k];
+  pc.blocks.items.resize(pc.blocks.offsets.back());
+  std::vector<int32_t> fill(pc.blocks.offsets.begin(), pc.blocks.offsets.end() - 1);
   for (size_t c = 0; c < nc; ++c)
     if (dirs[c][0] >= 0)
-      for (int32_t k : dirs[c]) pc.units.items[fill[k]++] = d.cell_unit[c];
+      for (int32_t k : dirs[c]) pc.blocks.items[fill[k]++] = d.cell_block[c];
   Csr<int32_t> curve_class;
   for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
     const int32_t cls = class_of_root[uf.find(d.curve_edges[k][0])];
@@ -308,22 +308,22 @@ ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
   return pc;
 }
 
-// A sheet before it is written out: its units and parallel curves.
+// A sheet before it is written out: its blocks and parallel curves.
 struct Group {
-  std::vector<int32_t> units, curves;
+  std::vector<int32_t> blocks, curves;
 };
 
-// Each class split into face-connected groups of its units: one sheet per group. first[k] ..
+// Each class split into face-connected groups of its blocks: one sheet per group. first[k] ..
 // first[k + 1] are the groups of class k.
-std::vector<Group> unit_groups(const SheetDomain& d, const ParallelClasses& pc, std::vector<size_t>& first) {
-  const size_t nunits = d.unit_cells.rows();
+std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc, std::vector<size_t>& first) {
+  const size_t nblocks = d.block_cells.rows();
   std::vector<Group> groups;
-  std::vector<int32_t> stamp(nunits, -1), seen(nunits, -1), stack;
+  std::vector<int32_t> stamp(nblocks, -1), seen(nblocks, -1), stack;
   first.assign(static_cast<size_t>(pc.count) + 1, 0);
   for (int32_t k = 0; k < pc.count; ++k) {
     first[k] = groups.size();
-    for (int32_t u : pc.units[k]) stamp[u] = k;
-    for (int32_t u0 : pc.units[k]) {
+    for (int32_t u : pc.blocks[k]) stamp[u] = k;
+    for (int32_t u0 : pc.blocks[k]) {
       if (seen[u0] == k) continue;
       Group g;
       stack.assign(1, u0);
@@ -331,14 +331,14 @@ std::vector<Group> unit_groups(const SheetDomain& d, const ParallelClasses& pc, 
       while (!stack.empty()) {
         const int32_t u = stack.back();
         stack.pop_back();
-        g.units.push_back(u);
-        for (int32_t w : d.unit_adjacency[u])
+        g.blocks.push_back(u);
+        for (int32_t w : d.block_adjacency[u])
           if (stamp[w] == k && seen[w] != k) {
             seen[w] = k;
             stack.push_back(w);
           }
       }
-      std::sort(g.units.begin(), g.units.end());
+      std::sort(g.blocks.begin(), g.blocks.end());
       groups.push_back(std::move(g));
     }
   }
@@ -346,19 +346,19 @@ std::vector<Group> unit_groups(const SheetDomain& d, const ParallelClasses& pc, 
   return groups;
 }
 
-// Curves of a class go to the groups of the units holding them (one group per unit and class).
+// Curves of a class go to the groups of the blocks holding them (one group per block and class).
 void assign_curves(const SheetDomain& d, const ParallelClasses& pc, const std::vector<size_t>& first,
                    std::vector<Group>& groups) {
-  const size_t nunits = d.unit_cells.rows();
-  std::vector<int32_t> unit_group(nunits, -1), stamp(nunits, -1);
+  const size_t nblocks = d.block_cells.rows();
+  std::vector<int32_t> block_group(nblocks, -1), stamp(nblocks, -1);
   for (int32_t k = 0; k < pc.count; ++k) {
     for (size_t g = first[k]; g < first[k + 1]; ++g)
-      for (int32_t u : groups[g].units) unit_group[u] = static_cast<int32_t>(g);
-    for (int32_t u : pc.units[k]) stamp[u] = k;
+      for (int32_t u : groups[g].blocks) block_group[u] = static_cast<int32_t>(g);
+    for (int32_t u : pc.blocks[k]) stamp[u] = k;
     for (int32_t curve : pc.curves[k]) {
       int32_t last = -1;
-      for (int32_t u : d.curve_units[curve]) {
-        const int32_t g = stamp[u] == k ? unit_group[u] : -1;
+      for (int32_t u : d.curve_blocks[curve]) {
+        const int32_t g = stamp[u] == k ? block_group[u] : -1;
         if (g >= 0 && g != last) {
           auto& cv = groups[static_cast<size_t>(g)].curves;
           if (cv.empty() || cv.back() != curve) cv.push_back(curve);
@@ -379,26 +379,26 @@ void push_union_row(const Csr<int32_t>& rows, const std::vector<int32_t>& keys, 
   out.push_row(buf.begin(), buf.end());
 }
 
-// The sheets in a stable order (lowest unit, then lowest curve), with their cells, curves, edges,
+// The sheets in a stable order (lowest block, then lowest curve), with their cells, curves, edges,
 // adjacent non-hex cells and classification.
 Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups) {
   std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
-    if (a.units[0] != b.units[0]) return a.units[0] < b.units[0];
+    if (a.blocks[0] != b.blocks[0]) return a.blocks[0] < b.blocks[0];
     const int32_t ca = a.curves.empty() ? -1 : a.curves[0], cb = b.curves.empty() ? -1 : b.curves[0];
     return ca < cb;
   });
   Sheets s;
   s.level = d.level;
-  UnitMask mask(d.unit_cells.rows());
+  BlockMask mask(d.block_cells.rows());
   std::vector<int32_t> buf;
   for (Group& g : groups) {
     sort_unique(g.curves);
-    s.sheet_units.push_row(g.units.begin(), g.units.end());
-    push_union_row(d.unit_cells, g.units, buf, s.sheet_cells);
+    s.sheet_blocks.push_row(g.blocks.begin(), g.blocks.end());
+    push_union_row(d.block_cells, g.blocks, buf, s.sheet_cells);
     s.sheet_curves.push_row(g.curves.begin(), g.curves.end());
     push_union_row(d.curve_edges, g.curves, buf, s.sheet_edges);
     push_union_row(d.curve_non_hex_cells, g.curves, buf, s.sheet_non_hex_cells);
-    mask.set(g.units);
+    mask.set(g.blocks);
     s.classes.push_back(classify(d, g.curves, mask));
   }
   return s;
@@ -409,7 +409,7 @@ Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups) {
 Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
   const ParallelClasses pc = parallel_classes(m, d);
   std::vector<size_t> first;
-  std::vector<Group> groups = unit_groups(d, pc, first);
+  std::vector<Group> groups = block_groups(d, pc, first);
   assign_curves(d, pc, first, groups);
   return write_sheets(d, groups);
 }
@@ -419,8 +419,8 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
   out.sheet = sheet;
   auto curves = sheets.sheet_curves[sheet];
   const size_t n = curves.size();
-  UnitMask in_units(d.unit_cells.rows()), in_sub(d.unit_cells.rows());
-  in_units.set(sheets.sheet_units[sheet]);
+  BlockMask in_blocks(d.block_cells.rows()), in_sub(d.block_cells.rows());
+  in_blocks.set(sheets.sheet_blocks[sheet]);
   auto index_of = [&](int32_t c) -> int32_t {
     auto it = std::lower_bound(curves.begin(), curves.end(), c);
     return (it != curves.end() && *it == c) ? static_cast<int32_t>(it - curves.begin()) : -1;
@@ -437,18 +437,18 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
     return static_cast<size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
   };
   std::vector<std::vector<int32_t>> taken_at(verts.size());
-  // Two curves conflict when they share an end inside one unit of the sheet.
+  // Two curves conflict when they share an end inside one block of the sheet.
   auto conflicts = [&](int32_t b) {
     const auto eb = d.curve_ends[b];
     if (eb[0] < 0) return false;
     for (int32_t v : {eb[0], eb[1]})
       for (int32_t c : taken_at[local(v)])
-        for (int32_t u : d.curve_units[b])
-          if (in_units(u) && contains(d.curve_units[c], u)) return true;
+        for (int32_t u : d.curve_blocks[b])
+          if (in_blocks(u) && contains(d.curve_blocks[c], u)) return true;
     return false;
   };
   std::vector<uint8_t> used(n, 0);
-  std::vector<int32_t> taken, queue, banned, subunits, kept;
+  std::vector<int32_t> taken, queue, banned, subblocks, kept;
   size_t next_seed = 0;
   for (;;) {
     while (next_seed < n && used[next_seed]) ++next_seed;
@@ -471,9 +471,9 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
         const int32_t ib = index_of(b);
         if (ib < 0 || used[static_cast<size_t>(ib)]) continue;
         if (conflicts(b)) {
-          // The sheet turns here: the units around the rejected curve belong to another subsheet.
-          for (int32_t u : d.curve_units[b])
-            if (in_units(u)) banned.push_back(u);
+          // The sheet turns here: the blocks around the rejected curve belong to another subsheet.
+          for (int32_t u : d.curve_blocks[b])
+            if (in_blocks(u)) banned.push_back(u);
           continue;
         }
         take(b);
@@ -485,37 +485,37 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
         for (int32_t v : {d.curve_ends[c][0], d.curve_ends[c][1]}) taken_at[local(v)].clear();
     sort_unique(taken);
     sort_unique(banned);
-    // Cells: units touched by the subsheet's curves, less those where it turned. Curves left
+    // Cells: blocks touched by the subsheet's curves, less those where it turned. Curves left
     // touching none are dropped back into the pool (they seed a later subsheet).
-    subunits.clear();
+    subblocks.clear();
     kept.clear();
     for (int32_t c : taken) {
       bool any = false;
-      for (int32_t u : d.curve_units[c])
-        if (in_units(u) && !std::binary_search(banned.begin(), banned.end(), u)) {
-          subunits.push_back(u);
+      for (int32_t u : d.curve_blocks[c])
+        if (in_blocks(u) && !std::binary_search(banned.begin(), banned.end(), u)) {
+          subblocks.push_back(u);
           any = true;
         }
       if (any) kept.push_back(c);
       else if (c != seed) used[static_cast<size_t>(index_of(c))] = 0;
     }
-    sort_unique(subunits);
+    sort_unique(subblocks);
     if (kept.empty()) {
-      // Every unit of the seed was taken out: the seed stands alone so that each curve lands in
+      // Every block of the seed was taken out: the seed stands alone so that each curve lands in
       // some subsheet and the loop always progresses.
       kept.assign(1, seed);
-      for (int32_t u : d.curve_units[seed])
-        if (in_units(u)) subunits.push_back(u);
-      sort_unique(subunits);
+      for (int32_t u : d.curve_blocks[seed])
+        if (in_blocks(u)) subblocks.push_back(u);
+      sort_unique(subblocks);
     }
     out.curves.push_row(kept.begin(), kept.end());
-    out.units.push_row(subunits.begin(), subunits.end());
+    out.blocks.push_row(subblocks.begin(), subblocks.end());
     std::vector<int32_t> cells;
-    for (int32_t u : subunits)
-      for (int32_t c : d.unit_cells[u]) cells.push_back(c);
+    for (int32_t u : subblocks)
+      for (int32_t c : d.block_cells[u]) cells.push_back(c);
     sort_unique(cells);
     out.cells.push_row(cells.begin(), cells.end());
-    in_sub.set(subunits);
+    in_sub.set(subblocks);
     out.classes.push_back(classify(d, kept, in_sub));
     next_seed = 0;
   }

@@ -39,7 +39,7 @@ void run_analyze(const AnalyzeArgs& args) {
     std::printf("%s", stats_table(file, s).c_str());
     for (const Subsheets& x : a.subsheets)
       std::printf("  self-intersecting sheet %d (%d blocks): %zu subsheets\n", x.sheet,
-                  a.sheets.sheet_units.count(static_cast<size_t>(x.sheet)), x.size());
+                  a.sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size());
   }
 }
 

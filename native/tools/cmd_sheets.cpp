@@ -26,14 +26,14 @@ void add_class(Json& j, const SheetClass& k) {
   j["unmatched_vertices"] = k.unmatched_vertices.size();
   j["shared_vertices"] = k.shared_vertices.size();
   j["self_parallel_curves"] = k.self_parallel_curves.size();
-  j["self_intersecting_blocks"] = k.self_intersecting_units.size();
+  j["self_intersecting_blocks"] = k.self_intersecting_blocks.size();
 }
 
 Json sheets_json(const std::string& file, Level level, const Analysis& a) {
   const Sheets& sh = a.sheets;
   Json sheets = Json::object();
   for (size_t s = 0; s < sh.size(); ++s) {
-    Json j = {{"blocks", sh.sheet_units.count(s)},
+    Json j = {{"blocks", sh.sheet_blocks.count(s)},
               {"cells", sh.sheet_cells.count(s)},
               {"curves", sh.sheet_curves.count(s)},
               {"edges", sh.sheet_edges.count(s)},
@@ -42,7 +42,7 @@ Json sheets_json(const std::string& file, Level level, const Analysis& a) {
     if (const Subsheets* x = a.subsheets_of(static_cast<int32_t>(s))) {
       Json& subs = j["subsheets"] = Json::object();
       for (size_t i = 0; i < x->size(); ++i) {
-        Json& sub = subs[std::to_string(i)] = {{"blocks", x->units.count(i)}, {"cells", x->cells.count(i)}, {"curves", x->curves.count(i)}};
+        Json& sub = subs[std::to_string(i)] = {{"blocks", x->blocks.count(i)}, {"cells", x->cells.count(i)}, {"curves", x->curves.count(i)}};
         add_class(sub, x->classes[i]);
       }
     }
@@ -64,12 +64,12 @@ void print_sheets_table(const std::string& file, const Analysis& a) {
   for (size_t s = 0; s < sh.size(); ++s) {
     const SheetClass& k = sh.classes[s];
     std::printf("%5zu %-8s   %d%d%d %5s %7d %7d %7d %9d %9zu\n", s, sheet_type_name(k.type), k.type1, k.type2, k.type3,
-                "", sh.sheet_units.count(s), sh.sheet_cells.count(s), sh.sheet_curves.count(s),
+                "", sh.sheet_blocks.count(s), sh.sheet_cells.count(s), sh.sheet_curves.count(s),
                 sh.sheet_non_hex_cells.count(s), k.unmatched_vertices.size());
     if (const Subsheets* x = a.subsheets_of(static_cast<int32_t>(s)))
       for (size_t i = 0; i < x->size(); ++i)
         std::printf("      subsheet %-3zu %-8s blocks %d cells %d curves %d\n", i, sheet_type_name(x->classes[i].type),
-                    x->units.count(i), x->cells.count(i), x->curves.count(i));
+                    x->blocks.count(i), x->cells.count(i), x->curves.count(i));
   }
 }
 

@@ -196,10 +196,10 @@ TEST(RenderGeometry, RegionsAndClasses) {
   EXPECT_EQ(k.type, std::vector<uint8_t>(3, 0));  // a grid's sheets are perfect
   EXPECT_EQ(k.flags.size(), 9u);
   EXPECT_EQ(k.unmatched.rows(), 3u);
-  const Csr<int32_t> comps = units_as_components(g.analysis.domain, g.analysis.sheets.sheet_units);
+  const Csr<int32_t> comps = blocks_as_components(g.analysis.domain, g.analysis.sheets.sheet_blocks);
   EXPECT_EQ(comps.items, std::vector<int32_t>(3, 0));
   const Analysed fine = grid2(Level::Mesh);
-  const Csr<int32_t> fine_comps = units_as_components(fine.analysis.domain, fine.analysis.sheets.sheet_units);
+  const Csr<int32_t> fine_comps = blocks_as_components(fine.analysis.domain, fine.analysis.sheets.sheet_blocks);
   EXPECT_EQ(fine_comps.items, std::vector<int32_t>(6, 0));  // 4 cells per slab, one component
 }
 

@@ -4,7 +4,7 @@
 // vertices, self-parallel curves, self-intersecting blocks). The derivations are in the comments.
 // Every mesh is also analysed randomly renumbered, and must give the same sheets up to renumbering.
 //
-// Notation. At the mesh level (Level::Mesh) units are hex cells and curves mesh edges; a
+// Notation. At the mesh level (Level::Mesh) blocks are hex cells and curves mesh edges; a
 // sheet is a class of the union-find joining the 4 parallel edges of each direction of every hex
 // cell (adjacent hex cells share a face and so its edges), split into face-connected groups of
 // hex cells. Curves are written as vertex pairs, cells by their input index.
@@ -101,8 +101,8 @@ SheetView view(const Mesh& m, const SheetDomain& d, std::span<const int32_t> cur
   s.type3 = k.type3;
   for (int32_t v : k.shared_vertices) s.shared.insert(mp.v(v));
   for (int32_t v : k.unmatched_vertices) s.unmatched.insert(mp.v(v));
-  for (int32_t u : k.self_intersecting_units)
-    for (int32_t c : d.unit_cells[u]) s.self_intersecting_cells.insert(mp.c(c));
+  for (int32_t u : k.self_intersecting_blocks)
+    for (int32_t c : d.block_cells[u]) s.self_intersecting_cells.insert(mp.c(c));
   for (int32_t c : k.self_parallel_curves) s.self_parallel.insert(curve_edges(m, d, c, mp));
   return s;
 }
@@ -186,7 +186,7 @@ void expect_same_after_renumbering(const Mesh& m, Level level, uint32_t seed) {
 //      Z = the 7 vertical edges at p0..p3, R0..R2: every hex, all face-connected through P.
 //    In 3D each horizontal class holds its edges at z = 0 and z = 1. So 4 sheets.
 //    Shared ends: in A, p0R0 and p3R0 share R0 (at each level). Their cells are Q0 and Q2 (the
-//    prism T also holds both, but it is no unit): no common hex, and Q0, Q2 share no face (only
+//    prism T also holds both, but it is no block): no common hex, and Q0, Q2 share no face (only
 //    the vertical edge at R0, the prism T lies between them) -> type 1. In B, R0R1 (in Q0) and
 //    R0R2 (in Q2) share R0: the same reasoning -> type 1. No other pair shares an end in any class
 //    (C: p1p2, p3p0, R1R2 are disjoint; Z: vertical edges are disjoint). So sheets A, B are type
@@ -571,7 +571,7 @@ TEST(SheetTypes, Type3TwistedRingRenumbered) {
 // y = 1, touch an interior face, so they are not complex edges, no vertex is a corner, and the
 // curves are the closed chains of corner-longitudinal edges (the 2 × 1 ring: (0,0) -> (2,1) ->
 // (0,0) and (0,1) -> (2,0) -> (0,1), 2 curves; the 1 × 1 ring: all four corners in one chain). The
-// component is not cube-like. Whether it is a sheet unit at all is left open by SPEC §3 ("hex
+// component is not cube-like. Whether it is a sheet block at all is left open by SPEC §3 ("hex
 // components"); either way no curve has an end, so no sheet of this level can be imperfect: the
 // twist is invisible to the complex-level sheets of these meshes, which is why types 2 and 3 are
 // derived at the mesh level above.

@@ -202,7 +202,7 @@ TEST_P(RealMesh, Invariants) {
   for (const Subsheets& x : a.subsheets)
     for (const SheetClass& k : x.classes) EXPECT_FALSE(k.type3);
   for (size_t s = 0; s < a.sheets.size(); ++s) {
-    EXPECT_FALSE(a.sheets.sheet_units[s].empty());
+    EXPECT_FALSE(a.sheets.sheet_blocks[s].empty());
     const bool perfect = a.sheets.classes[s].type == SheetType::Perfect;
     EXPECT_EQ(perfect, a.sheets.classes[s].shared_vertices.empty());
     if (perfect) EXPECT_TRUE(a.sheets.classes[s].unmatched_vertices.empty());

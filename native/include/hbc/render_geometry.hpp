@@ -87,8 +87,8 @@ struct ClassArrays {
 };
 ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClass> classes);
 
-// Rows of sheet units (SheetDomain unit ids) as sorted, distinct base-complex component ids (at
-// the complex level a unit is a component; at the mesh level several hex cells share one).
-Csr<int32_t> units_as_components(const SheetDomain& domain, const Csr<int32_t>& units);
+// Rows of sheet blocks (SheetDomain block ids) as sorted, distinct base-complex component ids (at
+// the complex level a block is a component; at the mesh level several hex cells share one).
+Csr<int32_t> blocks_as_components(const SheetDomain& domain, const Csr<int32_t>& blocks);
 
 }  // namespace hbc

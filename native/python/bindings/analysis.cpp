@@ -117,10 +117,10 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
     p.analysis.timings.load = p.mesh->load_seconds;
     const Analysis& a = p.analysis;
     p.sheet_classes = flatten_classes(a.domain, a.sheets.classes);
-    p.sheet_components = units_as_components(a.domain, a.sheets.sheet_units);
+    p.sheet_components = blocks_as_components(a.domain, a.sheets.sheet_blocks);
     for (const Subsheets& s : a.subsheets) {
       p.self_intersecting.push_back(s.sheet);
-      p.subsheets.push_back({flatten_classes(a.domain, s.classes), units_as_components(a.domain, s.units)});
+      p.subsheets.push_back({flatten_classes(a.domain, s.classes), blocks_as_components(a.domain, s.blocks)});
     }
   }
   return out;
