@@ -1,5 +1,5 @@
 // hbc table FILES|DIRS [--csv|--md|--latex] [-j N]: the paper's Table 1 for many meshes. Each
-// mesh is analysed by a child `hbc analyze --csv` process, N at a time, so that one mesh that
+// mesh is analyzed by a child `hbc analyze --csv` process, N at a time, so that one mesh that
 // fails (bad file, crash, out of memory) is reported in its row and never stops the others.
 #include <fcntl.h>
 #include <spawn.h>
@@ -250,7 +250,7 @@ void add_table(CLI::App& app) {
   auto* latex = cmd->add_flag("--latex", args->latex, "LaTeX tabular");
   csv->excludes(md)->excludes(latex);
   md->excludes(latex);
-  cmd->add_option("-j", args->jobs, "meshes analysed at once")->check(CLI::Range(1, 256))->capture_default_str();
+  cmd->add_option("-j", args->jobs, "meshes analyzed at once")->check(CLI::Range(1, 256))->capture_default_str();
   cmd->callback([args] { run_table(*args); });
 }
 

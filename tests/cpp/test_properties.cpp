@@ -1,5 +1,5 @@
 // Property tests: hundreds of generated meshes (grids, grids with random cells split into
-// pyramids / prisms / tets, sectors, cylinders), each analysed as generated and randomly
+// pyramids / prisms / tets, sectors, cylinders), each analyzed as generated and randomly
 // renumbered. Every SPEC invariant is checked on both, and the renumbered analysis must equal the
 // original one up to the renumbering. Seeded std::mt19937 throughout: every run sees the same
 // meshes, and a failure names the case so it can be rebuilt alone.
@@ -67,7 +67,7 @@ bool is_mesh_edge(const Mesh& m, int32_t a, int32_t b) {
   return false;
 }
 
-// The SPEC invariants on one analysed mesh.
+// The SPEC invariants on one analyzed mesh.
 void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& opt) {
   const SingularityGraph& g = a.graph;
   const BaseComplex& bc = a.complex;

@@ -2,7 +2,7 @@
 // classified exactly: the number of sheets, which are perfect / type 1 / type 2 / type 3, their
 // cells and parallel curves, and the highlight sets SPEC §6 uses (unmatched vertices, shared
 // vertices, self-parallel curves, self-intersecting blocks). The derivations are in the comments.
-// Every mesh is also analysed randomly renumbered, and must give the same sheets up to renumbering.
+// Every mesh is also analyzed randomly renumbered, and must give the same sheets up to renumbering.
 //
 // Notation. At the mesh level (Level::Mesh) blocks are hex cells and curves mesh edges; a
 // sheet is a class of the union-find joining the 4 parallel edges of each direction of every hex

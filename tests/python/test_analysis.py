@@ -20,7 +20,7 @@ TIMING_KEYS = {"load", "singularity_graph", "base_complex", "sheets", "subsheets
 
 
 @pytest.fixture(scope="module")
-def analysed(shared_data_dir):
+def analyzed(shared_data_dir):
     """name -> (mesh, analysis) with the defaults, computed once for the module."""
     out = {}
     for name in MESHES:
@@ -77,8 +77,8 @@ def assert_chains_of_edges(m, offsets, verts, closed=None):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_stats_match_cli(analysed, shared_data_dir, hbc_cli, name):
-    _, a = analysed[name]
+def test_stats_match_cli(analyzed, shared_data_dir, hbc_cli, name):
+    _, a = analyzed[name]
     assert_same_stats(a.stats, cli_analyze(hbc_cli, shared_data_dir / name))
     assert a.stats["timings"]["load"] > 0  # hbc.load timed the load
 
@@ -105,8 +105,8 @@ def test_mesh_level_matches_cli(shared_data_dir, hbc_cli):
     assert_same_stats(a.stats, cli_analyze(hbc_cli, path, "--level", "mesh", "--rho", "0.5"))
 
 
-def test_bad_options(analysed):
-    m, _ = analysed[MESHES[3]]
+def test_bad_options(analyzed):
+    m, _ = analyzed[MESHES[3]]
     with pytest.raises(ValueError, match="level"):
         m.analyze(level="fine")
     with pytest.raises(ValueError, match="rho"):
@@ -118,8 +118,8 @@ def test_bad_options(analysed):
     (TABLE1 + "twistcube_s.mesh", 1301, 1157, 20, 16, 2, 1),
     (TABLE1 + "cube_twist-comp.obj.HYBRID", 221, 203, 19, 8, 0, 0),
 ])
-def test_table1(analysed, name, comps, hex_comps, sheets, t1, t2, t3):
-    _, a = analysed[name]
+def test_table1(analyzed, name, comps, hex_comps, sheets, t1, t2, t3):
+    _, a = analyzed[name]
     s = a.stats
     assert (s["components"], s["hex_components"]) == (comps, hex_comps)
     assert (s["sheets"], s["sheets_type1"], s["sheets_type2"], s["sheets_type3"]) == (sheets, t1, t2, t3)
@@ -130,18 +130,18 @@ def test_table1(analysed, name, comps, hex_comps, sheets, t1, t2, t3):
     assert np.bincount(a.sheet_type, minlength=4)[1:].tolist() == [t1, t2, t3]
 
 
-def test_table1_subsheets(analysed):
-    _, a = analysed[TABLE1 + "twistcube_s.mesh"]
+def test_table1_subsheets(analyzed):
+    _, a = analyzed[TABLE1 + "twistcube_s.mesh"]
     big = a.largest_self_intersecting
     assert big >= 0
     assert a.subsheets(big).count == 9 == a.stats["subsheets_of_largest_self_intersecting"]
-    _, a = analysed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
+    _, a = analyzed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
     assert a.largest_self_intersecting == -1 and len(a.self_intersecting_sheets) == 0
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_graph_arrays(analysed, name):
-    m, a = analysed[name]
+def test_graph_arrays(analyzed, name):
+    m, a = analyzed[name]
     g, s = a.graph, a.stats
     assert g.edge_class.dtype == np.uint8 and g.edge_class.shape == (m.num_edges,)
     assert not g.edge_class.flags.writeable
@@ -169,8 +169,8 @@ def test_graph_arrays(analysed, name):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_complex_arrays(analysed, name):
-    m, a = analysed[name]
+def test_complex_arrays(analyzed, name):
+    m, a = analyzed[name]
     c, s = a.complex, a.stats
     ncomp = s["components"]
     assert c.cell_component.shape == (m.num_cells,) and c.cell_component.dtype == np.int32
@@ -205,8 +205,8 @@ def test_complex_arrays(analysed, name):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_sheet_arrays(analysed, name):
-    m, a = analysed[name]
+def test_sheet_arrays(analyzed, name):
+    m, a = analyzed[name]
     ns = a.num_sheets
     assert ns == a.stats["sheets"]
     assert a.sheet_type.dtype == np.uint8 and a.sheet_type.shape == (ns,)
@@ -237,8 +237,8 @@ def test_sheet_arrays(analysed, name):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_subsheets(analysed, name):
-    m, a = analysed[name]
+def test_subsheets(analyzed, name):
+    m, a = analyzed[name]
     for s in range(a.num_sheets):
         if s not in a.self_intersecting_sheets:
             with pytest.raises(ValueError, match="not self-intersecting"):
@@ -289,8 +289,8 @@ def check_wireframe(m, w, counts=None):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_wireframe_whole(analysed, name):
-    m, a = analysed[name]
+def test_wireframe_whole(analyzed, name):
+    m, a = analyzed[name]
     s = a.stats
     w = a.wireframe()
     check_wireframe(m, w, {k: s[k] for k in ("vsg_edges", "wireframe_edges", "wireframe_edges_simplified")})
@@ -298,8 +298,8 @@ def test_wireframe_whole(analysed, name):
 
 
 @pytest.mark.parametrize("name", [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh"])
-def test_wireframe_regions(analysed, name):
-    m, a = analysed[name]
+def test_wireframe_regions(analyzed, name):
+    m, a = analyzed[name]
     face_of_point = np.repeat(np.arange(m.num_faces), np.diff(m.face_offsets))
 
     def region_vertices(cells):

@@ -13,7 +13,7 @@ MESHES = [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh", TABLE1 + "cube_t
 
 
 @pytest.fixture(scope="module")
-def analysed(shared_data_dir):
+def analyzed(shared_data_dir):
     out = {}
     for name in MESHES:
         m = hbc.load(shared_data_dir / name)
@@ -72,8 +72,8 @@ def check_soup(m, d, owners):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_soups_valid_and_shrink(analysed, name):
-    m, a = analysed[name]
+def test_soups_valid_and_shrink(analyzed, name):
+    m, a = analyzed[name]
     pts = m.points64
     for what, sheet, owners in kinds(a):
         d0 = hbc.block_soup(m, a, what, sheet=sheet)
@@ -100,8 +100,8 @@ def test_soups_valid_and_shrink(analysed, name):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_soup_face_counts(analysed, name):
-    m, a = analysed[name]
+def test_soup_face_counts(analyzed, name):
+    m, a = analyzed[name]
     nfaces = np.diff(m.cell_offsets)
     hexes = m.cell_types == 0
     cells = hbc.block_soup(m, a, "cells")
@@ -185,8 +185,8 @@ def inverted_cells(m, a):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_cube_component_blocks_closed_and_outward(analysed, name):
-    m, a = analysed[name]
+def test_cube_component_blocks_closed_and_outward(analyzed, name):
+    m, a = analyzed[name]
     d = hbc.block_soup(m, a, "components")
     pos = d["positions"].astype(np.float64) - m.points64.mean(axis=0)
     sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
@@ -218,8 +218,8 @@ def test_cube_component_blocks_closed_and_outward(analysed, name):
     assert checked_orientation > 0
 
 
-def test_hex_cells_outward(analysed):
-    m, a = analysed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
+def test_hex_cells_outward(analyzed):
+    m, a = analyzed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
     d = hbc.block_soup(m, a, "cells")
     pos = d["positions"].astype(np.float64)
     sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
@@ -231,8 +231,8 @@ def test_hex_cells_outward(analysed):
         assert signed_volume(pos - centre, sizes[faces], loops) > 0
 
 
-def test_soup_errors(analysed):
-    m, a = analysed[TABLE1 + "twistcube_s.mesh"]
+def test_soup_errors(analyzed):
+    m, a = analyzed[TABLE1 + "twistcube_s.mesh"]
     with pytest.raises(ValueError, match="expected one of"):
         hbc.block_soup(m, a, "patches")
     for bad in (-0.1, 1.0, float("nan")):
@@ -245,7 +245,7 @@ def test_soup_errors(analysed):
     not_type3 = int(np.flatnonzero(a.sheet_type != 3)[0])
     with pytest.raises(ValueError, match="not self-intersecting"):
         hbc.block_soup(m, a, "subsheets", sheet=not_type3)
-    other, _ = analysed[TABLE1 + "test_2.HYBRID"]
+    other, _ = analyzed[TABLE1 + "test_2.HYBRID"]
     with pytest.raises(ValueError, match="another mesh"):
         hbc.block_soup(other, a, "cells")
     no_sheets = m.analyze(sheets=False, wireframe=False)
@@ -253,8 +253,8 @@ def test_soup_errors(analysed):
         hbc.block_soup(m, no_sheets, "sheets")
 
 
-def test_soup_arrays_are_owned(analysed):
-    m, a = analysed[TABLE1 + "test_2.HYBRID"]
+def test_soup_arrays_are_owned(analyzed):
+    m, a = analyzed[TABLE1 + "test_2.HYBRID"]
     d = hbc.block_soup(m, a, "cells", shrink=0.5)
     pos = d["positions"]
     assert not pos.flags.owndata and pos.base is not None  # the C++ vector, moved into a capsule
@@ -262,8 +262,8 @@ def test_soup_arrays_are_owned(analysed):
     assert np.isfinite(pos).all()
 
 
-def test_polylines(analysed):
-    m, a = analysed[TABLE1 + "teapot.hedra"]
+def test_polylines(analyzed):
+    m, a = analyzed[TABLE1 + "teapot.hedra"]
     c = a.complex
     p = hbc.polylines(m, c.curve_vertex_offsets, c.curve_vertex_items)
     assert p.dtype == np.float32 and p.shape == (len(c.curve_vertex_items), 3)

@@ -297,7 +297,7 @@ void bind_analysis(py::module_& m) {
   py::class_<PyAnalysis, PyAnalysisPtr> c(m, "Analysis",
                                           "The structure of a mesh (Mesh.analyze()): singularity graph, base complex, "
                                           "sheets, subsheets, VSG wireframe. Arrays are read-only views.");
-  c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analysed hbc.Mesh.");
+  c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analyzed hbc.Mesh.");
   c.def_property_readonly("level", [](const PyAnalysis& p) { return level_name(p.options.wireframe_level); });
   c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; });
   c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.has_sheets; });

@@ -6,7 +6,7 @@ PYBIND11_MODULE(_core, m) {
   namespace hp = hbc::python;
   m.doc() = "Compiled core of hbc; import the `hbc` package instead of this module.";
   m.attr("__version__") = hbc::version();
-  // Errors first: later bindings may raise them at import time.
+  // Errors first: the other bindings may raise them at import time.
   hp::bind_errors(m);
   hp::bind_mesh(m);
   hp::bind_io(m);
