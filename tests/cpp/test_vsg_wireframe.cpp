@@ -351,12 +351,8 @@ TEST(VsgWireframe, DeterministicUnderRenumbering) {
   EXPECT_EQ(a.color, again.color);
   EXPECT_EQ(a.point_opacity, again.point_opacity);
   std::mt19937 rng(7);
-  std::vector<int32_t> vperm(m.num_vertices()), cperm(m.num_cells());
-  std::iota(vperm.begin(), vperm.end(), 0);
-  std::iota(cperm.begin(), cperm.end(), 0);
-  std::shuffle(vperm.begin(), vperm.end(), rng);
-  std::shuffle(cperm.begin(), cperm.end(), rng);
-  const Mesh r = build_mesh(renumbered(m, vperm, cperm));
+  const test::Renumbering rn = test::random_renumbering(m, rng);
+  const Mesh& r = rn.mesh;
   for (bool coarse : {false, true}) {
     auto run = [&](const Mesh& x) {
       return coarse ? vsg_wireframe(complex_from_base(x, base_complex(x, singularity_graph(x))))
