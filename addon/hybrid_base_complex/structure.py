@@ -228,7 +228,7 @@ class Structure:
         off, items = _csr(a, "sheet_self_intersecting")
         comps = P.csr_row(off, items, sheet)
         if len(comps):
-            coff, citems = _csr(cx, "component")
+            coff, citems = _csr(cx, "component_cell")
             label = P.label_cells(self.num_cells, coff, citems, comps)
             cells = self._soup(label, 0.0)
         else:
@@ -238,7 +238,7 @@ class Structure:
 
     @staticmethod
     def _curve_subset(cx, curves):
-        off, verts = _csr(cx, "curve")
+        off, verts = _csr(cx, "curve_vertex")
         curves = np.asarray(curves, np.int64)
         off = np.asarray(off, np.int64)
         sizes = off[curves + 1] - off[curves]
