@@ -38,6 +38,14 @@ void add_input(CLI::App& cmd, InputArgs& in) {
   add_format(cmd, in.format);
 }
 
+CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,
+                           bool& json, const std::string& json_help) {
+  CLI::App* cmd = app.add_subcommand(name, help);
+  add_input(*cmd, input);
+  cmd->add_flag("--json", json, json_help);
+  return cmd;
+}
+
 void add_level(CLI::App& cmd, std::string& level, const std::string& help) {
   cmd.add_option("--level", level, help)
       ->check(parsed_by([](const std::string& s) { level_from_name(s); }, "complex|mesh"))

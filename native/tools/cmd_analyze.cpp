@@ -47,10 +47,9 @@ void run_analyze(const AnalyzeArgs& args) {
 
 void add_analyze(CLI::App& app) {
   auto args = std::make_shared<AnalyzeArgs>();
-  CLI::App* cmd = app.add_subcommand("analyze", "hybrid singularity graph, base complex, sheets and VSG wireframe");
-  add_input(*cmd, args->input);
-  auto* json = cmd->add_flag("--json", args->json, "print the SPEC §5 statistics as JSON");
-  cmd->add_flag("--csv", args->csv, "print them as one CSV header and row")->excludes(json);
+  CLI::App* cmd = add_mesh_command(app, "analyze", "hybrid singularity graph, base complex, sheets and VSG wireframe",
+                                   args->input, args->json, "print the SPEC §5 statistics as JSON");
+  cmd->add_flag("--csv", args->csv, "print them as one CSV header and row")->excludes("--json");
   add_level(*cmd, args->level, "level of sheets and wireframe");
   cmd->add_option("--rho", args->rho, "wireframe simplification threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
   cmd->add_flag("--no-sheets", args->no_sheets, "skip the sheet stages");

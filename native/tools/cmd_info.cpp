@@ -57,9 +57,7 @@ void run_info(const InfoArgs& args) {
 
 void add_info(CLI::App& app) {
   auto args = std::make_shared<InfoArgs>();
-  CLI::App* cmd = app.add_subcommand("info", "counts of the mesh (SPEC §5 keys)");
-  add_input(*cmd, args->input);
-  cmd->add_flag("--json", args->json, "print JSON");
+  CLI::App* cmd = add_mesh_command(app, "info", "counts of the mesh (SPEC §5 keys)", args->input, args->json);
   cmd->callback([args] { run_info(*args); });
 }
 

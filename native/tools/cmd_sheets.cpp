@@ -87,9 +87,8 @@ void run_sheets(const SheetsArgs& args) {
 
 void add_sheets(CLI::App& app) {
   auto args = std::make_shared<SheetsArgs>();
-  CLI::App* cmd = app.add_subcommand("sheets", "sheets with type flags, sizes and subsheets");
-  add_input(*cmd, args->input);
-  cmd->add_flag("--json", args->json, "print JSON");
+  CLI::App* cmd =
+      add_mesh_command(app, "sheets", "sheets with type flags, sizes and subsheets", args->input, args->json);
   add_level(*cmd, args->level, "level of the sheets");
   cmd->callback([args] { run_sheets(*args); });
 }

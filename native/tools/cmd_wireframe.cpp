@@ -138,16 +138,15 @@ void run_wireframe(const WireframeArgs& args) {
 
 void add_wireframe(CLI::App& app) {
   auto args = std::make_shared<WireframeArgs>();
-  CLI::App* cmd = app.add_subcommand("wireframe", "VSG wireframe (SPEC §4) of the mesh or of one sheet");
-  add_input(*cmd, args->input);
+  CLI::App* cmd = add_mesh_command(app, "wireframe", "VSG wireframe (SPEC §4) of the mesh or of one sheet", args->input,
+                                   args->json, "JSON: polylines with colours, opacities, flags (the default)");
   add_level(*cmd, args->level, "complex (the paper's) or mesh");
   cmd->add_option("--rho", args->rho, "partial-parallel threshold of the colour classes")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--sheet", args->sheet, "restrict to sheet N (complex-level sheets) and its adjacent non-hex cells")
       ->check(at_least(0));
-  auto* json = cmd->add_flag("--json", args->json, "JSON: polylines with colours, opacities, flags (the default)");
-  cmd->add_flag("--obj", args->obj, "OBJ line objects, one per colour class")->excludes(json);
+  cmd->add_flag("--obj", args->obj, "OBJ line objects, one per colour class")->excludes("--json");
   cmd->add_flag("--all", args->all, "OBJ: also write the hidden (non-important) edges");
   cmd->add_option("-o", args->out, "output file (default: stdout)");
   cmd->callback([args] { run_wireframe(*args); });

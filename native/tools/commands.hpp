@@ -29,6 +29,10 @@ struct InputArgs {
   Format parsed_format() const { return format.empty() ? Format::Auto : format_from_name(format); }
 };
 void add_input(CLI::App& cmd, InputArgs& in);
+// A subcommand that reads one mesh: FILE and --format into `input`, --json (help `json_help`) into
+// `json`. Returns the subcommand for its own options.
+CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,
+                           bool& json, const std::string& json_help = "print JSON");
 // --format NAME alone (for writers).
 void add_format(CLI::App& cmd, std::string& format);
 // --level complex|mesh, parsed by level_from_name (the binding's parser too).
