@@ -119,7 +119,7 @@ class Structure:
         """[(name, colour, Lines)]: one group per singularity valence, then pseudo-singular and
         non-manifold edges."""
         g = self.analysis.graph
-        offsets, verts = np.asarray(g.chain_offsets), np.asarray(g.chain_vertices)
+        offsets, verts = np.asarray(g.chain_vertex_offsets), np.asarray(g.chain_vertex_items)
         valence = np.asarray(g.chain_valence)
         closed = np.asarray(g.chain_closed, bool)
         groups = []
@@ -214,7 +214,7 @@ class Structure:
 
     @staticmethod
     def _curve_subset(cx, curves):
-        off, verts = _csr(cx, "curve")
+        off, verts = _csr(cx, "curve_vertex")
         curves = np.asarray(curves, np.int64)
         off = np.asarray(off, np.int64)
         sizes = off[curves + 1] - off[curves]
@@ -243,7 +243,7 @@ class Structure:
                 kwargs["subsheet"] = int(subsheet)
         w = a.wireframe(**kwargs)
         off = np.asarray(w.polyline_offsets)
-        verts = np.asarray(w.polyline_vertices)
+        verts = np.asarray(w.polyline_items)
         k = len(off) - 1
         colors = P.palette_color(np.asarray(w.color, np.int64)) if k else np.zeros((0, 4), np.float32)
         keep = np.asarray(w.shown, bool) if simplified else None

@@ -395,7 +395,7 @@ class Subject:
         P = self.addon.P
         w = self.s.analysis.wireframe(sheet=int(sheet))
         off = np.asarray(w.polyline_offsets)
-        verts = np.asarray(w.polyline_vertices)
+        verts = np.asarray(w.polyline_items)
         k = len(off) - 1
         if k == 0:
             return None

@@ -58,7 +58,7 @@ void BM_Sheets(benchmark::State& st, const std::string& name) {
   const SingularityGraph g = singularity_graph(m);
   const BaseComplex bc = base_complex(m, g);
   for (auto _ : st) {
-    SheetDomain d = sheet_domain(m, bc, SheetLevel::Complex);
+    SheetDomain d = sheet_domain(m, bc, Level::Complex);
     Sheets s = extract_sheets(m, d);
     benchmark::DoNotOptimize(s.classes.data());
   }
@@ -69,7 +69,7 @@ void BM_Subsheets(benchmark::State& st, const std::string& name) {
   const Mesh& m = mesh_named(name);
   const SingularityGraph g = singularity_graph(m);
   const BaseComplex bc = base_complex(m, g);
-  const SheetDomain d = sheet_domain(m, bc, SheetLevel::Complex);
+  const SheetDomain d = sheet_domain(m, bc, Level::Complex);
   const Sheets s = extract_sheets(m, d);
   for (auto _ : st) {
     size_t total = 0;

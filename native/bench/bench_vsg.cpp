@@ -41,7 +41,7 @@ const Prepared* prepared(const std::string& key) {
   return (cache[key] = std::move(p)).get();
 }
 
-void wireframe(benchmark::State& state, const std::string& key, hbc::ComplexLevel level) {
+void wireframe(benchmark::State& state, const std::string& key, hbc::Level level) {
   const Prepared* p = prepared(key);
   if (!p) {
     state.SkipWithError(("missing " + key).c_str());
@@ -49,7 +49,7 @@ void wireframe(benchmark::State& state, const std::string& key, hbc::ComplexLeve
   }
   hbc::VsgWireframe w;
   for (auto _ : state) {
-    const hbc::CellComplex cx = level == hbc::ComplexLevel::Complex ? hbc::complex_from_base(p->mesh, p->bc)
+    const hbc::CellComplex cx = level == hbc::Level::Complex ? hbc::complex_from_base(p->mesh, p->bc)
                                                                     : hbc::complex_from_mesh(p->mesh);
     w = hbc::vsg_wireframe(cx);
     benchmark::DoNotOptimize(w.polylines.items.data());
@@ -71,9 +71,9 @@ const char* kInputs[] = {
 const int kRegistered = [] {
   for (const char* key : kInputs) {
     const std::string name = std::filesystem::path(key).filename().string();
-    for (auto level : {hbc::ComplexLevel::Complex, hbc::ComplexLevel::Mesh}) {
+    for (auto level : {hbc::Level::Complex, hbc::Level::Mesh}) {
       auto* b = benchmark::RegisterBenchmark(
-          ("vsg_wireframe/" + name + "/" + hbc::complex_level_name(level)).c_str(),
+          ("vsg_wireframe/" + name + "/" + hbc::level_name(level)).c_str(),
           [key, level](benchmark::State& s) { wireframe(s, key, level); });
       b->Unit(benchmark::kMillisecond);
       if (std::string(key) == "grid100") b->Iterations(3);

@@ -44,7 +44,7 @@ Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
   }
   if (opt.wireframe) {
     t = std::chrono::steady_clock::now();
-    a.wire_complex = opt.wireframe_level == ComplexLevel::Complex ? complex_from_base(mesh, a.complex)
+    a.wire_complex = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, a.complex)
                                                                   : complex_from_mesh(mesh);
     a.wireframe = vsg_wireframe(a.wire_complex, opt.wireframe_options);
     a.timings.vsg_wireframe = since(t);

@@ -127,46 +127,58 @@ std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) 
   return sep;
 }
 
-}  // namespace
-
-BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
-  BaseComplex bc;
-  const size_t nc = m.num_cells(), nf = m.num_faces(), ne = m.num_edges(), nv = m.num_vertices();
-  bc.face_separation = separation_faces(m, g);
-  const auto& sep = bc.face_separation;
-
-  // Components: cells joined across faces that do not separate, numbered by their lowest cell.
-  bc.cell_component.assign(nc, -1);
-  bc.component_cells.items.reserve(nc);
+// Groups the elements 0..n-1 that `take` accepts into connected groups: each unlabelled accepted
+// element, in increasing order, seeds a group that grows through neighbours(x, reach) (which
+// calls reach(y) for every neighbour y of x that joins x's group). label[x] = group (or -1 when
+// not taken); groups gets one sorted row per group, numbered by its lowest element.
+template <class Take, class Neighbours>
+void label_groups(size_t n, Take take, Neighbours neighbours, std::vector<int32_t>& label, Csr<int32_t>& groups) {
+  label.assign(n, -1);
   std::vector<int32_t> stack, members;
-  for (size_t c0 = 0; c0 < nc; ++c0) {
-    if (bc.cell_component[c0] >= 0) continue;
-    const int32_t id = static_cast<int32_t>(bc.component_cells.rows());
+  for (size_t s = 0; s < n; ++s) {
+    if (label[s] >= 0 || !take(s)) continue;
+    const int32_t id = static_cast<int32_t>(groups.rows());
     members.clear();
-    stack.assign(1, static_cast<int32_t>(c0));
-    bc.cell_component[c0] = id;
+    stack.assign(1, static_cast<int32_t>(s));
+    label[s] = id;
     while (!stack.empty()) {
-      const int32_t c = stack.back();
+      const int32_t x = stack.back();
       stack.pop_back();
-      members.push_back(c);
-      for (int32_t f : m.cell_faces[c]) {
-        if (sep[f]) continue;
-        const int32_t d = m.face_cells[f][0] == c ? m.face_cells[f][1] : m.face_cells[f][0];
-        if (d >= 0 && bc.cell_component[d] < 0) {
-          bc.cell_component[d] = id;
-          stack.push_back(d);
-        }
-      }
+      members.push_back(x);
+      neighbours(x, [&](int32_t y) {
+        if (label[y] >= 0) return;
+        label[y] = id;
+        stack.push_back(y);
+      });
     }
-    push_unique_row(members, bc.component_cells);
+    push_unique_row(members, groups);
   }
-  const size_t ncomp = bc.component_cells.rows();
+}
 
-  // Curves and corners.
+// Components: cells joined across faces that do not separate, numbered by their lowest cell.
+void find_components(const Mesh& m, BaseComplex& bc) {
+  const auto& sep = bc.face_separation;
+  bc.component_cells.items.reserve(m.num_cells());
+  label_groups(
+      m.num_cells(), [](size_t) { return true; },
+      [&](int32_t c, auto reach) {
+        for (int32_t f : m.cell_faces[c]) {
+          if (sep[f]) continue;
+          const int32_t d = m.face_cells[f][0] == c ? m.face_cells[f][1] : m.face_cells[f][0];
+          if (d >= 0) reach(d);
+        }
+      },
+      bc.cell_component, bc.component_cells);
+}
+
+// Curves: chains of complex edges (every face around them separates) between corners (vertices
+// whose every edge is a complex edge).
+void find_curves(const Mesh& m, BaseComplex& bc) {
+  const size_t ne = m.num_edges(), nv = m.num_vertices();
   bc.edge_complex.assign(ne, 0);
   for (size_t e = 0; e < ne; ++e) {
     bool all = true;
-    for (int32_t f : m.edge_faces[e]) all = all && sep[f];
+    for (int32_t f : m.edge_faces[e]) all = all && bc.face_separation[f];
     bc.edge_complex[e] = all;
   }
   bc.vert_corner.assign(nv, 0);
@@ -176,75 +188,41 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
     bc.vert_corner[v] = all;
     if (all) bc.corners.push_back(static_cast<int32_t>(v));
   }
-  {
-    std::vector<int32_t> zero(ne, 0);
-    chain_edges(m, bc.edge_complex, zero, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
-  }
+  const std::vector<int32_t> zero(ne, 0);
+  chain_edges(m, bc.edge_complex, zero, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
   bc.edge_curve.assign(ne, -1);
   for (size_t k = 0; k < bc.curve_edges.rows(); ++k)
     for (int32_t e : bc.curve_edges[k]) bc.edge_curve[e] = static_cast<int32_t>(k);
+}
 
-  // Patches: separation faces joined straight across edges that are not curves.
-  bc.face_patch.assign(nf, -1);
+// Patches: separation faces joined straight across edges that are not curves; the components on
+// the two sides of each patch are those of its lowest face.
+void find_patches(const Mesh& m, BaseComplex& bc) {
+  const auto& sep = bc.face_separation;
   bc.patch_faces.items.reserve(static_cast<size_t>(std::count(sep.begin(), sep.end(), 1)));
-  for (size_t f0 = 0; f0 < nf; ++f0) {
-    if (!sep[f0] || bc.face_patch[f0] >= 0) continue;
-    const int32_t id = static_cast<int32_t>(bc.patch_faces.rows());
-    members.clear();
-    stack.assign(1, static_cast<int32_t>(f0));
-    bc.face_patch[f0] = id;
-    while (!stack.empty()) {
-      const int32_t f = stack.back();
-      stack.pop_back();
-      members.push_back(f);
-      for (int32_t e : m.face_edges[f]) {
-        if (bc.edge_complex[e]) continue;
-        const int32_t h = straight_face(m, e, f);
-        if (h >= 0 && sep[h] && bc.face_patch[h] < 0) {
-          bc.face_patch[h] = id;
-          stack.push_back(h);
+  label_groups(
+      m.num_faces(), [&](size_t f) { return sep[f] != 0; },
+      [&](int32_t f, auto reach) {
+        for (int32_t e : m.face_edges[f]) {
+          if (bc.edge_complex[e]) continue;
+          const int32_t h = straight_face(m, e, f);
+          if (h >= 0 && sep[h]) reach(h);
         }
-      }
-    }
-    push_unique_row(members, bc.patch_faces);
-    const auto fc = m.face_cells[f0];
+      },
+      bc.face_patch, bc.patch_faces);
+  for (size_t p = 0; p < bc.patch_faces.rows(); ++p) {
+    const auto fc = m.face_cells[bc.patch_faces[p][0]];
     bc.patch_components.push_back({bc.cell_component[fc[0]], fc[1] >= 0 ? bc.cell_component[fc[1]] : -1});
   }
+}
+
+// The corners and curves on each patch.
+void patch_incidences(const Mesh& m, BaseComplex& bc) {
   const size_t npatch = bc.patch_faces.rows();
-  const size_t ncurve = bc.curve_edges.rows();
-  RowCollector by_vertex(nv), by_curve(ncurve), by_patch(npatch), by_component(ncomp);
-  // Quads and cubes dominate: room for 4 corners and curves per patch, 8 / 12 / 6 per component.
+  RowCollector by_vertex(m.num_vertices()), by_curve(bc.curve_edges.rows());
+  // Quads dominate: room for 4 corners and curves per patch.
   bc.patch_corners.reserve(npatch, 4 * npatch);
   bc.patch_curves.reserve(npatch, 4 * npatch);
-  bc.component_corners.reserve(ncomp, 8 * ncomp);
-  bc.component_curves.reserve(ncomp, 12 * ncomp);
-  bc.component_patches.reserve(ncomp, 6 * ncomp);
-  bc.component_adjacency.reserve(ncomp, 6 * ncomp);
-  // Euler characteristic of a component's boundary surface (faces counted once per side): 2 for
-  // a ball, 0 for a solid torus. Only needed for the components that are not cubes.
-  std::vector<int32_t> edge_seen(ne, -1), vert_seen(nv, -1);
-  auto boundary_euler = [&](int32_t k) {
-    int64_t F = 0, E = 0, V = 0;
-    for (int32_t c : bc.component_cells[k])
-      for (int32_t f : m.cell_faces[c]) {
-        if (!sep[f]) continue;
-        const auto fc = m.face_cells[f];
-        const int32_t other = fc[0] == c ? fc[1] : fc[0];
-        if (other >= 0 && bc.cell_component[other] == k) continue;  // a cut inside: not the boundary
-        ++F;
-        for (int32_t e : m.face_edges[f])
-          if (edge_seen[e] != k) {
-            edge_seen[e] = k;
-            ++E;
-          }
-        for (int32_t v : m.face_verts[f])
-          if (vert_seen[v] != k) {
-            vert_seen[v] = k;
-            ++V;
-          }
-      }
-    return V - E + F;
-  };
   for (size_t p = 0; p < npatch; ++p) {
     by_vertex.begin();
     by_curve.begin();
@@ -257,27 +235,35 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
     by_vertex.end(bc.patch_corners);
     by_curve.end(bc.patch_curves);
   }
+}
 
-  // Faces with the same component on both sides (reported, never hidden).
-  for (size_t f = 0; f < nf; ++f) {
-    if (!sep[f] || m.face_cells[f][1] < 0) continue;
+// Separation faces with the same component on both sides (reported, never hidden).
+void find_self_adjacent_faces(const Mesh& m, BaseComplex& bc) {
+  for (size_t f = 0; f < m.num_faces(); ++f) {
+    if (!bc.face_separation[f] || m.face_cells[f][1] < 0) continue;
     if (bc.cell_component[m.face_cells[f][0]] == bc.cell_component[m.face_cells[f][1]])
       bc.self_adjacent_faces.push_back(static_cast<int32_t>(f));
   }
-  std::vector<uint8_t> self_cut(ncomp, 0);
-  for (int32_t f : bc.self_adjacent_faces) self_cut[bc.cell_component[m.face_cells[f][0]]] = 1;
+}
 
-  // Per component: adjacency, patches, curves, corners, and its kind.
-  bc.component_kind.assign(ncomp, ComponentKind::Other);
+// Per component: the adjacent components, and its patches, curves and corners.
+void component_incidences(const Mesh& m, BaseComplex& bc) {
+  const size_t ncomp = bc.component_cells.rows();
+  RowCollector by_vertex(m.num_vertices()), by_curve(bc.curve_edges.rows()), by_patch(bc.patch_faces.rows()),
+      by_component(ncomp);
+  // Cubes dominate: room for 8 corners, 12 curves, 6 patches and 6 neighbours per component.
+  bc.component_corners.reserve(ncomp, 8 * ncomp);
+  bc.component_curves.reserve(ncomp, 12 * ncomp);
+  bc.component_patches.reserve(ncomp, 6 * ncomp);
+  bc.component_adjacency.reserve(ncomp, 6 * ncomp);
   for (size_t k = 0; k < ncomp; ++k) {
-    auto cells = bc.component_cells[k];
     by_component.begin();
     by_patch.begin();
     by_curve.begin();
     by_vertex.begin();
-    for (int32_t c : cells) {
+    for (int32_t c : bc.component_cells[k]) {
       for (int32_t f : m.cell_faces[c]) {
-        if (!sep[f]) continue;
+        if (!bc.face_separation[f]) continue;
         by_patch.add(bc.face_patch[f]);
         const auto fc = m.face_cells[f];
         const int32_t other = fc[0] == c ? fc[1] : fc[0];
@@ -292,7 +278,46 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
     by_patch.end(bc.component_patches);
     by_curve.end(bc.component_curves);
     by_vertex.end(bc.component_corners);
+  }
+}
 
+// Euler characteristic V - E + F of the boundary surface of component k (faces counted once per
+// side): 2 for a ball, 0 for a solid torus. edge_seen / vert_seen (ne / nv) hold the last
+// component that counted an element, so they need no clearing between components.
+int64_t boundary_euler(const Mesh& m, const BaseComplex& bc, int32_t k, std::vector<int32_t>& edge_seen,
+                       std::vector<int32_t>& vert_seen) {
+  int64_t F = 0, E = 0, V = 0;
+  for (int32_t c : bc.component_cells[k])
+    for (int32_t f : m.cell_faces[c]) {
+      if (!bc.face_separation[f]) continue;
+      const auto fc = m.face_cells[f];
+      const int32_t other = fc[0] == c ? fc[1] : fc[0];
+      if (other >= 0 && bc.cell_component[other] == k) continue;  // a cut inside: not the boundary
+      ++F;
+      for (int32_t e : m.face_edges[f])
+        if (edge_seen[e] != k) {
+          edge_seen[e] = k;
+          ++E;
+        }
+      for (int32_t v : m.face_verts[f])
+        if (vert_seen[v] != k) {
+          vert_seen[v] = k;
+          ++V;
+        }
+    }
+  return V - E + F;
+}
+
+// The kind of each component: a single non-hex cell; a cube (6 quad patches, 12 curves, 8
+// corners, no cut inside); a ring (cut by a self-adjacent face, or a torus-like boundary); other.
+void classify_components(const Mesh& m, BaseComplex& bc) {
+  const size_t ncomp = bc.component_cells.rows();
+  std::vector<uint8_t> self_cut(ncomp, 0);
+  for (int32_t f : bc.self_adjacent_faces) self_cut[bc.cell_component[m.face_cells[f][0]]] = 1;
+  std::vector<int32_t> edge_seen(m.num_edges(), -1), vert_seen(m.num_vertices(), -1);
+  bc.component_kind.assign(ncomp, ComponentKind::Other);
+  for (size_t k = 0; k < ncomp; ++k) {
+    const auto cells = bc.component_cells[k];
     if (cells.size() == 1 && !m.is_hex(cells[0])) {
       bc.component_kind[k] = ComponentKind::NonHex;
       continue;
@@ -302,9 +327,23 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
     for (int32_t p : bc.component_patches[k])
       cube = cube && bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
     if (cube) bc.component_kind[k] = ComponentKind::Cube;
-    else if (self_cut[k] || boundary_euler(static_cast<int32_t>(k)) == 0) bc.component_kind[k] = ComponentKind::Ring;
-    else bc.component_kind[k] = ComponentKind::Other;
+    else if (self_cut[k] || boundary_euler(m, bc, static_cast<int32_t>(k), edge_seen, vert_seen) == 0)
+      bc.component_kind[k] = ComponentKind::Ring;
   }
+}
+
+}  // namespace
+
+BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
+  BaseComplex bc;
+  bc.face_separation = separation_faces(m, g);
+  find_components(m, bc);
+  find_curves(m, bc);
+  find_patches(m, bc);
+  patch_incidences(m, bc);
+  find_self_adjacent_faces(m, bc);
+  component_incidences(m, bc);
+  classify_components(m, bc);
   return bc;
 }
 

@@ -6,10 +6,6 @@
 
 namespace hbc {
 
-const char* complex_level_name(ComplexLevel level) {
-  return level == ComplexLevel::Mesh ? "mesh" : "complex";
-}
-
 namespace {
 
 // Which mesh faces / edges / vertices lie on the boundary of the region of mesh cells flagged in
@@ -138,7 +134,7 @@ CellComplex complex_from_mesh(const Mesh& m) {
 
 CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cells) {
   CellComplex cx;
-  cx.level = ComplexLevel::Mesh;
+  cx.level = Level::Mesh;
   const std::vector<uint8_t> in_cell = flags_of(region_cells, m.num_cells(), "cell");
   const RegionBoundary rb = region_boundary(m, in_cell);
   const size_t ne = m.num_edges(), nv = m.num_vertices();
@@ -226,7 +222,7 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc) {
 CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
                               std::span<const int32_t> region_components) {
   CellComplex cx;
-  cx.level = ComplexLevel::Complex;
+  cx.level = Level::Complex;
   const std::vector<uint8_t> in_comp = flags_of(region_components, bc.num_components(), "component");
   std::vector<uint8_t> in_cell(m.num_cells());
   for (size_t c = 0; c < in_cell.size(); ++c) in_cell[c] = in_comp[bc.cell_component[c]];
@@ -338,7 +334,7 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
 std::vector<int32_t> complex_edges_of(const CellComplex& cx, const BaseComplex& bc, std::span<const int32_t> mesh_edges) {
   std::vector<int32_t> out;
   for (int32_t e : mesh_edges) {
-    const int32_t src = cx.level == ComplexLevel::Complex ? bc.edge_curve[static_cast<size_t>(e)] : e;
+    const int32_t src = cx.level == Level::Complex ? bc.edge_curve[static_cast<size_t>(e)] : e;
     const auto it = std::lower_bound(cx.edge_source.begin(), cx.edge_source.end(), src);
     if (src >= 0 && it != cx.edge_source.end() && *it == src) out.push_back(static_cast<int32_t>(it - cx.edge_source.begin()));
   }

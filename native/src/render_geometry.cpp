@@ -1,5 +1,7 @@
 #include "hbc/render_geometry.hpp"
 
+#include "hbc/region.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,63 +24,6 @@ constexpr std::array<std::pair<std::string_view, SoupKind>, 9> kSoupNames{{
     {"hex", SoupKind::Hex},
 }};
 
-// The cell on the other side of face f from cell c (-1 on the boundary).
-int32_t across(const Mesh& m, int32_t f, int32_t c) {
-  const auto [a, b] = m.face_cells[static_cast<size_t>(f)];
-  return a == c ? b : a;
-}
-
-// cell_face_flip of face f in cell c's row (f must be a face of c).
-uint8_t face_flip(const Mesh& m, int32_t f, int32_t c) {
-  for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i)
-    if (m.cell_faces.items[static_cast<size_t>(i)] == f) return m.cell_face_flip[static_cast<size_t>(i)];
-  return 0;
-}
-
-// Appends the faces of cell c (oriented out of c) for which keep(face) holds.
-template <class Keep>
-void add_cell_faces(const Mesh& m, int32_t c, int32_t owner, OwnedFaces& out, Keep keep) {
-  for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i) {
-    const int32_t f = m.cell_faces.items[static_cast<size_t>(i)];
-    if (!keep(f)) continue;
-    out.owner.push_back(owner);
-    out.face.push_back(f);
-    out.cell.push_back(c);
-    out.reversed.push_back(m.cell_face_flip[static_cast<size_t>(i)]);
-  }
-}
-
-// Each row of `sets` is one block (owner = row id): the faces of its cells whose other side is
-// not in the row. `mark` (nc, scratch) remembers the row a cell was last seen in, so rows may
-// share cells and no clearing is needed between rows.
-void add_cell_set_boundaries(const Mesh& m, const Csr<int32_t>& sets, OwnedFaces& out) {
-  std::vector<int32_t> mark(m.num_cells(), -1);
-  for (size_t r = 0; r < sets.rows(); ++r) {
-    const int32_t owner = static_cast<int32_t>(r);
-    for (int32_t c : sets[r]) mark[static_cast<size_t>(c)] = owner;
-    for (int32_t c : sets[r])
-      add_cell_faces(m, c, owner, out, [&](int32_t f) {
-        const int32_t o = across(m, f, c);
-        return o < 0 || mark[static_cast<size_t>(o)] != owner;
-      });
-  }
-}
-
-void require_sheet(const Analysis& a, int32_t sheet) {
-  if (!a.has_sheets) throw std::invalid_argument("the analysis was run without sheets");
-  if (sheet < 0 || static_cast<size_t>(sheet) >= a.sheets.size())
-    throw std::invalid_argument("sheet " + std::to_string(sheet) + " out of range: the mesh has " +
-                                std::to_string(a.sheets.size()) + " sheets");
-}
-
-const Subsheets& require_subsheets(const Analysis& a, int32_t sheet) {
-  require_sheet(a, sheet);
-  if (!a.has_subsheets) throw std::invalid_argument("the analysis was run without subsheets");
-  const Subsheets* sub = a.subsheets_of(sheet);
-  if (!sub) throw std::invalid_argument("sheet " + std::to_string(sheet) + " is not self-intersecting");
-  return *sub;
-}
-
 }  // namespace
 
 SoupKind soup_kind_from_name(std::string_view name) {
@@ -97,100 +42,63 @@ bool soup_kind_needs_analysis(SoupKind kind) {
   return kind != SoupKind::Cells && kind != SoupKind::NonHex && kind != SoupKind::Hex && kind != SoupKind::Boundary;
 }
 
-OwnedFaces soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet) {
-  OwnedFaces out;
-  const int32_t nc = static_cast<int32_t>(m.num_cells());
-  const auto all = [](int32_t) { return true; };
+FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet) {
   switch (kind) {
-    case SoupKind::Cells:
-      for (int32_t c = 0; c < nc; ++c) add_cell_faces(m, c, c, out, all);
-      break;
-    case SoupKind::NonHex:
-      for (int32_t c = 0; c < nc; ++c)
-        if (!m.is_hex(static_cast<size_t>(c))) add_cell_faces(m, c, c, out, all);
-      break;
-    case SoupKind::Hex:
-      for (int32_t c = 0; c < nc; ++c)
-        if (m.is_hex(static_cast<size_t>(c)))
-          add_cell_faces(m, c, 0, out, [&](int32_t f) {
-            const int32_t o = across(m, f, c);
-            return o < 0 || !m.is_hex(static_cast<size_t>(o));
-          });
-      break;
-    case SoupKind::Components: {
-      // Non-separation faces are inside a component, so the separation faces of a component's
-      // cells are exactly its boundary, seen from inside (a self-adjacent face from both sides).
-      const auto& sep = a.complex.face_separation;
-      for (size_t k = 0; k < a.complex.num_components(); ++k)
-        for (int32_t c : a.complex.component_cells[k])
-          add_cell_faces(m, c, static_cast<int32_t>(k), out, [&](int32_t f) { return sep[static_cast<size_t>(f)] != 0; });
-      break;
+    case SoupKind::Cells: {
+      std::vector<int32_t> all(m.num_cells());
+      for (size_t c = 0; c < all.size(); ++c) all[c] = static_cast<int32_t>(c);
+      return cells_selection(m, all);
     }
+    case SoupKind::NonHex: {
+      std::vector<int32_t> non_hex;
+      for (size_t c = 0; c < m.num_cells(); ++c)
+        if (!m.is_hex(c)) non_hex.push_back(static_cast<int32_t>(c));
+      return cells_selection(m, non_hex);
+    }
+    case SoupKind::Components: return component_selection(m, a.complex);
     case SoupKind::Sheets:
       if (!a.has_sheets) throw std::invalid_argument("the analysis was run without sheets");
-      add_cell_set_boundaries(m, a.sheets.sheet_cells, out);
-      break;
-    case SoupKind::Subsheets:
-      add_cell_set_boundaries(m, require_subsheets(a, sheet).cells, out);
-      break;
-    case SoupKind::Sheet: {
+      return sheet_selection(m, a.sheets);
+    case SoupKind::Subsheets: return cell_set_selection(m, require_subsheets(a, sheet).cells);
+    case SoupKind::Sheet:
       require_sheet(a, sheet);
-      // One block per component the sheet passes through: at the mesh level a sheet is a slab
-      // of a component, at the complex level whole components.
-      std::vector<uint8_t> in(m.num_cells(), 0);
-      const auto cells = a.sheets.sheet_cells[static_cast<size_t>(sheet)];
-      for (int32_t c : cells) in[static_cast<size_t>(c)] = 1;
-      const auto& comp = a.complex.cell_component;
-      for (int32_t c : cells) {
-        const int32_t k = comp[static_cast<size_t>(c)];
-        add_cell_faces(m, c, k, out, [&](int32_t f) {
-          const int32_t o = across(m, f, c);
-          return o < 0 || !in[static_cast<size_t>(o)] || comp[static_cast<size_t>(o)] != k;
-        });
-      }
-      break;
+      return sheet_component_selection(m, a.complex, a.sheets, sheet);
+    case SoupKind::SheetNonHex: {
+      require_sheet(a, sheet);
+      const auto cells = a.sheets.sheet_non_hex_cells[static_cast<size_t>(sheet)];
+      return cells_selection(m, {cells.begin(), cells.end()});
     }
-    case SoupKind::SheetNonHex:
-      require_sheet(a, sheet);
-      for (int32_t c : a.sheets.sheet_non_hex_cells[static_cast<size_t>(sheet)]) add_cell_faces(m, c, c, out, all);
-      break;
-    case SoupKind::Boundary:
-      for (size_t f = 0; f < m.num_faces(); ++f) {
-        if (!m.face_boundary[f]) continue;
-        const int32_t c = m.face_cells[f][0];
-        add_cell_faces(m, c, static_cast<int32_t>(m.cell_type[static_cast<size_t>(c)]), out,
-                       [&](int32_t g) { return g == static_cast<int32_t>(f); });
-      }
-      break;
+    case SoupKind::Boundary: return boundary_selection(m);
+    case SoupKind::Hex: return hex_region_selection(m);
   }
-  return out;
+  throw std::invalid_argument("unknown soup kind");
 }
 
-BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
+BlockSoup build_soup(const Mesh& m, const FaceSelection& in, double shrink) {
   if (!(shrink >= 0.0 && shrink < 1.0))
     throw std::invalid_argument("shrink must be in [0, 1), not " + std::to_string(shrink));
-  const size_t n = in.face.size();
-  if (in.owner.size() != n || in.reversed.size() != n || in.cell.size() != n)
-    throw std::invalid_argument("owned faces: owner, face, cell and reversed differ in length");
+  const size_t n = in.faces.size();
+  if (in.ids.size() != n || in.reversed.size() != n || in.cells.size() != n)
+    throw std::invalid_argument("face selection: faces, cells, reversed and ids differ in length");
   int32_t num_owners = 0;
   size_t corners = 0;  // face corners: the soup's face_vertices and an upper bound on its points
   for (size_t i = 0; i < n; ++i) {
-    if (in.owner[i] < 0) throw std::invalid_argument("owned faces: negative owner");
-    if (in.face[i] < 0 || static_cast<size_t>(in.face[i]) >= m.num_faces())
-      throw std::invalid_argument("owned faces: face id out of range: " + std::to_string(in.face[i]));
-    if (in.cell[i] < 0 || static_cast<size_t>(in.cell[i]) >= m.num_cells())
-      throw std::invalid_argument("owned faces: cell id out of range: " + std::to_string(in.cell[i]));
-    num_owners = std::max(num_owners, in.owner[i] + 1);
-    corners += static_cast<size_t>(m.face_verts.count(static_cast<size_t>(in.face[i])));
+    if (in.ids[i] < 0) throw std::invalid_argument("face selection: negative id");
+    if (in.faces[i] < 0 || static_cast<size_t>(in.faces[i]) >= m.num_faces())
+      throw std::invalid_argument("face selection: face id out of range: " + std::to_string(in.faces[i]));
+    if (in.cells[i] < 0 || static_cast<size_t>(in.cells[i]) >= m.num_cells())
+      throw std::invalid_argument("face selection: cell id out of range: " + std::to_string(in.cells[i]));
+    num_owners = std::max(num_owners, in.ids[i] + 1);
+    corners += static_cast<size_t>(m.face_verts.count(static_cast<size_t>(in.faces[i])));
   }
   // Stable counting sort by owner, so each owner's faces form one run in selection order.
   std::vector<int32_t> start(static_cast<size_t>(num_owners) + 1, 0);
-  for (int32_t o : in.owner) ++start[static_cast<size_t>(o) + 1];
+  for (int32_t o : in.ids) ++start[static_cast<size_t>(o) + 1];
   for (size_t o = 0; o < static_cast<size_t>(num_owners); ++o) start[o + 1] += start[o];
   std::vector<int32_t> order(n);
   {
     std::vector<int32_t> next(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < n; ++i) order[static_cast<size_t>(next[static_cast<size_t>(in.owner[i])]++)] = static_cast<int32_t>(i);
+    for (size_t i = 0; i < n; ++i) order[static_cast<size_t>(next[static_cast<size_t>(in.ids[i])]++)] = static_cast<int32_t>(i);
   }
 
   BlockSoup s;
@@ -208,11 +116,11 @@ BlockSoup build_soup(const Mesh& m, const OwnedFaces& in, double shrink) {
     const size_t first_point = s.point_vertex.size();
     for (int32_t k = start[static_cast<size_t>(o)]; k < start[static_cast<size_t>(o) + 1]; ++k) {
       const size_t i = static_cast<size_t>(order[static_cast<size_t>(k)]);
-      const auto loop = m.face_verts[static_cast<size_t>(in.face[i])];
+      const auto loop = m.face_verts[static_cast<size_t>(in.faces[i])];
       s.face_sizes.push_back(static_cast<int32_t>(loop.size()));
       s.face_owner.push_back(o);
-      s.face_source.push_back(in.face[i]);
-      s.face_cell.push_back(in.cell[i]);
+      s.face_source.push_back(in.faces[i]);
+      s.face_cell.push_back(in.cells[i]);
       for (size_t j = 0; j < loop.size(); ++j) {
         const int32_t v = in.reversed[i] ? loop[loop.size() - 1 - j] : loop[j];
         if (seen[static_cast<size_t>(v)] != o) {
@@ -249,16 +157,16 @@ BlockSoup kept_surface_soup(const Mesh& m, std::span<const uint8_t> kept, double
                                 std::to_string(m.num_cells()) + " cells");
   // One pass over the faces in order (streaming face_cells): this runs on every drag of a slicing
   // plane, and a pass over the cells' faces reads face_cells at random, several times slower.
-  OwnedFaces out;
+  FaceSelection out;
   for (size_t f = 0; f < m.num_faces(); ++f) {
     const auto [a, b] = m.face_cells[f];
     const bool ka = kept[static_cast<size_t>(a)] != 0, kb = b >= 0 && kept[static_cast<size_t>(b)] != 0;
     if (ka == kb) continue;
     const int32_t c = ka ? a : b;
-    out.owner.push_back(c);
-    out.face.push_back(static_cast<int32_t>(f));
-    out.cell.push_back(c);
-    out.reversed.push_back(face_flip(m, static_cast<int32_t>(f), c));
+    out.ids.push_back(c);
+    out.faces.push_back(static_cast<int32_t>(f));
+    out.cells.push_back(c);
+    out.reversed.push_back(reversed_for_outward(m, static_cast<int32_t>(f), c) ? 1 : 0);
   }
   return build_soup(m, out, shrink);
 }
@@ -309,7 +217,7 @@ ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClas
     out.shared.push_row(k.shared_vertices.begin(), k.shared_vertices.end());
     out.self_parallel.push_row(k.self_parallel_curves.begin(), k.self_parallel_curves.end());
     comps.clear();
-    for (int32_t u : k.self_intersecting_units) comps.push_back(domain.unit_component[static_cast<size_t>(u)]);
+    for (int32_t u : k.self_intersecting_blocks) comps.push_back(domain.block_component[static_cast<size_t>(u)]);
     std::sort(comps.begin(), comps.end());
     comps.erase(std::unique(comps.begin(), comps.end()), comps.end());
     out.self_intersecting.push_row(comps.begin(), comps.end());
@@ -317,76 +225,17 @@ ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClas
   return out;
 }
 
-Csr<int32_t> units_as_components(const SheetDomain& domain, const Csr<int32_t>& units) {
+Csr<int32_t> blocks_as_components(const SheetDomain& domain, const Csr<int32_t>& blocks) {
   Csr<int32_t> out;
   std::vector<int32_t> comps;
-  for (size_t r = 0; r < units.rows(); ++r) {
+  for (size_t r = 0; r < blocks.rows(); ++r) {
     comps.clear();
-    for (int32_t u : units[r]) comps.push_back(domain.unit_component[static_cast<size_t>(u)]);
+    for (int32_t u : blocks[r]) comps.push_back(domain.block_component[static_cast<size_t>(u)]);
     std::sort(comps.begin(), comps.end());
     comps.erase(std::unique(comps.begin(), comps.end()), comps.end());
     out.push_row(comps.begin(), comps.end());
   }
   return out;
-}
-
-std::vector<int32_t> region_cells(const Mesh& m, const Analysis& a, int32_t sheet, int32_t subsheet) {
-  std::vector<int32_t> cells;
-  if (sheet < 0) {
-    if (subsheet >= 0) throw std::invalid_argument("a subsheet needs its sheet");
-    cells.resize(m.num_cells());
-    for (size_t c = 0; c < cells.size(); ++c) cells[c] = static_cast<int32_t>(c);
-    return cells;
-  }
-  require_sheet(a, sheet);
-  if (subsheet < 0) {
-    for (auto row : {a.sheets.sheet_cells[static_cast<size_t>(sheet)], a.sheets.sheet_non_hex_cells[static_cast<size_t>(sheet)]})
-      cells.insert(cells.end(), row.begin(), row.end());
-  } else {
-    const Subsheets& sub = require_subsheets(a, sheet);
-    if (static_cast<size_t>(subsheet) >= sub.size())
-      throw std::invalid_argument("subsheet " + std::to_string(subsheet) + " out of range: sheet " +
-                                  std::to_string(sheet) + " has " + std::to_string(sub.size()) + " subsheets");
-    const auto own = sub.cells[static_cast<size_t>(subsheet)];
-    cells.assign(own.begin(), own.end());
-    // A sheet's adjacent non-hex cells are those touching its curves; the same rule for a subsheet.
-    for (int32_t k : sub.curves[static_cast<size_t>(subsheet)]) {
-      const auto nh = a.domain.curve_non_hex_cells[static_cast<size_t>(k)];
-      cells.insert(cells.end(), nh.begin(), nh.end());
-    }
-  }
-  std::sort(cells.begin(), cells.end());
-  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-  return cells;
-}
-
-// The sheet's (or subsheet's) parallel edges as complex edge ids of `cx`: the authors remove, last,
-// the simplified chains made of them only, so the wireframe of a sheet shows what crosses it.
-namespace {
-std::vector<int32_t> region_parallel_edges(const Analysis& a, const CellComplex& cx, int32_t sheet, int32_t subsheet) {
-  std::vector<int32_t> mesh_edges;
-  if (subsheet < 0) {
-    const auto row = a.sheets.sheet_edges[static_cast<size_t>(sheet)];
-    mesh_edges.assign(row.begin(), row.end());
-  } else {
-    for (int32_t k : require_subsheets(a, sheet).curves[static_cast<size_t>(subsheet)])
-      for (int32_t e : a.domain.curve_edges[static_cast<size_t>(k)]) mesh_edges.push_back(e);
-  }
-  return complex_edges_of(cx, a.complex, mesh_edges);
-}
-}  // namespace
-
-VsgWireframe region_wireframe(const Mesh& m, const Analysis& a, ComplexLevel level,
-                              const WireframeOptions& options, int32_t sheet, int32_t subsheet) {
-  if (sheet < 0 && subsheet < 0)
-    return vsg_wireframe(level == ComplexLevel::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m), options);
-  const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);
-  const CellComplex cx = level == ComplexLevel::Complex
-                             ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
-                             : complex_from_mesh(m, cells);
-  WireframeOptions opt = options;
-  opt.parallel_edges = region_parallel_edges(a, cx, sheet, subsheet);
-  return vsg_wireframe(cx, opt);
 }
 
 }  // namespace hbc

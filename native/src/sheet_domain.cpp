@@ -1,4 +1,4 @@
-// The unit / curve structure sheets are computed on, at the base complex level or the mesh level.
+// The block / curve structure sheets are computed on, at the base complex level or the mesh level.
 #include <algorithm>
 
 #include "hbc/sheets.hpp"
@@ -56,28 +56,28 @@ Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<s
 
 }  // namespace
 
-SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, SheetLevel level) {
+SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
   SheetDomain d;
   d.level = level;
   const size_t nc = m.num_cells(), nf = m.num_faces();
-  d.cell_unit.assign(nc, -1);
+  d.cell_block.assign(nc, -1);
   d.face_joins.assign(nf, 0);
   std::vector<int32_t> buf;
 
-  if (level == SheetLevel::Complex) {
-    std::vector<int32_t> comp_unit(bc.num_components(), -1);
+  if (level == Level::Complex) {
+    std::vector<int32_t> comp_block(bc.num_components(), -1);
     for (size_t k = 0; k < bc.num_components(); ++k) {
       if (bc.component_kind[k] == ComponentKind::NonHex) continue;
-      comp_unit[k] = static_cast<int32_t>(d.unit_component.size());
-      d.unit_component.push_back(static_cast<int32_t>(k));
-      d.unit_cells.push_row(bc.component_cells[k]);
+      comp_block[k] = static_cast<int32_t>(d.block_component.size());
+      d.block_component.push_back(static_cast<int32_t>(k));
+      d.block_cells.push_row(bc.component_cells[k]);
     }
-    for (size_t c = 0; c < nc; ++c) d.cell_unit[c] = m.is_hex(c) ? comp_unit[bc.cell_component[c]] : -1;
-    for (int32_t k : d.unit_component) {
+    for (size_t c = 0; c < nc; ++c) d.cell_block[c] = m.is_hex(c) ? comp_block[bc.cell_component[c]] : -1;
+    for (int32_t k : d.block_component) {
       buf.clear();
       for (int32_t j : bc.component_adjacency[k])
-        if (comp_unit[j] >= 0) buf.push_back(comp_unit[j]);
-      push_sorted_unique(buf, d.unit_adjacency);
+        if (comp_block[j] >= 0) buf.push_back(comp_block[j]);
+      push_sorted_unique(buf, d.block_adjacency);
     }
     d.curve_edges = bc.curve_edges;
     for (size_t k = 0; k < bc.curve_verts.rows(); ++k) {
@@ -93,20 +93,20 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, SheetLevel level)
   } else {
     for (size_t c = 0; c < nc; ++c) {
       if (!m.is_hex(c)) continue;
-      d.cell_unit[c] = static_cast<int32_t>(d.unit_component.size());
-      d.unit_component.push_back(bc.cell_component[c]);
+      d.cell_block[c] = static_cast<int32_t>(d.block_component.size());
+      d.block_component.push_back(bc.cell_component[c]);
       const int32_t row[1] = {static_cast<int32_t>(c)};
-      d.unit_cells.push_row(row, row + 1);
+      d.block_cells.push_row(row, row + 1);
     }
-    for (size_t u = 0; u < d.unit_cells.rows(); ++u) {
-      const int32_t c = d.unit_cells[u][0];
+    for (size_t u = 0; u < d.block_cells.rows(); ++u) {
+      const int32_t c = d.block_cells[u][0];
       buf.clear();
       for (int32_t f : m.cell_faces[c]) {
         const auto fc = m.face_cells[f];
         const int32_t o = fc[0] == c ? fc[1] : fc[0];
-        if (o >= 0 && d.cell_unit[o] >= 0) buf.push_back(d.cell_unit[o]);
+        if (o >= 0 && d.cell_block[o] >= 0) buf.push_back(d.cell_block[o]);
       }
-      push_sorted_unique(buf, d.unit_adjacency);
+      push_sorted_unique(buf, d.block_adjacency);
     }
     for (size_t e = 0; e < m.num_edges(); ++e) {
       const int32_t row[1] = {static_cast<int32_t>(e)};
@@ -123,21 +123,21 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, SheetLevel level)
     d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges());
   }
 
-  // Units holding each curve, and non-hex cells touching it.
+  // Blocks holding each curve, and non-hex cells touching it.
   const size_t ncurves = d.curve_edges.rows();
   for (size_t k = 0; k < ncurves; ++k) {
     buf.clear();
     for (int32_t e : d.curve_edges[k])
       for (int32_t c : m.edge_cells[e])
-        if (d.cell_unit[c] >= 0) buf.push_back(d.cell_unit[c]);
-    push_sorted_unique(buf, d.curve_units);
+        if (d.cell_block[c] >= 0) buf.push_back(d.cell_block[c]);
+    push_sorted_unique(buf, d.curve_blocks);
     buf.clear();
     for (int32_t e : d.curve_edges[k])
       for (int32_t c : m.edge_cells[e])
         if (!m.is_hex(c)) buf.push_back(c);
     push_sorted_unique(buf, d.curve_non_hex_cells);
   }
-  d.unit_curves = transpose(d.curve_units, d.unit_cells.rows());
+  d.block_curves = transpose(d.curve_blocks, d.block_cells.rows());
   return d;
 }
 

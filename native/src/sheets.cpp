@@ -44,15 +44,15 @@ int32_t orthogonal_edge(const Mesh& m, int32_t c, int32_t f) {
   return -1;
 }
 
-// Membership of units in the current sheet without a search per query: a stamp per unit.
-struct UnitMask {
+// Membership of blocks in the current sheet without a search per query: a stamp per block.
+struct BlockMask {
   std::vector<int32_t> stamp;
   int32_t current = 0;
-  explicit UnitMask(size_t nunits) : stamp(nunits, 0) {}
+  explicit BlockMask(size_t nblocks) : stamp(nblocks, 0) {}
   template <class Range>
-  void set(const Range& units) {
+  void set(const Range& blocks) {
     ++current;
-    for (int32_t u : units) stamp[u] = current;
+    for (int32_t u : blocks) stamp[u] = current;
   }
   bool operator()(int32_t u) const { return stamp[u] == current; }
 };
@@ -62,10 +62,10 @@ void sort_unique(std::vector<int32_t>& v) {
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
-SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const UnitMask& in_units) {
-  SheetClass k;
-  // (end vertex, curve) for every open curve.
-  std::vector<std::pair<int32_t, int32_t>> ends;
+// (end vertex, curve) for every end of an open curve, sorted: curves sharing an end are adjacent.
+using CurveEnds = std::vector<std::pair<int32_t, int32_t>>;
+CurveEnds sorted_curve_ends(const SheetDomain& d, const std::vector<int32_t>& curves) {
+  CurveEnds ends;
   for (int32_t c : curves) {
     const auto [a, b] = d.curve_ends[c];
     if (a < 0) continue;
@@ -73,144 +73,180 @@ SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, co
     if (b != a) ends.push_back({b, c});
   }
   std::sort(ends.begin(), ends.end());
+  return ends;
+}
+
+// The configuration of two parallel curves a and b sharing an end (SPEC §3): type 3 when a block
+// of the sheet holds both, type 2 when they lie in adjacent blocks, type 1 otherwise.
+void classify_pair(const SheetDomain& d, int32_t a, int32_t b, const BlockMask& in_blocks, SheetClass& k) {
+  bool common = false;
+  for (int32_t u : d.curve_blocks[a])
+    if (in_blocks(u) && contains(d.curve_blocks[b], u)) {
+      common = true;
+      k.self_intersecting_blocks.push_back(u);
+    }
+  if (common) {
+    k.type3 = true;
+    return;
+  }
+  bool adjacent = false;
+  for (int32_t ua : d.curve_blocks[a]) {
+    if (!in_blocks(ua)) continue;
+    for (int32_t ub : d.curve_blocks[b])
+      if (in_blocks(ub) && contains(d.block_adjacency[ua], ub)) adjacent = true;
+  }
+  if (adjacent) {
+    k.type2 = true;
+    k.self_parallel_curves.push_back(a);
+    k.self_parallel_curves.push_back(b);
+  } else {
+    k.type1 = true;
+  }
+}
+
+// Every configuration present among the curves sharing an end, and the sheet's type.
+void detect_configurations(const SheetDomain& d, const CurveEnds& ends, const BlockMask& in_blocks, SheetClass& k) {
   for (size_t i = 0; i < ends.size();) {
     size_t j = i;
     while (j < ends.size() && ends[j].first == ends[i].first) ++j;
     if (j - i >= 2) k.shared_vertices.push_back(ends[i].first);
     for (size_t p = i; p < j; ++p)
-      for (size_t q = p + 1; q < j; ++q) {
-        const int32_t a = ends[p].second, b = ends[q].second;
-        bool common = false;
-        for (int32_t u : d.curve_units[a])
-          if (in_units(u) && contains(d.curve_units[b], u)) {
-            common = true;
-            k.self_intersecting_units.push_back(u);
-          }
-        if (common) {
-          k.type3 = true;
-          continue;
-        }
-        bool adjacent = false;
-        for (int32_t ua : d.curve_units[a]) {
-          if (!in_units(ua)) continue;
-          for (int32_t ub : d.curve_units[b])
-            if (in_units(ub) && contains(d.unit_adjacency[ua], ub)) adjacent = true;
-        }
-        if (adjacent) {
-          k.type2 = true;
-          k.self_parallel_curves.push_back(a);
-          k.self_parallel_curves.push_back(b);
-        } else {
-          k.type1 = true;
-        }
-      }
+      for (size_t q = p + 1; q < j; ++q) classify_pair(d, ends[p].second, ends[q].second, in_blocks, k);
     i = j;
   }
-  sort_unique(k.self_intersecting_units);
+  sort_unique(k.self_intersecting_blocks);
   sort_unique(k.self_parallel_curves);
   k.type = k.type3 ? SheetType::Type3 : k.type2 ? SheetType::Type2 : k.type1 ? SheetType::Type1 : SheetType::Perfect;
+}
 
-  // Maximum cardinality matching (Edmonds) on (curve ends, curves): the ends it leaves uncovered
-  // are what the figures highlight. Curves ending at a vertex of degree one are matched first (some
-  // maximum matching always holds such a curve), which settles most of the graph cheaply; what is
-  // left, the tangled part around shared ends, goes to Boost's Edmonds.
-  if (k.type != SheetType::Perfect) {
-    // `ends` is sorted by vertex: local vertex ids in that order.
-    std::vector<int32_t> verts;
-    for (auto [v, c] : ends)
-      if (verts.empty() || verts.back() != v) verts.push_back(v);
-    auto local = [&](int32_t v) {
-      return static_cast<int32_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
-    };
-    std::vector<std::pair<int32_t, int32_t>> edges;
-    for (int32_t c : curves) {
-      const auto [a, b] = d.curve_ends[c];
-      if (a < 0 || a == b) continue;
-      const int32_t la = local(a), lb = local(b);
-      edges.push_back({std::min(la, lb), std::max(la, lb)});
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    const size_t nv = verts.size();
-    Csr<int32_t> adj;
-    adj.offsets.assign(nv + 1, 0);
-    for (auto [a, b] : edges) {
-      ++adj.offsets[a + 1];
-      ++adj.offsets[b + 1];
-    }
-    for (size_t i = 0; i < nv; ++i) adj.offsets[i + 1] += adj.offsets[i];
-    adj.items.resize(adj.offsets.back());
-    {
-      std::vector<int32_t> fill(adj.offsets.begin(), adj.offsets.end() - 1);
-      for (auto [a, b] : edges) {
-        adj.items[fill[a]++] = b;
-        adj.items[fill[b]++] = a;
-      }
-    }
-    std::vector<int32_t> deg(nv), queue;
-    std::vector<uint8_t> alive(nv, 1);
-    for (size_t i = 0; i < nv; ++i) {
-      deg[i] = adj.count(i);
-      if (deg[i] == 1) queue.push_back(static_cast<int32_t>(i));
-    }
-    auto drop = [&](int32_t u) {  // u leaves the graph; its neighbours lose a degree
-      alive[u] = 0;
-      for (int32_t w : adj[u]) {
-        if (!alive[w]) continue;
-        if (--deg[w] == 1) queue.push_back(w);
-        else if (deg[w] == 0) {
-          alive[w] = 0;
-          k.unmatched_vertices.push_back(verts[w]);
-        }
-      }
-    };
-    for (size_t q = 0; q < queue.size(); ++q) {
-      const int32_t v = queue[q];
-      if (!alive[v] || deg[v] != 1) continue;
-      int32_t u = -1;
-      for (int32_t w : adj[v])
-        if (alive[w]) u = w;
-      alive[v] = 0;
-      drop(u);
-    }
-    std::vector<int32_t> rest, gid(nv, -1);
-    for (size_t i = 0; i < nv; ++i)
-      if (alive[i]) {
-        gid[i] = static_cast<int32_t>(rest.size());
-        rest.push_back(static_cast<int32_t>(i));
-      }
-    if (!rest.empty()) {
-      using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
-      Graph g(rest.size());
-      for (auto [a, b] : edges)
-        if (gid[a] >= 0 && gid[b] >= 0) boost::add_edge(static_cast<size_t>(gid[a]), static_cast<size_t>(gid[b]), g);
-      std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(rest.size());
-      boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
-      for (size_t i = 0; i < rest.size(); ++i)
-        if (mate[i] == boost::graph_traits<Graph>::null_vertex()) k.unmatched_vertices.push_back(verts[rest[i]]);
-    }
-    std::sort(k.unmatched_vertices.begin(), k.unmatched_vertices.end());
+// The graph the matching runs on: vertices the distinct curve ends (local ids in increasing
+// mesh-vertex order), edges the open curves with two distinct ends (each vertex pair once).
+struct EndGraph {
+  std::vector<int32_t> verts;                       // nv: mesh vertex of each local vertex
+  std::vector<std::pair<int32_t, int32_t>> edges;  // sorted (low, high) local pairs
+  Csr<int32_t> adj;                                 // nv rows: neighbours
+};
+
+EndGraph end_graph(const SheetDomain& d, const std::vector<int32_t>& curves, const CurveEnds& ends) {
+  EndGraph g;
+  for (auto [v, c] : ends)
+    if (g.verts.empty() || g.verts.back() != v) g.verts.push_back(v);
+  auto local = [&](int32_t v) {
+    return static_cast<int32_t>(std::lower_bound(g.verts.begin(), g.verts.end(), v) - g.verts.begin());
+  };
+  for (int32_t c : curves) {
+    const auto [a, b] = d.curve_ends[c];
+    if (a < 0 || a == b) continue;
+    const int32_t la = local(a), lb = local(b);
+    g.edges.push_back({std::min(la, lb), std::max(la, lb)});
   }
+  std::sort(g.edges.begin(), g.edges.end());
+  g.edges.erase(std::unique(g.edges.begin(), g.edges.end()), g.edges.end());
+  const size_t nv = g.verts.size();
+  g.adj.offsets.assign(nv + 1, 0);
+  for (auto [a, b] : g.edges) {
+    ++g.adj.offsets[a + 1];
+    ++g.adj.offsets[b + 1];
+  }
+  for (size_t i = 0; i < nv; ++i) g.adj.offsets[i + 1] += g.adj.offsets[i];
+  g.adj.items.resize(g.adj.offsets.back());
+  std::vector<int32_t> fill(g.adj.offsets.begin(), g.adj.offsets.end() - 1);
+  for (auto [a, b] : g.edges) {
+    g.adj.items[fill[a]++] = b;
+    g.adj.items[fill[b]++] = a;
+  }
+  return g;
+}
+
+// Matches every vertex of degree one with its neighbour (some maximum matching always holds such
+// an edge), repeatedly; vertices left without neighbours are unmatched. Returns which vertices
+// are still in the graph: the tangled part around shared ends.
+std::vector<uint8_t> match_leaves(const EndGraph& g, std::vector<int32_t>& unmatched) {
+  const size_t nv = g.verts.size();
+  std::vector<int32_t> deg(nv), queue;
+  std::vector<uint8_t> alive(nv, 1);
+  for (size_t i = 0; i < nv; ++i) {
+    deg[i] = g.adj.count(i);
+    if (deg[i] == 1) queue.push_back(static_cast<int32_t>(i));
+  }
+  auto drop = [&](int32_t u) {  // u leaves the graph; its neighbours lose a degree
+    alive[u] = 0;
+    for (int32_t w : g.adj[u]) {
+      if (!alive[w]) continue;
+      if (--deg[w] == 1) queue.push_back(w);
+      else if (deg[w] == 0) {
+        alive[w] = 0;
+        unmatched.push_back(g.verts[w]);
+      }
+    }
+  };
+  for (size_t q = 0; q < queue.size(); ++q) {
+    const int32_t v = queue[q];
+    if (!alive[v] || deg[v] != 1) continue;
+    int32_t u = -1;
+    for (int32_t w : g.adj[v])
+      if (alive[w]) u = w;
+    alive[v] = 0;
+    drop(u);
+  }
+  return alive;
+}
+
+// Boost's Edmonds maximum cardinality matching on the vertices still alive.
+void match_rest(const EndGraph& eg, const std::vector<uint8_t>& alive, std::vector<int32_t>& unmatched) {
+  std::vector<int32_t> rest, gid(eg.verts.size(), -1);
+  for (size_t i = 0; i < eg.verts.size(); ++i)
+    if (alive[i]) {
+      gid[i] = static_cast<int32_t>(rest.size());
+      rest.push_back(static_cast<int32_t>(i));
+    }
+  if (rest.empty()) return;
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+  Graph g(rest.size());
+  for (auto [a, b] : eg.edges)
+    if (gid[a] >= 0 && gid[b] >= 0) boost::add_edge(static_cast<size_t>(gid[a]), static_cast<size_t>(gid[b]), g);
+  std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(rest.size());
+  boost::edmonds_maximum_cardinality_matching(g, &mate[0]);
+  for (size_t i = 0; i < rest.size(); ++i)
+    if (mate[i] == boost::graph_traits<Graph>::null_vertex()) unmatched.push_back(eg.verts[rest[i]]);
+}
+
+// The curve ends a maximum cardinality matching on (curve ends, curves) leaves uncovered, sorted:
+// what the figures highlight. Leaves are matched first, which settles most of the graph cheaply.
+std::vector<int32_t> unmatched_vertices(const SheetDomain& d, const std::vector<int32_t>& curves,
+                                        const CurveEnds& ends) {
+  const EndGraph g = end_graph(d, curves, ends);
+  std::vector<int32_t> unmatched;
+  const std::vector<uint8_t> alive = match_leaves(g, unmatched);
+  match_rest(g, alive, unmatched);
+  std::sort(unmatched.begin(), unmatched.end());
+  return unmatched;
+}
+
+SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const BlockMask& in_blocks) {
+  SheetClass k;
+  const CurveEnds ends = sorted_curve_ends(d, curves);
+  detect_configurations(d, ends, in_blocks, k);
+  if (k.type != SheetType::Perfect) k.unmatched_vertices = unmatched_vertices(d, curves, ends);
   return k;
 }
 
 }  // namespace
 
 SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curves,
-                          const std::vector<int32_t>& units) {
-  UnitMask mask(d.unit_cells.rows());
-  mask.set(units);
+                          const std::vector<int32_t>& blocks) {
+  BlockMask mask(d.block_cells.rows());
+  mask.set(blocks);
   return classify(d, curves, mask);
 }
 
-Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
-  Sheets s;
-  s.level = d.level;
-  const size_t nc = m.num_cells(), ne = m.num_edges(), nunits = d.unit_cells.rows();
-  // Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
-  // orthogonal directions of two hex cells across a joining face.
-  UnionFind uf(ne);
-  for (size_t c = 0; c < nc; ++c) {
+namespace {
+
+// Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
+// orthogonal directions of two hex cells across a joining face.
+UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
+  UnionFind uf(m.num_edges());
+  for (size_t c = 0; c < m.num_cells(); ++c) {
     if (!m.is_hex(c)) continue;
     for (int32_t f : m.cell_faces[c]) {
       auto fe = m.face_edges[f];
@@ -223,60 +259,71 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
     const auto fc = m.face_cells[f];
     uf.unite(orthogonal_edge(m, fc[0], static_cast<int32_t>(f)), orthogonal_edge(m, fc[1], static_cast<int32_t>(f)));
   }
+  return uf;
+}
 
+// The parallel classes with dense ids, and the blocks and curves of each.
+struct ParallelClasses {
+  int32_t count = 0;
+  Csr<int32_t> blocks;   // count rows: blocks with a direction in the class (a block once per direction)
+  Csr<int32_t> curves;  // count rows: curves of the class, increasing
+};
+
+ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
+  UnionFind uf = join_parallel_edges(m, d);
+  const size_t nc = m.num_cells();
   // Dense class ids in order of first appearance over the cells; a hex cell's three directions
   // are the classes of its first face's two edge directions and of the edge across that face.
-  std::vector<int32_t> class_of_root(ne, -1);
-  int32_t nclass = 0;
-  Csr<int32_t> cell_classes;  // (class, unit) pairs as a CSR keyed by class after the transpose
+  std::vector<int32_t> class_of_root(m.num_edges(), -1);
+  ParallelClasses pc;
   std::vector<std::array<int32_t, 3>> dirs(nc, {-1, -1, -1});
   for (size_t c = 0; c < nc; ++c) {
-    if (d.cell_unit[c] < 0) continue;
+    if (d.cell_block[c] < 0) continue;
     const int32_t f = m.cell_faces[c][0];
     const int32_t reps[3] = {m.face_edges[f][0], m.face_edges[f][1], orthogonal_edge(m, static_cast<int32_t>(c), f)};
     for (int k = 0; k < 3; ++k) {
       const int32_t r = uf.find(reps[k]);
-      if (class_of_root[r] < 0) class_of_root[r] = nclass++;
+      if (class_of_root[r] < 0) class_of_root[r] = pc.count++;
       dirs[c][k] = class_of_root[r];
     }
   }
-  // Units of each class (sorted, distinct) by counting sort.
-  Csr<int32_t> class_units;
-  class_units.offsets.assign(static_cast<size_t>(nclass) + 1, 0);
+  // Blocks of each class by counting sort (cells in increasing order).
+  pc.blocks.offsets.assign(static_cast<size_t>(pc.count) + 1, 0);
   for (size_t c = 0; c < nc; ++c)
     if (dirs[c][0] >= 0)
-      for (int32_t k : dirs[c]) ++class_units.offsets[k + 1];
-  for (int32_t k = 0; k < nclass; ++k) class_units.offsets[k + 1] += class_units.offsets[k];
-  class_units.items.resize(class_units.offsets.back());
-  {
-    std::vector<int32_t> fill(class_units.offsets.begin(), class_units.offsets.end() - 1);
-    for (size_t c = 0; c < nc; ++c)
-      if (dirs[c][0] >= 0)
-        for (int32_t k : dirs[c]) class_units.items[fill[k]++] = d.cell_unit[c];
+      for (int32_t k : dirs[c]) ++pc.blocks.offsets[k + 1];
+  for (int32_t k = 0; k < pc.count; ++k) pc.blocks.offsets[k + 1] += pc.blocks.offsets[k];
+  pc.blocks.items.resize(pc.blocks.offsets.back());
+  std::vector<int32_t> fill(pc.blocks.offsets.begin(), pc.blocks.offsets.end() - 1);
+  for (size_t c = 0; c < nc; ++c)
+    if (dirs[c][0] >= 0)
+      for (int32_t k : dirs[c]) pc.blocks.items[fill[k]++] = d.cell_block[c];
+  Csr<int32_t> curve_class;
+  for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
+    const int32_t cls = class_of_root[uf.find(d.curve_edges[k][0])];
+    if (cls >= 0) curve_class.items.push_back(cls);
+    curve_class.offsets.push_back(static_cast<int32_t>(curve_class.items.size()));
   }
-  // Curves of each class.
-  Csr<int32_t> class_curves;
-  {
-    Csr<int32_t> curve_class;
-    for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
-      const int32_t cls = class_of_root[uf.find(d.curve_edges[k][0])];
-      if (cls >= 0) curve_class.items.push_back(cls);
-      curve_class.offsets.push_back(static_cast<int32_t>(curve_class.items.size()));
-    }
-    class_curves = transpose(curve_class, static_cast<size_t>(nclass));
-  }
+  pc.curves = transpose(curve_class, static_cast<size_t>(pc.count));
+  return pc;
+}
 
-  // Each class split into face-connected groups of units: one sheet per group.
-  struct Group {
-    std::vector<int32_t> units, curves;
-  };
+// A sheet before it is written out: its blocks and parallel curves.
+struct Group {
+  std::vector<int32_t> blocks, curves;
+};
+
+// Each class split into face-connected groups of its blocks: one sheet per group. first[k] ..
+// first[k + 1] are the groups of class k.
+std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc, std::vector<size_t>& first) {
+  const size_t nblocks = d.block_cells.rows();
   std::vector<Group> groups;
-  std::vector<int32_t> stamp(nunits, -1), seen(nunits, -1), stack;
-  std::vector<size_t> class_groups(static_cast<size_t>(nclass) + 1, 0);  // groups of class k: [k], [k+1])
-  for (int32_t k = 0; k < nclass; ++k) {
-    class_groups[k] = groups.size();
-    for (int32_t u : class_units[k]) stamp[u] = k;
-    for (int32_t u0 : class_units[k]) {
+  std::vector<int32_t> stamp(nblocks, -1), seen(nblocks, -1), stack;
+  first.assign(static_cast<size_t>(pc.count) + 1, 0);
+  for (int32_t k = 0; k < pc.count; ++k) {
+    first[k] = groups.size();
+    for (int32_t u : pc.blocks[k]) stamp[u] = k;
+    for (int32_t u0 : pc.blocks[k]) {
       if (seen[u0] == k) continue;
       Group g;
       stack.assign(1, u0);
@@ -284,69 +331,87 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
       while (!stack.empty()) {
         const int32_t u = stack.back();
         stack.pop_back();
-        g.units.push_back(u);
-        for (int32_t w : d.unit_adjacency[u])
+        g.blocks.push_back(u);
+        for (int32_t w : d.block_adjacency[u])
           if (stamp[w] == k && seen[w] != k) {
             seen[w] = k;
             stack.push_back(w);
           }
       }
-      std::sort(g.units.begin(), g.units.end());
+      std::sort(g.blocks.begin(), g.blocks.end());
       groups.push_back(std::move(g));
     }
   }
-  class_groups[nclass] = groups.size();
-  // Curves of a class go to the groups of the units holding them (group of a unit per class).
-  {
-    std::vector<int32_t> unit_group(nunits, -1);
-    for (int32_t k = 0; k < nclass; ++k) {
-      for (size_t g = class_groups[k]; g < class_groups[k + 1]; ++g)
-        for (int32_t u : groups[g].units) unit_group[u] = static_cast<int32_t>(g);
-      for (int32_t u : class_units[k]) stamp[u] = k;
-      for (int32_t curve : class_curves[k]) {
-        int32_t last = -1;
-        for (int32_t u : d.curve_units[curve]) {
-          const int32_t g = stamp[u] == k ? unit_group[u] : -1;
-          if (g >= 0 && g != last) {
-            auto& cv = groups[static_cast<size_t>(g)].curves;
-            if (cv.empty() || cv.back() != curve) cv.push_back(curve);
-            last = g;
-          }
+  first[pc.count] = groups.size();
+  return groups;
+}
+
+// Curves of a class go to the groups of the blocks holding them (one group per block and class).
+void assign_curves(const SheetDomain& d, const ParallelClasses& pc, const std::vector<size_t>& first,
+                   std::vector<Group>& groups) {
+  const size_t nblocks = d.block_cells.rows();
+  std::vector<int32_t> block_group(nblocks, -1), stamp(nblocks, -1);
+  for (int32_t k = 0; k < pc.count; ++k) {
+    for (size_t g = first[k]; g < first[k + 1]; ++g)
+      for (int32_t u : groups[g].blocks) block_group[u] = static_cast<int32_t>(g);
+    for (int32_t u : pc.blocks[k]) stamp[u] = k;
+    for (int32_t curve : pc.curves[k]) {
+      int32_t last = -1;
+      for (int32_t u : d.curve_blocks[curve]) {
+        const int32_t g = stamp[u] == k ? block_group[u] : -1;
+        if (g >= 0 && g != last) {
+          auto& cv = groups[static_cast<size_t>(g)].curves;
+          if (cv.empty() || cv.back() != curve) cv.push_back(curve);
+          last = g;
         }
       }
     }
   }
+}
+
+// Sorted, distinct rows[r] for r in `keys`, concatenated, as one row of `out`.
+void push_union_row(const Csr<int32_t>& rows, const std::vector<int32_t>& keys, std::vector<int32_t>& buf,
+                    Csr<int32_t>& out) {
+  buf.clear();
+  for (int32_t r : keys)
+    for (int32_t x : rows[r]) buf.push_back(x);
+  sort_unique(buf);
+  out.push_row(buf.begin(), buf.end());
+}
+
+// The sheets in a stable order (lowest block, then lowest curve), with their cells, curves, edges,
+// adjacent non-hex cells and classification.
+Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups) {
   std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
-    if (a.units[0] != b.units[0]) return a.units[0] < b.units[0];
+    if (a.blocks[0] != b.blocks[0]) return a.blocks[0] < b.blocks[0];
     const int32_t ca = a.curves.empty() ? -1 : a.curves[0], cb = b.curves.empty() ? -1 : b.curves[0];
     return ca < cb;
   });
-
-  UnitMask mask(nunits);
+  Sheets s;
+  s.level = d.level;
+  BlockMask mask(d.block_cells.rows());
   std::vector<int32_t> buf;
   for (Group& g : groups) {
     sort_unique(g.curves);
-    s.sheet_units.push_row(g.units.begin(), g.units.end());
-    buf.clear();
-    for (int32_t u : g.units)
-      for (int32_t c : d.unit_cells[u]) buf.push_back(c);
-    sort_unique(buf);
-    s.sheet_cells.push_row(buf.begin(), buf.end());
+    s.sheet_blocks.push_row(g.blocks.begin(), g.blocks.end());
+    push_union_row(d.block_cells, g.blocks, buf, s.sheet_cells);
     s.sheet_curves.push_row(g.curves.begin(), g.curves.end());
-    buf.clear();
-    for (int32_t k : g.curves)
-      for (int32_t e : d.curve_edges[k]) buf.push_back(e);
-    sort_unique(buf);
-    s.sheet_edges.push_row(buf.begin(), buf.end());
-    buf.clear();
-    for (int32_t k : g.curves)
-      for (int32_t c : d.curve_non_hex_cells[k]) buf.push_back(c);
-    sort_unique(buf);
-    s.sheet_non_hex_cells.push_row(buf.begin(), buf.end());
-    mask.set(g.units);
+    push_union_row(d.curve_edges, g.curves, buf, s.sheet_edges);
+    push_union_row(d.curve_non_hex_cells, g.curves, buf, s.sheet_non_hex_cells);
+    mask.set(g.blocks);
     s.classes.push_back(classify(d, g.curves, mask));
   }
   return s;
+}
+
+}  // namespace
+
+Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
+  const ParallelClasses pc = parallel_classes(m, d);
+  std::vector<size_t> first;
+  std::vector<Group> groups = block_groups(d, pc, first);
+  assign_curves(d, pc, first, groups);
+  return write_sheets(d, groups);
 }
 
 Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sheet) {
@@ -354,8 +419,8 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
   out.sheet = sheet;
   auto curves = sheets.sheet_curves[sheet];
   const size_t n = curves.size();
-  UnitMask in_units(d.unit_cells.rows()), in_sub(d.unit_cells.rows());
-  in_units.set(sheets.sheet_units[sheet]);
+  BlockMask in_blocks(d.block_cells.rows()), in_sub(d.block_cells.rows());
+  in_blocks.set(sheets.sheet_blocks[sheet]);
   auto index_of = [&](int32_t c) -> int32_t {
     auto it = std::lower_bound(curves.begin(), curves.end(), c);
     return (it != curves.end() && *it == c) ? static_cast<int32_t>(it - curves.begin()) : -1;
@@ -372,18 +437,18 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
     return static_cast<size_t>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
   };
   std::vector<std::vector<int32_t>> taken_at(verts.size());
-  // Two curves conflict when they share an end inside one unit of the sheet.
+  // Two curves conflict when they share an end inside one block of the sheet.
   auto conflicts = [&](int32_t b) {
     const auto eb = d.curve_ends[b];
     if (eb[0] < 0) return false;
     for (int32_t v : {eb[0], eb[1]})
       for (int32_t c : taken_at[local(v)])
-        for (int32_t u : d.curve_units[b])
-          if (in_units(u) && contains(d.curve_units[c], u)) return true;
+        for (int32_t u : d.curve_blocks[b])
+          if (in_blocks(u) && contains(d.curve_blocks[c], u)) return true;
     return false;
   };
   std::vector<uint8_t> used(n, 0);
-  std::vector<int32_t> taken, queue, banned, subunits, kept;
+  std::vector<int32_t> taken, queue, banned, subblocks, kept;
   size_t next_seed = 0;
   for (;;) {
     while (next_seed < n && used[next_seed]) ++next_seed;
@@ -406,9 +471,9 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
         const int32_t ib = index_of(b);
         if (ib < 0 || used[static_cast<size_t>(ib)]) continue;
         if (conflicts(b)) {
-          // The sheet turns here: the units around the rejected curve belong to another subsheet.
-          for (int32_t u : d.curve_units[b])
-            if (in_units(u)) banned.push_back(u);
+          // The sheet turns here: the blocks around the rejected curve belong to another subsheet.
+          for (int32_t u : d.curve_blocks[b])
+            if (in_blocks(u)) banned.push_back(u);
           continue;
         }
         take(b);
@@ -420,37 +485,37 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
         for (int32_t v : {d.curve_ends[c][0], d.curve_ends[c][1]}) taken_at[local(v)].clear();
     sort_unique(taken);
     sort_unique(banned);
-    // Cells: units touched by the subsheet's curves, less those where it turned. Curves left
+    // Cells: blocks touched by the subsheet's curves, less those where it turned. Curves left
     // touching none are dropped back into the pool (they seed a later subsheet).
-    subunits.clear();
+    subblocks.clear();
     kept.clear();
     for (int32_t c : taken) {
       bool any = false;
-      for (int32_t u : d.curve_units[c])
-        if (in_units(u) && !std::binary_search(banned.begin(), banned.end(), u)) {
-          subunits.push_back(u);
+      for (int32_t u : d.curve_blocks[c])
+        if (in_blocks(u) && !std::binary_search(banned.begin(), banned.end(), u)) {
+          subblocks.push_back(u);
           any = true;
         }
       if (any) kept.push_back(c);
       else if (c != seed) used[static_cast<size_t>(index_of(c))] = 0;
     }
-    sort_unique(subunits);
+    sort_unique(subblocks);
     if (kept.empty()) {
-      // Every unit of the seed was taken out: the seed stands alone so that each curve lands in
+      // Every block of the seed was taken out: the seed stands alone so that each curve lands in
       // some subsheet and the loop always progresses.
       kept.assign(1, seed);
-      for (int32_t u : d.curve_units[seed])
-        if (in_units(u)) subunits.push_back(u);
-      sort_unique(subunits);
+      for (int32_t u : d.curve_blocks[seed])
+        if (in_blocks(u)) subblocks.push_back(u);
+      sort_unique(subblocks);
     }
     out.curves.push_row(kept.begin(), kept.end());
-    out.units.push_row(subunits.begin(), subunits.end());
+    out.blocks.push_row(subblocks.begin(), subblocks.end());
     std::vector<int32_t> cells;
-    for (int32_t u : subunits)
-      for (int32_t c : d.unit_cells[u]) cells.push_back(c);
+    for (int32_t u : subblocks)
+      for (int32_t c : d.block_cells[u]) cells.push_back(c);
     sort_unique(cells);
     out.cells.push_row(cells.begin(), cells.end());
-    in_sub.set(subunits);
+    in_sub.set(subblocks);
     out.classes.push_back(classify(d, kept, in_sub));
     next_seed = 0;
   }

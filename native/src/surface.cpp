@@ -12,27 +12,6 @@
 
 namespace hbc {
 
-bool reversed_for_outward(const Mesh& mesh, int32_t face, int32_t cell) {
-  const int32_t begin = mesh.cell_faces.offsets[static_cast<size_t>(cell)];
-  auto row = mesh.cell_faces[static_cast<size_t>(cell)];
-  const auto it = std::find(row.begin(), row.end(), face);
-  if (it == row.end())
-    throw std::invalid_argument("face " + std::to_string(face) + " is not a face of cell " + std::to_string(cell));
-  return mesh.cell_face_flip[static_cast<size_t>(begin + (it - row.begin()))] != 0;
-}
-
-FaceSelection boundary_selection(const Mesh& mesh) {
-  FaceSelection sel;
-  for (size_t f = 0; f < mesh.num_faces(); ++f) {
-    if (!mesh.face_boundary[f]) continue;
-    const int32_t c = mesh.face_cells[f][0];
-    sel.faces.push_back(static_cast<int32_t>(f));
-    sel.reversed.push_back(reversed_for_outward(mesh, static_cast<int32_t>(f), c) ? 1 : 0);
-    sel.ids.push_back(static_cast<int32_t>(mesh.cell_type[static_cast<size_t>(c)]));
-  }
-  return sel;
-}
-
 std::array<uint8_t, 3> palette_color(int32_t id) {
   // Qualitative colours that stay apart on screen and in print (after ColorBrewer's Set3/Paired
   // spirit, picked by hand); hue order interleaved so consecutive ids differ strongly.

@@ -155,7 +155,7 @@ std::vector<uint8_t> edge_flags(const CellComplex& cx, const Csr<int32_t>& rows)
 // marks none, so there only the boundary stops.
 std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& start) {
   const CellComplex& cx = r.cx;
-  const bool mesh_level = cx.level == ComplexLevel::Mesh;
+  const bool mesh_level = cx.level == Level::Mesh;
   std::vector<uint8_t> seen(cx.num_faces(), 0);
   std::vector<int32_t> stack;
   for (size_t e = 0; e < start.size(); ++e)

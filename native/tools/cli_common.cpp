@@ -1,50 +1,77 @@
-#include <algorithm>
-#include <charconv>
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <limits>
 #include <stdexcept>
 
 #include "commands.hpp"
 
 namespace hbc::cli {
+namespace {
 
-bool take_flag(Args& args, const std::string& flag) {
-  auto it = std::find(args.begin(), args.end(), flag);
-  if (it == args.end()) return false;
-  args.erase(it);
-  return true;
+// A CLI11 check from one of the library's parsers: the value is valid when `parse` accepts it,
+// and the parser's own message says why not, so the CLI and the binding cannot disagree.
+template <class Parse>
+CLI::Validator parsed_by(Parse parse, const std::string& description) {
+  return CLI::Validator(
+      [parse](std::string& value) -> std::string {
+        try {
+          parse(value);
+          return {};
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+      },
+      description);
 }
 
-std::optional<std::string> take_option(Args& args, const std::string& opt) {
-  auto it = std::find(args.begin(), args.end(), opt);
-  if (it == args.end()) return std::nullopt;
-  if (it + 1 == args.end()) throw std::invalid_argument(opt + " needs a value");
-  std::string v = *(it + 1);
-  args.erase(it, it + 2);
-  return v;
+}  // namespace
+
+void add_format(CLI::App& cmd, std::string& format) {
+  cmd.add_option("--format", format, "file format (default: by the file's extension)")
+      ->check(parsed_by([](const std::string& s) { format_from_name(s); }, "ovm|ovmb|mesh|hybrid|hedra|msh|vtk|vtu"));
 }
 
-InputFormat take_format(Args& args) {
-  InputFormat in;
-  if (auto f = take_option(args, "--format")) in.format = format_from_name(*f);
-  if (auto t = take_option(args, "--threads")) {
-    int n = 0;
-    const char* end = t->data() + t->size();
-    const auto r = std::from_chars(t->data(), end, n);
-    if (r.ec != std::errc() || r.ptr != end || n < 1 || n > 1024)
-      throw std::invalid_argument("--threads takes a whole number in [1, 1024], found '" + *t + "'");
-    in.load.threads = n;
-  }
-  return in;
+void add_input(CLI::App& cmd, InputArgs& in) {
+  cmd.add_option("FILE", in.file, "mesh file (.ovm, .ovmb, .mesh, .HYBRID, .hedra, .msh, .vtk, .vtu)")->required();
+  add_format(cmd, in.format);
+  cmd.add_option("--threads", in.threads, "threads for reading the mesh (default: HBC_THREADS, else every core)")
+      ->check(CLI::Range(1, 1024));
 }
 
-Mesh load_for_cli(const std::string& path, const InputFormat& format, double* seconds) {
+CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,
+                           bool& json, const std::string& json_help) {
+  CLI::App* cmd = app.add_subcommand(name, help);
+  add_input(*cmd, input);
+  cmd->add_flag("--json", json, json_help);
+  return cmd;
+}
+
+void add_level(CLI::App& cmd, std::string& level, const std::string& help) {
+  cmd.add_option("--level", level, help)
+      ->check(parsed_by([](const std::string& s) { level_from_name(s); }, "complex|mesh"))
+      ->capture_default_str();
+}
+
+CLI::Range at_least(int min) { return CLI::Range(min, std::numeric_limits<int32_t>::max()); }
+
+Mesh load_for_cli(const InputArgs& in, double* seconds) {
   auto t0 = std::chrono::steady_clock::now();
-  Mesh m = load_mesh(path, format.format, format.load);
+  Mesh m = load_mesh(in.file, in.parsed_format(), in.load_options());
   auto t1 = std::chrono::steady_clock::now();
   if (seconds) *seconds = std::chrono::duration<double>(t1 - t0).count();
-  for (const auto& w : m.warnings) std::fprintf(stderr, "hbc: warning: %s: %s\n", path.c_str(), w.c_str());
+  for (const auto& w : m.warnings) std::fprintf(stderr, "hbc: warning: %s: %s\n", in.file.c_str(), w.c_str());
   return m;
+}
+
+void write_output(const std::string& text, const std::optional<std::string>& path) {
+  if (path) {
+    std::ofstream f(*path, std::ios::binary);
+    if (!f || !(f << text)) throw std::runtime_error("cannot write " + *path);
+  } else {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+  }
 }
 
 }  // namespace hbc::cli

@@ -1,50 +1,60 @@
+// hbc analyze FILE [--json|--csv]: the whole pipeline and the Table 1 statistics (SPEC §5).
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <stdexcept>
+#include <memory>
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
 #include "stats_format.hpp"
 
 namespace hbc::cli {
+namespace {
 
-int cmd_analyze(const Args& args_in) {
-  Args args = args_in;
-  const bool json = take_flag(args, "--json");
-  const bool csv = take_flag(args, "--csv");
+struct AnalyzeArgs {
+  InputArgs input;
+  bool json = false, csv = false, no_sheets = false, no_wireframe = false;
+  std::string level = "complex";
+  double rho = WireframeOptions{}.rho;
+};
+
+void run_analyze(const AnalyzeArgs& args) {
   AnalysisOptions opt;
-  if (take_flag(args, "--no-sheets")) opt.sheets = false;
-  if (take_flag(args, "--no-wireframe")) opt.wireframe = false;
-  if (auto rho = take_option(args, "--rho")) opt.wireframe_options.rho = std::stod(*rho);
-  if (auto level = take_option(args, "--level")) {
-    if (*level == "mesh") {
-      opt.sheet_level = SheetLevel::Mesh;
-      opt.wireframe_level = ComplexLevel::Mesh;
-    }
-    else if (*level != "complex") throw std::invalid_argument("--level takes complex or mesh");
-  }
-  const InputFormat format = take_format(args);
-  if (args.size() != 1)
-    throw std::invalid_argument("usage: hbc analyze FILE [--json] [--csv] [--level complex|mesh] [--rho R] [--no-sheets] [--no-wireframe] [--format F]");
+  opt.sheets = !args.no_sheets;
+  opt.wireframe = !args.no_wireframe;
+  opt.wireframe_options.rho = args.rho;
+  opt.sheet_level = opt.wireframe_level = level_from_name(args.level);
   double t_load = 0;
-  const Mesh m = load_for_cli(args[0], format, &t_load);
+  const Mesh m = load_for_cli(args.input, &t_load);
   Analysis a = analyze(m, opt);
   a.timings.load = t_load;
   const Stats s = compute_stats(m, a);
-  if (json) {
-    JsonWriter w;
-    w.begin().str("file", args[0]);
-    write_stats_json(w, s);
-    w.end();
-    std::printf("%s\n", w.text().c_str());
-  } else if (csv) {
-    std::printf("%s\n%s\n", stats_csv_header().c_str(), stats_csv_row(args[0], s).c_str());
+  const std::string& file = args.input.file;
+  if (args.json) {
+    Json j = {{"file", file}};
+    add_stats_json(j, s);
+    write_output(json_text(j), std::nullopt);
+  } else if (args.csv) {
+    std::printf("%s\n%s\n", stats_csv_header().c_str(), stats_csv_row(file, s).c_str());
   } else {
-    std::printf("%s", stats_table(args[0], s).c_str());
+    std::printf("%s", stats_table(file, s).c_str());
     for (const Subsheets& x : a.subsheets)
       std::printf("  self-intersecting sheet %d (%d blocks): %zu subsheets\n", x.sheet,
-                  a.sheets.sheet_units.count(static_cast<size_t>(x.sheet)), x.size());
+                  a.sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size());
   }
-  return 0;
+}
+
+}  // namespace
+
+void add_analyze(CLI::App& app) {
+  auto args = std::make_shared<AnalyzeArgs>();
+  CLI::App* cmd = add_mesh_command(app, "analyze", "hybrid singularity graph, base complex, sheets and VSG wireframe",
+                                   args->input, args->json, "print the SPEC §5 statistics as JSON");
+  cmd->add_flag("--csv", args->csv, "print them as one CSV header and row")->excludes("--json");
+  add_level(*cmd, args->level, "level of sheets and wireframe");
+  cmd->add_option("--rho", args->rho, "wireframe simplification threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  cmd->add_flag("--no-sheets", args->no_sheets, "skip the sheet stages");
+  cmd->add_flag("--no-wireframe", args->no_wireframe, "skip the wireframe stage");
+  cmd->callback([args] { run_analyze(*args); });
 }
 
 }  // namespace hbc::cli

@@ -1,54 +1,65 @@
 // hbc export-surface FILE -o OUT.obj|.ply|.off [--what boundary|patches|components|sheets]: a surface of mesh faces through
 // OpenMesh. Each --what only chooses the face list and the ids that colour it (surface.hpp).
+#include <CLI/CLI.hpp>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
-#include "hbc/structure_surfaces.hpp"
+#include "hbc/face_selection.hpp"
 #include "hbc/surface.hpp"
 
 namespace hbc::cli {
+namespace {
 
-int cmd_export_surface(const Args& args_in) {
-  Args args = args_in;
-  auto out = take_option(args, "-o");
-  auto what = take_option(args, "--what");
-  auto sheet = take_option(args, "--sheet");
-  const InputFormat format = take_format(args);
-  if (!out || args.size() != 1)
-    throw std::invalid_argument("usage: hbc export-surface FILE -o OUT.obj|.ply|.off [--what boundary|patches|components|sheets] [--sheet N] [--format F]");
-  const std::string kind = what.value_or("boundary");
-  const Mesh mesh = load_for_cli(args[0], format);
-  FaceSelection sel;
-  if (kind == "boundary") {
-    sel = boundary_selection(mesh);
-  } else if (kind == "patches" || kind == "components" || kind == "sheets") {
-    AnalysisOptions opt;
-    opt.sheets = kind == "sheets";
-    opt.subsheets = false;
-    opt.wireframe = false;
-    const Analysis a = analyze(mesh, opt);
-    if (kind == "patches") sel = patch_selection(mesh, a.complex);
-    else if (kind == "components") sel = component_selection(mesh, a.complex);
-    else {
-      const int32_t s = sheet ? std::stoi(*sheet) : -1;
-      if (s >= static_cast<int32_t>(a.sheets.size()))
-        throw std::invalid_argument("--sheet " + std::to_string(s) + ": the mesh has " + std::to_string(a.sheets.size()) + " sheets");
-      sel = sheet_selection(mesh, a.sheets, s);
-    }
-  } else {
-    throw std::invalid_argument("--what must be boundary, patches, components or sheets, got '" + kind + "'");
-  }
+struct ExportSurfaceArgs {
+  InputArgs input;
+  std::string out;
+  std::string what = "boundary";
+  int32_t sheet = -1;
+};
+
+FaceSelection selection(const Mesh& mesh, const ExportSurfaceArgs& args) {
+  if (args.what == "boundary") return boundary_selection(mesh);
+  AnalysisOptions opt;
+  opt.sheets = args.what == "sheets";
+  opt.subsheets = false;
+  opt.wireframe = false;
+  const Analysis a = analyze(mesh, opt);
+  if (args.what == "patches") return patch_selection(mesh, a.complex);
+  if (args.what == "components") return component_selection(mesh, a.complex);
+  if (args.sheet >= static_cast<int32_t>(a.sheets.size()))
+    throw std::invalid_argument("--sheet " + std::to_string(args.sheet) + ": the mesh has " +
+                                std::to_string(a.sheets.size()) + " sheets");
+  return sheet_selection(mesh, a.sheets, args.sheet);
+}
+
+void run_export_surface(const ExportSurfaceArgs& args) {
+  const Mesh mesh = load_for_cli(args.input);
   SurfaceStats stats;
-  const SurfaceMesh surface = build_surface(mesh, sel, &stats);
-  write_surface(surface, *out);
+  const SurfaceMesh surface = build_surface(mesh, selection(mesh, args), &stats);
+  write_surface(surface, args.out);
   if (stats.unwelded_faces > 0)
     std::fprintf(stderr, "hbc: warning: %lld face(s) at non-manifold edges or vertices written unwelded\n",
                  static_cast<long long>(stats.unwelded_faces));
-  std::printf("wrote %s: %lld faces, %zu vertices\n", out->c_str(), static_cast<long long>(stats.faces),
+  std::printf("wrote %s: %lld faces, %zu vertices\n", args.out.c_str(), static_cast<long long>(stats.faces),
               surface.n_vertices());
-  return 0;
+}
+
+}  // namespace
+
+void add_export_surface(CLI::App& app) {
+  auto args = std::make_shared<ExportSurfaceArgs>();
+  CLI::App* cmd = app.add_subcommand("export-surface", "surfaces with per-face ids, through OpenMesh");
+  add_input(*cmd, args->input);
+  cmd->add_option("-o", args->out, "output surface, .obj, .ply or .off")->required();
+  cmd->add_option("--what", args->what, "which faces")
+      ->check(CLI::IsMember({"boundary", "patches", "components", "sheets"}))
+      ->capture_default_str();
+  cmd->add_option("--sheet", args->sheet, "with --what sheets: that sheet only (default: all)")
+      ->check(at_least(0));
+  cmd->callback([args] { run_export_surface(*args); });
 }
 
 }  // namespace hbc::cli

@@ -1,37 +1,52 @@
 // hbc export-vtu FILE -o OUT.vtu [--sheet N] [--level complex|mesh] [--ascii]: the mesh with its
 // analysis as cell and point data for ParaView, and the singularity graph in OUT_graph.vtu
 // (vtu_export.hpp lists the arrays).
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <stdexcept>
+#include <memory>
+#include <string>
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
 #include "hbc/vtu_export.hpp"
 
 namespace hbc::cli {
+namespace {
 
-int cmd_export_vtu(const Args& args_in) {
-  Args args = args_in;
-  auto out = take_option(args, "-o");
-  auto sheet = take_option(args, "--sheet");
-  auto level = take_option(args, "--level");
+struct ExportVtuArgs {
+  InputArgs input;
+  std::string out;
+  int sheet = -1;
+  std::string level = "complex";
+  bool ascii = false;
+};
+
+void run_export_vtu(const ExportVtuArgs& args) {
   VtuExportOptions vo;
-  vo.ascii = take_flag(args, "--ascii");
-  const InputFormat format = take_format(args);
-  if (!out || args.size() != 1)
-    throw std::invalid_argument("usage: hbc export-vtu FILE -o OUT.vtu [--sheet N] [--level complex|mesh] [--ascii] [--format F]");
+  vo.ascii = args.ascii;
+  vo.sheet = args.sheet;
   AnalysisOptions opt;
   opt.wireframe = false;
-  if (level && *level == "mesh") opt.sheet_level = SheetLevel::Mesh;
-  else if (level && *level != "complex") throw std::invalid_argument("--level takes complex or mesh");
-  if (sheet) vo.sheet = std::stoi(*sheet);
-  const Mesh mesh = load_for_cli(args[0], format);
+  opt.sheet_level = level_from_name(args.level);
+  const Mesh mesh = load_for_cli(args.input);
   const Analysis a = analyze(mesh, opt);
-  export_vtu(mesh, a, *out, vo);
-  std::printf("wrote %s: %zu cells, %zu components; %s: %zu singularity-graph edges\n", out->c_str(), mesh.num_cells(),
-              a.complex.component_cells.rows(), vtu_graph_path(*out).c_str(),
+  export_vtu(mesh, a, args.out, vo);
+  std::printf("wrote %s: %zu cells, %zu components; %s: %zu singularity-graph edges\n", args.out.c_str(),
+              mesh.num_cells(), a.complex.component_cells.rows(), vtu_graph_path(args.out).c_str(),
               a.graph.num_singular_edges() + a.graph.pseudo_singular_edges.size() + a.graph.non_manifold_edges.size());
-  return 0;
+}
+
+}  // namespace
+
+void add_export_vtu(CLI::App& app) {
+  auto args = std::make_shared<ExportVtuArgs>();
+  CLI::App* cmd = app.add_subcommand("export-vtu", "cells with block/sheet ids for ParaView (+ OUT_graph.vtu)");
+  add_input(*cmd, args->input);
+  cmd->add_option("-o", args->out, "the .vtu file to write")->required();
+  cmd->add_option("--sheet", args->sheet, "also write in_sheet and the subsheets of this sheet")->check(at_least(0));
+  add_level(*cmd, args->level, "level of the sheets");
+  cmd->add_flag("--ascii", args->ascii, "text arrays instead of zlib-compressed base64");
+  cmd->callback([args] { run_export_vtu(*args); });
 }
 
 }  // namespace hbc::cli

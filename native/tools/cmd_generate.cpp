@@ -1,7 +1,10 @@
 // hbc generate KIND [options] -o FILE: synthetic meshes with known structure (see generate.hpp).
-#include <algorithm>
+#include <CLI/CLI.hpp>
 #include <array>
 #include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "commands.hpp"
@@ -10,13 +13,17 @@
 namespace hbc::cli {
 namespace {
 
-const char* kGenerateUsage =
-    "usage: hbc generate KIND [options] -o FILE [--format F]\n"
-    "  grid     --size N M K [--spacing S]\n"
-    "  split    --size N M K --split pyramids|prisms|tets [--axis x|y|z] [--spacing S]\n"
-    "           (--cells \"i,j,k;i,j,k...\" | --random COUNT [--seed S])\n"
-    "  sector   --valence N --rings R --layers L\n"
-    "  cylinder --radius-cells R --layers L\n";
+// The options of every kind (only the chosen kind's are parsed).
+struct GenerateArgs {
+  std::string out;
+  std::string format;
+  std::vector<int> size;  // N M K
+  double spacing = 1.0;
+  std::string split, axis = "z", cells;
+  std::optional<int> random;
+  uint32_t seed = 0;
+  int valence = 0, rings = 0, layers = 0, radius_cells = 0;
+};
 
 int to_int(const std::string& s, const std::string& what) {
   size_t used = 0;
@@ -29,34 +36,6 @@ int to_int(const std::string& s, const std::string& what) {
   if (used != s.size() || used == 0 || v < -2147483647LL || v > 2147483647LL)
     throw std::invalid_argument(what + " must be an integer, got '" + s + "'");
   return static_cast<int>(v);
-}
-
-double to_real(const std::string& s, const std::string& what) {
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != s.size() || used == 0) throw std::invalid_argument(what + " must be a number, got '" + s + "'");
-  return v;
-}
-
-int required_int(Args& args, const std::string& opt) {
-  auto v = take_option(args, opt);
-  if (!v) throw std::invalid_argument(std::string("missing ") + opt + "\n" + kGenerateUsage);
-  return to_int(*v, opt);
-}
-
-// "--size N M K": three values after the option.
-std::array<int, 3> take_size(Args& args) {
-  auto it = std::find(args.begin(), args.end(), "--size");
-  if (it == args.end()) throw std::invalid_argument(std::string("missing --size N M K\n") + kGenerateUsage);
-  if (args.end() - it < 4) throw std::invalid_argument("--size needs three values N M K");
-  std::array<int, 3> s{to_int(it[1], "--size"), to_int(it[2], "--size"), to_int(it[3], "--size")};
-  args.erase(it, it + 4);
-  return s;
 }
 
 // "i,j,k;i,j,k": cells by grid coordinates.
@@ -84,72 +63,82 @@ std::vector<std::array<int32_t, 3>> parse_cells(const std::string& text) {
   return out;
 }
 
+void write_generated(const GenerateArgs& args, MeshInput in) {
+  const Mesh mesh = build_mesh(std::move(in));
+  write_mesh(mesh, args.out, args.format.empty() ? Format::Auto : format_from_name(args.format));
+  std::printf("wrote %s: %zu vertices, %zu faces, %zu cells (%zu hex)\n", args.out.c_str(), mesh.num_vertices(),
+              mesh.num_faces(), mesh.num_cells(), mesh.num_hex_cells());
+}
+
+// --size takes up to three values so that a missing one is a usage error, not "-o" read as a size.
+std::array<int, 3> size_of(const GenerateArgs& a) {
+  if (a.size.size() != 3) throw CLI::ArgumentMismatch("--size", 3, a.size.size());
+  return {a.size[0], a.size[1], a.size[2]};
+}
+
+MeshInput split_mesh(const GenerateArgs& a) {
+  const auto s = size_of(a);
+  const SplitKind kind = a.split == "pyramids" ? SplitKind::Pyramids
+                         : a.split == "prisms" ? SplitKind::Prisms
+                                               : SplitKind::Tets;
+  const int axis = a.axis == "x" ? 0 : a.axis == "y" ? 1 : 2;
+  if (a.cells.empty() && !a.random) throw std::invalid_argument("split needs one of --cells and --random");
+  const auto cells = a.random ? random_cells(s[0], s[1], s[2], *a.random, a.seed) : parse_cells(a.cells);
+  return generate_split(s[0], s[1], s[2], kind, cells, axis, a.spacing);
+}
+
+// One sub-subcommand per kind, each with the output options and `make` building its mesh.
+CLI::App* add_kind(CLI::App& generate, const std::shared_ptr<GenerateArgs>& args, const char* name,
+                   const char* help, std::function<MeshInput(const GenerateArgs&)> make) {
+  CLI::App* kind = generate.add_subcommand(name, help);
+  kind->add_option("-o", args->out, "output mesh file")->required();
+  add_format(*kind, args->format);
+  kind->callback([args, make] { write_generated(*args, make(*args)); });
+  return kind;
+}
+
+void add_size(CLI::App& kind, GenerateArgs& args) {
+  kind.add_option("--size", args.size, "cells along x, y and z")->required()->expected(1, 3)->check(at_least(1));
+  kind.add_option("--spacing", args.spacing, "edge length")->check(CLI::Validator(
+          [](std::string& v) {
+            double x = 0;
+            return CLI::detail::lexical_cast(v, x) && x > 0 ? std::string() : "must be a positive number, got " + v;
+          },
+          "POSITIVE"))
+      ->capture_default_str();
+}
+
 }  // namespace
 
-int cmd_generate(const Args& args_in) {
-  Args args = args_in;
-  if (args.empty()) throw std::invalid_argument(kGenerateUsage);
-  const std::string kind = args[0];
-  args.erase(args.begin());
-  auto out = take_option(args, "-o");
-  const Format format = take_format(args);
-  if (!out) throw std::invalid_argument(std::string("missing -o FILE\n") + kGenerateUsage);
-  auto spacing_opt = take_option(args, "--spacing");
-  const double spacing = spacing_opt ? to_real(*spacing_opt, "--spacing") : 1.0;
-
-  MeshInput in;
-  if (kind == "grid") {
-    const auto s = take_size(args);
-    in = generate_grid(s[0], s[1], s[2], spacing);
-  } else if (kind == "split") {
-    const auto s = take_size(args);
-    auto how = take_option(args, "--split");
-    if (!how) throw std::invalid_argument(std::string("missing --split\n") + kGenerateUsage);
-    SplitKind sk;
-    if (*how == "pyramids") sk = SplitKind::Pyramids;
-    else if (*how == "prisms") sk = SplitKind::Prisms;
-    else if (*how == "tets") sk = SplitKind::Tets;
-    else throw std::invalid_argument("--split must be pyramids, prisms or tets, got '" + *how + "'");
-    auto axis_opt = take_option(args, "--axis");
-    int axis = 2;
-    if (axis_opt) {
-      if (*axis_opt == "x") axis = 0;
-      else if (*axis_opt == "y") axis = 1;
-      else if (*axis_opt == "z") axis = 2;
-      else throw std::invalid_argument("--axis must be x, y or z");
-    }
-    auto cells_opt = take_option(args, "--cells");
-    auto random_opt = take_option(args, "--random");
-    auto seed_opt = take_option(args, "--seed");
-    if (cells_opt.has_value() == random_opt.has_value())
-      throw std::invalid_argument("split needs exactly one of --cells and --random");
-    std::vector<std::array<int32_t, 3>> cells;
-    if (cells_opt) {
-      cells = parse_cells(*cells_opt);
-    } else {
-      const int seed = seed_opt ? to_int(*seed_opt, "--seed") : 0;
-      cells = random_cells(s[0], s[1], s[2], to_int(*random_opt, "--random"), static_cast<uint32_t>(seed));
-    }
-    in = generate_split(s[0], s[1], s[2], sk, cells, axis, spacing);
-  } else if (kind == "sector") {
-    const int valence = required_int(args, "--valence");
-    const int rings = required_int(args, "--rings");
-    const int layers = required_int(args, "--layers");
-    in = generate_sector(valence, rings, layers);
-  } else if (kind == "cylinder") {
-    const int radius = required_int(args, "--radius-cells");
-    const int layers = required_int(args, "--layers");
-    in = generate_cylinder(radius, layers);
-  } else {
-    throw std::invalid_argument("unknown kind '" + kind + "'\n" + kGenerateUsage);
-  }
-  if (!args.empty()) throw std::invalid_argument("unexpected argument '" + args[0] + "'\n" + kGenerateUsage);
-
-  const Mesh mesh = build_mesh(std::move(in));
-  write_mesh(mesh, *out, format);
-  std::printf("wrote %s: %zu vertices, %zu faces, %zu cells (%zu hex)\n", out->c_str(), mesh.num_vertices(),
-              mesh.num_faces(), mesh.num_cells(), mesh.num_hex_cells());
-  return 0;
+void add_generate(CLI::App& app) {
+  auto args = std::make_shared<GenerateArgs>();
+  CLI::App* cmd = app.add_subcommand("generate", "synthetic meshes with known structure (see generate.hpp)");
+  cmd->require_subcommand(1);
+  auto* grid = add_kind(*cmd, args, "grid", "an N x M x K hex grid",
+                        [](const GenerateArgs& a) {
+                          const auto s = size_of(a);
+                          return generate_grid(s[0], s[1], s[2], a.spacing);
+                        });
+  add_size(*grid, *args);
+  auto* split = add_kind(*cmd, args, "split", "a hex grid with chosen cells split into pyramids, prisms or tets", split_mesh);
+  add_size(*split, *args);
+  split->add_option("--split", args->split, "what the chosen cells become")
+      ->required()
+      ->check(CLI::IsMember({"pyramids", "prisms", "tets"}));
+  split->add_option("--axis", args->axis, "prism axis")->check(CLI::IsMember({"x", "y", "z"}))->capture_default_str();
+  auto* cells = split->add_option("--cells", args->cells, "chosen cells by grid coordinates: \"i,j,k;i,j,k...\"");
+  auto* random = split->add_option("--random", args->random, "that many cells chosen at random")->check(at_least(0));
+  split->add_option("--seed", args->seed, "seed of --random")->capture_default_str();
+  cells->excludes(random);
+  auto* sector = add_kind(*cmd, args, "sector", "hex rings around one edge of valence N",
+                          [](const GenerateArgs& a) { return generate_sector(a.valence, a.rings, a.layers); });
+  sector->add_option("--valence", args->valence, "valence of the central edge")->required()->check(at_least(3));
+  sector->add_option("--rings", args->rings, "rings of cells around it")->required()->check(at_least(1));
+  sector->add_option("--layers", args->layers, "layers along it")->required()->check(at_least(1));
+  auto* cylinder = add_kind(*cmd, args, "cylinder", "a hex-dominant cylinder (prisms at the axis)",
+                            [](const GenerateArgs& a) { return generate_cylinder(a.radius_cells, a.layers); });
+  cylinder->add_option("--radius-cells", args->radius_cells, "cells across the radius")->required()->check(at_least(1));
+  cylinder->add_option("--layers", args->layers, "layers along the axis")->required()->check(at_least(1));
 }
 
 }  // namespace hbc::cli

@@ -1,6 +1,8 @@
-// hbc quality: Verdict's scaled Jacobian and edge ratio (cell_quality.hpp) summarised per cell type.
+// hbc quality FILE [--json]: Verdict's scaled Jacobian and edge ratio (cell_quality.hpp) summarised
+// per cell type.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <stdexcept>
+#include <memory>
 #include <string>
 
 #include "commands.hpp"
@@ -8,29 +10,29 @@
 #include "json.hpp"
 
 namespace hbc::cli {
-
 namespace {
 
-// count, min, mean, max and the histogram into the open JSON object (plus `inverted`, the
-// negative values, for the scaled Jacobian).
-void write_stats(JsonWriter& w, const MeasureStats& s, bool inverted) {
-  w.num("count", s.count).real("min", s.min, 9).real("mean", s.mean, 9).real("max", s.max, 9);
-  if (inverted) w.num("inverted", s.negative);
-  w.array("histogram", s.histogram);
+struct QualityArgs {
+  InputArgs input;
+  bool json = false;
+};
+
+// count, min, mean, max and the histogram (plus `inverted`, the negative values, for the scaled
+// Jacobian); a measure over no cell has null statistics.
+Json stats_json(const MeasureStats& s, bool inverted) {
+  Json j = {{"count", s.count}, {"min", s.min}, {"mean", s.mean}, {"max", s.max}};
+  if (inverted) j["inverted"] = s.negative;
+  j["histogram"] = s.histogram;
+  return j;
 }
 
-void write_measure(JsonWriter& w, const char* key, const std::vector<double>& edges, const MeasureStats& all,
-                   const std::array<MeasureStats, 5>& per_type, bool inverted) {
-  w.begin(key);
-  write_stats(w, all, inverted);
-  w.array("bin_edges", edges, 4);
-  w.begin("per_type");
-  for (size_t t = 0; t < 5; ++t) {
-    w.begin(cell_type_name(static_cast<CellType>(t)));
-    write_stats(w, per_type[t], inverted);
-    w.end();
-  }
-  w.end().end();
+Json measure_json(const std::vector<double>& edges, const MeasureStats& all, const std::array<MeasureStats, 5>& per_type,
+                  bool inverted) {
+  Json j = stats_json(all, inverted);
+  j["bin_edges"] = edges;
+  Json& types = j["per_type"] = Json::object();
+  for (size_t t = 0; t < 5; ++t) types[cell_type_name(static_cast<CellType>(t))] = stats_json(per_type[t], inverted);
+  return j;
 }
 
 void print_measure(const char* title, const std::vector<double>& edges, const MeasureStats& all,
@@ -50,31 +52,33 @@ void print_measure(const char* title, const std::vector<double>& edges, const Me
   }
 }
 
+void run_quality(const QualityArgs& args) {
+  const Mesh m = load_for_cli(args.input);
+  const QualitySummary s = summarize_quality(m, cell_quality(m));
+  const std::string& file = args.input.file;
+  if (args.json) {
+    const Json j = {{"file", file},
+                    {"cells", s.scaled_jacobian.count},
+                    {"inverted", s.scaled_jacobian.negative},
+                    {"scaled_jacobian", measure_json(s.sj_bin_edges, s.scaled_jacobian, s.sj_per_type, true)},
+                    {"edge_ratio", measure_json(s.er_bin_edges, s.edge_ratio, s.er_per_type, false)}};
+    write_output(json_text(j), std::nullopt);
+    return;
+  }
+  std::printf("file            %s\ncells           %lld\ninverted        %lld (scaled Jacobian < 0)\n\n", file.c_str(),
+              static_cast<long long>(s.scaled_jacobian.count), static_cast<long long>(s.scaled_jacobian.negative));
+  print_measure("scaled Jacobian", s.sj_bin_edges, s.scaled_jacobian, s.sj_per_type);
+  std::printf("\n");
+  print_measure("edge ratio", s.er_bin_edges, s.edge_ratio, s.er_per_type);
+}
+
 }  // namespace
 
-int cmd_quality(const Args& args_in) {
-  Args args = args_in;
-  const bool json = take_flag(args, "--json");
-  const InputFormat format = take_format(args);
-  if (args.size() != 1) throw std::invalid_argument("usage: hbc quality FILE [--json] [--format F]");
-  const Mesh m = load_for_cli(args[0], format);
-  const QualitySummary s = summarize_quality(m, cell_quality(m));
-  if (json) {
-    JsonWriter w;
-    w.begin().str("file", args[0]).num("cells", s.scaled_jacobian.count).num("inverted", s.scaled_jacobian.negative);
-    write_measure(w, "scaled_jacobian", s.sj_bin_edges, s.scaled_jacobian, s.sj_per_type, true);
-    write_measure(w, "edge_ratio", s.er_bin_edges, s.edge_ratio, s.er_per_type, false);
-    w.end();
-    std::printf("%s\n", w.text().c_str());
-  } else {
-    std::printf("file            %s\ncells           %lld\ninverted        %lld (scaled Jacobian < 0)\n\n",
-                args[0].c_str(), static_cast<long long>(s.scaled_jacobian.count),
-                static_cast<long long>(s.scaled_jacobian.negative));
-    print_measure("scaled Jacobian", s.sj_bin_edges, s.scaled_jacobian, s.sj_per_type);
-    std::printf("\n");
-    print_measure("edge ratio", s.er_bin_edges, s.edge_ratio, s.er_per_type);
-  }
-  return 0;
+void add_quality(CLI::App& app) {
+  auto args = std::make_shared<QualityArgs>();
+  CLI::App* cmd = add_mesh_command(app, "quality", "scaled Jacobian and edge ratio per cell type, inverted cells",
+                                   args->input, args->json);
+  cmd->callback([args] { run_quality(*args); });
 }
 
 }  // namespace hbc::cli

@@ -1,7 +1,8 @@
 // hbc sheets FILE [--json] [--level complex|mesh]: every sheet with its type flags and sizes,
 // and the subsheets of each self-intersecting sheet.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <stdexcept>
+#include <memory>
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
@@ -10,65 +11,52 @@
 namespace hbc::cli {
 namespace {
 
-void write_class(JsonWriter& w, const SheetClass& k) {
-  w.str("type", sheet_type_name(k.type))
-      .num("type1", k.type1)
-      .num("type2", k.type2)
-      .num("type3", k.type3)
-      .num("unmatched_vertices", static_cast<int64_t>(k.unmatched_vertices.size()))
-      .num("shared_vertices", static_cast<int64_t>(k.shared_vertices.size()))
-      .num("self_parallel_curves", static_cast<int64_t>(k.self_parallel_curves.size()))
-      .num("self_intersecting_blocks", static_cast<int64_t>(k.self_intersecting_units.size()));
+struct SheetsArgs {
+  InputArgs input;
+  bool json = false;
+  std::string level = "complex";
+};
+
+// The classification of a sheet or subsheet, added to its object after its sizes.
+void add_class(Json& j, const SheetClass& k) {
+  j["type"] = sheet_type_name(k.type);
+  j["type1"] = k.type1;
+  j["type2"] = k.type2;
+  j["type3"] = k.type3;
+  j["unmatched_vertices"] = k.unmatched_vertices.size();
+  j["shared_vertices"] = k.shared_vertices.size();
+  j["self_parallel_curves"] = k.self_parallel_curves.size();
+  j["self_intersecting_blocks"] = k.self_intersecting_blocks.size();
 }
 
-}  // namespace
-
-int cmd_sheets(const Args& args_in) {
-  Args args = args_in;
-  const bool json = take_flag(args, "--json");
-  AnalysisOptions opt;
-  opt.wireframe = false;
-  if (auto level = take_option(args, "--level")) {
-    if (*level == "mesh") opt.sheet_level = SheetLevel::Mesh;
-    else if (*level != "complex") throw std::invalid_argument("--level takes complex or mesh");
-  }
-  const InputFormat format = take_format(args);
-  if (args.size() != 1) throw std::invalid_argument("usage: hbc sheets FILE [--json] [--level complex|mesh] [--format F]");
-  const Mesh m = load_for_cli(args[0], format);
-  const Analysis a = analyze(m, opt);
+Json sheets_json(const std::string& file, Level level, const Analysis& a) {
   const Sheets& sh = a.sheets;
-  if (json) {
-    JsonWriter w;
-    w.begin().str("file", args[0]).str("level", opt.sheet_level == SheetLevel::Mesh ? "mesh" : "complex");
-    w.num("largest_self_intersecting", a.largest_self_intersecting);
-    w.begin("sheets");
-    for (size_t s = 0; s < sh.size(); ++s) {
-      w.begin(std::to_string(s).c_str())
-          .num("blocks", sh.sheet_units.count(s))
-          .num("cells", sh.sheet_cells.count(s))
-          .num("curves", sh.sheet_curves.count(s))
-          .num("edges", sh.sheet_edges.count(s))
-          .num("non_hex_cells", sh.sheet_non_hex_cells.count(s));
-      write_class(w, sh.classes[s]);
-      if (const Subsheets* x = a.subsheets_of(static_cast<int32_t>(s))) {
-        w.begin("subsheets");
-        for (size_t i = 0; i < x->size(); ++i) {
-          w.begin(std::to_string(i).c_str())
-              .num("blocks", x->units.count(i))
-              .num("cells", x->cells.count(i))
-              .num("curves", x->curves.count(i));
-          write_class(w, x->classes[i]);
-          w.end();
-        }
-        w.end();
+  Json sheets = Json::object();
+  for (size_t s = 0; s < sh.size(); ++s) {
+    Json j = {{"blocks", sh.sheet_blocks.count(s)},
+              {"cells", sh.sheet_cells.count(s)},
+              {"curves", sh.sheet_curves.count(s)},
+              {"edges", sh.sheet_edges.count(s)},
+              {"non_hex_cells", sh.sheet_non_hex_cells.count(s)}};
+    add_class(j, sh.classes[s]);
+    if (const Subsheets* x = a.subsheets_of(static_cast<int32_t>(s))) {
+      Json& subs = j["subsheets"] = Json::object();
+      for (size_t i = 0; i < x->size(); ++i) {
+        Json& sub = subs[std::to_string(i)] = {{"blocks", x->blocks.count(i)}, {"cells", x->cells.count(i)}, {"curves", x->curves.count(i)}};
+        add_class(sub, x->classes[i]);
       }
-      w.end();
     }
-    w.end().end();
-    std::printf("%s\n", w.text().c_str());
-    return 0;
+    sheets[std::to_string(s)] = std::move(j);
   }
-  std::printf("%s: %zu sheets (%zu perfect, %zu type 1, %zu type 2, %zu type 3)\n", args[0].c_str(), sh.size(),
+  return {{"file", file},
+          {"level", level_name(level)},
+          {"largest_self_intersecting", a.largest_self_intersecting},
+          {"sheets", std::move(sheets)}};
+}
+
+void print_sheets_table(const std::string& file, const Analysis& a) {
+  const Sheets& sh = a.sheets;
+  std::printf("%s: %zu sheets (%zu perfect, %zu type 1, %zu type 2, %zu type 3)\n", file.c_str(), sh.size(),
               sh.count(SheetType::Perfect), sh.count(SheetType::Type1), sh.count(SheetType::Type2),
               sh.count(SheetType::Type3));
   std::printf("%5s %-8s %5s %5s %7s %7s %7s %9s %9s\n", "sheet", "type", "t1t2t3", "", "blocks", "cells", "curves",
@@ -76,14 +64,33 @@ int cmd_sheets(const Args& args_in) {
   for (size_t s = 0; s < sh.size(); ++s) {
     const SheetClass& k = sh.classes[s];
     std::printf("%5zu %-8s   %d%d%d %5s %7d %7d %7d %9d %9zu\n", s, sheet_type_name(k.type), k.type1, k.type2, k.type3,
-                "", sh.sheet_units.count(s), sh.sheet_cells.count(s), sh.sheet_curves.count(s),
+                "", sh.sheet_blocks.count(s), sh.sheet_cells.count(s), sh.sheet_curves.count(s),
                 sh.sheet_non_hex_cells.count(s), k.unmatched_vertices.size());
     if (const Subsheets* x = a.subsheets_of(static_cast<int32_t>(s)))
       for (size_t i = 0; i < x->size(); ++i)
         std::printf("      subsheet %-3zu %-8s blocks %d cells %d curves %d\n", i, sheet_type_name(x->classes[i].type),
-                    x->units.count(i), x->cells.count(i), x->curves.count(i));
+                    x->blocks.count(i), x->cells.count(i), x->curves.count(i));
   }
-  return 0;
+}
+
+void run_sheets(const SheetsArgs& args) {
+  AnalysisOptions opt;
+  opt.wireframe = false;
+  opt.sheet_level = level_from_name(args.level);
+  const Mesh m = load_for_cli(args.input);
+  const Analysis a = analyze(m, opt);
+  if (args.json) write_output(json_text(sheets_json(args.input.file, opt.sheet_level, a)), std::nullopt);
+  else print_sheets_table(args.input.file, a);
+}
+
+}  // namespace
+
+void add_sheets(CLI::App& app) {
+  auto args = std::make_shared<SheetsArgs>();
+  CLI::App* cmd =
+      add_mesh_command(app, "sheets", "sheets with type flags, sizes and subsheets", args->input, args->json);
+  add_level(*cmd, args->level, "level of the sheets");
+  cmd->callback([args] { run_sheets(*args); });
 }
 
 }  // namespace hbc::cli

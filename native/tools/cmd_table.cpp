@@ -1,16 +1,18 @@
 // hbc table FILES|DIRS [--csv|--md|--latex] [-j N]: the paper's Table 1 for many meshes. Each
-// mesh is analysed by a child `hbc analyze --csv` process, N at a time, so that one mesh that
+// mesh is analyzed by a child `hbc analyze --csv` process, N at a time, so that one mesh that
 // fails (bad file, crash, out of memory) is reported in its row and never stops the others.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -39,7 +41,7 @@ bool supported(const fs::path& p) {
   }
 }
 
-std::vector<std::string> collect(const Args& inputs) {
+std::vector<std::string> collect(const std::vector<std::string>& inputs) {
   std::vector<std::string> files;
   for (const std::string& in : inputs) {
     const fs::path p(in);
@@ -151,16 +153,16 @@ std::string cell(const Row& r, const Column& c) {
 
 std::string name_of(const std::string& file) { return fs::path(file).filename().string(); }
 
-}  // namespace
-
-int cmd_table(const Args& args_in) {
-  Args args = args_in;
-  const bool csv = take_flag(args, "--csv"), latex = take_flag(args, "--latex");
-  take_flag(args, "--md");  // the default
+struct TableArgs {
+  std::vector<std::string> inputs;
+  bool csv = false, md = false, latex = false;
   int jobs = 2;
-  if (auto j = take_option(args, "-j")) jobs = std::max(1, std::stoi(*j));
-  if (args.empty()) throw std::invalid_argument("usage: hbc table FILES|DIRS [--csv|--md|--latex] [-j N]");
-  const std::vector<std::string> files = collect(args);
+};
+
+void run_table(const TableArgs& args) {
+  const bool csv = args.csv, latex = args.latex;
+  const int jobs = args.jobs;
+  const std::vector<std::string> files = collect(args.inputs);
   if (files.empty()) throw std::invalid_argument("no mesh files found in the given paths");
 
   const std::string self = fs::read_symlink("/proc/self/exe").string();
@@ -235,7 +237,21 @@ int cmd_table(const Args& args_in) {
     }
   }
   if (failures) std::fprintf(stderr, "hbc: %d of %zu mesh(es) failed (see their rows)\n", failures, rows.size());
-  return 0;
+}
+
+}  // namespace
+
+void add_table(CLI::App& app) {
+  auto args = std::make_shared<TableArgs>();
+  CLI::App* cmd = app.add_subcommand("table", "Table 1 for many meshes (one process each)");
+  cmd->add_option("FILES", args->inputs, "mesh files, or folders searched for them")->required();
+  auto* csv = cmd->add_flag("--csv", args->csv, "CSV with an error column");
+  auto* md = cmd->add_flag("--md", args->md, "Markdown (the default)");
+  auto* latex = cmd->add_flag("--latex", args->latex, "LaTeX tabular");
+  csv->excludes(md)->excludes(latex);
+  md->excludes(latex);
+  cmd->add_option("-j", args->jobs, "meshes analyzed at once")->check(CLI::Range(1, 256))->capture_default_str();
+  cmd->callback([args] { run_table(*args); });
 }
 
 }  // namespace hbc::cli

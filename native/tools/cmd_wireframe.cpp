@@ -1,28 +1,30 @@
 // hbc wireframe: the VSG wireframe (SPEC §4) of a whole mesh or of one sheet, as JSON (polylines
 // with colours, opacities and simplification flags) or as OBJ line objects, one per colour class.
+#include <CLI/CLI.hpp>
 #include <chrono>
+#include <memory>
+#include <optional>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
-#include "hbc/base_complex.hpp"
-#include "hbc/cell_complex.hpp"
-#include "hbc/sheets.hpp"
-#include "hbc/singularity_graph.hpp"
-#include "hbc/vsg_wireframe.hpp"
+#include "hbc/analysis.hpp"
+#include "hbc/region.hpp"
+#include "json.hpp"
 
 namespace hbc::cli {
 namespace {
 
-const char* kUsage =
-    "usage: hbc wireframe FILE [--level complex|mesh] [--rho R] [--sheet N] [--all] [--json|--obj]\n"
-    "                          [-o OUT] [--format F]\n"
-    "  --level   complex (default, the paper's) or mesh\n"
-    "  --sheet N restrict to sheet N (complex-level sheets) and its adjacent non-hex cells\n"
-    "  --all     OBJ: also write the hidden (non-important) edges\n";
+struct WireframeArgs {
+  InputArgs input;
+  std::string level = "complex";
+  double rho = WireframeOptions{}.rho;
+  int32_t sheet = -1;
+  bool all = false, json = false, obj = false;
+  std::optional<std::string> out;
+};
 
 const char* stop_name(TraceStop s) {
   switch (s) {
@@ -40,66 +42,48 @@ void append_real(std::string& out, double v) {
   out += buf;
 }
 
-std::string json_text(const Mesh& m, const std::string& file, ComplexLevel level, int sheet,
-                      const WireframeOptions& opt, const VsgWireframe& w, double seconds) {
-  std::string o = "{\n";
-  auto key = [&](const char* k) { (o += "  \"") += k, o += "\": "; };
-  key("file");
-  o += "\"";
-  for (char c : file) {
-    if (c == '"' || c == '\\') o += '\\';
-    o += c;
-  }
-  o += "\",\n";
-  key("level"), o += std::string("\"") + complex_level_name(level) + "\",\n";
-  key("sheet"), o += std::to_string(sheet) + ",\n";
-  key("rho"), append_real(o, opt.rho), o += ",\n";
-  key("opacity_floor"), append_real(o, opt.opacity_floor), o += ",\n";
-  key("palette_size"), o += std::to_string(opt.palette_size) + ",\n";
-  key("vsg_edges"), o += std::to_string(w.vsg_edges) + ",\n";
-  key("vsg_chains"), o += std::to_string(w.vsg_chains) + ",\n";
-  key("singular_vertices"), o += std::to_string(w.singular_vertices.size()) + ",\n";
-  key("wireframe_edges"), o += std::to_string(w.wireframe_edges()) + ",\n";
-  key("wireframe_edges_simplified"), o += std::to_string(w.wireframe_edges_simplified()) + ",\n";
-  key("vsg_mesh_edges"), o += std::to_string(w.vsg_mesh_edges) + ",\n";
-  key("wireframe_mesh_edges"), o += std::to_string(w.wireframe_mesh_edges) + ",\n";
-  key("wireframe_mesh_edges_simplified"), o += std::to_string(w.simplified_mesh_edges) + ",\n";
-  key("reference_components"), o += std::to_string(w.reference_components) + ",\n";
-  key("shown_components"), o += std::to_string(w.shown_components) + ",\n";
-  key("seconds_vsg_wireframe"), append_real(o, seconds), o += ",\n";
-  key("edges"), o += "[";
-  for (size_t i = 0; i < w.size(); ++i) {
-    o += i ? ",\n    {" : "\n    {";
-    o += "\"kind\": \"";
-    o += w.kind[i] == WireKind::Vsg ? "vsg" : "trace";
-    o += "\", \"valence\": " + std::to_string(w.valence[i]);
-    o += ", \"stop\": \"" + std::string(stop_name(w.stop[i])) + "\"";
-    o += ", \"non_important\": " + std::to_string(int(w.non_important[i]));
-    o += std::string(", \"reactivated\": ") + (w.reactivated[i] ? "true" : "false");
-    o += std::string(", \"shown\": ") + (w.shown[i] ? "true" : "false");
-    o += ", \"color_class\": " + std::to_string(w.style.color_class[i]);
-    o += ", \"color\": " + std::to_string(w.style.color[i]);
-    o += ", \"vertices\": [";
-    const auto poly = w.polylines[i];
-    for (size_t k = 0; k < poly.size(); ++k) {
-      if (k) o += ',';
-      o += std::to_string(poly[k]);
-    }
-    o += "], \"points\": [";
-    for (size_t k = 0; k < poly.size(); ++k)
-      for (int d = 0; d < 3; ++d) {
-        if (k || d) o += ',';
-        append_real(o, m.points[3 * static_cast<size_t>(poly[k]) + d]);
-      }
-    o += "], \"opacity\": [";
-    for (int32_t k = w.polylines.offsets[i]; k < w.polylines.offsets[i + 1]; ++k) {
-      if (k != w.polylines.offsets[i]) o += ',';
-      append_real(o, w.style.point_opacity[k]);
-    }
-    o += "]}";
-  }
-  o += "\n  ]\n}\n";
-  return o;
+Json edge_json(const Mesh& m, const VsgWireframe& w, size_t i) {
+  const auto poly = w.polylines[i];
+  Json points = Json::array();
+  for (int32_t v : poly)
+    for (int d = 0; d < 3; ++d) points.push_back(m.points[3 * static_cast<size_t>(v) + d]);
+  const auto first = w.style.point_opacity.begin() + w.polylines.offsets[i];
+  return {{"kind", w.kind[i] == WireKind::Vsg ? "vsg" : "trace"},
+          {"valence", w.valence[i]},
+          {"stop", stop_name(w.stop[i])},
+          {"non_important", int(w.non_important[i])},
+          {"reactivated", bool(w.reactivated[i])},
+          {"shown", bool(w.shown[i])},
+          {"color_class", w.style.color_class[i]},
+          {"color", w.style.color[i]},
+          {"vertices", Json(std::vector<int32_t>(poly.begin(), poly.end()))},
+          {"points", std::move(points)},
+          {"opacity", Json(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(poly.size())))}};
+}
+
+std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeOptions& opt, const VsgWireframe& w,
+                      double seconds) {
+  Json edges = Json::array();
+  for (size_t i = 0; i < w.size(); ++i) edges.push_back(edge_json(m, w, i));
+  const Json j = {{"file", args.input.file},
+                  {"level", args.level},
+                  {"sheet", args.sheet},
+                  {"rho", opt.rho},
+                  {"opacity_floor", opt.opacity_floor},
+                  {"palette_size", opt.palette_size},
+                  {"vsg_edges", w.vsg_edges},
+                  {"vsg_chains", w.vsg_chains},
+                  {"singular_vertices", w.singular_vertices.size()},
+                  {"wireframe_edges", w.wireframe_edges()},
+                  {"wireframe_edges_simplified", w.wireframe_edges_simplified()},
+                  {"vsg_mesh_edges", w.vsg_mesh_edges},
+                  {"wireframe_mesh_edges", w.wireframe_mesh_edges},
+                  {"wireframe_mesh_edges_simplified", w.simplified_mesh_edges},
+                  {"reference_components", w.reference_components},
+                  {"shown_components", w.shown_components},
+                  {"seconds_vsg_wireframe", seconds},
+                  {"edges", std::move(edges)}};
+  return cli::json_text(j);
 }
 
 std::string obj_text(const Mesh& m, const VsgWireframe& w, bool all) {
@@ -132,71 +116,43 @@ std::string obj_text(const Mesh& m, const VsgWireframe& w, bool all) {
   return o;
 }
 
+void run_wireframe(const WireframeArgs& args) {
+  const Mesh m = load_for_cli(args.input);
+  // --sheet picks a complex-level sheet at either level (the paper's sheets).
+  AnalysisOptions analysis_opt;
+  analysis_opt.sheets = args.sheet >= 0;
+  analysis_opt.subsheets = false;
+  analysis_opt.wireframe = false;
+  const Analysis a = analyze(m, analysis_opt);
+  if (args.sheet >= 0 && static_cast<size_t>(args.sheet) >= a.sheets.size())
+    throw std::invalid_argument("--sheet " + std::to_string(args.sheet) + ": the mesh has " +
+                                std::to_string(a.sheets.size()) + " sheets");
+  WireframeOptions opt;
+  opt.rho = args.rho;
+  const auto t1 = std::chrono::steady_clock::now();
+  const VsgWireframe w = region_wireframe(m, a, level_from_name(args.level), opt, args.sheet);
+  const auto t2 = std::chrono::steady_clock::now();
+  write_output(args.obj ? obj_text(m, w, args.all)
+                        : json_text(m, args, opt, w, std::chrono::duration<double>(t2 - t1).count()),
+               args.out);
+}
+
 }  // namespace
 
-int cmd_wireframe(const Args& args_in) {
-  Args args = args_in;
-  const bool obj = take_flag(args, "--obj");
-  const bool json = take_flag(args, "--json");
-  const bool all = take_flag(args, "--all");
-  const InputFormat format = take_format(args);
-  const auto level_name = take_option(args, "--level");
-  const auto rho = take_option(args, "--rho");
-  const auto sheet_arg = take_option(args, "--sheet");
-  const auto out_path = take_option(args, "-o");
-  if (args.size() != 1 || (obj && json)) throw std::invalid_argument(kUsage);
-  ComplexLevel level = ComplexLevel::Complex;
-  if (level_name) {
-    if (*level_name == "mesh") level = ComplexLevel::Mesh;
-    else if (*level_name != "complex") throw std::invalid_argument("--level is complex or mesh, not " + *level_name);
-  }
-  WireframeOptions opt;
-  if (rho) {
-    size_t used = 0;
-    opt.rho = std::stod(*rho, &used);
-    if (used != rho->size() || !(opt.rho >= 0.0 && opt.rho <= 1.0))
-      throw std::invalid_argument("--rho takes a number in [0, 1], not " + *rho);
-  }
-  int sheet = -1;
-  if (sheet_arg) {
-    size_t used = 0;
-    sheet = std::stoi(*sheet_arg, &used);
-    if (used != sheet_arg->size() || sheet < 0) throw std::invalid_argument("--sheet takes a sheet number");
-  }
-
-  const Mesh m = load_for_cli(args[0], format);
-  const BaseComplex bc = base_complex(m, singularity_graph(m));
-  std::vector<int32_t> region_cells, parallel_edges;
-  if (sheet >= 0) {
-    const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, SheetLevel::Complex));
-    if (static_cast<size_t>(sheet) >= sheets.size())
-      throw std::invalid_argument("--sheet " + std::to_string(sheet) + ": the mesh has " +
-                                  std::to_string(sheets.size()) + " sheets");
-    for (auto rows : {sheets.sheet_cells[sheet], sheets.sheet_non_hex_cells[sheet]})
-      region_cells.insert(region_cells.end(), rows.begin(), rows.end());
-    parallel_edges.assign(sheets.sheet_edges[sheet].begin(), sheets.sheet_edges[sheet].end());
-  }
-  const auto t1 = std::chrono::steady_clock::now();
-  CellComplex cx;
-  if (level == ComplexLevel::Mesh) {
-    cx = sheet >= 0 ? complex_from_mesh(m, region_cells) : complex_from_mesh(m);
-  } else {
-    cx = sheet >= 0 ? complex_from_base(m, bc, components_of_cells(bc, region_cells)) : complex_from_base(m, bc);
-  }
-  opt.parallel_edges = complex_edges_of(cx, bc, parallel_edges);
-  const VsgWireframe w = vsg_wireframe(cx, opt);
-  const auto t2 = std::chrono::steady_clock::now();
-
-  const std::string text = obj ? obj_text(m, w, all)
-                               : json_text(m, args[0], level, sheet, opt, w,
-                                           std::chrono::duration<double>(t2 - t1).count());
-  if (out_path) {
-    std::ofstream f(*out_path, std::ios::binary);
-    if (!f || !(f << text)) throw std::runtime_error("cannot write " + *out_path);
-  } else {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-  }
-  return 0;
+void add_wireframe(CLI::App& app) {
+  auto args = std::make_shared<WireframeArgs>();
+  CLI::App* cmd = add_mesh_command(app, "wireframe", "VSG wireframe (SPEC §4) of the mesh or of one sheet", args->input,
+                                   args->json, "JSON: polylines with colours, opacities, flags (the default)");
+  add_level(*cmd, args->level, "complex (the paper's) or mesh");
+  cmd->add_option("--rho", args->rho, "partial-parallel threshold of the colour classes")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--sheet", args->sheet, "restrict to sheet N (complex-level sheets) and its adjacent non-hex cells")
+      ->check(at_least(0));
+  cmd->add_flag("--obj", args->obj, "OBJ line objects, one per colour class")->excludes("--json");
+  cmd->add_flag("--all", args->all, "OBJ: also write the hidden (non-important) edges");
+  cmd->add_option("-o", args->out, "output file (default: stdout)");
+  cmd->callback([args] { run_wireframe(*args); });
 }
 
 }  // namespace hbc::cli

@@ -1,38 +1,58 @@
 #pragma once
-// The hbc command's subcommands, one file each. Each returns the process exit status:
-// 0 success, 1 usage error, 2 bad input (message on stderr naming file and line).
+// The hbc command's subcommands, one file each, on CLI11. Each add_<command> registers its
+// subcommand on the top-level app: its options (typed, with ranges and choices, so CLI11 rejects
+// bad values before any work) and a callback that runs the command once the line has parsed.
+// Exit status (SPEC §5, set in hbc_main.cpp): 0 success; 1 a malformed command line (unknown
+// option, missing argument); 2 bad input: a value an option cannot take (`--rho abc`, `--rho 7`),
+// or a file that cannot be read (message on stderr naming file and line).
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "hbc/io.hpp"
+#include "hbc/level.hpp"
 
 namespace hbc::cli {
 
-using Args = std::vector<std::string>;
+void add_info(CLI::App& app);
+void add_generate(CLI::App& app);
+void add_export_surface(CLI::App& app);
+void add_analyze(CLI::App& app);
+void add_wireframe(CLI::App& app);
+void add_sheets(CLI::App& app);
+void add_table(CLI::App& app);
+void add_export_vtu(CLI::App& app);
+void add_quality(CLI::App& app);
 
-int cmd_info(const Args& args);
-int cmd_generate(const Args& args);
-int cmd_export_surface(const Args& args);
-int cmd_export_vtu(const Args& args);
-int cmd_analyze(const Args& args);
-int cmd_wireframe(const Args& args);
-int cmd_sheets(const Args& args);
-int cmd_table(const Args& args);
-int cmd_quality(const Args& args);
-
-// Small shared helpers for argument handling.
-bool take_flag(Args& args, const std::string& flag);                       // removes it if present
-std::optional<std::string> take_option(Args& args, const std::string& opt);  // "--opt value"
-// How to read the input: --format NAME (or Auto) and --threads N (default: HBC_THREADS, else
-// every core).
-struct InputFormat {
-  Format format = Format::Auto;
-  LoadOptions load;
-  operator Format() const { return format; }
+// The mesh file every reading command takes: FILE, --format NAME (default: by extension) and
+// --threads N (default: HBC_THREADS, else every core; the results are the same for any number).
+struct InputArgs {
+  std::string file;
+  std::string format;  // empty: by extension; else a name format_from_name accepts
+  int threads = 0;     // 0: LoadOptions' default
+  Format parsed_format() const { return format.empty() ? Format::Auto : format_from_name(format); }
+  LoadOptions load_options() const {
+    LoadOptions o;
+    if (threads > 0) o.threads = threads;
+    return o;
+  }
 };
-InputFormat take_format(Args& args);
+void add_input(CLI::App& cmd, InputArgs& in);
+// A subcommand that reads one mesh: FILE and --format into `input`, --json (help `json_help`) into
+// `json`. Returns the subcommand for its own options.
+CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,
+                           bool& json, const std::string& json_help = "print JSON");
+// --format NAME alone (for writers).
+void add_format(CLI::App& cmd, std::string& format);
+// --level complex|mesh, parsed by level_from_name (the binding's parser too).
+void add_level(CLI::App& cmd, std::string& level, const std::string& help);
+
+// An integer option's range [min, INT32_MAX] (CLI11's NonNegativeNumber prints DBL_MAX).
+CLI::Range at_least(int min);
+
 // Loads a mesh and prints its warnings on stderr.
-Mesh load_for_cli(const std::string& path, const InputFormat& format, double* seconds = nullptr);
+Mesh load_for_cli(const InputArgs& in, double* seconds = nullptr);
+// Writes `text` to `path`, or to stdout when there is none.
+void write_output(const std::string& text, const std::optional<std::string>& path);
 
 }  // namespace hbc::cli

@@ -58,15 +58,13 @@ std::string fmt_real(double v, int digits) {
 
 }  // namespace
 
-void write_stats_json(JsonWriter& w, const Stats& s) {
+void add_stats_json(Json& j, const Stats& s) {
   for (const Field& f : fields(s)) {
-    if (f.real) w.real(f.key, f.d);
-    else if (f.i < 0) continue;  // stage not run: key left out rather than a fake number
-    else w.num(f.key, f.i);
+    if (f.real) j[f.key] = f.d;
+    else if (f.i >= 0) j[f.key] = f.i;  // a stage not run leaves its key out rather than a fake number
   }
-  w.begin("timings");
-  for (auto [k, v] : timing_fields(s.timings)) w.real(k, v, 6);
-  w.end();
+  Json& t = j["timings"];
+  for (auto [k, v] : timing_fields(s.timings)) t[k] = v;
 }
 
 std::string stats_csv_header() {

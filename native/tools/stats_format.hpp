@@ -7,8 +7,8 @@
 
 namespace hbc::cli {
 
-// Writes the stats keys into an open JSON object.
-void write_stats_json(JsonWriter& w, const Stats& s);
+// Adds the stats keys (and "timings") to a JSON object.
+void add_stats_json(Json& j, const Stats& s);
 std::string stats_csv_header();
 std::string stats_csv_row(const std::string& name, const Stats& s);
 std::string stats_table(const std::string& name, const Stats& s);

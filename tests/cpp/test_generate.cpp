@@ -13,6 +13,7 @@
 #include <set>
 
 #include "hbc/generate.hpp"
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -341,12 +342,7 @@ TEST(Generate, BadArgumentsThrow) {
 }
 
 
-// Runs `hbc ARGS` quietly; returns the exit status.
-int run_cli(const std::string& args) {
-  const std::string cmd = std::string("'") + HBC_CLI + "' " + args + " >/dev/null 2>&1";
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
+int run_cli(const std::string& args) { return test::run_cli(args).status; }
 
 TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   ASSERT_TRUE(std::filesystem::exists(HBC_CLI)) << HBC_CLI;
@@ -374,14 +370,16 @@ TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   ASSERT_EQ(run_cli("generate cylinder --radius-cells 3 --layers 2 -o '" + d + "/c.ovm'"), 0);
   EXPECT_EQ(types(load_mesh(d + "/c.ovm")), types(build_mesh(generate_cylinder(3, 2))));
 
-  // Usage errors: exit 1.
+  // Usage errors (a malformed line, or values wrong together): exit 1.
   EXPECT_EQ(run_cli("generate grid --size 2 3 -o '" + d + "/x.mesh'"), 1);
   EXPECT_EQ(run_cli("generate grid --size 2 3 4"), 1);
   EXPECT_EQ(run_cli("generate blob -o '" + d + "/x.mesh'"), 1);
-  EXPECT_EQ(run_cli("generate split --size 3 3 3 --split cubes --cells 1,1,1 -o '" + d + "/x.mesh'"), 1);
   EXPECT_EQ(run_cli("generate split --size 3 3 3 --split tets --cells 3,0,0 -o '" + d + "/x.mesh'"), 1);
   EXPECT_EQ(run_cli("generate split --size 3 3 3 --split tets -o '" + d + "/x.mesh'"), 1);
-  EXPECT_EQ(run_cli("generate sector --valence 2 --rings 1 --layers 1 -o '" + d + "/x.mesh'"), 1);
+  // A value outside its option's type, choices or range: exit 2 (bad input, SPEC §5).
+  EXPECT_EQ(run_cli("generate split --size 3 3 3 --split cubes --cells 1,1,1 -o '" + d + "/x.mesh'"), 2);
+  EXPECT_EQ(run_cli("generate grid --size 2 0 3 -o '" + d + "/x.mesh'"), 2);
+  EXPECT_EQ(run_cli("generate sector --valence 2 --rings 1 --layers 1 -o '" + d + "/x.mesh'"), 2);
   EXPECT_FALSE(std::filesystem::exists(d + "/x.mesh"));
   std::filesystem::remove_all(dir);
 }

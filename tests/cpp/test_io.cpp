@@ -9,6 +9,7 @@
 #include <map>
 #include <unistd.h>
 
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -401,27 +402,7 @@ TEST(IoFormats, WriteMeshPicksTheWriterByExtension) {
   std::filesystem::remove_all(dir);
 }
 
-// Runs the CLI; returns its exit status and what it printed on stdout and stderr.
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-CliRun run_cli(const std::string& args, const std::filesystem::path& dir) {
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = std::string("'") + HBC_CLI + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  CliRun r;
-  r.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+using test::run_cli;
 
 TEST(IoCli, FormatOverride) {
   HBC_REQUIRE_DATA("openvolumemesh/Cube_with_props.ovm");
@@ -434,23 +415,23 @@ TEST(IoCli, FormatOverride) {
   std::filesystem::copy_file(data_path("openvolumemesh/Cube_with_props.ovm"), plain);
   std::filesystem::copy_file(data_path("openvolumemesh/Cube_with_props.ovm"), lying);
 
-  CliRun r = run_cli("info '" + plain.string() + "' --json", dir);
+  test::CliRun r = run_cli("info '" + plain.string() + "' --json");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("cube.dat"), std::string::npos) << r.err;
 
-  r = run_cli("info '" + plain.string() + "' --format ovm --json", dir);
+  r = run_cli("info '" + plain.string() + "' --format ovm --json");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("\"cells\": 1"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("\"hex_cells\": 1"), std::string::npos) << r.out;
+  EXPECT_EQ(r.json()["cells"], 1) << r.out;
+  EXPECT_EQ(r.json()["hex_cells"], 1) << r.out;
 
-  r = run_cli("info '" + lying.string() + "' --json", dir);  // read as MEDIT: fails
+  r = run_cli("info '" + lying.string() + "' --json");  // read as MEDIT: fails
   EXPECT_EQ(r.status, 2) << r.err;
-  r = run_cli("info '" + lying.string() + "' --format OVM --json", dir);
+  r = run_cli("info '" + lying.string() + "' --format OVM --json");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("\"vertices\": 8"), std::string::npos) << r.out;
+  EXPECT_EQ(r.json()["vertices"], 8) << r.out;
 
-  r = run_cli("info '" + plain.string() + "' --format nonsense", dir);
-  EXPECT_EQ(r.status, 1) << r.err;
+  r = run_cli("info '" + plain.string() + "' --format nonsense");  // a value --format cannot take
+  EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("nonsense"), std::string::npos) << r.err;
   std::filesystem::remove_all(dir);
 }
@@ -459,19 +440,17 @@ TEST(IoCli, ThreadsOption) {
   // --threads changes how the load is split, never what it finds; a count below 1 is a usage
   // error naming the option.
   HBC_REQUIRE_DATA("cinolib/rockerarm.mesh");
-  const auto dir = std::filesystem::temp_directory_path() / ("hbc_cli_threads_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
   const std::string file = "'" + data_path("cinolib/rockerarm.mesh") + "'";
-  const CliRun one = run_cli("info " + file + " --json --threads 1", dir);
-  const CliRun two = run_cli("info " + file + " --threads 2 --json", dir);
+  const test::CliRun one = test::run_cli("info " + file + " --json --threads 1");
+  const test::CliRun two = test::run_cli("info " + file + " --threads 2 --json");
   EXPECT_EQ(one.status, 0) << one.err;
   EXPECT_EQ(two.status, 0) << two.err;
   EXPECT_EQ(one.out, two.out);
-  EXPECT_NE(one.out.find("\"cells\": 10600"), std::string::npos) << one.out;
-  const CliRun zero = run_cli("info " + file + " --threads 0", dir);
-  EXPECT_EQ(zero.status, 1);
+  EXPECT_EQ(one.json()["cells"], 10600) << one.out;
+  // A value the option cannot take: exit 2 with CLI11's message naming it.
+  const test::CliRun zero = test::run_cli("info " + file + " --threads 0");
+  EXPECT_EQ(zero.status, 2);
   EXPECT_NE(zero.err.find("--threads"), std::string::npos) << zero.err;
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

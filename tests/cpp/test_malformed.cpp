@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "format_samples.hpp"
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -430,13 +431,9 @@ TEST(Malformed, CliExitsWithStatus2AndTheMessageOnStderr) {
     std::ofstream f(bad, std::ios::binary);
     f << with_line(kOvmTet, 19, "3 0 10 7");
   }
-  const auto err = dir / "stderr.txt";
-  const std::string cmd = std::string("'") + HBC_CLI + "' info '" + bad.string() + "' >/dev/null 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  ASSERT_TRUE(raw != -1 && WIFEXITED(raw));
-  EXPECT_EQ(WEXITSTATUS(raw), 2);
-  std::ifstream e(err);
-  const std::string msg{std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>()};
+  const test::CliRun r = test::run_cli("info '" + bad.string() + "'");
+  EXPECT_EQ(r.status, 2);
+  const std::string& msg = r.err;
   EXPECT_NE(msg.find(bad.string() + ":19: "), std::string::npos) << msg;
   EXPECT_NE(msg.find("chain"), std::string::npos) << msg;
   std::filesystem::remove_all(dir);

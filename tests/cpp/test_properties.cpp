@@ -1,5 +1,5 @@
 // Property tests: hundreds of generated meshes (grids, grids with random cells split into
-// pyramids / prisms / tets, sectors, cylinders), each analysed as generated and randomly
+// pyramids / prisms / tets, sectors, cylinders), each analyzed as generated and randomly
 // renumbered. Every SPEC invariant is checked on both, and the renumbered analysis must equal the
 // original one up to the renumbering. Seeded std::mt19937 throughout: every run sees the same
 // meshes, and a failure names the case so it can be rebuilt alone.
@@ -67,7 +67,7 @@ bool is_mesh_edge(const Mesh& m, int32_t a, int32_t b) {
   return false;
 }
 
-// The SPEC invariants on one analysed mesh.
+// The SPEC invariants on one analyzed mesh.
 void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& opt) {
   const SingularityGraph& g = a.graph;
   const BaseComplex& bc = a.complex;
@@ -173,12 +173,9 @@ bool check_case(const Case& cs, std::mt19937& rng, const AnalysisOptions& opt) {
   const Analysis a = analyze(m, opt);
   expect_invariants(m, a, opt);
 
-  std::vector<int32_t> vperm(m.num_vertices()), cperm(m.num_cells());
-  std::iota(vperm.begin(), vperm.end(), 0);
-  std::iota(cperm.begin(), cperm.end(), 0);
-  std::shuffle(vperm.begin(), vperm.end(), rng);
-  std::shuffle(cperm.begin(), cperm.end(), rng);
-  const Mesh r = build_mesh(renumbered(m, vperm, cperm));
+  const test::Renumbering rn = test::random_renumbering(m, rng);
+  const Mesh& r = rn.mesh;
+  const std::vector<int32_t>& cperm = rn.cell;
   const Analysis b = analyze(r, opt);
   {
     SCOPED_TRACE("renumbered");
@@ -218,8 +215,8 @@ bool check_case(const Case& cs, std::mt19937& rng, const AnalysisOptions& opt) {
 AnalysisOptions level_options(bool mesh_level) {
   AnalysisOptions o;
   if (mesh_level) {
-    o.sheet_level = SheetLevel::Mesh;
-    o.wireframe_level = ComplexLevel::Mesh;
+    o.sheet_level = Level::Mesh;
+    o.wireframe_level = Level::Mesh;
   }
   return o;
 }

@@ -11,6 +11,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
+#include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
 
 namespace hbc {
@@ -21,7 +22,7 @@ struct Analysed {
   Analysis analysis;
 };
 
-Analysed grid2(SheetLevel level = SheetLevel::Complex) {
+Analysed grid2(Level level = Level::Complex) {
   Analysed r{build_mesh(generate_grid(2, 2, 2)), {}};
   AnalysisOptions opt;
   opt.sheet_level = level;
@@ -121,7 +122,7 @@ TEST(RenderGeometry, GridSheets) {
 
   // Mesh level: 6 one-cell-thick slabs of 2×2×1 cells; each slab's boundary has 8 + 8 quads and
   // 18 vertices, and within the one component it stays one block.
-  const Analysed fine = grid2(SheetLevel::Mesh);
+  const Analysed fine = grid2(Level::Mesh);
   ASSERT_EQ(fine.analysis.sheets.size(), 6u);
   const BlockSoup slabs = block_soup(fine.mesh, fine.analysis, SoupKind::Sheets);
   EXPECT_EQ(slabs.num_faces(), 96u);
@@ -234,16 +235,16 @@ TEST(RenderGeometry, RegionsAndClasses) {
   EXPECT_EQ(region_cells(g.mesh, g.analysis, -1).size(), 8u);
   EXPECT_EQ(region_cells(g.mesh, g.analysis, 0).size(), 8u);
   EXPECT_THROW(region_cells(g.mesh, g.analysis, 0, 0), std::invalid_argument);  // not type 3
-  const VsgWireframe whole = region_wireframe(g.mesh, g.analysis, ComplexLevel::Complex, {}, -1);
+  const VsgWireframe whole = region_wireframe(g.mesh, g.analysis, Level::Complex, {}, -1);
   EXPECT_EQ(whole.wireframe_edges(), g.analysis.wireframe.wireframe_edges());
   const ClassArrays k = flatten_classes(g.analysis.domain, g.analysis.sheets.classes);
   EXPECT_EQ(k.type, std::vector<uint8_t>(3, 0));  // a grid's sheets are perfect
   EXPECT_EQ(k.flags.size(), 9u);
   EXPECT_EQ(k.unmatched.rows(), 3u);
-  const Csr<int32_t> comps = units_as_components(g.analysis.domain, g.analysis.sheets.sheet_units);
+  const Csr<int32_t> comps = blocks_as_components(g.analysis.domain, g.analysis.sheets.sheet_blocks);
   EXPECT_EQ(comps.items, std::vector<int32_t>(3, 0));
-  const Analysed fine = grid2(SheetLevel::Mesh);
-  const Csr<int32_t> fine_comps = units_as_components(fine.analysis.domain, fine.analysis.sheets.sheet_units);
+  const Analysed fine = grid2(Level::Mesh);
+  const Csr<int32_t> fine_comps = blocks_as_components(fine.analysis.domain, fine.analysis.sheets.sheet_blocks);
   EXPECT_EQ(fine_comps.items, std::vector<int32_t>(6, 0));  // 4 cells per slab, one component
 }
 

@@ -2,9 +2,9 @@
 // classified exactly: the number of sheets, which are perfect / type 1 / type 2 / type 3, their
 // cells and parallel curves, and the highlight sets SPEC §6 uses (unmatched vertices, shared
 // vertices, self-parallel curves, self-intersecting blocks). The derivations are in the comments.
-// Every mesh is also analysed randomly renumbered, and must give the same sheets up to renumbering.
+// Every mesh is also analyzed randomly renumbered, and must give the same sheets up to renumbering.
 //
-// Notation. At the mesh level (SheetLevel::Mesh) units are hex cells and curves mesh edges; a
+// Notation. At the mesh level (Level::Mesh) blocks are hex cells and curves mesh edges; a
 // sheet is a class of the union-find joining the 4 parallel edges of each direction of every hex
 // cell (adjacent hex cells share a face and so its edges), split into face-connected groups of
 // hex cells. Curves are written as vertex pairs, cells by their input index.
@@ -101,8 +101,8 @@ SheetView view(const Mesh& m, const SheetDomain& d, std::span<const int32_t> cur
   s.type3 = k.type3;
   for (int32_t v : k.shared_vertices) s.shared.insert(mp.v(v));
   for (int32_t v : k.unmatched_vertices) s.unmatched.insert(mp.v(v));
-  for (int32_t u : k.self_intersecting_units)
-    for (int32_t c : d.unit_cells[u]) s.self_intersecting_cells.insert(mp.c(c));
+  for (int32_t u : k.self_intersecting_blocks)
+    for (int32_t c : d.block_cells[u]) s.self_intersecting_cells.insert(mp.c(c));
   for (int32_t c : k.self_parallel_curves) s.self_parallel.insert(curve_edges(m, d, c, mp));
   return s;
 }
@@ -115,7 +115,7 @@ std::vector<SheetView> views(const Mesh& m, const Analysis& a, const Maps& mp = 
   return out;
 }
 
-Analysis run(const Mesh& m, SheetLevel level) {
+Analysis run(const Mesh& m, Level level) {
   AnalysisOptions o;
   o.sheet_level = level;
   o.wireframe = false;
@@ -131,7 +131,7 @@ std::set<std::set<Edge>> single_edges(const std::vector<Edge>& edges) {
 // Item 4: a randomly renumbered copy gives the same sheets (cells, curves, types and highlight
 // sets mapped back; for unmatched vertices only their number, since which end of a path a
 // maximum matching leaves uncovered is a free choice).
-void expect_same_after_renumbering(const Mesh& m, SheetLevel level, uint32_t seed) {
+void expect_same_after_renumbering(const Mesh& m, Level level, uint32_t seed) {
   std::mt19937 rng(seed);
   Maps mp;
   mp.vert.resize(m.num_vertices());
@@ -186,7 +186,7 @@ void expect_same_after_renumbering(const Mesh& m, SheetLevel level, uint32_t see
 //      Z = the 7 vertical edges at p0..p3, R0..R2: every hex, all face-connected through P.
 //    In 3D each horizontal class holds its edges at z = 0 and z = 1. So 4 sheets.
 //    Shared ends: in A, p0R0 and p3R0 share R0 (at each level). Their cells are Q0 and Q2 (the
-//    prism T also holds both, but it is no unit): no common hex, and Q0, Q2 share no face (only
+//    prism T also holds both, but it is no block): no common hex, and Q0, Q2 share no face (only
 //    the vertical edge at R0, the prism T lies between them) -> type 1. In B, R0R1 (in Q0) and
 //    R0R2 (in Q2) share R0: the same reasoning -> type 1. No other pair shares an end in any class
 //    (C: p1p2, p3p0, R1R2 are disjoint; Z: vertical edges are disjoint). So sheets A, B are type
@@ -219,13 +219,13 @@ Mesh prism_ring_mesh() {
   return build_mesh(from_cells(pts, cells));
 }
 
-void check_prism_ring(SheetLevel level) {
+void check_prism_ring(Level level) {
   const Mesh m = prism_ring_mesh();
   ASSERT_EQ(m.num_cells(), 5u);
   ASSERT_EQ(m.num_hex_cells(), 4u);
   ASSERT_EQ(m.cell_type[4], CellType::Prism);
   const Analysis a = run(m, level);
-  if (level == SheetLevel::Complex) {
+  if (level == Level::Complex) {
     ASSERT_EQ(a.complex.num_components(), 5u);
     EXPECT_EQ(a.complex.num_hex_components(), 4u);
     for (size_t f = 0; f < m.num_faces(); ++f) EXPECT_TRUE(a.complex.face_separation[f]) << "face " << f;
@@ -298,13 +298,13 @@ void check_prism_ring(SheetLevel level) {
   EXPECT_TRUE(by_curves[Z.curves].unmatched.empty());
 }
 
-TEST(SheetTypes, Type1PrismRingMeshLevel) { check_prism_ring(SheetLevel::Mesh); }
-TEST(SheetTypes, Type1PrismRingComplexLevel) { check_prism_ring(SheetLevel::Complex); }
+TEST(SheetTypes, Type1PrismRingMeshLevel) { check_prism_ring(Level::Mesh); }
+TEST(SheetTypes, Type1PrismRingLevel) { check_prism_ring(Level::Complex); }
 TEST(SheetTypes, Type1PrismRingRenumbered) {
   const Mesh m = prism_ring_mesh();
   for (uint32_t seed : {1u, 2u, 3u}) {
-    expect_same_after_renumbering(m, SheetLevel::Mesh, seed);
-    expect_same_after_renumbering(m, SheetLevel::Complex, seed);
+    expect_same_after_renumbering(m, Level::Mesh, seed);
+    expect_same_after_renumbering(m, Level::Complex, seed);
   }
 }
 
@@ -364,7 +364,7 @@ TEST(SheetTypes, Type2TwistedRingMeshLevel) {
   ASSERT_EQ(m.num_cells(), 6u);
   ASSERT_EQ(m.num_hex_cells(), 6u);
   ASSERT_EQ(m.num_vertices(), 18u);
-  const Analysis a = run(m, SheetLevel::Mesh);
+  const Analysis a = run(m, Level::Mesh);
   auto w = [](int k, int y, int z) { return 6 * k + 2 * y + z; };
   auto cell = [](int c, int k) { return 2 * k + c; };
   std::vector<Edge> y_edges, z_edges;
@@ -430,7 +430,7 @@ TEST(SheetTypes, Type2TwistedRingMeshLevel) {
 
 TEST(SheetTypes, Type2TwistedRingRenumbered) {
   const Mesh m = twisted_2x1_ring(3);
-  for (uint32_t seed : {4u, 5u, 6u}) expect_same_after_renumbering(m, SheetLevel::Mesh, seed);
+  for (uint32_t seed : {4u, 5u, 6u}) expect_same_after_renumbering(m, Level::Mesh, seed);
 }
 
 // 3. Type 3: cross-section 1 × 1, n = 5 sections, turned by 90° at the seam. Section k has
@@ -494,7 +494,7 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
   for (int t = 0; t + 1 < 4 * n; ++t)
     EXPECT_LT(edge_id(m, v(t / 4, t % 4), v(t / 4, t % 4 + 1)),
               edge_id(m, v((t + 1) / 4, (t + 1) % 4), v((t + 1) / 4, (t + 1) % 4 + 1)));
-  const Analysis a = run(m, SheetLevel::Mesh);
+  const Analysis a = run(m, Level::Mesh);
   ASSERT_EQ(a.sheets.size(), static_cast<size_t>(n + 1));
   EXPECT_EQ(a.sheets.count(SheetType::Perfect), static_cast<size_t>(n));
   EXPECT_EQ(a.sheets.count(SheetType::Type3), 1u);
@@ -560,7 +560,7 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
 
 TEST(SheetTypes, Type3TwistedRingRenumbered) {
   const Mesh m = twisted_1x1_ring(5);
-  for (uint32_t seed : {7u, 8u, 9u}) expect_same_after_renumbering(m, SheetLevel::Mesh, seed);
+  for (uint32_t seed : {7u, 8u, 9u}) expect_same_after_renumbering(m, Level::Mesh, seed);
 }
 
 // Complex level of both twisted rings: the only singular edges are the valence-1 longitudinal
@@ -571,17 +571,17 @@ TEST(SheetTypes, Type3TwistedRingRenumbered) {
 // y = 1, touch an interior face, so they are not complex edges, no vertex is a corner, and the
 // curves are the closed chains of corner-longitudinal edges (the 2 × 1 ring: (0,0) -> (2,1) ->
 // (0,0) and (0,1) -> (2,0) -> (0,1), 2 curves; the 1 × 1 ring: all four corners in one chain). The
-// component is not cube-like. Whether it is a sheet unit at all is left open by SPEC §3 ("hex
+// component is not cube-like. Whether it is a sheet block at all is left open by SPEC §3 ("hex
 // components"); either way no curve has an end, so no sheet of this level can be imperfect: the
 // twist is invisible to the complex-level sheets of these meshes, which is why types 2 and 3 are
 // derived at the mesh level above.
-TEST(SheetTypes, TwistedRingsComplexLevel) {
+TEST(SheetTypes, TwistedRingsLevel) {
   struct Case {
     Mesh mesh;
     size_t curves;
   };
   for (const Case& c : {Case{twisted_2x1_ring(3), 2}, Case{twisted_1x1_ring(5), 1}}) {
-    const Analysis a = run(c.mesh, SheetLevel::Complex);
+    const Analysis a = run(c.mesh, Level::Complex);
     ASSERT_EQ(a.complex.num_components(), 1u);
     // A solid torus: its boundary surface has Euler characteristic 0, so it is ring-like.
     EXPECT_EQ(a.complex.component_kind[0], ComponentKind::Ring);

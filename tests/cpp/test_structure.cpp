@@ -39,7 +39,7 @@ TEST(Structure, Grid) {
   for (const SheetClass& k : a.sheets.classes) EXPECT_EQ(k.type, SheetType::Perfect);
   // Mesh level: one sheet per layer of cells, 3 + 4 + 5.
   AnalysisOptions mesh_level;
-  mesh_level.sheet_level = SheetLevel::Mesh;
+  mesh_level.sheet_level = Level::Mesh;
   const Analysis b = analyze(m, mesh_level);
   EXPECT_EQ(b.sheets.size(), 12u);
   EXPECT_EQ(b.sheets.count(SheetType::Perfect), 12u);
@@ -117,12 +117,9 @@ TEST(Structure, SectorValence5) { check_sector(5); }
 // compare the partitions (mapped back) and every order-independent count.
 void check_renumbering(const Mesh& m, uint32_t seed) {
   std::mt19937 rng(seed);
-  std::vector<int32_t> vperm(m.num_vertices()), cperm(m.num_cells());
-  std::iota(vperm.begin(), vperm.end(), 0);
-  std::iota(cperm.begin(), cperm.end(), 0);
-  std::shuffle(vperm.begin(), vperm.end(), rng);
-  std::shuffle(cperm.begin(), cperm.end(), rng);
-  const Mesh r = build_mesh(renumbered(m, vperm, cperm));
+  const test::Renumbering rn = test::random_renumbering(m, rng);
+  const Mesh& r = rn.mesh;
+  const std::vector<int32_t>& cperm = rn.cell;
   const Analysis a = run(m), b = run(r);
   const Stats sa = compute_stats(m, a), sb = compute_stats(r, b);
   EXPECT_EQ(sa.singular_edges, sb.singular_edges);
@@ -202,7 +199,7 @@ TEST_P(RealMesh, Invariants) {
   for (const Subsheets& x : a.subsheets)
     for (const SheetClass& k : x.classes) EXPECT_FALSE(k.type3);
   for (size_t s = 0; s < a.sheets.size(); ++s) {
-    EXPECT_FALSE(a.sheets.sheet_units[s].empty());
+    EXPECT_FALSE(a.sheets.sheet_blocks[s].empty());
     const bool perfect = a.sheets.classes[s].type == SheetType::Perfect;
     EXPECT_EQ(perfect, a.sheets.classes[s].shared_vertices.empty());
     if (perfect) EXPECT_TRUE(a.sheets.classes[s].unmatched_vertices.empty());

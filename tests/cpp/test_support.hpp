@@ -2,7 +2,11 @@
 // Helpers shared by the core tests: where the real data is, and building meshes from text.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <numeric>
+#include <random>
+#include <vector>
 #include <string>
 
 #include "hbc/io.hpp"
@@ -22,5 +26,21 @@ inline std::string data_path(const std::string& rel) { return data_dir() + "/" +
   } while (0)
 
 inline Mesh load_data(const std::string& rel) { return load_mesh(data_path(rel)); }
+
+// `mesh` renumbered by random permutations drawn from rng (vertices first, then cells): vertex v
+// becomes vert[v], cell c becomes cell[c].
+struct Renumbering {
+  std::vector<int32_t> vert, cell;
+  Mesh mesh;
+};
+inline Renumbering random_renumbering(const Mesh& m, std::mt19937& rng) {
+  Renumbering out{std::vector<int32_t>(m.num_vertices()), std::vector<int32_t>(m.num_cells()), {}};
+  std::iota(out.vert.begin(), out.vert.end(), 0);
+  std::iota(out.cell.begin(), out.cell.end(), 0);
+  std::shuffle(out.vert.begin(), out.vert.end(), rng);
+  std::shuffle(out.cell.begin(), out.cell.end(), rng);
+  out.mesh = build_mesh(renumbered(m, out.vert, out.cell));
+  return out;
+}
 
 }  // namespace hbc::test

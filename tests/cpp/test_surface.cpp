@@ -12,8 +12,9 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
-#include "hbc/structure_surfaces.hpp"
+#include "hbc/face_selection.hpp"
 #include "hbc/surface.hpp"
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -162,11 +163,7 @@ TEST(SurfaceCli, ExportsTheBoundary) {
   ASSERT_TRUE(fs::exists(HBC_CLI)) << HBC_CLI;
   const fs::path dir = temp_dir();
   write_mesh(build_mesh(generate_grid(2, 3, 4)), (dir / "g.mesh").string());
-  auto run = [&](const std::string& args) {
-    const std::string cmd = std::string("'") + HBC_CLI + "' " + args + " >/dev/null 2>&1";
-    const int raw = std::system(cmd.c_str());
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  };
+  auto run = [](const std::string& args) { return test::run_cli(args).status; };
   const std::string in = "'" + (dir / "g.mesh").string() + "'";
   ASSERT_EQ(run("export-surface " + in + " -o '" + (dir / "g.ply").string() + "' --what boundary"), 0);
   const SurfaceMesh r = read_back(dir / "g.ply", true);
@@ -177,7 +174,7 @@ TEST(SurfaceCli, ExportsTheBoundary) {
   const auto hex = palette_color(static_cast<int>(CellType::Hex));
   for (auto fh : r.faces()) EXPECT_EQ(r.color(fh), SurfaceMesh::Color(hex[0], hex[1], hex[2]));
 
-  EXPECT_EQ(run("export-surface " + in + " -o '" + (dir / "x.off").string() + "' --what volumes"), 1);
+  EXPECT_EQ(run("export-surface " + in + " -o '" + (dir / "x.off").string() + "' --what volumes"), 2);  // not a --what
   EXPECT_EQ(run("export-surface " + in + " -o '" + (dir / "x.stl").string() + "'"), 1);
   EXPECT_EQ(run("export-surface " + in), 1);
   EXPECT_EQ(run("export-surface '" + (dir / "missing.mesh").string() + "' -o '" + (dir / "x.off").string() + "'"), 2);

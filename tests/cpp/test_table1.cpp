@@ -65,11 +65,11 @@ TEST(Table1, TeapotSubsheets) {
   ASSERT_EQ(a.subsheets.size(), 2u);
   std::vector<std::pair<int32_t, size_t>> blocks_to_subsheets;
   for (const Subsheets& x : a.subsheets)
-    blocks_to_subsheets.push_back({a.sheets.sheet_units.count(static_cast<size_t>(x.sheet)), x.size()});
+    blocks_to_subsheets.push_back({a.sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size()});
   std::sort(blocks_to_subsheets.begin(), blocks_to_subsheets.end());
   EXPECT_EQ(blocks_to_subsheets[0], std::make_pair(int32_t{224}, size_t{3}));
   EXPECT_EQ(blocks_to_subsheets[1], std::make_pair(int32_t{352}, size_t{6}));
-  EXPECT_EQ(a.sheets.sheet_units.count(static_cast<size_t>(a.largest_self_intersecting)), 352);
+  EXPECT_EQ(a.sheets.sheet_blocks.count(static_cast<size_t>(a.largest_self_intersecting)), 352);
 }
 
 }  // namespace

@@ -17,7 +17,9 @@
 #include "hbc/render_geometry.hpp"
 #include "hbc/sheets.hpp"
 #include "hbc/singularity_graph.hpp"
+#include "hbc/region.hpp"
 #include "hbc/vsg_wireframe.hpp"
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -122,7 +124,7 @@ TEST(VsgWireframe, PlainGridHidesTheBoxEdgesAtTheCorners) {
   for (auto cx : {complex_from_mesh(m), complex_from_base(m, base_complex(m, singularity_graph(m)))}) {
     const VsgWireframe w = vsg_wireframe(cx);
     EXPECT_EQ(w.vsg_chains, 12);
-    EXPECT_EQ(w.vsg_edges, cx.level == ComplexLevel::Mesh ? 48 : 12);
+    EXPECT_EQ(w.vsg_edges, cx.level == Level::Mesh ? 48 : 12);
     EXPECT_EQ(w.wireframe_edges(), 12);
     EXPECT_EQ(w.singular_vertices.size(), 8u);
     for (size_t i = 0; i < w.size(); ++i) {
@@ -151,8 +153,8 @@ TEST(VsgWireframe, MatchesTheAuthorsOnTest2AtBothLevels) {
   };
   const Expect mesh{13, 37, 44, 72, 18, 22}, complex{13, 37, 38, 66, 10, 22};
   for (const CellComplex& cx : {complex_from_mesh(m), complex_from_base(m, bc)}) {
-    SCOPED_TRACE(complex_level_name(cx.level));
-    const Expect& x = cx.level == ComplexLevel::Mesh ? mesh : complex;
+    SCOPED_TRACE(level_name(cx.level));
+    const Expect& x = cx.level == Level::Mesh ? mesh : complex;
     const VsgWireframe w = vsg_wireframe(cx);
     EXPECT_EQ(w.vsg_chains, x.vsg);
     EXPECT_EQ(w.vsg_mesh_edges, x.vsg_edges);
@@ -172,7 +174,7 @@ TEST(VsgWireframe, MatchesTheAuthorsOnTest2AtBothLevels) {
 TEST(VsgWireframe, SmallGridTurnsOnlyAtCorners) {
   const Mesh m = grid_mesh(2);
   for (auto cx : {complex_from_mesh(m), complex_from_base(m, base_complex(m, singularity_graph(m)))}) {
-    SCOPED_TRACE(complex_level_name(cx.level));
+    SCOPED_TRACE(level_name(cx.level));
     const VsgWireframe w = vsg_wireframe(cx);
     EXPECT_EQ(w.singular_vertices.size(), 8u);
     EXPECT_EQ(w.wireframe_edges(), 12);
@@ -191,12 +193,8 @@ TEST(VsgWireframe, DeterministicUnderRenumbering) {
   EXPECT_EQ(a.style.color, again.style.color);
   EXPECT_EQ(a.style.point_opacity, again.style.point_opacity);
   std::mt19937 rng(7);
-  std::vector<int32_t> vperm(m.num_vertices()), cperm(m.num_cells());
-  std::iota(vperm.begin(), vperm.end(), 0);
-  std::iota(cperm.begin(), cperm.end(), 0);
-  std::shuffle(vperm.begin(), vperm.end(), rng);
-  std::shuffle(cperm.begin(), cperm.end(), rng);
-  const Mesh r = build_mesh(renumbered(m, vperm, cperm));
+  const test::Renumbering rn = test::random_renumbering(m, rng);
+  const Mesh& r = rn.mesh;
   for (bool coarse : {false, true}) {
     auto run = [&](const Mesh& x) {
       return coarse ? vsg_wireframe(complex_from_base(x, base_complex(x, singularity_graph(x))))
@@ -255,7 +253,7 @@ void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& 
   for (auto [a, b] : m.edge_verts) mesh_edges.insert({a, b});
   ASSERT_EQ(w.style.point_opacity.size(), w.polylines.items.size());
   // The oracle holds for the whole fine mesh (a region has its own irregular edges and graph).
-  const bool whole_mesh = cx.level == ComplexLevel::Mesh && cx.num_cells() == m.num_cells();
+  const bool whole_mesh = cx.level == Level::Mesh && cx.num_cells() == m.num_cells();
   const std::vector<int32_t> hops = whole_mesh ? hop_distances(m) : std::vector<int32_t>{};
   for (size_t i = 0; i < w.size(); ++i) {
     const auto poly = w.polylines[i];
@@ -330,7 +328,7 @@ TEST(VsgWireframe, SheetRegions) {
   EXPECT_EQ(a.polylines.items, b.polylines.items);
   EXPECT_EQ(a.shown, b.shown);
   // Every sheet with its adjacent non-hex cells, at both levels.
-  const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, SheetLevel::Complex));
+  const Sheets sheets = extract_sheets(m, sheet_domain(m, bc, Level::Complex));
   ASSERT_EQ(sheets.size(), 23u);
   for (size_t k = 0; k < sheets.size(); ++k) {
     std::vector<int32_t> cells;
@@ -356,7 +354,7 @@ TEST(VsgWireframe, SheetWireframesMatchTheAuthors) {
       {14, 55, 14}, {15, 49, 8},  {15, 71, 13}, {16, 49, 12}, {17, 71, 22}, {18, 57, 13},  {18, 90, 33},
       {18, 92, 40}, {19, 65, 50}, {21, 71, 17}, {26, 199, 136}, {55, 204, 170}};
   for (size_t k = 0; k < a.sheets.size(); ++k) {
-    const VsgWireframe w = region_wireframe(m, a, ComplexLevel::Complex, {}, static_cast<int32_t>(k));
+    const VsgWireframe w = region_wireframe(m, a, Level::Complex, {}, static_cast<int32_t>(k));
     ours.push_back({w.vsg_chains, w.wireframe_edges(), w.wireframe_edges_simplified()});
   }
   std::sort(ours.begin(), ours.end());
@@ -383,36 +381,27 @@ TEST(VsgWireframe, ColoursSeparateAdjacentClasses) {
   EXPECT_LE(conflicts, adjacent / 20) << conflicts << " of " << adjacent;
 }
 
-std::string run_cli(const std::string& args, int* status) {
-  std::string out;
-  FILE* p = popen((std::string(HBC_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!p) return out;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  *status = pclose(p);
-  return out;
-}
-
 TEST(VsgWireframe, CommandLine) {
   HBC_REQUIRE_DATA("hybrid-base-complex/test_2.HYBRID");
   const std::string file = test::data_path("hybrid-base-complex/test_2.HYBRID");
-  int status = -1;
-  std::string out = run_cli("wireframe " + file + " --json", &status);
-  EXPECT_EQ(status, 0) << out;
-  EXPECT_NE(out.find("\"wireframe_edges\": 38,"), std::string::npos) << out.substr(0, 600);
-  EXPECT_NE(out.find("\"wireframe_edges_simplified\": 10,"), std::string::npos);
-  EXPECT_NE(out.find("\"level\": \"complex\""), std::string::npos);
-  out = run_cli("wireframe " + file + " --obj --level mesh", &status);
-  EXPECT_EQ(status, 0) << out;
+  test::CliRun r = test::run_cli("wireframe " + file + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j["wireframe_edges"], 38);
+  EXPECT_EQ(j["wireframe_edges_simplified"], 10);
+  EXPECT_EQ(j["level"], "complex");
+  EXPECT_EQ(j["edges"].size(), 38u);
+  r = test::run_cli("wireframe " + file + " --obj --level mesh");
+  EXPECT_EQ(r.status, 0) << r.err;
   size_t lines = 0;
-  for (size_t k = out.find("\nl "); k != std::string::npos; k = out.find("\nl ", k + 1)) ++lines;
+  for (size_t k = r.out.find("\nl "); k != std::string::npos; k = r.out.find("\nl ", k + 1)) ++lines;
   EXPECT_EQ(lines, 18u);  // the shown complete chains at the mesh level (the authors: 18 simplified)
-  out = run_cli("wireframe " + file + " --level coarse", &status);
-  EXPECT_NE(status, 0);
-  out = run_cli("wireframe " + file + " --sheet 9999", &status);
-  EXPECT_NE(status, 0);
-  EXPECT_NE(out.find("sheets"), std::string::npos) << out;
+  r = test::run_cli("wireframe " + file + " --level coarse");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--level"), std::string::npos) << r.err;
+  r = test::run_cli("wireframe " + file + " --sheet 9999");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("sheets"), std::string::npos) << r.err;
 }
 
 }  // namespace

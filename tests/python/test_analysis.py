@@ -20,7 +20,7 @@ TIMING_KEYS = {"load", "singularity_graph", "base_complex", "sheets", "subsheets
 
 
 @pytest.fixture(scope="module")
-def analysed(shared_data_dir):
+def analyzed(shared_data_dir):
     """name -> (mesh, analysis) with the defaults, computed once for the module."""
     out = {}
     for name in MESHES:
@@ -77,8 +77,8 @@ def assert_chains_of_edges(m, offsets, verts, closed=None):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_stats_match_cli(analysed, shared_data_dir, hbc_cli, name):
-    _, a = analysed[name]
+def test_stats_match_cli(analyzed, shared_data_dir, hbc_cli, name):
+    _, a = analyzed[name]
     assert_same_stats(a.stats, cli_analyze(hbc_cli, shared_data_dir / name))
     assert a.stats["timings"]["load"] > 0  # hbc.load timed the load
 
@@ -105,8 +105,8 @@ def test_mesh_level_matches_cli(shared_data_dir, hbc_cli):
     assert_same_stats(a.stats, cli_analyze(hbc_cli, path, "--level", "mesh", "--rho", "0.5"))
 
 
-def test_bad_options(analysed):
-    m, _ = analysed[MESHES[3]]
+def test_bad_options(analyzed):
+    m, _ = analyzed[MESHES[3]]
     with pytest.raises(ValueError, match="level"):
         m.analyze(level="fine")
     with pytest.raises(ValueError, match="rho"):
@@ -118,8 +118,8 @@ def test_bad_options(analysed):
     (TABLE1 + "twistcube_s.mesh", 1301, 1157, 20, 16, 2, 1),
     (TABLE1 + "cube_twist-comp.obj.HYBRID", 221, 203, 19, 8, 0, 0),
 ])
-def test_table1(analysed, name, comps, hex_comps, sheets, t1, t2, t3):
-    _, a = analysed[name]
+def test_table1(analyzed, name, comps, hex_comps, sheets, t1, t2, t3):
+    _, a = analyzed[name]
     s = a.stats
     assert (s["components"], s["hex_components"]) == (comps, hex_comps)
     assert (s["sheets"], s["sheets_type1"], s["sheets_type2"], s["sheets_type3"]) == (sheets, t1, t2, t3)
@@ -130,18 +130,18 @@ def test_table1(analysed, name, comps, hex_comps, sheets, t1, t2, t3):
     assert np.bincount(a.sheet_type, minlength=4)[1:].tolist() == [t1, t2, t3]
 
 
-def test_table1_subsheets(analysed):
-    _, a = analysed[TABLE1 + "twistcube_s.mesh"]
+def test_table1_subsheets(analyzed):
+    _, a = analyzed[TABLE1 + "twistcube_s.mesh"]
     big = a.largest_self_intersecting
     assert big >= 0
     assert a.subsheets(big).count == 9 == a.stats["subsheets_of_largest_self_intersecting"]
-    _, a = analysed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
+    _, a = analyzed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
     assert a.largest_self_intersecting == -1 and len(a.self_intersecting_sheets) == 0
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_graph_arrays(analysed, name):
-    m, a = analysed[name]
+def test_graph_arrays(analyzed, name):
+    m, a = analyzed[name]
     g, s = a.graph, a.stats
     assert g.edge_class.dtype == np.uint8 and g.edge_class.shape == (m.num_edges,)
     assert not g.edge_class.flags.writeable
@@ -152,14 +152,14 @@ def test_graph_arrays(analysed, name):
     assert np.all(g.edge_class[g.pseudo_singular_edges] == 2)
     ns = g.num_singularities
     assert ns == s["singularities"]
-    check_csr(g.chain_offsets, g.chain_vertices, ns)
-    check_csr(g.chain_edge_offsets, g.chain_edges, ns)
+    check_csr(g.chain_vertex_offsets, g.chain_vertex_items, ns)
+    check_csr(g.chain_edge_offsets, g.chain_edge_items, ns)
     assert g.chain_valence.dtype == np.int32 and g.chain_valence.shape == (ns,)
     for arr in (g.chain_boundary, g.chain_closed):
         assert arr.dtype == np.bool_ and arr.shape == (ns,)
-    assert np.all(g.edge_class[g.chain_edges] == 1)
-    assert np.array_equal(np.sort(g.chain_edges), np.flatnonzero(g.edge_class == 1))
-    assert_chains_of_edges(m, g.chain_offsets, g.chain_vertices, g.chain_closed)
+    assert np.all(g.edge_class[g.chain_edge_items] == 1)
+    assert np.array_equal(np.sort(g.chain_edge_items), np.flatnonzero(g.edge_class == 1))
+    assert_chains_of_edges(m, g.chain_vertex_offsets, g.chain_vertex_items, g.chain_closed)
     assert len(g.singular_vertices) == s["singular_vertices"]
     for arr in (g.singular_vertices, g.pseudo_singular_vertices):
         assert arr.dtype == np.int32 and np.all(np.diff(arr) > 0)
@@ -169,21 +169,21 @@ def test_graph_arrays(analysed, name):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_complex_arrays(analysed, name):
-    m, a = analysed[name]
+def test_complex_arrays(analyzed, name):
+    m, a = analyzed[name]
     c, s = a.complex, a.stats
     ncomp = s["components"]
     assert c.cell_component.shape == (m.num_cells,) and c.cell_component.dtype == np.int32
     assert c.component_kind.dtype == np.uint8 and c.component_kind.shape == (ncomp,)
-    check_csr(c.component_offsets, c.component_cells, ncomp)
+    check_csr(c.component_cell_offsets, c.component_cell_items, ncomp)
     # Every cell in exactly one component, the one cell_component names.
-    owner = np.repeat(np.arange(ncomp), np.diff(c.component_offsets))
-    assert np.array_equal(np.sort(c.component_cells), np.arange(m.num_cells))
-    assert np.array_equal(c.cell_component[c.component_cells], owner)
+    owner = np.repeat(np.arange(ncomp), np.diff(c.component_cell_offsets))
+    assert np.array_equal(np.sort(c.component_cell_items), np.arange(m.num_cells))
+    assert np.array_equal(c.cell_component[c.component_cell_items], owner)
     # Non-hex components are single non-hex cells.
     nonhex = c.component_kind == 3
-    assert np.all(np.diff(c.component_offsets)[nonhex] == 1)
-    assert np.all(m.cell_types[c.component_cells[c.component_offsets[:-1][nonhex]]] != 0)
+    assert np.all(np.diff(c.component_cell_offsets)[nonhex] == 1)
+    assert np.all(m.cell_types[c.component_cell_items[c.component_cell_offsets[:-1][nonhex]]] != 0)
     check_csr(c.component_adjacency_offsets, c.component_adjacency_items, ncomp)
     assert c.face_separation.dtype == np.bool_ and c.face_separation.shape == (m.num_faces,)
     assert c.face_patch.shape == (m.num_faces,)
@@ -195,18 +195,18 @@ def test_complex_arrays(analysed, name):
     across = c.cell_component[fc[inner, 0]] != c.cell_component[fc[inner, 1]]
     assert np.all(c.face_separation[inner][across])
     assert c.num_patches == s["patches"] and c.num_curves == s["curves"]
-    check_csr(c.patch_offsets, c.patch_faces, c.num_patches)
-    check_csr(c.curve_offsets, c.curve_vertices, c.num_curves)
-    check_csr(c.curve_edge_offsets, c.curve_edges, c.num_curves)
+    check_csr(c.patch_face_offsets, c.patch_face_items, c.num_patches)
+    check_csr(c.curve_vertex_offsets, c.curve_vertex_items, c.num_curves)
+    check_csr(c.curve_edge_offsets, c.curve_edge_items, c.num_curves)
     assert c.curve_closed.dtype == np.bool_ and c.curve_closed.shape == (c.num_curves,)
-    assert_chains_of_edges(m, c.curve_offsets, c.curve_vertices, c.curve_closed)
+    assert_chains_of_edges(m, c.curve_vertex_offsets, c.curve_vertex_items, c.curve_closed)
     assert len(c.corners) == s["corners"] and c.corners.dtype == np.int32
     assert len(c.self_adjacent_faces) == s["self_adjacent_faces"]
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_sheet_arrays(analysed, name):
-    m, a = analysed[name]
+def test_sheet_arrays(analyzed, name):
+    m, a = analyzed[name]
     ns = a.num_sheets
     assert ns == a.stats["sheets"]
     assert a.sheet_type.dtype == np.uint8 and a.sheet_type.shape == (ns,)
@@ -237,8 +237,8 @@ def test_sheet_arrays(analysed, name):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_subsheets(analysed, name):
-    m, a = analysed[name]
+def test_subsheets(analyzed, name):
+    m, a = analyzed[name]
     for s in range(a.num_sheets):
         if s not in a.self_intersecting_sheets:
             with pytest.raises(ValueError, match="not self-intersecting"):
@@ -263,9 +263,9 @@ def test_subsheets(analysed, name):
 
 def check_wireframe(m, w, counts=None):
     n = w.count
-    check_csr(w.polyline_offsets, w.polyline_vertices, n)
+    check_csr(w.polyline_offsets, w.polyline_items, n)
     assert np.all(np.diff(w.polyline_offsets) >= 2)
-    assert w.point_opacity.dtype == np.float32 and w.point_opacity.shape == w.polyline_vertices.shape
+    assert w.point_opacity.dtype == np.float32 and w.point_opacity.shape == w.polyline_items.shape
     assert np.all((w.point_opacity >= 0.15 - 1e-6) & (w.point_opacity <= 1.0))
     for arr, dtype in ((w.kind, np.uint8), (w.non_important, np.uint8), (w.stop, np.uint8),
                        (w.shown, np.bool_), (w.reactivated, np.bool_), (w.color, np.int32),
@@ -279,11 +279,11 @@ def check_wireframe(m, w, counts=None):
     assert not np.any(w.reactivated & (w.non_important == 0))
     assert np.all(w.color >= 0)
     assert np.all(w.color_class[w.color_class] == w.color_class), "a class is named by one of its edges"
-    assert_chains_of_edges(m, w.polyline_offsets, w.polyline_vertices)
+    assert_chains_of_edges(m, w.polyline_offsets, w.polyline_items)
     c = w.counts
     assert c["wireframe_edges"] == n
-    check_csr(w.simplified_offsets, w.simplified_vertices, c["wireframe_edges_simplified"])
-    assert_chains_of_edges(m, w.simplified_offsets, w.simplified_vertices)
+    check_csr(w.simplified_offsets, w.simplified_items, c["wireframe_edges_simplified"])
+    assert_chains_of_edges(m, w.simplified_offsets, w.simplified_items)
     # Each VSG chain holds an irregular edge; the simplification covers no more than the whole.
     assert c["vsg_chains"] <= c["vsg_edges"]
     assert c["wireframe_mesh_edges_simplified"] <= c["wireframe_mesh_edges"]
@@ -292,17 +292,17 @@ def check_wireframe(m, w, counts=None):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_wireframe_whole(analysed, name):
-    m, a = analysed[name]
+def test_wireframe_whole(analyzed, name):
+    m, a = analyzed[name]
     s = a.stats
     w = a.wireframe()
     check_wireframe(m, w, {k: s[k] for k in ("vsg_edges", "wireframe_edges", "wireframe_edges_simplified")})
-    assert not w.polyline_vertices.flags.writeable
+    assert not w.polyline_items.flags.writeable
 
 
 @pytest.mark.parametrize("name", [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh"])
-def test_wireframe_regions(analysed, name):
-    m, a = analysed[name]
+def test_wireframe_regions(analyzed, name):
+    m, a = analyzed[name]
     face_of_point = np.repeat(np.arange(m.num_faces), np.diff(m.face_offsets))
 
     def region_vertices(cells):
@@ -319,7 +319,7 @@ def test_wireframe_regions(analysed, name):
         # At the complex level the region is the components of those cells.
         comps = np.unique(a.complex.cell_component[cells])
         region = np.flatnonzero(np.isin(a.complex.cell_component, comps))
-        assert np.all(np.isin(w.polyline_vertices, region_vertices(region)))
+        assert np.all(np.isin(w.polyline_items, region_vertices(region)))
     big = a.largest_self_intersecting
     sub = a.subsheets(big)
     for k in range(sub.count):
@@ -337,8 +337,8 @@ def test_wireframe_regions(analysed, name):
 def test_arrays_outlive_their_objects(shared_data_dir):
     m = hbc.load(shared_data_dir / TABLE1 / "cube_twist-comp.obj.HYBRID")
     a = m.analyze()
-    kept = {"edge_class": a.graph.edge_class, "component_cells": a.complex.component_cells,
-            "sheet_cell_items": a.sheet_cell_items, "polyline_vertices": a.wireframe().polyline_vertices,
+    kept = {"edge_class": a.graph.edge_class, "component_cell_items": a.complex.component_cell_items,
+            "sheet_cell_items": a.sheet_cell_items, "polyline_items": a.wireframe().polyline_items,
             "region": a.wireframe(sheet=0).point_opacity}
     copies = {k: v.copy() for k, v in kept.items()}
     assert a.mesh is m

@@ -1,5 +1,5 @@
 """hbc.block_soup() and hbc.polylines(): polygon soups of blocks (cells, components, sheets,
-subsheets, one sheet's blocks, non-hex cells, the boundary) with outward loops, one vertex copy
+subsheets, one sheet's blocks, non-hex cells, the boundary, the hex region) with outward loops, one vertex copy
 per owner, shrinking toward each owner's centroid; and polyline point positions."""
 
 import subprocess
@@ -15,7 +15,7 @@ MESHES = [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh", TABLE1 + "cube_t
 
 
 @pytest.fixture(scope="module")
-def analysed(shared_data_dir):
+def analyzed(shared_data_dir):
     out = {}
     for name in MESHES:
         m = hbc.load(shared_data_dir / name)
@@ -74,8 +74,8 @@ def check_soup(m, d, owners):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_soups_valid_and_shrink(analysed, name):
-    m, a = analysed[name]
+def test_soups_valid_and_shrink(analyzed, name):
+    m, a = analyzed[name]
     pts = m.points64
     for what, sheet, owners in kinds(a):
         d0 = hbc.block_soup(m, a, what, sheet=sheet)
@@ -102,8 +102,8 @@ def test_soups_valid_and_shrink(analysed, name):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_soup_face_counts(analysed, name):
-    m, a = analysed[name]
+def test_soup_face_counts(analyzed, name):
+    m, a = analyzed[name]
     nfaces = np.diff(m.cell_offsets)
     hexes = m.cell_types == 0
     cells = hbc.block_soup(m, a, "cells")
@@ -117,14 +117,15 @@ def test_soup_face_counts(analysed, name):
     assert np.array_equal(np.sort(boundary["face_source"]), bf)
     order = np.argsort(boundary["face_source"])
     assert np.array_equal(boundary["face_owner"][order], m.cell_types[m.face_cells[bf, 0]])
-    # The hex region's surface: every face with a hex on exactly one side (the boundary counts as
-    # not hex), seen from that hex, owner 0.
-    hex_soup = hbc.block_soup(m, a, "hex")
-    is_hex = np.append(hexes, False)  # index -1 (no cell) is not a hex
-    fc = m.face_cells
-    expected = np.flatnonzero(is_hex[fc[:, 0]] != is_hex[fc[:, 1]])
-    assert np.array_equal(np.sort(hex_soup["face_source"]), expected)
-    assert np.all(hex_soup["face_owner"] == 0)
+    # The hex region: one block (owner 0), the faces with a hex cell on exactly one side (a
+    # boundary face of a hex cell counts: its other side is no cell), each seen from its hex cell.
+    region = hbc.block_soup(m, a, "hex")
+    hex_side = np.append(hexes, False)[m.face_cells]  # face_cells -1 picks the appended False
+    expected = np.flatnonzero(hex_side[:, 0] != hex_side[:, 1])
+    assert np.array_equal(np.sort(region["face_source"]), expected)
+    assert np.all(region["face_owner"] == 0)
+    if hexes.all():
+        assert np.array_equal(expected, bf)  # an all-hex mesh: the region's surface is the boundary
     # Components: separation faces, once per side; interior ones twice.
     comps = hbc.block_soup(m, a, "components")
     sep = a.complex.face_separation
@@ -186,8 +187,8 @@ def inverted_cells(m, a):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_cube_component_blocks_closed_and_outward(analysed, name):
-    m, a = analysed[name]
+def test_cube_component_blocks_closed_and_outward(analyzed, name):
+    m, a = analyzed[name]
     d = hbc.block_soup(m, a, "components")
     pos = d["positions"].astype(np.float64) - m.points64.mean(axis=0)
     sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
@@ -219,8 +220,8 @@ def test_cube_component_blocks_closed_and_outward(analysed, name):
     assert checked_orientation > 0
 
 
-def test_hex_cells_outward(analysed):
-    m, a = analysed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
+def test_hex_cells_outward(analyzed):
+    m, a = analyzed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
     d = hbc.block_soup(m, a, "cells")
     pos = d["positions"].astype(np.float64)
     sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
@@ -232,8 +233,8 @@ def test_hex_cells_outward(analysed):
         assert signed_volume(pos - centre, sizes[faces], loops) > 0
 
 
-def test_soup_errors(analysed):
-    m, a = analysed[TABLE1 + "twistcube_s.mesh"]
+def test_soup_errors(analyzed):
+    m, a = analyzed[TABLE1 + "twistcube_s.mesh"]
     with pytest.raises(ValueError, match="expected one of"):
         hbc.block_soup(m, a, "patches")
     for bad in (-0.1, 1.0, float("nan")):
@@ -246,7 +247,7 @@ def test_soup_errors(analysed):
     not_type3 = int(np.flatnonzero(a.sheet_type != 3)[0])
     with pytest.raises(ValueError, match="not self-intersecting"):
         hbc.block_soup(m, a, "subsheets", sheet=not_type3)
-    other, _ = analysed[TABLE1 + "test_2.HYBRID"]
+    other, _ = analyzed[TABLE1 + "test_2.HYBRID"]
     with pytest.raises(ValueError, match="another mesh"):
         hbc.block_soup(other, a, "cells")
     no_sheets = m.analyze(sheets=False, wireframe=False)
@@ -254,8 +255,8 @@ def test_soup_errors(analysed):
         hbc.block_soup(m, no_sheets, "sheets")
 
 
-def test_soup_arrays_are_owned(analysed):
-    m, a = analysed[TABLE1 + "test_2.HYBRID"]
+def test_soup_arrays_are_owned(analyzed):
+    m, a = analyzed[TABLE1 + "test_2.HYBRID"]
     d = hbc.block_soup(m, a, "cells", shrink=0.5)
     pos = d["positions"]
     assert not pos.flags.owndata and pos.base is not None  # the C++ vector, moved into a capsule
@@ -263,14 +264,14 @@ def test_soup_arrays_are_owned(analysed):
     assert np.isfinite(pos).all()
 
 
-def test_polylines(analysed):
-    m, a = analysed[TABLE1 + "teapot.hedra"]
+def test_polylines(analyzed):
+    m, a = analyzed[TABLE1 + "teapot.hedra"]
     c = a.complex
-    p = hbc.polylines(m, c.curve_offsets, c.curve_vertices)
-    assert p.dtype == np.float32 and p.shape == (len(c.curve_vertices), 3)
-    assert np.array_equal(p, m.points[c.curve_vertices])
+    p = hbc.polylines(m, c.curve_vertex_offsets, c.curve_vertex_items)
+    assert p.dtype == np.float32 and p.shape == (len(c.curve_vertex_items), 3)
+    assert np.array_equal(p, m.points[c.curve_vertex_items])
     w = a.wireframe()
-    assert np.array_equal(hbc.polylines(m, w.polyline_offsets, w.polyline_vertices), m.points[w.polyline_vertices])
+    assert np.array_equal(hbc.polylines(m, w.polyline_offsets, w.polyline_items), m.points[w.polyline_items])
     assert hbc.polylines(m, [0, 2, 3], [0, 1, 2]).shape == (3, 3)  # any integer sequence
     assert hbc.polylines(m, [0], []).shape == (0, 3)
     with pytest.raises(ValueError, match="offsets"):
@@ -281,10 +282,10 @@ def test_polylines(analysed):
         hbc.polylines(m, [0, 2], [0, m.num_vertices])
 
 
-def test_mesh_only_soups_need_no_analysis(analysed):
+def test_mesh_only_soups_need_no_analysis(analyzed):
     # The boundary, the cells, the non-hex cells and the hex region are the mesh's own: with no
     # analysis they are the same soups; anything of the analysis is refused by name.
-    m, a = analysed[TABLE1 + "twistcube_s.mesh"]
+    m, a = analyzed[TABLE1 + "twistcube_s.mesh"]
     for what in ("boundary", "cells", "non_hex", "hex"):
         with_a, without = hbc.block_soup(m, a, what), hbc.block_soup(m, None, what)
         for key in with_a:
@@ -294,10 +295,10 @@ def test_mesh_only_soups_need_no_analysis(analysed):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_soup_face_cell(analysed, name):
+def test_soup_face_cell(analyzed, name):
     """face_cell is a cell the face bounds, on the owner's side: the face's owner is that cell (cell
     kinds), its component (components, one sheet's blocks), or a sheet holding it (sheets)."""
-    m, a = analysed[name]
+    m, a = analyzed[name]
     comp = a.complex.cell_component
     fc = m.face_cells
     sheet_cells = rows(a.sheet_cell_offsets, a.sheet_cell_items)
@@ -330,8 +331,8 @@ def test_cell_centroids_grid(hbc_cli, tmp_path):
 
 
 @pytest.mark.parametrize("name", MESHES)
-def test_cell_centroids_mean_of_distinct_vertices(analysed, name):
-    m, _ = analysed[name]
+def test_cell_centroids_mean_of_distinct_vertices(analyzed, name):
+    m, _ = analyzed[name]
     c = hbc.cell_centroids(m)
     assert c.shape == (m.num_cells, 3)
     pts = m.points64
@@ -339,18 +340,6 @@ def test_cell_centroids_mean_of_distinct_vertices(analysed, name):
         faces = m.cell_faces[m.cell_offsets[cell]:m.cell_offsets[cell + 1]]
         verts = np.unique(np.concatenate([m.face_vertices[m.face_offsets[f]:m.face_offsets[f + 1]] for f in faces]))
         assert np.allclose(c[cell], pts[verts].mean(axis=0))
-
-
-def test_mesh_only_soups_without_analysis(analysed):
-    """'cells', 'non_hex' and 'boundary' read only the mesh: analysis=None gives the same soup; the
-    other kinds refuse None."""
-    m, a = analysed[MESHES[0]]
-    for what in ("cells", "non_hex", "boundary"):
-        with_a, without = hbc.block_soup(m, a, what), hbc.block_soup(m, None, what)
-        for k, v in with_a.items():
-            assert np.array_equal(v, without[k]), (what, k)
-    with pytest.raises(ValueError, match="needs an analysis"):
-        hbc.block_soup(m, None, "components")
 
 
 def test_kept_surface_soup_of_a_grid(hbc_cli, tmp_path):

@@ -16,9 +16,9 @@ namespace hbc {
 struct AnalysisOptions {
   bool sheets = true;     // sheets and their classification
   bool subsheets = true;  // decomposition of every self-intersecting sheet (needs sheets)
-  SheetLevel sheet_level = SheetLevel::Complex;
+  Level sheet_level = Level::Complex;
   bool wireframe = true;  // whole-mesh VSG wireframe
-  ComplexLevel wireframe_level = ComplexLevel::Complex;
+  Level wireframe_level = Level::Complex;
   WireframeOptions wireframe_options;
 };
 

@@ -17,15 +17,13 @@
 
 #include "hbc/base_complex.hpp"
 #include "hbc/csr.hpp"
+#include "hbc/level.hpp"
 #include "hbc/mesh.hpp"
 
 namespace hbc {
 
-enum class ComplexLevel : uint8_t { Mesh = 0, Complex = 1 };
-const char* complex_level_name(ComplexLevel level);
-
 struct CellComplex {
-  ComplexLevel level = ComplexLevel::Mesh;
+  Level level = Level::Mesh;
 
   // Vertices (nv).
   std::vector<int32_t> vert_mesh;         // nv: mesh vertex id

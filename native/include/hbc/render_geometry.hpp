@@ -4,8 +4,8 @@
 //  - block soups: the faces of a set of "blocks" (cells, components, sheets, ...), each block a
 //    separate piece with its own vertex copies so it can be shrunk toward its own centroid;
 //  - polyline point positions;
-//  - per-sheet / per-subsheet classification flattened to arrays;
-//  - the VSG wireframe of a sheet or subsheet region, computed on demand.
+//  - per-sheet / per-subsheet classification flattened to arrays.
+// The region of a sheet and its wireframe are part of the analysis (region.hpp).
 // Everything is a pure, deterministic function of its arguments.
 #include <cstdint>
 #include <span>
@@ -14,6 +14,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/csr.hpp"
+#include "hbc/face_selection.hpp"
 #include "hbc/mesh.hpp"
 
 namespace hbc {
@@ -41,21 +42,11 @@ bool soup_kind_needs_sheet(SoupKind kind);
 // Cells, NonHex and Boundary read only the mesh (any Analysis, even an empty one, will do).
 bool soup_kind_needs_analysis(SoupKind kind);
 
-// The faces to draw, one entry per (owner, face) in all four arrays; `cell` is the mesh cell the
-// face was taken from (on the owner's side: the face points out of it); `reversed` = 1 when the
-// face's stored loop must be walked backwards to point out of that cell.
-struct OwnedFaces {
-  std::vector<int32_t> owner;
-  std::vector<int32_t> face;
-  std::vector<int32_t> cell;
-  std::vector<uint8_t> reversed;
-};
-
 // Selects the faces of `kind`. `sheet` is required (a sheet id) for Subsheets, Sheet and
 // SheetNonHex and ignored otherwise. Throws std::invalid_argument when the analysis lacks the
 // stage the kind needs (sheets, subsheets), for a sheet id out of range, and for Subsheets of a
 // sheet that is not self-intersecting.
-OwnedFaces soup_faces(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1);
+FaceSelection soup_faces(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1);
 
 struct BlockSoup {
   // Points: each owner has its own copies of the mesh vertices its faces use (shared between
@@ -74,10 +65,10 @@ struct BlockSoup {
   size_t num_faces() const { return face_sizes.size(); }
 };
 
-// Builds the soup of `faces` (owners >= 0, faces in range). Every point p of an owner is moved to
+// Builds the soup of `faces` (ids >= 0 are the owners, faces in range). Every point p of an owner is moved to
 // c + (1 - shrink)(p - c), c being the mean of that owner's distinct mesh vertices; shrink must be
 // in [0, 1) (std::invalid_argument otherwise). Computed in double, stored as float.
-BlockSoup build_soup(const Mesh& mesh, const OwnedFaces& faces, double shrink = 0.0);
+BlockSoup build_soup(const Mesh& mesh, const FaceSelection& faces, double shrink = 0.0);
 
 // soup_faces then build_soup.
 BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1,
@@ -110,20 +101,8 @@ struct ClassArrays {
 };
 ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClass> classes);
 
-// Rows of sheet units (SheetDomain unit ids) as sorted, distinct base-complex component ids (at
-// the complex level a unit is a component; at the mesh level several hex cells share one).
-Csr<int32_t> units_as_components(const SheetDomain& domain, const Csr<int32_t>& units);
-
-// The mesh cells of a region, sorted: the whole mesh's cells when sheet < 0; else the cells of
-// that sheet (subsheet < 0) or of that subsheet of the sheet, plus the non-hex cells adjacent to
-// it (touching one of its curves). Throws std::invalid_argument for ids out of range or a
-// subsheet of a sheet without a decomposition.
-std::vector<int32_t> region_cells(const Mesh& mesh, const Analysis& analysis, int32_t sheet,
-                                  int32_t subsheet = -1);
-
-// The VSG wireframe of that region (whole mesh when sheet < 0) at `level`, as `hbc wireframe`
-// computes it for a sheet.
-VsgWireframe region_wireframe(const Mesh& mesh, const Analysis& analysis, ComplexLevel level,
-                              const WireframeOptions& options, int32_t sheet, int32_t subsheet = -1);
+// Rows of sheet blocks (SheetDomain block ids) as sorted, distinct base-complex component ids (at
+// the complex level a block is a component; at the mesh level several hex cells share one).
+Csr<int32_t> blocks_as_components(const SheetDomain& domain, const Csr<int32_t>& blocks);
 
 }  // namespace hbc

@@ -3,60 +3,59 @@
 // type-3 classification with a maximum cardinality matching, and the decomposition of
 // self-intersecting sheets into subsheets.
 //
-// Sheets are computed at one of two levels. At the complex level (the paper's) the units are the
+// Sheets are computed at one of two levels. At the complex level (the paper's) the blocks are the
 // hex components of the base complex, the curves its curves and the quads its patches. At the mesh
-// level the units are the hex cells, the curves the mesh edges and the quads the cells' faces.
+// level the blocks are the hex cells, the curves the mesh edges and the quads the cells' faces.
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "hbc/base_complex.hpp"
 #include "hbc/csr.hpp"
+#include "hbc/level.hpp"
 #include "hbc/mesh.hpp"
 
 namespace hbc {
-
-enum class SheetLevel : uint8_t { Complex = 0, Mesh = 1 };
 
 // Perfect, or the highest imperfect configuration present (type 3 > type 2 > type 1).
 enum class SheetType : uint8_t { Perfect = 0, Type1 = 1, Type2 = 2, Type3 = 3 };
 const char* sheet_type_name(SheetType t);
 
-// Classification of one set of parallel curves over a set of units, shared by sheets and subsheets.
+// Classification of one set of parallel curves over a set of blocks, shared by sheets and subsheets.
 struct SheetClass {
   SheetType type = SheetType::Perfect;
   bool type1 = false, type2 = false, type3 = false;  // every configuration present
   std::vector<int32_t> unmatched_vertices;   // mesh vertices left uncovered by a maximum matching
   std::vector<int32_t> shared_vertices;      // curve ends shared by two parallel curves (any type)
   std::vector<int32_t> self_parallel_curves; // curves of type-2 pairs
-  std::vector<int32_t> self_intersecting_units;  // units holding two parallel curves sharing an end
+  std::vector<int32_t> self_intersecting_blocks;  // blocks holding two parallel curves sharing an end
 };
 
-// The curve/unit structure sheets are computed on (see the file comment). Curves are given by
-// their mesh edges; units by their mesh cells.
+// The curve/block structure sheets are computed on (see the file comment). Curves are given by
+// their mesh edges; blocks by their mesh cells.
 struct SheetDomain {
-  SheetLevel level = SheetLevel::Complex;
-  std::vector<int32_t> cell_unit;        // nc: unit of a hex cell's component / the hex cell, -1 for non-hex
-  Csr<int32_t> unit_cells;               // nunit rows: mesh cells of each unit
-  Csr<int32_t> unit_curves;              // nunit rows: curves each unit holds, sorted
-  Csr<int32_t> unit_adjacency;           // nunit rows: face-adjacent units, sorted
+  Level level = Level::Complex;
+  std::vector<int32_t> cell_block;        // nc: block of a hex cell's component / the hex cell, -1 for non-hex
+  Csr<int32_t> block_cells;               // nblock rows: mesh cells of each block
+  Csr<int32_t> block_curves;              // nblock rows: curves each block holds, sorted
+  Csr<int32_t> block_adjacency;           // nblock rows: face-adjacent blocks, sorted
   Csr<int32_t> curve_edges;              // ncurve rows: mesh edges of the curve
   std::vector<std::array<int32_t, 2>> curve_ends;  // mesh vertex ids; {-1,-1} for a closed curve
-  Csr<int32_t> curve_units;              // ncurve rows: units holding the curve, sorted
+  Csr<int32_t> curve_blocks;              // ncurve rows: blocks holding the curve, sorted
   Csr<int32_t> curve_parallels;          // ncurve rows: curves parallel to it (one quad, no shared end)
   Csr<int32_t> curve_non_hex_cells;      // ncurve rows: non-hex cells containing an edge of the curve
-  std::vector<int32_t> unit_component;   // nunit: base complex component of the unit
+  std::vector<int32_t> block_component;   // nblock: base complex component of the block
   // nf: faces across which the direction orthogonal to the face continues from one hex cell to
   // the other (complex level: non-separation faces inside a component; mesh level: none).
   std::vector<uint8_t> face_joins;
 };
 
-SheetDomain sheet_domain(const Mesh& mesh, const BaseComplex& bc, SheetLevel level);
+SheetDomain sheet_domain(const Mesh& mesh, const BaseComplex& bc, Level level);
 
 struct Sheets {
-  SheetLevel level = SheetLevel::Complex;
-  // Per sheet (numbered by their lowest unit):
-  Csr<int32_t> sheet_units;          // units (hex components or hex cells), sorted
+  Level level = Level::Complex;
+  // Per sheet (numbered by their lowest block):
+  Csr<int32_t> sheet_blocks;          // blocks (hex components or hex cells), sorted
   Csr<int32_t> sheet_cells;          // mesh hex cells, sorted
   Csr<int32_t> sheet_curves;         // E_P: parallel curves, sorted
   Csr<int32_t> sheet_edges;          // mesh edges of E_P, sorted
@@ -69,14 +68,14 @@ struct Sheets {
 
 Sheets extract_sheets(const Mesh& mesh, const SheetDomain& domain);
 
-// Classifies the curves `curves` (sorted) of a sheet or subsheet over the units `units` (sorted).
+// Classifies the curves `curves` (sorted) of a sheet or subsheet over the blocks `blocks` (sorted).
 SheetClass classify_sheet(const SheetDomain& domain, const std::vector<int32_t>& curves,
-                          const std::vector<int32_t>& units);
+                          const std::vector<int32_t>& blocks);
 
 struct Subsheets {
   int32_t sheet = -1;
   Csr<int32_t> curves;   // per subsheet, sorted
-  Csr<int32_t> units;    // per subsheet, sorted
+  Csr<int32_t> blocks;    // per subsheet, sorted
   Csr<int32_t> cells;    // per subsheet, mesh hex cells, sorted
   std::vector<SheetClass> classes;
   size_t size() const { return classes.size(); }
@@ -84,7 +83,7 @@ struct Subsheets {
 
 // Breadth-first decomposition of one sheet (SPEC §3): grow from the lowest unused curve over
 // parallel curves, never adding a curve that shares an end with a curve already taken inside one
-// unit of the sheet.
+// block of the sheet.
 Subsheets decompose_sheet(const SheetDomain& domain, const Sheets& sheets, int32_t sheet);
 
 // The self-intersecting sheet with most cells (ties: lowest id), or -1.

@@ -1,6 +1,6 @@
 #pragma once
-// Surfaces made of mesh faces (the boundary; later patches, components, sheets) as OpenMesh
-// polygon meshes, for viewing in any mesh viewer and for Blender import.
+// Surfaces made of selected mesh faces (face_selection.hpp: the boundary, patches, components,
+// sheets) as OpenMesh polygon meshes, for viewing in any mesh viewer.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -8,6 +8,7 @@
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
+#include "hbc/face_selection.hpp"
 #include "hbc/mesh.hpp"
 
 namespace hbc {
@@ -17,27 +18,6 @@ using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
 // Names of the per-face properties of a SurfaceMesh built here.
 inline constexpr const char* kSurfaceIdProperty = "hbc_id";      // int: the selection's id
 inline constexpr const char* kSurfaceFaceProperty = "hbc_face";  // int: the mesh face id
-
-// The faces to put on a surface, all arrays of the same length (one entry per surface face):
-// `faces` mesh face ids (a face may appear once), `reversed` 1 when the face's stored loop is to
-// be walked backwards, `ids` an integer per face (patch, component, sheet, ...) that sets its
-// colour. An exporter of another kind of surface only fills these arrays differently.
-struct FaceSelection {
-  std::vector<int32_t> faces;
-  std::vector<uint8_t> reversed;
-  std::vector<int32_t> ids;
-  // Weld vertices only between faces of the same id, so that each id (a patch, a component, a
-  // sheet) is its own piece; faces of one id must then be consecutive.
-  bool separate_ids = false;
-};
-
-// Whether face f's stored loop must be reversed to point out of `cell` (a cell of f): cells see
-// their face loops outward once their cell_face_flip is applied.
-bool reversed_for_outward(const Mesh& mesh, int32_t face, int32_t cell);
-
-// Every boundary face in increasing id, oriented out of the mesh; id = the CellType (as int) of
-// its cell, so non-hex cells show on the surface.
-FaceSelection boundary_selection(const Mesh& mesh);
 
 // Fixed palette (12 colours, repeated); negative ids map to grey. RGB in 0..255.
 std::array<uint8_t, 3> palette_color(int32_t id);

@@ -98,20 +98,14 @@ void class_arrays(py::class_<H, Opts...>& cls, const std::string& prefix, Get ge
   }
 }
 
-ComplexLevel level_from_name(const std::string& level) {
-  if (level == "complex") return ComplexLevel::Complex;
-  if (level == "mesh") return ComplexLevel::Mesh;
-  throw std::invalid_argument("level must be 'complex' or 'mesh', not '" + level + "'");
-}
-
 PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool sheets, bool subsheets,
                       bool wireframe) {
   if (!(rho >= 0.0 && rho <= 1.0)) throw std::invalid_argument("rho must be in [0, 1], not " + std::to_string(rho));
   auto out = std::make_shared<PyAnalysis>();
   out->mesh = std::move(mesh);
   AnalysisOptions& o = out->options;
-  const ComplexLevel lv = level_from_name(level);
-  o.sheet_level = lv == ComplexLevel::Mesh ? SheetLevel::Mesh : SheetLevel::Complex;
+  const Level lv = level_from_name(level);
+  o.sheet_level = lv;
   o.wireframe_level = lv;
   o.wireframe_options.rho = rho;
   o.sheets = sheets;
@@ -124,10 +118,10 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
     p.analysis.timings.load = p.mesh->load_seconds;
     const Analysis& a = p.analysis;
     p.sheet_classes = flatten_classes(a.domain, a.sheets.classes);
-    p.sheet_components = units_as_components(a.domain, a.sheets.sheet_units);
+    p.sheet_components = blocks_as_components(a.domain, a.sheets.sheet_blocks);
     for (const Subsheets& s : a.subsheets) {
       p.self_intersecting.push_back(s.sheet);
-      p.subsheets.push_back({flatten_classes(a.domain, s.classes), units_as_components(a.domain, s.units)});
+      p.subsheets.push_back({flatten_classes(a.domain, s.classes), blocks_as_components(a.domain, s.blocks)});
     }
   }
   return out;
@@ -216,9 +210,9 @@ void bind_graph(py::module_& m) {
        "bool (ne,): valence other than 4 inside / 2 on the boundary.");
   prop(g, "edge_chain", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.edge_chain, s); },
        "int32 (ne,): singularity of a singular edge, else -1.");
-  csr(g, "chain_offsets", "chain_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; },
+  csr(g, "chain_vertex_offsets", "chain_vertex_items", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; },
       "ordered vertices of each singularity (a closed chain does not repeat its first vertex).");
-  csr(g, "chain_edge_offsets", "chain_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; },
+  csr(g, "chain_edge_offsets", "chain_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; },
       "ordered edges of each singularity; edge i joins chain vertices i and i+1 (mod n).");
   prop(g, "chain_valence", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.chain_valence, s); },
        "int32 (ns,): valence of each singularity.");
@@ -244,7 +238,7 @@ void bind_complex(py::module_& m) {
        "int32 (nc,): component of each cell.");
   prop(c, "component_kind", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.complex.component_kind, s); },
        "uint8 (ncomp,): 0 cube, 1 ring, 2 other, 3 non-hex.");
-  csr(c, "component_offsets", "component_cells", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; },
+  csr(c, "component_cell_offsets", "component_cell_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; },
       "sorted cells of each component.");
   csr(c, "component_adjacency_offsets", "component_adjacency_items",
       [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_adjacency; },
@@ -253,11 +247,11 @@ void bind_complex(py::module_& m) {
        "bool (nf,): separation face.");
   prop(c, "face_patch", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.face_patch, s); },
        "int32 (nf,): patch of a separation face, else -1.");
-  csr(c, "patch_offsets", "patch_faces", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; },
+  csr(c, "patch_face_offsets", "patch_face_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; },
       "sorted mesh faces of each patch.");
-  csr(c, "curve_offsets", "curve_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; },
+  csr(c, "curve_vertex_offsets", "curve_vertex_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; },
       "mesh vertex polyline of each curve (a closed curve does not repeat its first vertex).");
-  csr(c, "curve_edge_offsets", "curve_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; },
+  csr(c, "curve_edge_offsets", "curve_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; },
       "ordered mesh edges of each curve.");
   prop(c, "curve_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.curve_closed, s); },
        "bool (ncurve,): a closed curve (no corner on it).");
@@ -316,8 +310,8 @@ void bind_analysis(py::module_& m) {
   py::class_<PyAnalysis, PyAnalysisPtr> c(m, "Analysis",
                                           "The structure of a mesh (Mesh.analyze()): singularity graph, base complex, "
                                           "sheets, subsheets, VSG wireframe. Arrays are read-only views.");
-  c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analysed hbc.Mesh.");
-  c.def_property_readonly("level", [](const PyAnalysis& p) { return complex_level_name(p.options.wireframe_level); });
+  c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analyzed hbc.Mesh.");
+  c.def_property_readonly("level", [](const PyAnalysis& p) { return level_name(p.options.wireframe_level); });
   c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; });
   c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.has_sheets; });
   c.def_property_readonly("has_subsheets", [](const PyAnalysis& p) { return p.analysis.has_subsheets; });

@@ -1,6 +1,6 @@
 #pragma once
 // Shared pieces of the hbc._core binding. Each concept is bound in its own file by a
-// bind_<concept>(module) function called from module.cpp; later stages add theirs the same way.
+// bind_<concept>(module) function called from module.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -10,14 +10,15 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/mesh.hpp"
+#include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
 
 namespace hbc::python {
 
 namespace py = pybind11;
 
-// What a Python hbc.Mesh holds. Shared ownership lets results of later stages keep the mesh they
-// refer to alive. `points32` is the float32 copy of mesh.points, made on first request.
+// What a Python hbc.Mesh holds. Shared ownership lets every result computed from the mesh keep
+// it alive. `points32` is the float32 copy of mesh.points, made on first request.
 struct PyMesh {
   Mesh mesh;
   std::vector<float> points32;
@@ -46,7 +47,7 @@ py::array adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape, py::dtype dt
 }
 
 // What a Python hbc.Analysis holds: the mesh it was computed on (kept alive), the options (for
-// wireframes computed later on demand), the analysis, and the per-sheet arrays flattened once.
+// the region wireframes computed on demand), the analysis, and the per-sheet arrays flattened once.
 struct PyAnalysis {
   PyMeshPtr mesh;
   AnalysisOptions options;

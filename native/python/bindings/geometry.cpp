@@ -40,11 +40,11 @@ void bind_wireframe(py::module_& m) {
                             "opacity and per-polyline kind, simplification flags and colours. Arrays are views.");
   c.def_property_readonly("count", [](const PyWireframe& p) { return p.w->size(); }, "Number of polylines.");
   wire_prop(c, "polyline_offsets", [](const VsgWireframe& w) -> auto& { return w.polylines.offsets; },
-            "int32 (count + 1,): row offsets of polyline_vertices.");
-  wire_prop(c, "polyline_vertices", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
+            "int32 (count + 1,): row offsets of polyline_items.");
+  wire_prop(c, "polyline_items", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
             "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
   wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.style.point_opacity; },
-            "float32, aligned with polyline_vertices: opacity in [floor, 1].");
+            "float32, aligned with polyline_items: opacity in [floor, 1].");
   wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
             "int32 (count,): region valence of the chain's first edge.");
@@ -57,8 +57,8 @@ void bind_wireframe(py::module_& m) {
   wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
             "bool (count,): non-important but kept: it continues a kept chain.", true);
   wire_prop(c, "simplified_offsets", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.offsets; },
-            "int32 (counts['wireframe_edges_simplified'] + 1,): row offsets of simplified_vertices.");
-  wire_prop(c, "simplified_vertices", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.items; },
+            "int32 (counts['wireframe_edges_simplified'] + 1,): row offsets of simplified_items.");
+  wire_prop(c, "simplified_items", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.items; },
             "int32: mesh vertices along each simplified polyline (kept chains re-chained).");
   wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
   wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },

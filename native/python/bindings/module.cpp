@@ -1,15 +1,12 @@
 // Entry point of hbc._core, the compiled half of the `hbc` Python package (see hbc/__init__.py).
 #include "bindings.hpp"
-
-#ifndef HBC_VERSION
-#error "HBC_VERSION must be defined by the build"
-#endif
+#include "hbc/version.hpp"
 
 PYBIND11_MODULE(_core, m) {
   namespace hp = hbc::python;
   m.doc() = "Compiled core of hbc; import the `hbc` package instead of this module.";
-  m.attr("__version__") = HBC_VERSION;
-  // Errors first: later bindings may raise them at import time.
+  m.attr("__version__") = hbc::version();
+  // Errors first: the other bindings may raise them at import time.
   hp::bind_errors(m);
   hp::bind_mesh(m);
   hp::bind_io(m);
