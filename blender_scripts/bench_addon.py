@@ -78,7 +78,7 @@ def main():
     from hybrid_base_complex import session
 
     addon.register()
-    analysed = not args.no_analysis
+    analyzed = not args.no_analysis
     rows = []
     failed = False
     for path in args.meshes:
@@ -87,17 +87,17 @@ def main():
         if args.split_max is not None:
             st.split_max = args.split_max
         t = time.perf_counter()
-        assert bpy.ops.import_mesh.hbc(filepath=path, analyze=analysed) == {"FINISHED"}
+        assert bpy.ops.import_mesh.hbc(filepath=path, analyze=analyzed) == {"FINISHED"}
         t_import = time.perf_counter() - t
         root = L.find_root(st.active_mesh)
         s = session.get(root.name)
         times = {"import": t_import}
-        layers = ["graph", "blocks", "sheets", "wireframe"] if analysed else []
-        if analysed:
+        layers = ["graph", "blocks", "sheets", "wireframe"] if analyzed else []
+        if analyzed:
             a = s.analysis
             pick = int(a.largest_self_intersecting) if int(a.largest_self_intersecting) >= 0 else 0
             st.sheet_index = pick if s.num_sheets else 0
-        if analysed and s.num_sheets:
+        if analyzed and s.num_sheets:
             layers.append("sheet")
             if int(s.sheet_types()[st.sheet_index]) == 3:
                 layers.append("subsheets")

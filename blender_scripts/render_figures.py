@@ -55,7 +55,7 @@ def sheet_caption(subject):
 
 
 def start(args, path):
-    """A fresh file with the studio set up around one analysed mesh."""
+    """A fresh file with the studio set up around one analyzed mesh."""
     scene = R.reset_file()
     w, h = args.resolution
     R.setup_render(scene, args.engine, args.samples, w, h, ADDON.compat, args.denoise)
@@ -136,7 +136,7 @@ def panel_label(subject, key):
 def single(args):
     scene, subject = start(args, args.mesh)
     print(stats_row(subject), flush=True)
-    R.log(f"render_figures: {subject.name}: {subject.s.num_cells} cells, analysed in {subject.t_analysis:.2f} s; "
+    R.log(f"render_figures: {subject.name}: {subject.s.num_cells} cells, analyzed in {subject.t_analysis:.2f} s; "
           f"panels d-g: {sheet_caption(subject) or 'no sheets'}")
     os.makedirs(args.out, exist_ok=True)
     written, shown = [], []

@@ -27,12 +27,12 @@ def generate(tmp_path, *args):
     return out
 
 
-def import_mesh(path, analyse=False):
+def import_mesh(path, analyze=False):
     from hybrid_base_complex import layers as L
 
     ins = bpy.context.scene.hbc_inspect
     ins.direct_cells = True
-    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyse=analyse) == {"FINISHED"}
+    assert bpy.ops.import_mesh.hbc(filepath=str(path), analyze=analyze) == {"FINISHED"}
     return L.find_root(bpy.context.scene.hbc.active_mesh)
 
 
@@ -162,7 +162,7 @@ def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
     from hybrid_base_complex import scene as S
     from hybrid_base_complex import session
 
-    root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyse=True)
+    root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyze=True)
     s = session.get(root.name)
     for layer in ("blocks", "sheets"):
         assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}
@@ -224,7 +224,7 @@ def test_picked_sheet_only_follows_the_pick(reset, data_dir):
     another sheet in the list (Scene.hbc.sheet_index) moves the attribute and the view with it."""
     from hybrid_base_complex import session
 
-    root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyse=True)
+    root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyze=True)
     s = session.get(root.name)
     st = bpy.context.scene.hbc
     st.auto_show = False
