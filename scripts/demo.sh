@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The main job on the bundled default: build, generate the demo mesh (a hex-dominant cylinder with
-# prism columns, like the paper's teaser), analyse it (Table 1 row), and render its figure set
-# (the paper's pipeline panels and a labelled contact sheet) into out/. When the shared data is
-# there, teapot.hedra (LoopyCuts) is a second subject: its largest self-intersecting sheet fills
-# the sheet, VSG, wireframe and subsheet panels the all-perfect cylinder cannot.
+# The main job on the bundled defaults: build, generate the demo meshes, analyze them (Table 1
+# rows), and render their figure sets (the paper's pipeline panels and a labelled contact sheet)
+# into out/. The first default, a twisted ring (`hbc generate twisted-ring`: a 5x5 section turning
+# a quarter turn round the ring, a column of prisms through its middle), has a self-intersecting
+# sheet with subsheets, a type-1 sheet and non-hex cells, so all seven panels render; the second,
+# a hex-dominant cylinder with prism columns like the paper's teaser, has only perfect sheets.
+# When the shared data is there, teapot.hedra (LoopyCuts) is a third subject.
 #
 # Environment: HBC_DEMO_ENGINE (cycles | eevee | workbench, default cycles),
 # HBC_DEMO_RESOLUTION ("480 360"), HBC_DEMO_SAMPLES (12), HBC_DATA_DIR (../shared/data).
@@ -20,8 +22,9 @@ FIG=$OUT/figures
 mkdir -p "$FIG"
 start=$SECONDS
 
+./build/bin/hbc generate twisted-ring --section 5 --sections 12 --quarter-turns 1 --prisms -o "$OUT/twisted_ring.ovm"
 ./build/bin/hbc generate cylinder --radius-cells 6 --layers 10 -o "$OUT/cylinder.ovm"
-meshes=("$OUT/cylinder.ovm")
+meshes=("$OUT/twisted_ring.ovm" "$OUT/cylinder.ovm")
 teapot=$DATA/hybrid-base-complex/teapot.hedra
 [ -f "$teapot" ] && meshes+=("$teapot")
 

@@ -11,6 +11,8 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
 namespace hbc {
 namespace {
@@ -466,6 +468,85 @@ MeshInput generate_cylinder(int radius_cells, int layers) {
   }
   return extrude(pl, layers, 1.0,
                  "cylinder radius " + std::to_string(radius_cells) + " layers " + std::to_string(layers));
+}
+
+}  // namespace hbc
+
+namespace hbc {
+namespace {
+
+// The cross-section of a twisted ring: an a×a grid of unit quads centred on the origin, whose
+// middle quad (a odd) is a fan of 4 triangles around an added centre vertex when `prisms` is set.
+// Rotating it by 90° about the origin maps it onto itself, vertices to vertices.
+Planar ring_section(int a, bool prisms) {
+  Planar pl = planar_grid(a, a, 1.0);
+  for (double& c : pl.xy) c -= 0.5 * a;
+  if (!prisms) return pl;
+  const int mid = a / 2;
+  const int32_t centre = static_cast<int32_t>(pl.num_vertices());
+  pl.xy.push_back(0.0);
+  pl.xy.push_back(0.0);
+  Planar out;
+  out.xy = pl.xy;
+  for (size_t p = 0; p < pl.polys.rows(); ++p) {
+    auto q = pl.polys[p];
+    if (static_cast<int>(p) != mid * a + mid) {
+      out.polys.push_row(q.begin(), q.end());
+      continue;
+    }
+    for (size_t i = 0; i < 4; ++i) {
+      const int32_t tri[3] = {q[i], q[(i + 1) % 4], centre};
+      out.polys.push_row(tri, tri + 3);
+    }
+  }
+  return out;
+}
+
+// The section vertex that vertex v of `pl` lands on when the section turns by quarter_turns × 90°.
+std::vector<int32_t> quarter_turn_map(const Planar& pl, int quarter_turns) {
+  const size_t nv = pl.num_vertices();
+  std::vector<int32_t> to(nv, -1);
+  for (size_t v = 0; v < nv; ++v) {
+    double x = pl.xy[2 * v], y = pl.xy[2 * v + 1];
+    for (int t = 0; t < quarter_turns; ++t) std::tie(x, y) = std::make_pair(-y, x);
+    for (size_t w = 0; w < nv; ++w)
+      if (std::abs(pl.xy[2 * w] - x) < 1e-9 && std::abs(pl.xy[2 * w + 1] - y) < 1e-9) to[v] = static_cast<int32_t>(w);
+    require(to[v] >= 0, "twisted ring: the section does not map onto itself");
+  }
+  return to;
+}
+
+}  // namespace
+
+MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms) {
+  require(section >= 1 && sections >= 3, "twisted ring: a section of at least 1 cell and at least 3 sections");
+  require(quarter_turns >= 0 && quarter_turns <= 3, "twisted ring: 0 to 3 quarter turns");
+  require(!prisms || section % 2 == 1, "twisted ring: prisms need an odd section (a middle quad)");
+  const Planar pl = ring_section(section, prisms);
+  MeshInput in = extrude(pl, sections, 1.0, "twisted_ring");
+  const size_t nv = pl.num_vertices();
+  const double radius = 1.5 * section + 2.0, pi = std::acos(-1.0);
+  // Layer l sits at angle 2πl/n round the z axis, its section turned by quarter_turns·90°·l/n.
+  for (int l = 0; l < sections; ++l) {
+    const double phi = 2 * pi * l / sections, alpha = quarter_turns * 0.5 * pi * l / sections;
+    for (size_t v = 0; v < nv; ++v) {
+      double* p = &in.points[3 * (static_cast<size_t>(l) * nv + v)];
+      const double x = p[0] * std::cos(alpha) - p[1] * std::sin(alpha);
+      const double y = p[0] * std::sin(alpha) + p[1] * std::cos(alpha);
+      p[0] = (radius + x) * std::cos(phi);
+      p[1] = (radius + x) * std::sin(phi);
+      p[2] = y;
+    }
+  }
+  // The last layer closes the ring on the first one, turned: its vertices become those of layer 0
+  // (build_mesh merges the faces that then repeat layer 0's).
+  const std::vector<int32_t> to = quarter_turn_map(pl, quarter_turns);
+  const int32_t last = static_cast<int32_t>(sections * nv);
+  for (int32_t& v : in.faces.items)
+    if (v >= last) v = to[static_cast<size_t>(v - last)];
+  in.points.resize(3 * static_cast<size_t>(last));
+  in.source = "twisted_ring";
+  return in;
 }
 
 }  // namespace hbc

@@ -23,6 +23,8 @@ struct GenerateArgs {
   std::optional<int> random;
   uint32_t seed = 0;
   int valence = 0, rings = 0, layers = 0, radius_cells = 0;
+  int section = 0, sections = 0, quarter_turns = 0;
+  bool prisms = false;
 };
 
 int to_int(const std::string& s, const std::string& what) {
@@ -139,6 +141,16 @@ void add_generate(CLI::App& app) {
                             [](const GenerateArgs& a) { return generate_cylinder(a.radius_cells, a.layers); });
   cylinder->add_option("--radius-cells", args->radius_cells, "cells across the radius")->required()->check(at_least(1));
   cylinder->add_option("--layers", args->layers, "layers along the axis")->required()->check(at_least(1));
+  auto* ring = add_kind(*cmd, args, "twisted-ring", "a ring whose square section turns on the way round",
+                        [](const GenerateArgs& a) {
+                          return generate_twisted_ring(a.section, a.sections, a.quarter_turns, a.prisms);
+                        });
+  ring->add_option("--section", args->section, "cells across the square section")->required()->check(at_least(1));
+  ring->add_option("--sections", args->sections, "layers round the ring")->required()->check(at_least(3));
+  ring->add_option("--quarter-turns", args->quarter_turns, "turns of the section, in quarter turns")
+      ->check(CLI::Range(0, 3))
+      ->capture_default_str();
+  ring->add_flag("--prisms", args->prisms, "a column of prisms through the middle of the section (odd --section)");
 }
 
 }  // namespace hbc::cli

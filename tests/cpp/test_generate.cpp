@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 
+#include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
@@ -382,6 +383,53 @@ TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   EXPECT_EQ(run_cli("generate sector --valence 2 --rings 1 --layers 1 -o '" + d + "/x.mesh'"), 2);
   EXPECT_FALSE(std::filesystem::exists(d + "/x.mesh"));
   std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace hbc
+
+namespace hbc {
+namespace {
+
+// The demo's twisted ring: a 5x5 section with a 4-triangle fan in its middle quad, 12 sections.
+// Section: 6x6 grid vertices + the centre = 37; 24 quads + 4 triangles = 28 polygons; 2D edges
+// 2*5*6 = 60 grid edges + 4 spokes = 64. Closed ring of 12 layers: V = 37*12 = 444, C = 28*12 =
+// 336 (24*12 = 288 hexes, 48 prisms), F = 28*12 section faces + 64*12 side faces = 1104. The ring
+// is closed: its boundary is the torus swept by the section's outline, 20 quads a layer = 240.
+TEST(Generate, TwistedRingCounts) {
+  const Mesh m = build_mesh(generate_twisted_ring(5, 12, 1, true));
+  EXPECT_EQ(m.num_vertices(), 444u);
+  EXPECT_EQ(m.num_cells(), 336u);
+  EXPECT_EQ(m.num_hex_cells(), 288u);
+  EXPECT_EQ(m.num_faces(), 1104u);
+  size_t boundary = 0;
+  for (uint8_t b : m.face_boundary) boundary += b;
+  EXPECT_EQ(boundary, 240u);
+}
+
+// A 1x1 ring: untwisted, its one sheet along the ring closes on itself as the same layer
+// (perfect); a quarter turn brings the layer back crossing itself: a self-intersecting sheet
+// (type 3, the rings of test_sheet_types.cpp); sheets at the mesh level (one component).
+TEST(Generate, TwistedRingSheets) {
+  AnalysisOptions opt;
+  opt.sheet_level = Level::Mesh;
+  opt.wireframe = false;
+  const Mesh flat = build_mesh(generate_twisted_ring(1, 12, 0, false));
+  const Analysis a0 = analyze(flat, opt);
+  EXPECT_EQ(a0.sheets.count(SheetType::Type3), 0u);
+  const Mesh turned = build_mesh(generate_twisted_ring(1, 12, 1, false));
+  const Analysis a1 = analyze(turned, opt);
+  EXPECT_EQ(a1.sheets.count(SheetType::Type3), 1u);
+  // The demo's ring, at the complex level: a self-intersecting sheet with subsheets, a type-1
+  // sheet (the one through the prism column) and non-hex cells.
+  const Mesh demo = build_mesh(generate_twisted_ring(5, 12, 1, true));
+  const Analysis d = analyze(demo, {});
+  EXPECT_EQ(d.sheets.count(SheetType::Type3), 1u);
+  EXPECT_EQ(d.sheets.count(SheetType::Type1), 1u);
+  EXPECT_GE(d.largest_self_intersecting, 0);
+  ASSERT_NE(d.subsheets_of(d.largest_self_intersecting), nullptr);
+  EXPECT_GT(d.subsheets_of(d.largest_self_intersecting)->size(), 1u);
+  EXPECT_THROW(generate_twisted_ring(4, 12, 1, true), std::invalid_argument);  // prisms need odd
 }
 
 }  // namespace

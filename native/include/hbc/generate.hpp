@@ -62,4 +62,13 @@ MeshInput generate_sector(int valence, int rings, int layers);
 // 12 vertices: 12 quads + 4 triangles per layer.
 MeshInput generate_cylinder(int radius_cells, int layers);
 
+// A ring of `sections` layers (>= 3) round the z axis whose square cross-section, `section` ×
+// `section` unit cells, turns by quarter_turns × 90° (0..3) on the way round, so the ring closes
+// on itself turned: sheets along the ring come back as other layers of the section, which makes
+// them self-parallel (a half turn brings layer i back as layer section-1-i) or self-intersecting
+// (a quarter turn brings a layer of one direction back as one of the other). With `prisms` (odd
+// `section`) the middle quad of the section is a fan of 4 triangles, a column of prisms round
+// the ring: non-hex cells that the sheets through the middle cross.
+MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms);
+
 }  // namespace hbc
