@@ -34,6 +34,13 @@ if bpy is not None:
         inspect.register_props()
         operators.register_menus()
         handlers.register()
+        from .structure import module_problem
+
+        # Registered either way (menus and panel stay usable); the panel and every operator say why
+        # nothing can be analyzed, and so does the console.
+        problem = module_problem()
+        if problem:
+            print(f"Hybrid Base Complex: {problem}", flush=True)
 
     def unregister():
         handlers.unregister()

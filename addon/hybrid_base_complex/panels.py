@@ -5,12 +5,15 @@ no panel appears or disappears with the selection, so buttons never move under t
 
 from __future__ import annotations
 
+import textwrap
+
 import bpy
 
 from . import planning as P
 from . import scene as S
 from . import session
 from .operators import active_root, merged_owner_faces, unavailable
+from .structure import module_problem
 
 #: Longest label a row may carry at the default sidebar width (about 30 characters across, a
 #: property's value taking the rest); tests/blender checks every drawn label against it.
@@ -60,6 +63,14 @@ class HBC_PT_main(_Base, bpy.types.Panel):
     def draw(self, context):
         layout = self.layout
         st = context.scene.hbc
+        problem = module_problem()
+        if problem:
+            # The add-on is registered, but it can analyze nothing until the module matches.
+            box = layout.box()
+            box.label(text="hbc module unavailable", icon="ERROR")
+            for line in textwrap.wrap(problem, 34):
+                box.label(text=line)
+            return
         root = active_root(context)
         layout.operator("import_mesh.hbc", text="Import", icon="IMPORT")
         roots = [c for c in bpy.data.collections if c.get("hbc_source") is not None]

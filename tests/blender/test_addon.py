@@ -572,3 +572,51 @@ def test_sheet_list_rows_filter_and_sort(clean_scene, data_dir):
     cells = [it.cells for it in st.sheets]
     by_position = sorted(range(len(order)), key=lambda i: order[i])
     assert [cells[i] for i in by_position] == sorted(cells, reverse=True)
+
+
+MISMATCH_SCRIPT = r"""
+import os, shutil, sys, sysconfig
+src, dst = sys.argv[-2], sys.argv[-1]
+shutil.copytree(src, os.path.join(dst, "hybrid_base_complex"))
+own = sysconfig.get_config_var("EXT_SUFFIX")
+for name in os.listdir(os.path.join(dst, "hybrid_base_complex", "hbc")):
+    if name.endswith(own):  # as if the package had been built for another Python only
+        os.remove(os.path.join(dst, "hybrid_base_complex", "hbc", name))
+sys.path.insert(0, dst)
+import bpy
+import hybrid_base_complex as addon
+addon.register()
+from hybrid_base_complex.structure import module_problem
+print("PROBLEM:", module_problem())
+try:
+    bpy.ops.import_mesh.hbc(filepath=os.path.join(os.environ["HBC_DATA_DIR"], "hybrid-base-complex", "test_2.HYBRID"))
+    print("IMPORT: finished")
+except RuntimeError as e:
+    print("IMPORT:", e)
+sys.stdout.flush()
+os._exit(0)
+"""
+
+
+def test_module_for_another_python_is_explained(addon, tmp_path, data_dir):
+    """An add-on whose compiled module was built for another Python registers anyway and says, in
+    plain words, which Python the module is for and how to build it for this one (the panel shows
+    the same sentence); importing a mesh is refused with it, without a traceback."""
+    import subprocess
+    import sys
+
+    script = tmp_path / "mismatch.py"
+    script.write_text(MISMATCH_SCRIPT)
+    if bpy.app.binary_path:
+        cmd = [bpy.app.binary_path, "-b", "--factory-startup", "--python", str(script), "--"]
+    else:
+        cmd = [sys.executable, str(script)]
+    cmd += [os.environ["HBC_ADDON_DIR"], str(tmp_path / "copy")]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+    problem = next((line for line in p.stdout.splitlines() if line.startswith("PROBLEM:")), None)
+    assert problem is not None, p.stdout[-2000:] + p.stderr[-2000:]
+    here = f"CPython {sys.version_info[0]}.{sys.version_info[1]}"
+    assert here in problem and "pip install ." in problem and "-DPython_EXECUTABLE" in problem, problem
+    imported = next(line for line in p.stdout.splitlines() if line.startswith("IMPORT:"))
+    assert "built for" in imported or "not in this add-on" in imported, imported
+    assert "Traceback" not in p.stdout + p.stderr, p.stderr[-2000:]
