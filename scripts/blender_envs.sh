@@ -11,6 +11,8 @@ set -euo pipefail
 HERE=$(cd "$(dirname "$0")" && pwd)
 ENV_DIR=${HBC_ENV_DIR:-$HOME/.cache/hbc-envs}
 BPY_VERSIONS=(4.2 4.5 5.0 5.2)
+# pytest runs the suites; meshio is the independent VTU reader of the export tests.
+EXTRAS="pytest meshio"
 [ $# -gt 0 ] && BPY_VERSIONS=("$@")
 mkdir -p "$ENV_DIR"
 
@@ -42,6 +44,11 @@ for v in "${BPY_VERSIONS[@]}"; do
   venv=$ENV_DIR/bpy-$v
   stamp=$venv/.hbc-bpy
   if [ -f "$stamp" ] && [ -x "$venv/bin/python" ]; then
+    # Packages the tests need beside bpy, added to an existing environment when the list grows.
+    if [ "$(cat "$venv/.hbc-extras" 2>/dev/null)" != "$EXTRAS" ]; then
+      "$venv/bin/python" -m pip install -q $EXTRAS "$(numpy_for "$v")" >&2
+      echo "$EXTRAS" > "$venv/.hbc-extras"
+    fi
     echo "$v $venv/bin/python"; continue
   fi
   py=$(python_for "$v")
@@ -50,7 +57,8 @@ for v in "${BPY_VERSIONS[@]}"; do
   "$py" -m venv "$venv" >&2
   "$venv/bin/python" -m pip install -q --upgrade pip >&2
   # The newest patch release PyPI serves of that minor version (PyPI drops old ones).
-  "$venv/bin/python" -m pip install -q "bpy==$v.*" "$(numpy_for "$v")" pytest >&2
+  "$venv/bin/python" -m pip install -q "bpy==$v.*" "$(numpy_for "$v")" $EXTRAS >&2
+  echo "$EXTRAS" > "$venv/.hbc-extras"
   "$venv/bin/python" -c "import bpy; print(bpy.app.version_string)" > "$stamp"
   echo "$v $venv/bin/python"
 done

@@ -27,8 +27,10 @@ def pytest_args(argv):
 
 def ensure_system_site_packages():
     # Debian's python3-pytest and numpy live in dist-packages; a Blender build with its own
-    # Python may not list them, and this runner needs pytest importable.
-    for path in site.getsitepackages() + ["/usr/lib/python3/dist-packages"]:
+    # Python may not list them, and this runner needs pytest importable. Only for the Python
+    # Debian built them for (3.11): a bpy wheel's venv of another Python has its own.
+    extra = ["/usr/lib/python3/dist-packages"] if sys.version_info[:2] == (3, 11) else []
+    for path in site.getsitepackages() + extra:
         if os.path.isdir(path) and path not in sys.path:
             sys.path.append(path)
 
