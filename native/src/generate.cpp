@@ -475,27 +475,40 @@ MeshInput generate_cylinder(int radius_cells, int layers) {
 namespace hbc {
 namespace {
 
-// The cross-section of a twisted ring: an a×a grid of unit quads centred on the origin, whose
-// middle quad (a odd) is a fan of 4 triangles around an added centre vertex when `prisms` is set.
-// Rotating it by 90° about the origin maps it onto itself, vertices to vertices.
-Planar ring_section(int a, bool prisms) {
+// The cross-section of a twisted ring: an a×a grid of unit quads centred on the origin. With
+// `prisms`, `fan` quads are each a fan of 4 triangles around an added centre vertex: the middle
+// quad (odd a), or the quad at (1, 1) and those it turns into under the ring's turn (even a or
+// `spread`), so that turning the section maps it onto itself, vertices to vertices.
+Planar ring_section(int a, bool prisms, int quarter_turns, bool spread) {
   Planar pl = planar_grid(a, a, 1.0);
   for (double& c : pl.xy) c -= 0.5 * a;
   if (!prisms) return pl;
-  const int mid = a / 2;
-  const int32_t centre = static_cast<int32_t>(pl.num_vertices());
-  pl.xy.push_back(0.0);
-  pl.xy.push_back(0.0);
+  std::vector<uint8_t> fan(static_cast<size_t>(a) * a, 0);
+  if (!spread && a % 2 == 1) {
+    fan[static_cast<size_t>(a / 2) * a + a / 2] = 1;
+  } else {
+    int i = 1, j = 1;
+    const int turns = quarter_turns == 0 ? 1 : 4 / std::gcd(quarter_turns, 4);
+    for (int t = 0; t < turns; ++t) {
+      fan[static_cast<size_t>(j) * a + i] = 1;
+      for (int r = 0; r < quarter_turns; ++r) std::tie(i, j) = std::make_pair(a - 1 - j, i);
+    }
+  }
   Planar out;
   out.xy = pl.xy;
   for (size_t p = 0; p < pl.polys.rows(); ++p) {
     auto q = pl.polys[p];
-    if (static_cast<int>(p) != mid * a + mid) {
+    if (!fan[p]) {
       out.polys.push_row(q.begin(), q.end());
       continue;
     }
-    for (size_t i = 0; i < 4; ++i) {
-      const int32_t tri[3] = {q[i], q[(i + 1) % 4], centre};
+    const int32_t centre = static_cast<int32_t>(out.xy.size() / 2);
+    double cx = 0, cy = 0;
+    for (int32_t v : q) cx += 0.25 * pl.xy[2 * static_cast<size_t>(v)], cy += 0.25 * pl.xy[2 * static_cast<size_t>(v) + 1];
+    out.xy.push_back(cx);
+    out.xy.push_back(cy);
+    for (size_t k = 0; k < 4; ++k) {
+      const int32_t tri[3] = {q[k], q[(k + 1) % 4], centre};
       out.polys.push_row(tri, tri + 3);
     }
   }
@@ -518,11 +531,12 @@ std::vector<int32_t> quarter_turn_map(const Planar& pl, int quarter_turns) {
 
 }  // namespace
 
-MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms) {
+MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms, bool spread) {
   require(section >= 1 && sections >= 3, "twisted ring: a section of at least 1 cell and at least 3 sections");
   require(quarter_turns >= 0 && quarter_turns <= 3, "twisted ring: 0 to 3 quarter turns");
-  require(!prisms || section % 2 == 1, "twisted ring: prisms need an odd section (a middle quad)");
-  const Planar pl = ring_section(section, prisms);
+  require(!prisms || section >= 3 || (section % 2 == 1 && !spread),
+          "twisted ring: prisms need an odd section or one of at least 3 cells");
+  const Planar pl = ring_section(section, prisms, quarter_turns, spread || section % 2 == 0);
   MeshInput in = extrude(pl, sections, 1.0, "twisted_ring");
   const size_t nv = pl.num_vertices();
   const double radius = 1.5 * section + 2.0, pi = std::acos(-1.0);

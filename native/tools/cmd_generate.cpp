@@ -24,7 +24,7 @@ struct GenerateArgs {
   uint32_t seed = 0;
   int valence = 0, rings = 0, layers = 0, radius_cells = 0;
   int section = 0, sections = 0, quarter_turns = 0;
-  bool prisms = false;
+  bool prisms = false, spread = false;
 };
 
 int to_int(const std::string& s, const std::string& what) {
@@ -143,14 +143,15 @@ void add_generate(CLI::App& app) {
   cylinder->add_option("--layers", args->layers, "layers along the axis")->required()->check(at_least(1));
   auto* ring = add_kind(*cmd, args, "twisted-ring", "a ring whose square section turns on the way round",
                         [](const GenerateArgs& a) {
-                          return generate_twisted_ring(a.section, a.sections, a.quarter_turns, a.prisms);
+                          return generate_twisted_ring(a.section, a.sections, a.quarter_turns, a.prisms, a.spread);
                         });
   ring->add_option("--section", args->section, "cells across the square section")->required()->check(at_least(1));
   ring->add_option("--sections", args->sections, "layers round the ring")->required()->check(at_least(3));
   ring->add_option("--quarter-turns", args->quarter_turns, "turns of the section, in quarter turns")
       ->check(CLI::Range(0, 3))
       ->capture_default_str();
-  ring->add_flag("--prisms", args->prisms, "a column of prisms through the middle of the section (odd --section)");
+  ring->add_flag("--prisms", args->prisms, "columns of prisms: through the middle of an odd section, else off the middle");
+  ring->add_flag("--spread", args->spread, "the prism columns off the middle even in an odd section");
 }
 
 }  // namespace hbc::cli

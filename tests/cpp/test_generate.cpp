@@ -429,7 +429,8 @@ TEST(Generate, TwistedRingSheets) {
   EXPECT_GE(d.largest_self_intersecting, 0);
   ASSERT_NE(d.subsheets_of(d.largest_self_intersecting), nullptr);
   EXPECT_GT(d.subsheets_of(d.largest_self_intersecting)->size(), 1u);
-  EXPECT_THROW(generate_twisted_ring(4, 12, 1, true), std::invalid_argument);  // prisms need odd
+  // Prism fans need a middle quad (odd section) or room for fans off the middle (3+ cells).
+  EXPECT_THROW(generate_twisted_ring(2, 12, 1, true), std::invalid_argument);
 }
 
 }  // namespace

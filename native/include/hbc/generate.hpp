@@ -66,9 +66,10 @@ MeshInput generate_cylinder(int radius_cells, int layers);
 // `section` unit cells, turns by quarter_turns × 90° (0..3) on the way round, so the ring closes
 // on itself turned: sheets along the ring come back as other layers of the section, which makes
 // them self-parallel (a half turn brings layer i back as layer section-1-i) or self-intersecting
-// (a quarter turn brings a layer of one direction back as one of the other). With `prisms` (odd
-// `section`) the middle quad of the section is a fan of 4 triangles, a column of prisms round
-// the ring: non-hex cells that the sheets through the middle cross.
-MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms);
+// (a quarter turn brings a layer of one direction back as one of the other). With `prisms` quads
+// of the section become fans of 4 triangles, columns of prisms round the ring that the sheets
+// through them cross: the middle quad (odd `section`, unless `spread`), else the quad at (1, 1)
+// and the quads it turns into on the way round (so the ring still closes on itself).
+MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms, bool spread = false);
 
 }  // namespace hbc
