@@ -7,7 +7,6 @@ import pathlib
 import shutil
 import subprocess
 import sys
-import time
 import zipfile
 
 import bpy
@@ -291,35 +290,21 @@ def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
     assert P.layer_collection_name(root.name, "sheets") in bpy.data.collections
 
 
-def test_rebuild_gives_first_build_names_no_slower(clean_scene, data_dir):
-    """1301 blocks, one object each: a rebuild makes the same names (no .001, so Blender never
-    searches a free numbered name). Its time is the first build's plus retiring the old layer
-    (removing its objects before the new ones exist, as Blender removes objects in time growing
-    with the objects in the file) and removing the old meshes: measured 1.3 to 2.2 times the first
-    build (7 times before; removal is the part no rebuild can skip). Asserted: at most 2.5 times,
-    plus 0.2 s for timer noise."""
+def test_rebuild_gives_first_build_names(clean_scene, data_dir):
+    """1301 blocks, one object each: a rebuild makes the same object and mesh names as the first
+    build (no .001: the old layer is retired before the new objects exist). Its time is measured by
+    blender_scripts/bench_addon.py, not here: a timed assertion on a shared machine measures the
+    machine."""
     root = import_mesh(data_dir)
     bpy.context.scene.hbc.split_max = 100000
-
-    def timed_build():
-        t = time.perf_counter()
-        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-        return time.perf_counter() - t
-
-    # Best of two each, the shared machine's noise being larger than the difference measured.
-    firsts = []
-    for _ in range(2):
-        bpy.ops.hbc.clear_layer(layer="blocks")
-        firsts.append(timed_build())
+    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
     names = sorted(o.name for o in layer_objects(root, "blocks"))
     meshes = sorted(o.data.name for o in layer_objects(root, "blocks"))
     assert len(names) == 1301 and not any("." in n.rsplit(" ", 1)[-1] for n in names)
-    agains = [timed_build() for _ in range(2)]
-    assert sorted(o.name for o in layer_objects(root, "blocks")) == names
-    assert sorted(o.data.name for o in layer_objects(root, "blocks")) == meshes
-    first, again = min(firsts), min(agains)
-    print(f"blocks: first build {first:.2f} s, rebuild {again:.2f} s")
-    assert again <= 2.5 * first + 0.2, (firsts, agains)
+    for _ in range(2):
+        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+        assert sorted(o.name for o in layer_objects(root, "blocks")) == names
+        assert sorted(o.data.name for o in layer_objects(root, "blocks")) == meshes
 
 
 def test_second_import_lands_beside_the_first(clean_scene, data_dir):
@@ -391,7 +376,11 @@ def new_blender(script, *args):
     if exe and os.path.basename(exe).lower().startswith("blender"):
         cmd = [exe, "-b", "--factory-startup", "--python-exit-code", "1", "--python", str(script), "--", *args]
     else:
-        cmd = [sys.executable, str(script), *args]
+        # bpy 4.2 crashes while Python shuts down: leave without the interpreter's shutdown once the
+        # script has run (an exception still exits 1 with its traceback).
+        run = ("import os, runpy, sys; sys.argv = sys.argv[1:]; runpy.run_path(sys.argv[0], run_name='__main__'); "
+               "sys.stdout.flush(); sys.stderr.flush(); os._exit(0)")
+        cmd = [sys.executable, "-c", run, str(script), *args]
     return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
 
 
