@@ -426,7 +426,7 @@ class HBC_OT_select_block(bpy.types.Operator):
 
 
 def menu_import(self, context):
-    self.layout.operator(HBC_OT_import.bl_idname, text="Hex-dominant mesh (.ovm/.ovmb/.mesh/.HYBRID/.hedra)")
+    self.layout.operator(HBC_OT_import.bl_idname, text="Hex-dominant mesh (.mesh/.msh/.vtk/.vtu/.ovm/.HYBRID/.hedra)")
 
 
 classes = (HBC_OT_import, HBC_OT_analyze, HBC_OT_build_layer, HBC_OT_build_all, HBC_OT_clear_layer,

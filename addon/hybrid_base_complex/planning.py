@@ -42,7 +42,7 @@ def mesh_name_from_path(path: str) -> str:
     import os
 
     base = os.path.basename(path)
-    for suffix in (".ovmb", ".ovm", ".mesh", ".hybrid", ".hedra"):
+    for suffix in (".ovmb", ".ovm", ".mesh", ".hybrid", ".hedra", ".msh", ".vtk", ".vtu"):
         if base.lower().endswith(suffix):
             return base[: -len(suffix)] or base
     return base
