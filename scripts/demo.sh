@@ -3,8 +3,10 @@
 # rows), and render their figure sets (the paper's pipeline panels and a labelled contact sheet)
 # into out/. The first default, a twisted ring (`hbc generate twisted-ring`: a 5x5 section turning
 # a quarter turn round the ring, a column of prisms through its middle), has a self-intersecting
-# sheet with subsheets, a type-1 sheet and non-hex cells, so all seven panels render; the second,
-# a hex-dominant cylinder with prism columns like the paper's teaser, has only perfect sheets.
+# sheet with subsheets (panels d and g), a type-1 sheet and non-hex cells; its self-intersecting
+# sheet touches no non-hex cell, so that sheet's VSG and wireframe (panels e, f) are empty and
+# skipped. The second, a hex-dominant cylinder with prism columns like the paper's teaser, has
+# only perfect sheets.
 # When the shared data is there, teapot.hedra (LoopyCuts) is a third subject.
 #
 # Environment: HBC_DEMO_ENGINE (cycles | eevee | workbench, default cycles),
