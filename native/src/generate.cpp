@@ -362,11 +362,9 @@ MeshInput generate_split(int n, int m, int k, SplitKind kind,
                      std::to_string(m) + "x" + std::to_string(k));
 }
 
-MeshInput generate_sector(int valence, int rings, int layers) {
-  require(valence >= 3, "sector: valence must be at least 3");
-  require(rings >= 1 && layers >= 1, "sector: rings and layers must be at least 1");
-  require(static_cast<int64_t>(valence) * (rings + 1) * (rings + 1) * (layers + 1) * 13 < kMaxIndex,
-          "sector: too large for 32-bit ids");
+// The cross-section of generate_sector: `valence` parallelograms round the origin, each cut into
+// rings×rings quads, of radius 1. Turning it by 2π/valence maps it onto itself.
+Planar planar_sector(int valence, int rings) {
   const int N = valence, R = rings;
   Planar pl;
   pl.xy.assign(static_cast<size_t>(2 * (1 + N * R + N * R * R)), 0.0);
@@ -396,6 +394,16 @@ MeshInput generate_sector(int valence, int rings, int layers) {
         const int32_t q[4] = {id(s, a, b), id(s, a + 1, b), id(s, a + 1, b + 1), id(s, a, b + 1)};
         pl.polys.push_row(q, q + 4);
       }
+  return pl;
+}
+
+MeshInput generate_sector(int valence, int rings, int layers) {
+  require(valence >= 3, "sector: valence must be at least 3");
+  require(rings >= 1 && layers >= 1, "sector: rings and layers must be at least 1");
+  require(static_cast<int64_t>(valence) * (rings + 1) * (rings + 1) * (layers + 1) * 13 < kMaxIndex,
+          "sector: too large for 32-bit ids");
+  const int N = valence, R = rings;
+  const Planar pl = planar_sector(N, R);
   return extrude(pl, layers, 1.0 / R,
                  "sector valence " + std::to_string(N) + " rings " + std::to_string(R) + " layers " +
                      std::to_string(layers));
@@ -515,18 +523,46 @@ Planar ring_section(int a, bool prisms, int quarter_turns, bool spread) {
   return out;
 }
 
-// The section vertex that vertex v of `pl` lands on when the section turns by quarter_turns × 90°.
-std::vector<int32_t> quarter_turn_map(const Planar& pl, int quarter_turns) {
+// The section vertex that vertex v of `pl` lands on when the section turns by `angle` about the
+// origin (the section must map onto itself).
+std::vector<int32_t> turn_map(const Planar& pl, double angle) {
   const size_t nv = pl.num_vertices();
   std::vector<int32_t> to(nv, -1);
+  const double c = std::cos(angle), sn = std::sin(angle);
   for (size_t v = 0; v < nv; ++v) {
-    double x = pl.xy[2 * v], y = pl.xy[2 * v + 1];
-    for (int t = 0; t < quarter_turns; ++t) std::tie(x, y) = std::make_pair(-y, x);
+    const double x = c * pl.xy[2 * v] - sn * pl.xy[2 * v + 1], y = sn * pl.xy[2 * v] + c * pl.xy[2 * v + 1];
     for (size_t w = 0; w < nv; ++w)
       if (std::abs(pl.xy[2 * w] - x) < 1e-9 && std::abs(pl.xy[2 * w + 1] - y) < 1e-9) to[v] = static_cast<int32_t>(w);
     require(to[v] >= 0, "twisted ring: the section does not map onto itself");
   }
   return to;
+}
+
+// The section swept round the z axis in `sections` layers, turning by `angle` on the way round,
+// the last layer closed on the first one turned (build_mesh merges the faces that then repeat
+// layer 0's). `width`: the section's extent, for the ring's radius.
+MeshInput ring_of(const Planar& pl, int sections, double angle, double width, const std::string& source) {
+  MeshInput in = extrude(pl, sections, 1.0, source);
+  const size_t nv = pl.num_vertices();
+  const double radius = 1.5 * width + 2.0, pi = std::acos(-1.0);
+  for (int l = 0; l < sections; ++l) {
+    const double phi = 2 * pi * l / sections, alpha = angle * l / sections;
+    for (size_t v = 0; v < nv; ++v) {
+      double* p = &in.points[3 * (static_cast<size_t>(l) * nv + v)];
+      const double x = p[0] * std::cos(alpha) - p[1] * std::sin(alpha);
+      const double y = p[0] * std::sin(alpha) + p[1] * std::cos(alpha);
+      p[0] = (radius + x) * std::cos(phi);
+      p[1] = (radius + x) * std::sin(phi);
+      p[2] = y;
+    }
+  }
+  const std::vector<int32_t> to = turn_map(pl, angle);
+  const int32_t last = static_cast<int32_t>(sections * nv);
+  for (int32_t& v : in.faces.items)
+    if (v >= last) v = to[static_cast<size_t>(v - last)];
+  in.points.resize(3 * static_cast<size_t>(last));
+  in.source = source;
+  return in;
 }
 
 }  // namespace
@@ -537,30 +573,7 @@ MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bo
   require(!prisms || section >= 3 || (section % 2 == 1 && !spread),
           "twisted ring: prisms need an odd section or one of at least 3 cells");
   const Planar pl = ring_section(section, prisms, quarter_turns, spread || section % 2 == 0);
-  MeshInput in = extrude(pl, sections, 1.0, "twisted_ring");
-  const size_t nv = pl.num_vertices();
-  const double radius = 1.5 * section + 2.0, pi = std::acos(-1.0);
-  // Layer l sits at angle 2πl/n round the z axis, its section turned by quarter_turns·90°·l/n.
-  for (int l = 0; l < sections; ++l) {
-    const double phi = 2 * pi * l / sections, alpha = quarter_turns * 0.5 * pi * l / sections;
-    for (size_t v = 0; v < nv; ++v) {
-      double* p = &in.points[3 * (static_cast<size_t>(l) * nv + v)];
-      const double x = p[0] * std::cos(alpha) - p[1] * std::sin(alpha);
-      const double y = p[0] * std::sin(alpha) + p[1] * std::cos(alpha);
-      p[0] = (radius + x) * std::cos(phi);
-      p[1] = (radius + x) * std::sin(phi);
-      p[2] = y;
-    }
-  }
-  // The last layer closes the ring on the first one, turned: its vertices become those of layer 0
-  // (build_mesh merges the faces that then repeat layer 0's).
-  const std::vector<int32_t> to = quarter_turn_map(pl, quarter_turns);
-  const int32_t last = static_cast<int32_t>(sections * nv);
-  for (int32_t& v : in.faces.items)
-    if (v >= last) v = to[static_cast<size_t>(v - last)];
-  in.points.resize(3 * static_cast<size_t>(last));
-  in.source = "twisted_ring";
-  return in;
+  return ring_of(pl, sections, quarter_turns * 0.5 * std::acos(-1.0), section, "twisted_ring");
 }
 
 }  // namespace hbc
