@@ -129,6 +129,16 @@ def test_denoised_where_available(tmp_path):
     assert float(img[..., :3].std()) > MIN_STD
 
 
+def test_eevee_renders_headless(tmp_path):
+    """EEVEE (BLENDER_EEVEE_NEXT in 4.2-4.5, BLENDER_EEVEE before and from 5.0) renders in
+    background mode on software EGL in every Blender of the matrix: a panel that is not blank."""
+    p = run([data("test_2.HYBRID"), "--out", tmp_path, "--engine", "eevee", "--samples", 1,
+             "--resolution", 64, 48, "--panels", "complex"], timeout=300)
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
+    img = load(tmp_path / "test_2_c_complex.png")
+    assert float(img[..., :3].std()) > MIN_STD
+
+
 def test_compare_layout(tmp_path):
     a, b = data("twistcube_s.mesh"), data("cube_twist-comp.obj.HYBRID")
     p = run(["--compare", a, b, "--out", tmp_path, "--engine", "workbench", "--resolution", W, H])
