@@ -38,14 +38,6 @@ double signed_volume(const MeshInput& in, size_t c) {
   return vol / 6;
 }
 
-// Faces and cells a reader produced, for comparing two readers.
-void expect_same_cells(const MeshInput& a, const MeshInput& b) {
-  EXPECT_EQ(a.points, b.points);
-  EXPECT_EQ(a.faces.offsets, b.faces.offsets);
-  EXPECT_EQ(a.faces.items, b.faces.items);
-  EXPECT_EQ(a.cells.offsets, b.cells.offsets);
-  EXPECT_EQ(a.cells.items, b.cells.items);
-}
 
 // ---------------------------------------------------------------------------------------------
 // One real mesh in every format.
@@ -118,7 +110,7 @@ TEST(FormatsCorners, APrismInEachFormatsOwnOrderFacesOutward) {
   EXPECT_DOUBLE_EQ(signed_volume(medit, 0), 0.5);
   EXPECT_DOUBLE_EQ(signed_volume(msh, 0), 0.5);
   EXPECT_DOUBLE_EQ(signed_volume(vtk, 0), 0.5);
-  expect_same_cells(msh, medit);
+  test::expect_same_cells(msh, medit);
   // The Gmsh corner order under VTK's wedge type is the prism turned inside out.
   std::string wrong = formats_file("prism_vtk.vtk");
   wrong.replace(wrong.find("6 0 2 1 3 5 4"), 13, "6 0 1 2 3 4 5");
@@ -130,8 +122,8 @@ TEST(FormatsCorners, AHexahedronWithRepeatedCornersIsMeditsPolyhedron) {
   medit_text.replace(medit_text.find("Prisms\n1\n1 2 3 4 5 6 0"), 22, "Hexahedra\n1\n1 2 3 3 4 5 6 6 0");
   const MeshInput medit = read_medit(medit_text, "degenerate.mesh");
   ASSERT_EQ(medit.cells.count(0), 5);  // two triangles and three quadrangles
-  expect_same_cells(read_msh(formats_file("degenerate_hex.msh"), "degenerate_hex.msh"), medit);
-  expect_same_cells(read_vtk(formats_file("degenerate_hex.vtk"), "degenerate_hex.vtk"), medit);
+  test::expect_same_cells(read_msh(formats_file("degenerate_hex.msh"), "degenerate_hex.msh"), medit);
+  test::expect_same_cells(read_vtk(formats_file("degenerate_hex.vtk"), "degenerate_hex.vtk"), medit);
   const Mesh m = build_mesh(medit);
   EXPECT_EQ(m.cell_type[0], CellType::Prism);
 }
@@ -169,7 +161,7 @@ TEST(FormatsMsh, BinaryInBothByteOrdersReadsAsTheAsciiFile) {
     SCOPED_TRACE(swap ? "byte-swapped" : "native order");
     const MeshInput bin = read_msh(test::prism_msh41_binary(swap), "prism.msh");
     EXPECT_TRUE(bin.binary);
-    expect_same_cells(bin, ascii);
+    test::expect_same_cells(bin, ascii);
   }
 }
 
@@ -282,7 +274,7 @@ TEST(FormatsVtu, EveryDataEncodingReadsAsTheAsciiFile) {
     const std::string name = mode.format + (mode.zlib ? "_zlib" : "") + (mode.base64_appended ? "_b64" : "") +
                              (mode.uint64 ? "_u64" : "") + (mode.big_endian ? "_be" : "") + ".vtu";
     SCOPED_TRACE(name);
-    expect_same_cells(read_vtu(encode_vtu(poly_arrays(), mode), name), ascii);
+    test::expect_same_cells(read_vtu(encode_vtu(poly_arrays(), mode), name), ascii);
   }
 }
 

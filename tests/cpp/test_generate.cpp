@@ -87,13 +87,6 @@ void expect_no_non_manifold(const Mesh& m) {
   for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok[e]) << m.source << " edge " << e;
 }
 
-void expect_same(const MeshInput& a, const MeshInput& b) {
-  EXPECT_EQ(a.points, b.points);
-  EXPECT_EQ(a.faces.offsets, b.faces.offsets);
-  EXPECT_EQ(a.faces.items, b.faces.items);
-  EXPECT_EQ(a.cells.offsets, b.cells.offsets);
-  EXPECT_EQ(a.cells.items, b.cells.items);
-}
 
 TEST(Generate, GridCountsAndValences) {
   // 2x3x4: V = 3*4*5 = 60; E = 2*4*5 + 3*3*5 + 3*4*4 = 133; F = 3*3*4 + 2*4*4 + 2*3*5 = 98;
@@ -324,12 +317,12 @@ TEST(Generate, CylinderIsHexDominantWithPrismColumns) {
 }
 
 TEST(Generate, Deterministic) {
-  expect_same(generate_grid(4, 3, 2, 0.25), generate_grid(4, 3, 2, 0.25));
+  test::expect_same_cells(generate_grid(4, 3, 2, 0.25), generate_grid(4, 3, 2, 0.25));
   const auto cells = random_cells(4, 4, 4, 5, 42);
   for (SplitKind k : {SplitKind::Pyramids, SplitKind::Prisms, SplitKind::Tets})
-    expect_same(generate_split(4, 4, 4, k, cells), generate_split(4, 4, 4, k, random_cells(4, 4, 4, 5, 42)));
-  expect_same(generate_sector(5, 3, 2), generate_sector(5, 3, 2));
-  expect_same(generate_cylinder(6, 2), generate_cylinder(6, 2));
+    test::expect_same_cells(generate_split(4, 4, 4, k, cells), generate_split(4, 4, 4, k, random_cells(4, 4, 4, 5, 42)));
+  test::expect_same_cells(generate_sector(5, 3, 2), generate_sector(5, 3, 2));
+  test::expect_same_cells(generate_cylinder(6, 2), generate_cylinder(6, 2));
 }
 
 TEST(Generate, BadArgumentsThrow) {

@@ -43,4 +43,13 @@ inline Renumbering random_renumbering(const Mesh& m, std::mt19937& rng) {
   return out;
 }
 
+// The same points, faces and cells (numbering included) in two reader or generator outputs.
+inline void expect_same_cells(const MeshInput& a, const MeshInput& b) {
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.faces.offsets, b.faces.offsets);
+  EXPECT_EQ(a.faces.items, b.faces.items);
+  EXPECT_EQ(a.cells.offsets, b.cells.offsets);
+  EXPECT_EQ(a.cells.items, b.cells.items);
+}
+
 }  // namespace hbc::test
