@@ -105,9 +105,10 @@ class Structure:
         return (np.asarray(positions, np.float32) * np.float32(self.scale) + self.offset).astype(np.float32)
 
     # -- geometry, all made by hbc (render_geometry.hpp) -----------------------------------------
-    def _soup(self, what: str, sheet: int = -1, shrink: float = 0.0) -> P.Soup:
+    def _soup(self, what: str, sheet: int | None = None, shrink: float = 0.0) -> P.Soup:
         """hbc.block_soup as a planning Soup, placed like self.points."""
-        soup = P.Soup.from_dict(import_hbc().block_soup(self.mesh, self.analysis, what, sheet=int(sheet),
+        sheet = None if sheet is None else int(sheet)
+        soup = P.Soup.from_dict(import_hbc().block_soup(self.mesh, self.analysis, what, sheet=sheet,
                                                         shrink=float(shrink)))
         soup.positions = self._place(soup.positions)
         return soup

@@ -42,7 +42,11 @@ bool soup_kind_needs_analysis(SoupKind kind) {
   return kind != SoupKind::Cells && kind != SoupKind::NonHex && kind != SoupKind::Hex && kind != SoupKind::Boundary;
 }
 
-FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet) {
+FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, std::optional<int32_t> sheet) {
+  if (soup_kind_needs_sheet(kind) && !sheet) {
+    const auto named = std::find_if(kSoupNames.begin(), kSoupNames.end(), [&](const auto& nk) { return nk.second == kind; });
+    throw std::invalid_argument("the block set '" + std::string(named->first) + "' needs a sheet");
+  }
   switch (kind) {
     case SoupKind::Cells: {
       std::vector<int32_t> all(m.num_cells());
@@ -57,15 +61,12 @@ FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_
     }
     case SoupKind::Components: return component_selection(m, a.complex);
     case SoupKind::Sheets:
-      if (!a.has_sheets) throw std::invalid_argument("the analysis was run without sheets");
-      return sheet_selection(m, a.sheets);
-    case SoupKind::Subsheets: return cell_set_selection(m, require_subsheets(a, sheet).cells);
-    case SoupKind::Sheet:
-      require_sheet(a, sheet);
-      return sheet_component_selection(m, a.complex, a.sheets, sheet);
+      if (!a.sheet_stage) throw std::invalid_argument("the analysis was run without sheets");
+      return sheet_selection(m, a.sheet_stage->sheets);
+    case SoupKind::Subsheets: return cell_set_selection(m, require_subsheets(a, *sheet).cells);
+    case SoupKind::Sheet: return sheet_component_selection(m, a.complex, require_sheet(a, *sheet).sheets, *sheet);
     case SoupKind::SheetNonHex: {
-      require_sheet(a, sheet);
-      const auto cells = a.sheets.sheet_non_hex_cells[static_cast<size_t>(sheet)];
+      const auto cells = require_sheet(a, *sheet).sheets.sheet_non_hex_cells[static_cast<size_t>(*sheet)];
       return cells_selection(m, {cells.begin(), cells.end()});
     }
     case SoupKind::Boundary: return boundary_selection(m);
@@ -147,7 +148,7 @@ BlockSoup build_soup(const Mesh& m, const FaceSelection& in, double shrink) {
   return s;
 }
 
-BlockSoup block_soup(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet, double shrink) {
+BlockSoup block_soup(const Mesh& m, const Analysis& a, SoupKind kind, std::optional<int32_t> sheet, double shrink) {
   return build_soup(m, soup_faces(m, a, kind, sheet), shrink);
 }
 

@@ -324,7 +324,7 @@ TEST(FormatsExport, GraphPathAndSheetRange) {
   const Mesh m = load_mesh(formats_path("real/slab.mesh"));
   const Analysis a = analyze(m);
   VtuExportOptions o;
-  o.sheet = static_cast<int32_t>(a.sheets.sheet_cells.rows());
+  o.sheet = static_cast<int32_t>(a.sheet_stage->sheets.sheet_cells.rows());
   EXPECT_THROW(vtu_cells_text(m, a, o), std::invalid_argument);
 }
 

@@ -409,19 +409,20 @@ TEST(Generate, TwistedRingSheets) {
   opt.wireframe = false;
   const Mesh flat = build_mesh(generate_twisted_ring(1, 12, 0, false));
   const Analysis a0 = analyze(flat, opt);
-  EXPECT_EQ(a0.sheets.count(SheetType::Type3), 0u);
+  EXPECT_EQ(a0.sheet_stage->sheets.count(SheetType::Type3), 0u);
   const Mesh turned = build_mesh(generate_twisted_ring(1, 12, 1, false));
   const Analysis a1 = analyze(turned, opt);
-  EXPECT_EQ(a1.sheets.count(SheetType::Type3), 1u);
+  EXPECT_EQ(a1.sheet_stage->sheets.count(SheetType::Type3), 1u);
   // The demo's ring, at the complex level: a self-intersecting sheet with subsheets, a type-1
   // sheet (the one through the prism column) and non-hex cells.
   const Mesh demo = build_mesh(generate_twisted_ring(5, 12, 1, true));
   const Analysis d = analyze(demo, {});
-  EXPECT_EQ(d.sheets.count(SheetType::Type3), 1u);
-  EXPECT_EQ(d.sheets.count(SheetType::Type1), 1u);
-  EXPECT_GE(d.largest_self_intersecting, 0);
-  ASSERT_NE(d.subsheets_of(d.largest_self_intersecting), nullptr);
-  EXPECT_GT(d.subsheets_of(d.largest_self_intersecting)->size(), 1u);
+  EXPECT_EQ(d.sheet_stage->sheets.count(SheetType::Type3), 1u);
+  EXPECT_EQ(d.sheet_stage->sheets.count(SheetType::Type1), 1u);
+  ASSERT_TRUE(d.sheet_stage->largest_self_intersecting.has_value());
+  const Subsheets* big = d.sheet_stage->subsheets_of(*d.sheet_stage->largest_self_intersecting);
+  ASSERT_NE(big, nullptr);
+  EXPECT_GT(big->size(), 1u);
   // Prism fans need a middle quad (odd section) or room for fans off the middle (3+ cells).
   EXPECT_THROW(generate_twisted_ring(2, 12, 1, true), std::invalid_argument);
 }

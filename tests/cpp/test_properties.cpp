@@ -128,9 +128,9 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
 
   // Sheets: a perfect sheet shares no curve end and leaves no vertex unmatched; no subsheet is
   // self-intersecting.
-  ASSERT_TRUE(a.has_sheets);
-  for (size_t s = 0; s < a.sheets.size(); ++s) {
-    const SheetClass& k = a.sheets.classes[s];
+  ASSERT_TRUE(a.sheet_stage.has_value());
+  for (size_t s = 0; s < a.sheet_stage->sheets.size(); ++s) {
+    const SheetClass& k = a.sheet_stage->sheets.classes[s];
     if (k.type == SheetType::Perfect) {
       EXPECT_TRUE(k.shared_vertices.empty()) << "perfect sheet " << s;
       EXPECT_TRUE(k.unmatched_vertices.empty()) << "perfect sheet " << s;
@@ -138,13 +138,13 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
       EXPECT_FALSE(k.shared_vertices.empty()) << "imperfect sheet " << s;
     }
   }
-  for (const Subsheets& sub : a.subsheets)
+  for (const Subsheets& sub : *a.sheet_stage->subsheets)
     for (size_t i = 0; i < sub.size(); ++i)
       EXPECT_NE(sub.classes[i].type, SheetType::Type3) << "subsheet " << i << " of sheet " << sub.sheet;
 
   // Wireframe: polylines follow mesh edges, opacities in [floor, 1].
-  ASSERT_TRUE(a.has_wireframe);
-  const VsgWireframe& w = a.wireframe;
+  ASSERT_TRUE(a.wireframe_stage.has_value());
+  const VsgWireframe& w = a.wireframe_stage->wireframe;
   for (size_t i = 0; i < w.size(); ++i) {
     const auto p = w.polylines[i];
     EXPECT_GE(p.size(), 2u) << "wire edge " << i;
@@ -161,7 +161,7 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
 
 int64_t unmatched_total(const Analysis& a) {
   int64_t n = 0;
-  for (const SheetClass& k : a.sheets.classes) n += static_cast<int64_t>(k.unmatched_vertices.size());
+  for (const SheetClass& k : a.sheet_stage->sheets.classes) n += static_cast<int64_t>(k.unmatched_vertices.size());
   return n;
 }
 
@@ -208,7 +208,7 @@ bool check_case(const Case& cs, std::mt19937& rng, const AnalysisOptions& opt) {
     std::sort(sets.begin(), sets.end());
     return sets;
   };
-  EXPECT_TRUE(sheet_sets(a.sheets, &cperm) == sheet_sets(b.sheets, nullptr)) << "sheets differ";
+  EXPECT_TRUE(sheet_sets(a.sheet_stage->sheets, &cperm) == sheet_sets(b.sheet_stage->sheets, nullptr)) << "sheets differ";
   return !::testing::Test::HasFailure();
 }
 

@@ -92,7 +92,14 @@ def test_stats_without_stages_match_cli(shared_data_dir, hbc_cli):
                 "wireframe_edges"):
         assert key not in stats
     assert_same_stats(stats, cli_analyze(hbc_cli, path, "--no-sheets", "--no-wireframe"))
-    assert not a.has_sheets and not a.has_wireframe and a.num_sheets == 0
+    assert not a.has_sheets and not a.has_subsheets and not a.has_wireframe and a.num_sheets == 0
+    assert a.largest_self_intersecting is None
+    with pytest.raises(ValueError, match="without sheets"):
+        a.subsheets(0)
+    without_sub = m.analyze(subsheets=False)
+    assert without_sub.has_sheets and not without_sub.has_subsheets
+    with pytest.raises(ValueError, match="without subsheets"):
+        without_sub.subsheets(without_sub.largest_self_intersecting)
     assert "subsheets_of_largest_self_intersecting" not in m.analyze(subsheets=False).stats
     # The whole-mesh wireframe is then computed on demand, the same as in a full analysis.
     assert a.wireframe().counts == m.analyze().wireframe().counts
@@ -133,10 +140,10 @@ def test_table1(analyzed, name, comps, hex_comps, sheets, t1, t2, t3):
 def test_table1_subsheets(analyzed):
     _, a = analyzed[TABLE1 + "twistcube_s.mesh"]
     big = a.largest_self_intersecting
-    assert big >= 0
+    assert big is not None
     assert a.subsheets(big).count == 9 == a.stats["subsheets_of_largest_self_intersecting"]
     _, a = analyzed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
-    assert a.largest_self_intersecting == -1 and len(a.self_intersecting_sheets) == 0
+    assert a.largest_self_intersecting is None and len(a.self_intersecting_sheets) == 0
 
 
 @pytest.mark.parametrize("name", MESHES)

@@ -29,9 +29,9 @@ def rows(offsets, items):
 
 def kinds(a):
     """(what, sheet, number of possible owners) for every block set the analysis allows."""
-    out = [("cells", -1, a.mesh.num_cells), ("components", -1, len(a.complex.component_kind)),
-           ("sheets", -1, a.num_sheets), ("non_hex", -1, a.mesh.num_cells), ("boundary", -1, 5),
-           ("hex", -1, 1)]
+    out = [("cells", None, a.mesh.num_cells), ("components", None, len(a.complex.component_kind)),
+           ("sheets", None, a.num_sheets), ("non_hex", None, a.mesh.num_cells), ("boundary", None, 5),
+           ("hex", None, 1)]
     for s in range(min(a.num_sheets, 3)):
         out += [("sheet", s, len(a.complex.component_kind)), ("sheet_non_hex", s, a.mesh.num_cells)]
     for s in a.self_intersecting_sheets:
@@ -240,8 +240,10 @@ def test_soup_errors(analyzed):
     for bad in (-0.1, 1.0, float("nan")):
         with pytest.raises(ValueError, match="shrink"):
             hbc.block_soup(m, a, "cells", shrink=bad)
-    with pytest.raises(ValueError, match="out of range"):
-        hbc.block_soup(m, a, "sheet")  # no sheet given
+    with pytest.raises(ValueError, match="needs a sheet"):
+        hbc.block_soup(m, a, "sheet")
+    with pytest.raises(ValueError, match="non-negative"):
+        hbc.block_soup(m, a, "sheet", sheet=-1)
     with pytest.raises(ValueError, match="out of range"):
         hbc.block_soup(m, a, "sheet", sheet=a.num_sheets)
     not_type3 = int(np.flatnonzero(a.sheet_type != 3)[0])

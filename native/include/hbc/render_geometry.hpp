@@ -8,6 +8,7 @@
 // The region of a sheet and its wireframe are part of the analysis (region.hpp).
 // Everything is a pure, deterministic function of its arguments.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -42,11 +43,12 @@ bool soup_kind_needs_sheet(SoupKind kind);
 // Cells, NonHex and Boundary read only the mesh (any Analysis, even an empty one, will do).
 bool soup_kind_needs_analysis(SoupKind kind);
 
-// Selects the faces of `kind`. `sheet` is required (a sheet id) for Subsheets, Sheet and
-// SheetNonHex and ignored otherwise. Throws std::invalid_argument when the analysis lacks the
-// stage the kind needs (sheets, subsheets), for a sheet id out of range, and for Subsheets of a
-// sheet that is not self-intersecting.
-FaceSelection soup_faces(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1);
+// Selects the faces of `kind`. `sheet` is required for Subsheets, Sheet and SheetNonHex
+// (soup_kind_needs_sheet) and ignored otherwise. Throws std::invalid_argument without a sheet
+// those kinds need, when the analysis lacks the stage the kind needs (sheets, subsheets), for a
+// sheet id out of range, and for Subsheets of a sheet that is not self-intersecting.
+FaceSelection soup_faces(const Mesh& mesh, const Analysis& analysis, SoupKind kind,
+                         std::optional<int32_t> sheet = std::nullopt);
 
 struct BlockSoup {
   // Points: each owner has its own copies of the mesh vertices its faces use (shared between
@@ -71,8 +73,8 @@ struct BlockSoup {
 BlockSoup build_soup(const Mesh& mesh, const FaceSelection& faces, double shrink = 0.0);
 
 // soup_faces then build_soup.
-BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1,
-                     double shrink = 0.0);
+BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind,
+                     std::optional<int32_t> sheet = std::nullopt, double shrink = 0.0);
 
 // The surface of a set of cells (kept[c] != 0; nc entries, else std::invalid_argument): every face
 // of a kept cell whose other side is not kept or is the boundary, owner = cell id, pointing out of

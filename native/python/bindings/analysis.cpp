@@ -7,10 +7,19 @@
 #include <stdexcept>
 #include <string>
 
+#include <pybind11/stl.h>  // std::optional results as None
+
 #include "bindings.hpp"
 #include "hbc/vtu_export.hpp"
 
 namespace hbc::python {
+
+std::optional<int32_t> optional_id(const py::object& v, const char* what) {
+  if (v.is_none()) return std::nullopt;
+  const int64_t i = v.cast<int64_t>();
+  if (i < 0 || i > INT32_MAX) throw std::invalid_argument(std::string(what) + " must be a non-negative id");
+  return static_cast<int32_t>(i);
+}
 
 namespace {
 
@@ -116,12 +125,14 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
     PyAnalysis& p = *out;
     p.analysis = hbc::analyze(p.mesh->mesh, o);
     p.analysis.timings.load = p.mesh->load_seconds;
-    const Analysis& a = p.analysis;
-    p.sheet_classes = flatten_classes(a.domain, a.sheets.classes);
-    p.sheet_components = blocks_as_components(a.domain, a.sheets.sheet_blocks);
-    for (const Subsheets& s : a.subsheets) {
-      p.self_intersecting.push_back(s.sheet);
-      p.subsheets.push_back({flatten_classes(a.domain, s.classes), blocks_as_components(a.domain, s.blocks)});
+    if (const auto& st = p.analysis.sheet_stage) {
+      p.sheet_classes = flatten_classes(st->domain, st->sheets.classes);
+      p.sheet_components = blocks_as_components(st->domain, st->sheets.sheet_blocks);
+      if (st->subsheets)
+        for (const Subsheets& s : *st->subsheets) {
+          p.self_intersecting.push_back(s.sheet);
+          p.subsheets.push_back({flatten_classes(st->domain, s.classes), blocks_as_components(st->domain, s.blocks)});
+        }
     }
   }
   return out;
@@ -132,8 +143,8 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
 py::dict stats_dict(const PyAnalysis& p) {
   const Stats s = compute_stats(p.mesh->mesh, p.analysis);
   py::dict d;
-  auto count = [&](const char* key, int64_t v) {
-    if (v >= 0) d[key] = v;
+  auto count = [&](const char* key, std::optional<int64_t> v) {
+    if (v) d[key] = *v;
   };
   count("cells", s.cells);
   d["hex_ratio"] = s.hex_ratio;
@@ -169,18 +180,11 @@ py::dict stats_dict(const PyAnalysis& p) {
   return d;
 }
 
-int32_t optional_id(const py::object& v, const char* what) {
-  if (v.is_none()) return -1;
-  const int64_t i = v.cast<int64_t>();
-  if (i < 0 || i > INT32_MAX) throw std::invalid_argument(std::string(what) + " must be a non-negative id");
-  return static_cast<int32_t>(i);
-}
-
 PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const py::object& subsheet_arg) {
-  const int32_t sheet = optional_id(sheet_arg, "sheet"), subsheet = optional_id(subsheet_arg, "subsheet");
-  if (sheet < 0 && subsheet >= 0) throw std::invalid_argument("a subsheet needs its sheet");
-  if (sheet < 0 && p->analysis.has_wireframe)
-    return {std::shared_ptr<const VsgWireframe>(p, &p->analysis.wireframe)};
+  const auto sheet = optional_id(sheet_arg, "sheet"), subsheet = optional_id(subsheet_arg, "subsheet");
+  if (!sheet && subsheet) throw std::invalid_argument("a subsheet needs its sheet");
+  if (!sheet && p->analysis.wireframe_stage)
+    return {std::shared_ptr<const VsgWireframe>(p, &p->analysis.wireframe_stage->wireframe)};
   auto w = std::make_shared<VsgWireframe>();
   {
     py::gil_scoped_release unlocked;
@@ -191,14 +195,9 @@ PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const
 }
 
 SubsheetsView subsheets(const PyAnalysisPtr& p, int64_t sheet) {
-  const Analysis& a = p->analysis;
-  if (!a.has_sheets || !a.has_subsheets) throw std::invalid_argument("the analysis was run without subsheets");
-  if (sheet < 0 || static_cast<size_t>(sheet) >= a.sheets.size())
-    throw std::invalid_argument("sheet " + std::to_string(sheet) + " out of range: the mesh has " +
-                                std::to_string(a.sheets.size()) + " sheets");
-  for (size_t i = 0; i < a.subsheets.size(); ++i)
-    if (a.subsheets[i].sheet == sheet) return {p, i};
-  throw std::invalid_argument("sheet " + std::to_string(sheet) + " is not self-intersecting (type 3)");
+  if (sheet < 0 || sheet > INT32_MAX) throw std::invalid_argument("sheet must be a non-negative id");
+  const Subsheets& sub = require_subsheets(p->analysis, static_cast<int32_t>(sheet));
+  return {p, static_cast<size_t>(&sub - p->decompositions().data())};
 }
 
 void bind_graph(py::module_& m) {
@@ -269,9 +268,9 @@ void bind_complex(py::module_& m) {
 void bind_subsheets(py::module_& m) {
   py::class_<SubsheetsView> c(m, "Subsheets",
                               "The subsheets of one self-intersecting sheet (SPEC section 3); arrays are views.");
-  c.def_property_readonly("sheet", [](const SubsheetsView& v) { return v.a->analysis.subsheets[v.index].sheet; });
-  c.def_property_readonly("count", [](const SubsheetsView& v) { return v.a->analysis.subsheets[v.index].size(); });
-  const auto sub = [](const SubsheetsView& v) -> const Subsheets& { return v.a->analysis.subsheets[v.index]; };
+  const auto sub = [](const SubsheetsView& v) -> const Subsheets& { return v.a->decompositions()[v.index]; };
+  c.def_property_readonly("sheet", [sub](const SubsheetsView& v) { return sub(v).sheet; });
+  c.def_property_readonly("count", [sub](const SubsheetsView& v) { return sub(v).size(); });
   const auto flat = [](const SubsheetsView& v) -> const PyAnalysis::Sub& { return v.a->subsheets[v.index]; };
   auto rows = [&](const char* off, const char* items, auto get, const char* doc) {
     c.def_property_readonly(off, [get](py::object self) -> py::array { return vec(get(self.cast<const SubsheetsView&>()).offsets, self); },
@@ -291,10 +290,7 @@ void bind_subsheets(py::module_& m) {
 std::string to_vtu(const PyAnalysis& p, const std::string& path, py::object sheet, bool ascii) {
   VtuExportOptions o;
   o.ascii = ascii;
-  if (!sheet.is_none()) {
-    o.sheet = sheet.cast<int32_t>();
-    if (o.sheet < 0) throw py::value_error("sheet must be >= 0, got " + std::to_string(o.sheet));
-  }
+  o.sheet = optional_id(sheet, "sheet");
   py::gil_scoped_release unlocked;  // writing touches no Python object
   export_vtu(p.mesh->mesh, p.analysis, path, o);
   return vtu_graph_path(path);
@@ -313,29 +309,37 @@ void bind_analysis(py::module_& m) {
   c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analyzed hbc.Mesh.");
   c.def_property_readonly("level", [](const PyAnalysis& p) { return level_name(p.options.wireframe_level); });
   c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; });
-  c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.has_sheets; });
-  c.def_property_readonly("has_subsheets", [](const PyAnalysis& p) { return p.analysis.has_subsheets; });
-  c.def_property_readonly("has_wireframe", [](const PyAnalysis& p) { return p.analysis.has_wireframe; });
+  c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.sheet_stage.has_value(); },
+                          "The sheet stage ran (else the per-sheet arrays are empty).");
+  c.def_property_readonly("has_subsheets",
+                          [](const PyAnalysis& p) { return p.analysis.sheet_stage && p.analysis.sheet_stage->subsheets; },
+                          "The subsheet stage ran (else subsheets() raises ValueError).");
+  c.def_property_readonly("has_wireframe", [](const PyAnalysis& p) { return p.analysis.wireframe_stage.has_value(); },
+                          "The whole-mesh wireframe stage ran (else wireframe() computes it on demand).");
   c.def_property_readonly("stats", &stats_dict,
                           "dict: the `hbc analyze --json` keys (SPEC section 5), timings in seconds.");
   c.def_property_readonly("graph", [](const PyAnalysisPtr& p) { return GraphView{p}; });
   c.def_property_readonly("complex", [](const PyAnalysisPtr& p) { return ComplexView{p}; });
 
-  c.def_property_readonly("num_sheets", [](const PyAnalysis& p) { return p.analysis.sheets.size(); });
+  c.def_property_readonly("num_sheets", [](const PyAnalysis& p) { return p.sheets().size(); });
   csr(c, "sheet_component_offsets", "sheet_component_items", [](const PyAnalysis& p) -> auto& { return p.sheet_components; },
       "base-complex components of each sheet, sorted.");
-  csr(c, "sheet_cell_offsets", "sheet_cell_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_cells; },
+  csr(c, "sheet_cell_offsets", "sheet_cell_items", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_cells; },
       "mesh hex cells of each sheet, sorted.");
-  csr(c, "sheet_curve_offsets", "sheet_curve_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_curves; },
+  csr(c, "sheet_curve_offsets", "sheet_curve_items", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_curves; },
       "parallel curves E_P of each sheet, sorted (complex curves, or mesh edges at level 'mesh').");
-  csr(c, "sheet_edge_offsets", "sheet_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_edges; },
+  csr(c, "sheet_edge_offsets", "sheet_edge_items", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_edges; },
       "mesh edges of each sheet's parallel curves, sorted.");
   csr(c, "sheet_non_hex_offsets", "sheet_non_hex_items",
-      [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_non_hex_cells; },
+      [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_non_hex_cells; },
       "non-hex cells adjacent to each sheet, sorted.");
   class_arrays(c, "sheet_", [](const PyAnalysis& p) -> const ClassArrays& { return p.sheet_classes; });
-  c.def_property_readonly("largest_self_intersecting", [](const PyAnalysis& p) { return p.analysis.largest_self_intersecting; },
-                          "The self-intersecting sheet with most cells, or -1.");
+  c.def_property_readonly(
+      "largest_self_intersecting",
+      [](const PyAnalysis& p) -> std::optional<int32_t> {
+        return p.analysis.sheet_stage ? p.analysis.sheet_stage->largest_self_intersecting : std::nullopt;
+      },
+      "The self-intersecting sheet with most cells; None without one (or without the sheet stage).");
   prop(c, "self_intersecting_sheets", [](const PyAnalysis& p, py::handle s) { return vec(p.self_intersecting, s); },
        "int32: the sheets with a subsheet decomposition, increasing.");
   c.def("subsheets", &subsheets, py::arg("sheet"),

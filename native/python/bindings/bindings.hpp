@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "hbc/analysis.hpp"
@@ -48,6 +49,7 @@ py::array adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape, py::dtype dt
 
 // What a Python hbc.Analysis holds: the mesh it was computed on (kept alive), the options (for
 // the region wireframes computed on demand), the analysis, and the per-sheet arrays flattened once.
+// Without a sheet stage the per-sheet arrays are empty (Analysis.has_sheets tells the two apart).
 struct PyAnalysis {
   PyMeshPtr mesh;
   AnalysisOptions options;
@@ -59,7 +61,12 @@ struct PyAnalysis {
     ClassArrays classes;
     Csr<int32_t> components;
   };
-  std::vector<Sub> subsheets;              // aligned with analysis.subsheets
+  std::vector<Sub> subsheets;              // aligned with the sheet stage's subsheets
+  Sheets no_sheets;                        // what sheets() returns without a sheet stage
+
+  const Sheets& sheets() const { return analysis.sheet_stage ? analysis.sheet_stage->sheets : no_sheets; }
+  // The decompositions; the subsheet stage must have run (subsheets() checks it).
+  const std::vector<Subsheets>& decompositions() const { return *analysis.sheet_stage->subsheets; }
 };
 using PyAnalysisPtr = std::shared_ptr<PyAnalysis>;
 
@@ -68,6 +75,10 @@ using PyAnalysisPtr = std::shared_ptr<PyAnalysis>;
 struct PyWireframe {
   std::shared_ptr<const VsgWireframe> w;
 };
+
+// An optional id argument: None is none; anything else must be an int in [0, INT32_MAX]
+// (std::invalid_argument naming `what` otherwise).
+std::optional<int32_t> optional_id(const py::object& v, const char* what);
 
 // A new (owning, writable) 1-D numpy array holding a copy of `v`.
 template <class T>

@@ -110,8 +110,9 @@ py::dict kept_surface(const PyMeshPtr& mesh, const MaskArray& kept, double shrin
   return soup_dict(std::move(s));
 }
 
-py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
-                    double shrink) {
+py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what,
+                    const py::object& sheet_arg, double shrink) {
+  const std::optional<int32_t> sheet = optional_id(sheet_arg, "sheet");
   const SoupKind kind = soup_kind_from_name(what);
   if (!analysis && soup_kind_needs_analysis(kind))
     throw std::invalid_argument("block_soup: '" + what + "' needs an analysis (only 'cells', 'non_hex', 'hex' and "
@@ -155,7 +156,7 @@ py::array cell_centroid_array(const PyMeshPtr& mesh) {
 
 void bind_geometry(py::module_& m) {
   bind_wireframe(m);
-  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = -1,
+  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = py::none(),
         py::arg("shrink") = 0.0,
         "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
