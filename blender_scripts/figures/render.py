@@ -394,8 +394,8 @@ class Subject:
         """The VSG chains of a sheet's wireframe (kind 0), palette colours, opaque."""
         P = self.addon.P
         w = self.s.analysis.wireframe(sheet=int(sheet))
-        off = np.asarray(w.polyline_offsets)
-        verts = np.asarray(w.polyline_items)
+        off = np.asarray(w.polylines_offsets)
+        verts = np.asarray(w.polylines_items)
         k = len(off) - 1
         if k == 0:
             return None
@@ -439,7 +439,7 @@ class Subject:
         if self.sheet is None or self.sheet_type != 3:
             return None
         sub = self.s.subsheets(self.sheet)
-        off = np.asarray(sub.cell_offsets)
+        off = np.asarray(sub.subsheet_cells_offsets)
         picked = plan.pick_subsheets(np.diff(off), self.args.max_subsheets)
         coll = self.build("subsheets", "subsheets", spread=False)
         with self.addon.S.Transaction() as tx:

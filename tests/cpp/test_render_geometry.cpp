@@ -43,12 +43,10 @@ std::set<int32_t> owners(const BlockSoup& s) { return {s.face_owner.begin(), s.f
 // directed pair appears once (a consistently oriented closed surface uses each edge once per way).
 void expect_closed_oriented(const BlockSoup& s, int32_t owner) {
   std::map<std::pair<int32_t, int32_t>, int> directed;
-  int32_t at = 0;
   for (size_t f = 0; f < s.num_faces(); ++f) {
-    const int32_t n = s.face_sizes[f];
+    const auto loop = s.face_vertices[f];
     if (s.face_owner[f] == owner)
-      for (int32_t i = 0; i < n; ++i) ++directed[{s.face_vertices[at + i], s.face_vertices[at + (i + 1) % n]}];
-    at += n;
+      for (size_t i = 0; i < loop.size(); ++i) ++directed[{loop[i], loop[(i + 1) % loop.size()]}];
   }
   ASSERT_FALSE(directed.empty());
   for (const auto& [e, count] : directed) {
@@ -62,7 +60,7 @@ TEST(RenderGeometry, GridCellsComponentsBoundary) {
   const BlockSoup cells = block_soup(g.mesh, g.analysis, SoupKind::Cells);
   EXPECT_EQ(cells.num_faces(), 48u);  // 8 cells × 6 quads
   EXPECT_EQ(cells.num_points(), 64u);  // 8 corners each, not shared between cells
-  EXPECT_EQ(cells.face_vertices.size(), 192u);
+  EXPECT_EQ(cells.face_vertices.items.size(), 192u);
   EXPECT_EQ(owners(cells).size(), 8u);
   for (int32_t c = 0; c < 8; ++c) expect_closed_oriented(cells, c);
 
@@ -149,7 +147,7 @@ TEST(RenderGeometry, SplitGrid) {
   EXPECT_EQ(owners(nonhex).size(), 6u);
   for (int32_t o : owners(nonhex)) expect_closed_oriented(nonhex, o);
   int triangles = 0;
-  for (int32_t n : nonhex.face_sizes) triangles += n == 3;
+  for (size_t f = 0; f < nonhex.num_faces(); ++f) triangles += nonhex.face_vertices.count(f) == 3;
   EXPECT_EQ(triangles, 24);
 
   const BlockSoup comps = block_soup(g.mesh, g.analysis, SoupKind::Components);
@@ -208,7 +206,7 @@ TEST(RenderGeometry, KeptSurface) {
   for (size_t c = 0; c < m.num_cells(); ++c) kept[c] = m.is_hex(c) ? 0 : 1;
   const BlockSoup pyr = kept_surface_soup(m, kept);
   EXPECT_EQ(pyr.num_faces(), 6u);
-  for (int32_t n : pyr.face_sizes) EXPECT_EQ(n, 4);
+  for (size_t f = 0; f < pyr.num_faces(); ++f) EXPECT_EQ(pyr.face_vertices.count(f), 4);
   std::fill(kept.begin(), kept.end(), 0);
   EXPECT_EQ(kept_surface_soup(m, kept).num_faces(), 0u);
   kept[0] = 1;
@@ -244,7 +242,7 @@ TEST(RenderGeometry, RegionsAndClasses) {
   const ClassArrays k = flatten_classes(g.analysis.sheet_stage->domain, g.analysis.sheet_stage->sheets.classes);
   EXPECT_EQ(k.type, std::vector<uint8_t>(3, 0));  // a grid's sheets are perfect
   EXPECT_EQ(k.flags.size(), 9u);
-  EXPECT_EQ(k.unmatched.rows(), 3u);
+  EXPECT_EQ(k.unmatched_vertices.rows(), 3u);
   const Csr<int32_t> comps = blocks_as_components(g.analysis.sheet_stage->domain, g.analysis.sheet_stage->sheets.sheet_blocks);
   EXPECT_EQ(comps.items, std::vector<int32_t>(3, 0));
   const Analysed fine = grid2(Level::Mesh);

@@ -28,8 +28,8 @@ def test_no_leak_over_100_load_cycles(shared_data_dir, tmp_path):
             getattr(m, name)
         m.info()
         repr(m)
-        hbc.Mesh.from_arrays(m.points64, m.face_offsets, m.face_vertices, m.cell_offsets,
-                             m.cell_faces, m.cell_face_flip)
+        hbc.Mesh.from_arrays(m.points64, m.face_vertices_offsets, m.face_vertices_items, m.cell_faces_offsets,
+                             m.cell_faces_items, m.cell_face_flip)
         try:
             hbc.load(missing)
         except hbc.MeshFormatError:

@@ -56,15 +56,14 @@ struct BlockSoup {
   std::vector<float> positions;        // 3 * np: x y z
   std::vector<int32_t> point_vertex;   // np: the mesh vertex the point copies
   // Faces, grouped by increasing owner, in selection order within an owner.
-  std::vector<int32_t> face_sizes;     // nf: loop length
-  std::vector<int32_t> face_vertices;  // sum(face_sizes): point ids, loops outward (right-hand rule)
+  Csr<int32_t> face_vertices;          // nf rows: point ids, loops outward (right-hand rule)
   std::vector<int32_t> face_owner;     // nf
   std::vector<int32_t> face_source;    // nf: mesh face id
   std::vector<int32_t> face_cell;      // nf: mesh cell on the owner's side of the face (the cell
                                        // whose faces were selected), for per-cell attributes
 
   size_t num_points() const { return point_vertex.size(); }
-  size_t num_faces() const { return face_sizes.size(); }
+  size_t num_faces() const { return face_vertices.rows(); }
 };
 
 // Builds the soup of `faces` (ids >= 0 are the owners, faces in range). Every point p of an owner is moved to
@@ -94,12 +93,12 @@ std::vector<float> polyline_positions(const Mesh& mesh, std::span<const int32_t>
 
 // The classifications of n sheets or subsheets as flat arrays.
 struct ClassArrays {
-  std::vector<uint8_t> type;       // n: SheetType
-  std::vector<uint8_t> flags;      // 3n: type1, type2, type3 configuration present (0/1)
-  Csr<int32_t> unmatched;          // n rows: mesh vertices left unmatched
-  Csr<int32_t> shared;             // n rows: mesh vertices shared by two parallel curves
-  Csr<int32_t> self_parallel;      // n rows: curve ids (SheetDomain curves) of type-2 pairs
-  Csr<int32_t> self_intersecting;  // n rows: base-complex component ids holding type-3 pairs
+  std::vector<uint8_t> type;                  // n: SheetType
+  std::vector<uint8_t> flags;                 // 3n: type1, type2, type3 configuration present (0/1)
+  Csr<int32_t> unmatched_vertices;            // n rows: mesh vertices left unmatched
+  Csr<int32_t> shared_vertices;               // n rows: mesh vertices shared by two parallel curves
+  Csr<int32_t> self_parallel_curves;          // n rows: curve ids (SheetDomain curves) of type-2 pairs
+  Csr<int32_t> self_intersecting_components;  // n rows: base-complex component ids holding type-3 pairs
 };
 ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClass> classes);
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "hbc/analysis.hpp"
@@ -27,6 +28,8 @@ struct PyMesh {
 };
 using PyMeshPtr = std::shared_ptr<PyMesh>;
 
+inline py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
+
 // A read-only numpy array over `data` (no copy) with the given shape (C order). `owner` is the
 // Python object whose lifetime covers `data`; numpy keeps a reference to it as the array's base.
 // `dtype` may differ from T when the bytes are compatible (uint8 0/1 viewed as bool).
@@ -45,6 +48,32 @@ py::array adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape, py::dtype dt
   auto* heap = new std::vector<T>(std::move(v));
   py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
   return py::array(std::move(dtype), std::move(shape), std::vector<py::ssize_t>{}, heap->data(), owner);
+}
+
+// Every CSR is exposed the same way: `<name>_offsets`, int32 (rows + 1,), and `<name>_items`,
+// int32 (<name>_offsets[-1],), read-only views of the Csr get(holder) returns, whose numpy base is
+// the Python object (which keeps the data alive). `rows` names the row count in the docstring;
+// `doc` says what the items of a row are.
+template <class H, class... Opts, class Get>
+void def_csr(py::class_<H, Opts...>& cls, const std::string& name, Get get, const std::string& rows,
+             const std::string& doc) {
+  // pybind11 copies names and docstrings, so temporaries are fine.
+  cls.def_property_readonly(
+      (name + "_offsets").c_str(),
+      [get](py::object self) -> py::array {
+        const auto& v = get(self.cast<const H&>()).offsets;
+        return view(v.data(), {ssize(v.size())}, self);
+      },
+      ("int32 (" + rows + " + 1,): row r's items are " + name + "_items[" + name + "_offsets[r]:" + name +
+       "_offsets[r + 1]].")
+          .c_str());
+  cls.def_property_readonly(
+      (name + "_items").c_str(),
+      [get](py::object self) -> py::array {
+        const auto& v = get(self.cast<const H&>()).items;
+        return view(v.data(), {ssize(v.size())}, self);
+      },
+      ("int32 (" + name + "_offsets[-1],): " + doc).c_str());
 }
 
 // What a Python hbc.Analysis holds: the mesh it was computed on (kept alive), the options (for
