@@ -35,32 +35,6 @@ Case random_split(std::mt19937& rng) {
   return {name.str(), generate_split(n, m, k, kind, cells, axis)};
 }
 
-// Stage outputs whose meaning does not depend on numbering, compared between a mesh and its
-// renumbered copy. Counts that depend on a "lowest index" choice are left out (see
-// docs/reliability.md): subsheet counts and the simplified wireframe.
-void expect_same_counts(const Stats& a, const Stats& b) {
-  EXPECT_EQ(a.cells, b.cells);
-  EXPECT_EQ(a.hex_cells, b.hex_cells);
-  EXPECT_EQ(a.singular_edges, b.singular_edges);
-  EXPECT_EQ(a.singularities, b.singularities);
-  EXPECT_EQ(a.pseudo_singular_edges, b.pseudo_singular_edges);
-  EXPECT_EQ(a.non_manifold_edges, b.non_manifold_edges);
-  EXPECT_EQ(a.singular_vertices, b.singular_vertices);
-  EXPECT_EQ(a.components, b.components);
-  EXPECT_EQ(a.hex_components, b.hex_components);
-  EXPECT_EQ(a.patches, b.patches);
-  EXPECT_EQ(a.curves, b.curves);
-  EXPECT_EQ(a.corners, b.corners);
-  EXPECT_EQ(a.self_adjacent_faces, b.self_adjacent_faces);
-  EXPECT_EQ(a.sheets, b.sheets);
-  EXPECT_EQ(a.sheets_perfect, b.sheets_perfect);
-  EXPECT_EQ(a.sheets_type1, b.sheets_type1);
-  EXPECT_EQ(a.sheets_type2, b.sheets_type2);
-  EXPECT_EQ(a.sheets_type3, b.sheets_type3);
-  EXPECT_EQ(a.vsg_edges, b.vsg_edges);
-  EXPECT_EQ(a.wireframe_edges, b.wireframe_edges);
-}
-
 bool is_mesh_edge(const Mesh& m, int32_t a, int32_t b) {
   for (int32_t e : m.vert_edges[a])
     if (m.other_vertex(e, a) == b) return true;
@@ -181,21 +155,9 @@ bool check_case(const Case& cs, std::mt19937& rng, const AnalysisOptions& opt) {
     SCOPED_TRACE("renumbered");
     expect_invariants(r, b, opt);
   }
-  expect_same_counts(compute_stats(m, a), compute_stats(r, b));
+  test::expect_same_counts(compute_stats(m, a), compute_stats(r, b));
   EXPECT_EQ(unmatched_total(a), unmatched_total(b)) << "a maximum matching has one size";
-
-  // The same component partition: c and d together in m iff cperm[c] and cperm[d] together in r.
-  const size_t ncomp = a.complex.num_components();
-  if (ncomp == b.complex.num_components()) {
-    std::vector<int32_t> fwd(ncomp, -1), back(ncomp, -1);
-    for (size_t c = 0; c < m.num_cells(); ++c) {
-      const int32_t ka = a.complex.cell_component[c], kb = b.complex.cell_component[cperm[c]];
-      if (fwd[ka] < 0 && back[kb] < 0) fwd[ka] = kb, back[kb] = ka;
-      EXPECT_EQ(fwd[ka], kb) << "cell " << c;
-      EXPECT_EQ(back[kb], ka) << "cell " << c;
-      if (fwd[ka] != kb || back[kb] != ka) break;
-    }
-  }
+  test::expect_same_partition(a.complex, b.complex, cperm);
   // The same sheets: each sheet's cells, mapped through cperm, are the cells of one sheet of r.
   auto sheet_sets = [](const Sheets& sh, const std::vector<int32_t>* perm) {
     std::vector<std::vector<int32_t>> sets;
