@@ -87,6 +87,20 @@ void expect_no_non_manifold(const Mesh& m) {
   for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok[e]) << m.source << " edge " << e;
 }
 
+// The centre cell (1,1,1) of a 3x3x3 grid split by `kind` (prisms along `axis`): the counts each
+// test derives, the cell types, every cell positive with the grid's volume 27, and no
+// non-manifold vertex or edge.
+Mesh expect_split_centre(SplitKind kind, Counts want, std::map<CellType, size_t> want_types, int axis = 2) {
+  const std::array<int32_t, 3> centre{1, 1, 1};
+  const Mesh m = build_mesh(generate_split(3, 3, 3, kind, {&centre, 1}, axis));
+  expect_counts(m, want);
+  auto t = types(m);
+  for (const auto& [type, n] : want_types) EXPECT_EQ(t[type], n) << cell_type_name(type);
+  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
+  expect_no_non_manifold(m);
+  return m;
+}
+
 
 TEST(Generate, GridCountsAndValences) {
   // 2x3x4: V = 3*4*5 = 60; E = 2*4*5 + 3*3*5 + 3*4*4 = 133; F = 3*3*4 + 2*4*4 + 2*3*5 = 98;
@@ -149,14 +163,8 @@ TEST(Generate, SplitPyramidsKeepsNeighboursHex) {
   // 3x3x3 grid: V 64, E 3*3*4*4 = 144, F 3*4*3*3 = 108, C 27, boundary 54. The centre cell
   // becomes 6 pyramids: +1 vertex (centre), +8 edges (centre to corners), +12 triangles (one per
   // hex edge), +5 cells. Its quads stay, so the 26 other cells stay hexes.
-  const std::array<int32_t, 3> centre{1, 1, 1};
-  const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Pyramids, {&centre, 1}));
-  expect_counts(m, {65, 152, 120, 32, 54});
-  auto t = types(m);
-  EXPECT_EQ(t[CellType::Pyramid], 6u);
-  EXPECT_EQ(t[CellType::Hex], 26u);
-  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
-  expect_no_non_manifold(m);
+  const Mesh m = expect_split_centre(SplitKind::Pyramids, {65, 152, 120, 32, 54},
+                                     {{CellType::Pyramid, 6}, {CellType::Hex, 26}});
   // The 12 hex edges of the split cell now have 4 + 1 cells around them (interior edges).
   size_t five = 0;
   for (size_t e = 0; e < m.num_edges(); ++e) five += !m.edge_boundary[e] && m.edge_valence(e) == 5;
@@ -168,15 +176,8 @@ TEST(Generate, SplitPrismsSplitsTheColumn) {
   // of the column become 2 triangles each (+4 faces), plus 3 diagonal quads (+3 faces); the 4
   // diagonals are new edges (+4). Top and bottom quads are on the boundary: +2 boundary faces.
   for (int axis = 0; axis < 3; ++axis) {
-    const std::array<int32_t, 3> cell{1, 1, 1};
-    const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Prisms, {&cell, 1}, axis));
     SCOPED_TRACE(axis);
-    expect_counts(m, {64, 148, 115, 30, 56});
-    auto t = types(m);
-    EXPECT_EQ(t[CellType::Prism], 6u);
-    EXPECT_EQ(t[CellType::Hex], 24u);
-    EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
-    expect_no_non_manifold(m);
+    expect_split_centre(SplitKind::Prisms, {64, 148, 115, 30, 56}, {{CellType::Prism, 6}, {CellType::Hex, 24}}, axis);
   }
   // Two columns from cells of one column give the same mesh as one.
   const std::array<int32_t, 3> two[2] = {{0, 2, 0}, {0, 2, 3}};
@@ -188,17 +189,10 @@ TEST(Generate, SplitTetsMakesNeighboursPolyhedra) {
   // Centre of 3x3x3 into 6 Kuhn tets: each of its 6 quads becomes 2 triangles (+6 faces) and 6
   // triangles lie inside (+6); 6 face diagonals and the body diagonal are new edges (+7); +5
   // cells. The 6 face neighbours see 2 triangles instead of a quad: 7-face polyhedra.
-  const std::array<int32_t, 3> centre{1, 1, 1};
-  const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Tets, {&centre, 1}));
-  expect_counts(m, {64, 151, 120, 32, 54});
-  auto t = types(m);
-  EXPECT_EQ(t[CellType::Tet], 6u);
-  EXPECT_EQ(t[CellType::Polyhedron], 6u);
-  EXPECT_EQ(t[CellType::Hex], 20u);
+  const Mesh m = expect_split_centre(SplitKind::Tets, {64, 151, 120, 32, 54},
+                                     {{CellType::Tet, 6}, {CellType::Polyhedron, 6}, {CellType::Hex, 20}});
   for (size_t c = 0; c < m.num_cells(); ++c)
     if (m.cell_type[c] == CellType::Polyhedron) EXPECT_EQ(m.cell_faces.count(c), 7);
-  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
-  expect_no_non_manifold(m);
 
   // Corner cell of 2x2x2 (V 27, E 54, F 36, C 8, boundary 24): same increments, and its 3
   // boundary quads become 6 triangles (+3 boundary faces); 3 neighbours become polyhedra.

@@ -9,6 +9,7 @@
 // cell (adjacent hex cells share a face and so its edges), split into face-connected groups of
 // hex cells. Curves are written as vertex pairs, cells by their input index.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -121,6 +122,14 @@ Analysis run(const Mesh& m, Level level) {
   o.wireframe = false;
   return analyze(m, o);
 }
+
+// How many sheets of each type the analysis found: {perfect, type 1, type 2, type 3}.
+std::array<size_t, 4> type_counts(const Analysis& a) {
+  const Sheets& sh = a.sheet_stage.value().sheets;
+  return {sh.count(SheetType::Perfect), sh.count(SheetType::Type1), sh.count(SheetType::Type2),
+          sh.count(SheetType::Type3)};
+}
+using Counts4 = std::array<size_t, 4>;
 
 std::set<std::set<Edge>> single_edges(const std::vector<Edge>& edges) {
   std::set<std::set<Edge>> out;
@@ -262,10 +271,7 @@ void check_prism_ring(Level level) {
 
   std::vector<SheetView> got = views(m, a);
   ASSERT_EQ(got.size(), 4u);
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Perfect), 2u);
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Type1), 2u);
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Type2), 0u);
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Type3), 0u);
+  EXPECT_EQ(type_counts(a), (Counts4{2, 2, 0, 0}));
   EXPECT_TRUE(a.sheet_stage->subsheets->empty());
   std::map<std::set<std::set<Edge>>, SheetView> by_curves;
   for (const SheetView& s : got) by_curves[s.curves] = s;
@@ -378,11 +384,7 @@ TEST(SheetTypes, Type2TwistedRingMeshLevel) {
     for (int y = 0; y <= 2; ++y) z_edges.push_back({w(k, y, 0), w(k, y, 1)});
     all_cells.insert({cell(0, k), cell(1, k)});
   }
-  ASSERT_EQ(a.sheet_stage->sheets.size(), static_cast<size_t>(n + 2));
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Perfect), static_cast<size_t>(n + 1));
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Type2), 1u);
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Type1), 0u);
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Type3), 0u);
+  ASSERT_EQ(type_counts(a), (Counts4{n + 1, 0, 1, 0}));
   EXPECT_TRUE(a.sheet_stage->subsheets->empty());
   int layers = 0, zs = 0, ys = 0;
   for (const SheetView& s : views(m, a)) {
@@ -495,9 +497,7 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
     EXPECT_LT(edge_id(m, v(t / 4, t % 4), v(t / 4, t % 4 + 1)),
               edge_id(m, v((t + 1) / 4, (t + 1) % 4), v((t + 1) / 4, (t + 1) % 4 + 1)));
   const Analysis a = run(m, Level::Mesh);
-  ASSERT_EQ(a.sheet_stage->sheets.size(), static_cast<size_t>(n + 1));
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Perfect), static_cast<size_t>(n));
-  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Type3), 1u);
+  ASSERT_EQ(type_counts(a), (Counts4{n, 0, 0, 1}));
   std::vector<Edge> section;
   std::set<int32_t> all_cells, all_verts;
   for (int k = 0; k < n; ++k) {
