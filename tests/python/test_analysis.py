@@ -4,7 +4,6 @@ lifetime, the GIL, and no leak over repeated analyses."""
 
 import gc
 import json
-import os
 import subprocess
 
 import numpy as np
@@ -12,21 +11,9 @@ import pytest
 
 import hbc
 
-TABLE1 = "hybrid-base-complex/"
-# The three Table 1 meshes we hold and two others (a tiny hybrid one and a polyhedral one).
-MESHES = [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh", TABLE1 + "cube_twist-comp.obj.HYBRID",
-          TABLE1 + "test_2.HYBRID", "cinolib/eight_voronoi.hedra"]
+from conftest import MESHES, TABLE1
+
 TIMING_KEYS = {"load", "singularity_graph", "base_complex", "sheets", "subsheets", "vsg_wireframe"}
-
-
-@pytest.fixture(scope="module")
-def analyzed(shared_data_dir):
-    """name -> (mesh, analysis) with the defaults, computed once for the module."""
-    out = {}
-    for name in MESHES:
-        m = hbc.load(shared_data_dir / name)
-        out[name] = (m, m.analyze())
-    return out
 
 
 def cli_analyze(cli, path, *flags):
@@ -357,13 +344,7 @@ def test_arrays_outlive_their_objects(shared_data_dir):
         assert np.array_equal(v, copies[k]), k
 
 
-def resident_bytes():
-    return int(open("/proc/self/statm").read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
-
-
-@pytest.mark.skipif(os.environ.get("HBC_SANITIZED") == "1",
-                    reason="ASan keeps freed memory in quarantine; the plain build runs this test")
-def test_no_leak_over_100_analyze_cycles(shared_data_dir):
+def test_no_leak_over_100_analyze_cycles(shared_data_dir, resident_growth):
     m = hbc.load(shared_data_dir / TABLE1 / "teapot.hedra")
 
     def arrays(a):
@@ -386,14 +367,7 @@ def test_no_leak_over_100_analyze_cycles(shared_data_dir):
         except ValueError:
             pass
 
-    for _ in range(10):
-        cycle()
-    gc.collect()
-    before = resident_bytes()
-    for _ in range(100):
-        cycle()
-    gc.collect()
-    growth = resident_bytes() - before
+    growth = resident_growth(cycle)
     # What one cycle exposes at least; leaking it every cycle would exceed the bound tenfold.
     per_cycle = sum(x.nbytes for x in arrays(m.analyze()))
     assert per_cycle > 4e5

@@ -9,18 +9,7 @@ import pytest
 
 import hbc
 
-TABLE1 = "hybrid-base-complex/"
-MESHES = [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh", TABLE1 + "cube_twist-comp.obj.HYBRID",
-          TABLE1 + "test_2.HYBRID", "cinolib/eight_voronoi.hedra"]
-
-
-@pytest.fixture(scope="module")
-def analyzed(shared_data_dir):
-    out = {}
-    for name in MESHES:
-        m = hbc.load(shared_data_dir / name)
-        out[name] = (m, m.analyze())
-    return out
+from conftest import MESHES, TABLE1
 
 
 def rows(offsets, items):
