@@ -4,8 +4,10 @@
 // copy) whose numpy base is the Python object that returned it; that object keeps the analysis,
 // and the analysis its mesh, alive.
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include <pybind11/stl.h>  // std::optional results as None
 
