@@ -6,7 +6,7 @@
 # turns a quarter turn, so its sheets cross themselves (self-intersecting, with subsheets: panels d
 # and g) through the pyramids, where their VSG chains end (panels e, f); its inner ring turns a
 # half turn, so one sheet comes back beside itself (self-parallel). The second, a hex-dominant
-# cylinder with prism columns like the paper's teaser, has only perfect sheets (panels a-d).
+# cylinder with prism columns like the paper's teaser, has only perfect sheets: no subsheets (g).
 # When the shared data is there, teapot.hedra (LoopyCuts) is a third subject.
 #
 # Environment: HBC_DEMO_ENGINE (cycles | eevee | workbench, default cycles),
