@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +15,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
+#include "hbc/region.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
@@ -357,6 +359,8 @@ TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   expect_counts(load_mesh(d + "/s.mesh"), counts(build_mesh(generate_sector(5, 2, 2))));
   ASSERT_EQ(run_cli("generate cylinder --radius-cells 3 --layers 2 -o '" + d + "/c.ovm'"), 0);
   EXPECT_EQ(types(load_mesh(d + "/c.ovm")), types(build_mesh(generate_cylinder(3, 2))));
+  ASSERT_EQ(run_cli("generate twisted-pair --section 2 --sections 5 -o '" + d + "/tp.ovm'"), 0);
+  EXPECT_EQ(types(load_mesh(d + "/tp.ovm")), types(build_mesh(generate_twisted_pair(2, 5))));
 
   // Usage errors (a malformed line, or values wrong together): exit 1.
   EXPECT_EQ(run_cli("generate grid --size 2 3 -o '" + d + "/x.mesh'"), 1);
@@ -368,6 +372,7 @@ TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   EXPECT_EQ(run_cli("generate split --size 3 3 3 --split cubes --cells 1,1,1 -o '" + d + "/x.mesh'"), 2);
   EXPECT_EQ(run_cli("generate grid --size 2 0 3 -o '" + d + "/x.mesh'"), 2);
   EXPECT_EQ(run_cli("generate sector --valence 2 --rings 1 --layers 1 -o '" + d + "/x.mesh'"), 2);
+  EXPECT_EQ(run_cli("generate twisted-pair --section 5 --sections 12 -o '" + d + "/x.mesh'"), 2);
   EXPECT_FALSE(std::filesystem::exists(d + "/x.mesh"));
   std::filesystem::remove_all(dir);
 }
@@ -419,6 +424,138 @@ TEST(Generate, TwistedRingSheets) {
   EXPECT_GT(big->size(), 1u);
   // Prism fans need a middle quad (odd section) or room for fans off the middle (3+ cells).
   EXPECT_THROW(generate_twisted_ring(2, 12, 1, true), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hbc
+
+namespace hbc {
+namespace {
+
+// Distance of a cell's corner centroid from the z axis: which of the twisted pair's rings it is in
+// (section 4: the inner ring round radius 8, the outer round 16, each cell within 2√2, the half
+// diagonal of the section, of its circle).
+double cell_radius(const Mesh& m, size_t c) {
+  double x = 0, y = 0;
+  const auto vs = m.cell_verts[c];
+  for (int32_t v : vs) x += m.points[3 * static_cast<size_t>(v)], y += m.points[3 * static_cast<size_t>(v) + 1];
+  return std::hypot(x, y) / static_cast<double>(vs.size());
+}
+
+// Section 4, 12 sections. One ring: the 5x5 grid vertices of each of the 12 layer planes = 300,
+// 16 quads and 40 grid edges a plane: 16*12 section faces + 40*12 side faces = 672 faces, edges
+// 40*12 in the planes + 25*12 round the ring = 780, 16*12 = 192 hexes. Splitting one hex into 6
+// pyramids adds its centre (+1 vertex), the 8 edges from it to the corners and 12 triangles (one a
+// hex edge), +5 cells. Its boundary: the 16 outline quads of each layer, 192. Each ring is a solid
+// torus (V - E + F - C = 0); the pair doubles everything.
+TEST(Generate, TwistedPairCounts) {
+  const Mesh m = build_mesh(generate_twisted_pair(4, 12));
+  expect_no_non_manifold(m);
+  EXPECT_EQ(m.num_vertices(), 602u);
+  EXPECT_EQ(m.num_edges(), 1576u);
+  EXPECT_EQ(m.num_faces(), 1368u);
+  EXPECT_EQ(m.num_cells(), 394u);
+  EXPECT_EQ(types(m)[CellType::Hex], 382u);
+  EXPECT_EQ(types(m)[CellType::Pyramid], 12u);
+  size_t boundary = 0;
+  for (uint8_t b : m.face_boundary) boundary += b;
+  EXPECT_EQ(boundary, 384u);
+  EXPECT_EQ(static_cast<int64_t>(m.num_vertices()) - static_cast<int64_t>(m.num_edges()) +
+                static_cast<int64_t>(m.num_faces()) - static_cast<int64_t>(m.num_cells()),
+            0);
+  expect_positive(m);
+  // The rings are apart: the first 197 cells (the outer ring) lie round radius 16, the others
+  // round 8.
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    const double r = cell_radius(m, c);
+    EXPECT_LT(std::abs(r - (c < 197 ? 16.0 : 8.0)), 2.0 * std::sqrt(2.0)) << "cell " << c << " at radius " << r;
+  }
+  EXPECT_THROW(generate_twisted_pair(3, 12), std::invalid_argument);
+  EXPECT_THROW(generate_twisted_pair(0, 12), std::invalid_argument);
+  EXPECT_THROW(generate_twisted_pair(4, 2), std::invalid_argument);
+  test::expect_same_cells(generate_twisted_pair(4, 5), generate_twisted_pair(4, 5));
+}
+
+// Why the pair has the sheets it has (complex level, what hbc sheets and hbc analyze report). In
+// each ring the pyramid cell, at quad (1, 0) of layer 0 of the 4x4 section, makes its faces'
+// planes separation surfaces: the section planes at both ends of layer 0, and the planes along
+// the grid lines u = 1, u = 2, v = 1 of the section, which run round the ring and come back turned.
+//  - Outer ring, a quarter turn: u = 1 comes back as v = 1, then u = 3, v = 3; u = 2 as v = 2. The
+//    section is cut along every grid line: 16 blocks in the rest of the ring, 15 hex ones in layer 0
+//    (31). A column of blocks comes back as a row, which crosses it: the sheets of columns 0 and 3
+//    and rows 0 and 3 (the frame) are one self-intersecting sheet, those of columns 1, 2 and rows 1,
+//    2 another. The pyramid cell's edges along u are curves of column 1, those along v curves of
+//    row 0: both sheets have the pyramids in their regions. A region without them would be the
+//    same in every layer, and its VSG chains would close round the ring with no end to trace a
+//    wireframe from; with them the region differs in layer 0, the valences change at its two
+//    section planes, and every VSG chain ends there: both wireframes are non-empty. The two layers
+//    of blocks (layer 0 and the rest of the ring) are 2 perfect sheets.
+//  - Inner ring, a half turn: u = 1 comes back as u = 3, v = 1 as v = 3, u = 2 as itself. Columns
+//    [0,1] [1,2] [2,3] [3,4], rows [0,1] [1,3] [3,4]: 12 blocks in the rest of the ring and 11 hex
+//    ones in layer 0 (23). Column [1,2] comes back as column [2,3]: its parallel curves meet those
+//    of [2,3] end to end across u = 2, in blocks that share a face and no curve: self-parallel.
+//    Columns [0,1] and [3,4] come back as each other, apart (perfect); row [1,3] as itself and rows
+//    [0,1], [3,4] as each other (perfect); the two layers (perfect).
+TEST(Generate, TwistedPairSheets) {
+  const Mesh m = build_mesh(generate_twisted_pair(4, 12));
+  const Analysis a = analyze(m, {});
+  ASSERT_TRUE(a.sheet_stage);
+  const SheetStage& st = *a.sheet_stage;
+  size_t cubes[2] = {0, 0};  // inner, outer
+  for (size_t k = 0; k < a.complex.num_components(); ++k)
+    if (a.complex.component_kind[k] == ComponentKind::Cube) ++cubes[cell_radius(m, a.complex.component_cells[k][0]) > 12.0];
+  EXPECT_EQ(cubes[1], 31u);
+  EXPECT_EQ(cubes[0], 23u);
+  EXPECT_EQ(a.complex.num_components(), 31u + 23u + 12u);
+  ASSERT_EQ(st.sheets.size(), 10u);
+  EXPECT_EQ(st.sheets.count(SheetType::Perfect), 7u);
+  EXPECT_EQ(st.sheets.count(SheetType::Type1), 0u);
+  EXPECT_EQ(st.sheets.count(SheetType::Type2), 1u);
+  EXPECT_EQ(st.sheets.count(SheetType::Type3), 2u);
+  auto outer = [&](int32_t s) {
+    const auto cells = st.sheets.sheet_cells[static_cast<size_t>(s)];
+    return std::all_of(cells.begin(), cells.end(), [&](int32_t c) { return cell_radius(m, c) > 12.0; });
+  };
+  for (size_t s = 0; s < st.sheets.size(); ++s) {
+    const SheetClass& k = st.sheets.classes[s];
+    SCOPED_TRACE(s);
+    if (k.type == SheetType::Type3) {
+      EXPECT_TRUE(outer(static_cast<int32_t>(s)));
+      const auto nh = st.sheets.sheet_non_hex_cells[s];
+      EXPECT_FALSE(nh.empty());
+      for (int32_t c : nh) EXPECT_EQ(m.cell_type[c], CellType::Pyramid);
+      const VsgWireframe w = region_wireframe(m, a, Level::Complex, {}, static_cast<int32_t>(s));
+      EXPECT_GT(std::count(w.kind.begin(), w.kind.end(), WireKind::Vsg), 0);
+      EXPECT_GT(w.wireframe_edges_simplified(), 0);
+      // The outer ring is built first: its section planes 0 and 1 hold vertices 0-24 and 25-49.
+      for (size_t k = 0; k < w.size(); ++k) {
+        if (w.kind[k] != WireKind::Vsg) continue;
+        const auto p = w.polylines[k];
+        EXPECT_NE(p.front(), p.back()) << "closed VSG chain " << k;
+        EXPECT_LT(p.front(), 50);
+        EXPECT_LT(p.back(), 50);
+      }
+      ASSERT_NE(st.subsheets_of(static_cast<int32_t>(s)), nullptr);
+      EXPECT_GT(st.subsheets_of(static_cast<int32_t>(s))->size(), 1u);
+    } else if (k.type == SheetType::Type2) {
+      EXPECT_FALSE(outer(static_cast<int32_t>(s)));
+      EXPECT_FALSE(k.self_parallel_curves.empty());
+      EXPECT_TRUE(k.self_intersecting_blocks.empty());
+    }
+  }
+}
+
+// The contrast the pair's pyramids make: the twisted ring with a prism column all round has a
+// self-intersecting sheet whose region is the same in every layer: VSG chains, all closed round the
+// ring (no chain end), and an empty wireframe.
+TEST(Generate, TwistedRingWithoutLocalCellsHasNoSheetWireframe) {
+  const Mesh m = build_mesh(generate_twisted_ring(5, 12, 1, true));
+  const Analysis a = analyze(m, {});
+  ASSERT_TRUE(a.sheet_stage && a.sheet_stage->largest_self_intersecting);
+  const VsgWireframe w = region_wireframe(m, a, Level::Complex, {}, a.sheet_stage->largest_self_intersecting);
+  EXPECT_GT(w.vsg_chains, 0);
+  EXPECT_EQ(std::count(w.vert_vsg.begin(), w.vert_vsg.end(), 1), 0);
+  EXPECT_EQ(w.size(), 0u);
 }
 
 }  // namespace
