@@ -259,8 +259,10 @@ def equip_object(tx, ob, data, in_sheet):
     ob["hbc_inspect"] = True
     if ob.get("hbc_surface"):
         return
-    mod = ob.modifiers.get(MODIFIER) or ob.modifiers.new(MODIFIER, "NODES")
-    mod.node_group = inspect_group(tx)
+    mod = tx.modifier(ob, MODIFIER)
+    ng = inspect_group(tx)
+    if mod.node_group != ng:  # assigning even the same group rebuilds the scene's relations
+        mod.node_group = ng
     apply_to_object(ob, settings())
 
 
@@ -477,7 +479,8 @@ def set_filters(ob, values, enabled=True):
     for k, v in values.items():
         if compat.get_modifier_input(mod, k) != v:
             compat.set_modifier_input(mod, k, v)
-    mod.show_viewport = mod.show_render = bool(enabled)
+    if mod.show_viewport != bool(enabled) or mod.show_render != bool(enabled):
+        mod.show_viewport = mod.show_render = bool(enabled)
     ob.update_tag()
 
 

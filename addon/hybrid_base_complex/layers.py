@@ -202,14 +202,16 @@ NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
 
 
 def build_into(tx, root, layer, s, st):
-    """Builds a layer into a new unlinked collection (registered in tx); returns it. The old
-    layer is retired first so the new objects get the names a first build gives. `root` is the
-    mesh's collection, or (blender_scripts/figures/render.py, which links the result itself) a
-    name: then nothing is retired."""
+    """Builds a layer and returns its collection: the existing layer, rebuilt in place (its
+    objects refilled, see scene.Transaction), else a new unlinked collection (registered in tx).
+    `root` is the mesh's collection, or (blender_scripts/figures/render.py, which links the result
+    itself) a name: then the layer is always new."""
     name = root if isinstance(root, str) else root.name
-    if not isinstance(root, str):
-        S.retire_layer(tx, root, layer)
-    coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
+    coll = None if isinstance(root, str) else S.find_layer(root, layer)
+    if coll is not None:
+        tx.reuse(coll)
+    else:
+        coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
     BUILDERS[layer](tx, coll, s, st, name)
     inspect.equip_layer(tx, coll, layer, s, st)
     return coll
