@@ -199,3 +199,24 @@ def test_failed_rebuild_puts_the_layer_back(clean_scene, data_dir, monkeypatch, 
         bpy.ops.hbc.build_layer(layer=key)
     assert S.datablock_names() == names
     assert_same(layer_state(root, key), before)
+
+
+def test_every_layer_has_first_build_names(clean_scene, data_dir):
+    """Every layer built, the picked sheet and its subsheets too, then every layer rebuilt: no
+    object or mesh is named with a '.001'-style suffix (no two layers ask for one name)."""
+    import re
+
+    from hybrid_base_complex import planning as P
+    from hybrid_base_complex import session
+
+    root = import_twistcube(data_dir)
+    st = bpy.context.scene.hbc
+    s = session.get(root.name)
+    st.sheet_index = int(s.analysis.largest_self_intersecting)
+    assert bpy.ops.hbc.build_all() == {"FINISHED"}
+    for key in ("sheet", "subsheets"):
+        assert bpy.ops.hbc.build_layer(layer=key) == {"FINISHED"}
+    for key, _ in P.LAYERS:
+        assert bpy.ops.hbc.build_layer(layer=key) == {"FINISHED"}
+    suffixed = [d.name for d in list(bpy.data.objects) + list(bpy.data.meshes) if re.search(r"\.\d{3}$", d.name)]
+    assert suffixed == []
