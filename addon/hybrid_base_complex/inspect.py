@@ -271,7 +271,7 @@ def equip_layer(tx, coll, layer, s, st):
     # The per-cell arrays come from the hbc module: stand-in meshes (tests' fakes) get no filters.
     if layer not in INSPECT_LAYERS or not isinstance(s.mesh, _hbc().Mesh):
         return 0
-    obs = [ob for ob in coll.all_objects if ob.type == "MESH" and CELL_ATTR in ob.data.attributes
+    obs = [ob for ob in S.objects_in(coll) if ob.type == "MESH" and CELL_ATTR in ob.data.attributes
            and ob.get("hbc_highlight") is None]
     if not obs:
         return 0
@@ -490,7 +490,7 @@ def apply_to_object(ob, ins):
 
 
 def inspected_objects(root):
-    return [ob for ob in root.all_objects if ob.get("hbc_inspect")] if root is not None else []
+    return [ob for ob in S.objects_in(root) if ob.get("hbc_inspect")] if root is not None else []
 
 
 def _active_root(context):

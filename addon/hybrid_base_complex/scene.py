@@ -471,6 +471,22 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
 # ---------------------------------------------------------------------------------------------
 # Collections
 
+def objects_in(coll) -> list:
+    """Every object of a collection and of the collections below it. `Collection.all_objects`
+    reads a cache Blender does not refresh after an undo (3.4: it still lists objects the undo
+    freed, and reading them crashes or yields another object), so the add-on walks the collections
+    itself wherever it may run after an undo (handlers, update callbacks, panels, operators)."""
+    out, seen, stack = [], set(), [coll]
+    while stack:
+        c = stack.pop()
+        for ob in c.objects:
+            if ob.name not in seen:
+                seen.add(ob.name)
+                out.append(ob)
+        stack.extend(c.children)
+    return out
+
+
 def find_layer(root, layer: str):
     for c in root.children:
         if c.get("hbc_layer") == layer:
