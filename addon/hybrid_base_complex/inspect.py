@@ -382,8 +382,7 @@ def refresh_surface(ob, s, ins):
     old = ob.data
     with S.Transaction() as tx:
         me = S._mesh_from_soup(tx, old.name, soup, cell_colors(s, soup, ins.color_by_quality))
-    for mat in old.materials:
-        me.materials.append(mat)
+    S.set_materials(me, list(old.materials))
     write_attributes(me, cell_data(s), sheet_mask(s, _picked_sheet()))
     ob["hbc_in_sheet_of"] = _picked_sheet()
     name = old.name

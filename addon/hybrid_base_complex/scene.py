@@ -27,7 +27,9 @@ from . import planning as P
 COLOR_ATTR = "hbc_color"
 OWNER_ATTR = "owner"
 CELL_ATTR = "hbc_cell"
+MATERIAL_PROP = "hbc_material"  # a layer mesh's material as built (handlers put it back if lost)
 TUBE_GROUP = "HBC Tube"
+TUBE_GROUP_VERSION = 3  # files made with an older group get this one on their next build
 
 
 # ---------------------------------------------------------------------------------------------
@@ -330,10 +332,10 @@ def material(tx: Transaction, kind: str, color=(0.8, 0.8, 0.8, 1.0), alpha: floa
 def tube_group(tx: Transaction):
     """Geometry nodes: edges -> curves -> tubes of radius `Radius`, attributes carried along."""
     ng = bpy.data.node_groups.get(TUBE_GROUP)
-    if ng is not None and ng.get("hbc_group") == 2:
+    if ng is not None and ng.get("hbc_group") == TUBE_GROUP_VERSION:
         return ng
     ng = tx.add("node_groups", bpy.data.node_groups.new(TUBE_GROUP, "GeometryNodeTree"))
-    ng["hbc_group"] = 2
+    ng["hbc_group"] = TUBE_GROUP_VERSION
     compat.group_socket(ng, "INPUT", "NodeSocketGeometry", "Geometry")
     r = compat.group_socket(ng, "INPUT", "NodeSocketFloat", "Radius")
     r.default_value = 0.01
@@ -355,7 +357,19 @@ def tube_group(tx: Transaction):
     L(gi.outputs["Resolution"], circ.inputs["Resolution"])
     L(circ.outputs["Curve"], c2m.inputs["Profile Curve"])
     L(c2m.outputs["Mesh"], setmat.inputs["Geometry"])
-    L(setmat.outputs["Geometry"], go.inputs["Geometry"])
+    # Curve to Mesh makes a new mesh that (4.2 and later) has no active colour attribute: Solid >
+    # Attribute drew every tube black. Joined after the input's own points (its edges deleted;
+    # loose points draw nothing), the tubes get the input mesh's settings, `hbc_color` active
+    # among them: Join takes them from its first mesh, and a multi-input socket lists the link
+    # made last first.
+    points = n.new("GeometryNodeDeleteGeometry")
+    points.domain, points.mode = "EDGE", "EDGE_FACE"
+    points.inputs["Selection"].default_value = True
+    join = n.new("GeometryNodeJoinGeometry")
+    L(gi.outputs["Geometry"], points.inputs["Geometry"])
+    L(setmat.outputs["Geometry"], join.inputs["Geometry"])
+    L(points.outputs["Geometry"], join.inputs["Geometry"])
+    L(join.outputs["Geometry"], go.inputs["Geometry"])
     return ng
 
 
@@ -387,9 +401,13 @@ def fill_soup(me, soup: P.Soup, face_colors=None):
 
 
 def set_materials(me, materials):
-    """Gives a mesh these material slots. A refilled mesh usually has them already: changing a
-    mesh's materials rebuilds the whole scene's dependency graph, so equal ones are left alone."""
-    if list(me.materials) == list(materials):
+    """Gives a mesh these material slots and records a single one as the mesh's `hbc_material`.
+    A refilled mesh usually has them already: changing a mesh's materials rebuilds the whole
+    scene's dependency graph, so equal ones are left alone."""
+    materials = list(materials)
+    if len(materials) == 1 and me.get(MATERIAL_PROP) != materials[0]:
+        me[MATERIAL_PROP] = materials[0]
+    if list(me.materials) == materials:
         return
     me.materials.clear()
     for mat in materials:

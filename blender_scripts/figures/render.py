@@ -386,8 +386,7 @@ class Subject:
             mat = S.material(tx, "flat", self.addon.P.SELF_INTERSECTING_COLOR, 0.35)
             for ob in coll.objects:
                 if ob.get("hbc_highlight") == "self_intersecting":
-                    ob.data.materials.clear()
-                    ob.data.materials.append(mat)
+                    S.set_materials(ob.data, [mat])
         return [coll] + self.shell()
 
     def _vsg_lines(self, sheet):
