@@ -13,7 +13,9 @@ wireframe, (g) its largest subsheets (self-intersecting sheets only), each above
 and `<name>_contact.png`, all panels labelled. --compare A B: the paper's comparison layout, one
 column per mesh, rows mesh / singularity graph / base complex / VSG wireframe / sheet, into
 `compare_<A>_<B>.png` (and the panels). Every panel uses the same camera, framed on the mesh's
-bounding box. Each written file is printed as `wrote PATH`; any failure exits non-zero.
+bounding box. --legend adds under each panel a strip of colour swatches with words (the add-on's
+legend for what the panel shows) and writes `<name>_legend.json`. Each written file is printed as
+`wrote PATH`; any failure exits non-zero.
 
 The add-on is taken from --addon, else $HBC_ADDON_DIR, else <repo>/build/addon/hybrid_base_complex
 (the build's `addon` target, with the compiled hbc module inside).
@@ -97,13 +99,14 @@ def add_legends(items, args, name, written):
         R.log("render_figures: --legend: no panel shows colours a legend names")
         return
     tmp = tempfile.mkdtemp(prefix="hbc_fig_")
-    images = R.render_labels(texts, 14 * m.row, m.row, tmp)
+    width = 20 * m.row  # room for the longest words (planning.LEGEND_MAX characters)
+    images = R.render_labels(texts, width, m.row, tmp)
     os.rmdir(tmp)
     words = {}
     for text, img in zip(texts, images):
         ink = C.ink_columns(img)
-        if ink is None:
-            raise RuntimeError(f"legend: the words {text!r} rendered as nothing")
+        if ink is None or ink[1] >= width:
+            raise RuntimeError(f"legend: the words {text!r} rendered as nothing or cut off")
         words[text] = img[:, ink[0]:ink[1]]
     panels = []
     loaded = {path: R.load_png(path) for _, path, entries in items if entries}

@@ -1,6 +1,7 @@
 """What the figure script decides without Blender (no ``bpy``; tested with plain pytest):
 command line, the panels and their titles, which sheet and subsheets to show, the camera that
-frames a set of points, and the feature edges that outline blocks.
+frames a set of points, the feature edges that outline blocks, and what each panel's legend strip
+lists and where its swatches and words go.
 """
 
 from __future__ import annotations
