@@ -10,6 +10,13 @@ Targets (issue 7): every layer of teapot.hedra under 2 s; a generated 100k-cell 
 sheet and subsheet layers use the largest self-intersecting sheet when there is one, else sheet 0.
 Exit status 1 when a target is missed (--no-targets to only report).
 
+Rebuilds (issue 16: a rebuild costs no more than a first build): after the first build of the
+blocks (column `blocks`, a fresh file), --rebuilds N times the blocks layer is cleared and built
+again (a first build) and then rebuilt with another shrink, so that every block's geometry is
+written anew, as when a user changes a setting and rebuilds. Column `rebuild blocks` and a second
+table give the medians of those N first builds and N rebuilds, measured in the same run, and their
+ratio. Use --split-max 100000 to make every block of a mesh its own object.
+
 --inspect (issue 17) adds the direct view's cells (column `cells`: every cell with the filter
 modifier, or above the add-on's live-surface threshold the surface of the kept cells) and times
 one update of the sliced direct view: the slicing plane (an Empty through the mesh centre) is
@@ -35,6 +42,8 @@ def parse():
     ap.add_argument("--inspect", action="store_true", help="time the sliced direct view (issue 17)")
     ap.add_argument("--no-analysis", action="store_true", help="import without analysing")
     ap.add_argument("--repeat", type=int, default=3, help="plane moves timed for --inspect")
+    ap.add_argument("--rebuilds", type=int, default=3,
+                    help="first builds and rebuilds of the blocks layer timed for the rebuild table (medians)")
     ap.add_argument("--surface-above", type=int, default=None,
                     help="the add-on's live-surface threshold (cells) for --inspect; a large value times "
                          "the geometry-nodes filter on every cell instead")
@@ -70,16 +79,39 @@ def time_slice(root, s, repeat):
     return out
 
 
+def time_rebuilds(st, n):
+    """(median first build, median rebuild) of the blocks layer over n pairs, each pair in the same
+    conditions: the layer cleared and built again, then rebuilt with another shrink."""
+    import statistics
+
+    first, again = [], []
+    shrink = st.shrink
+    for i in range(n):
+        assert bpy.ops.hbc.clear_layer(layer="blocks") == {"FINISHED"}
+        st.shrink = shrink
+        t = time.perf_counter()
+        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+        first.append(time.perf_counter() - t)
+        st.shrink = shrink + 0.05
+        t = time.perf_counter()
+        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+        again.append(time.perf_counter() - t)
+    st.shrink = shrink
+    return statistics.median(first), statistics.median(again)
+
+
 def main():
     args = parse()
     sys.path.insert(0, os.path.dirname(os.path.abspath(args.addon)))
     import hybrid_base_complex as addon
     from hybrid_base_complex import layers as L
+    from hybrid_base_complex import scene as S
     from hybrid_base_complex import session
 
     addon.register()
     analyzed = not args.no_analysis
     rows = []
+    rebuilds = []
     failed = False
     for path in args.meshes:
         bpy.ops.wm.read_homefile(use_empty=True)
@@ -106,10 +138,9 @@ def main():
             assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}, layer
             times[layer] = time.perf_counter() - t
         if "blocks" in layers:
-            # A rebuild retires the old layer first (same names as the first build): time it too.
-            t = time.perf_counter()
-            assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-            times["rebuild blocks"] = time.perf_counter() - t
+            first, again = time_rebuilds(st, max(args.rebuilds, 1))
+            times["rebuild blocks"] = again
+            rebuilds.append((os.path.basename(path), len(S.find_layer(root, "blocks").objects), first, again))
         # Tubes are made by geometry nodes when the scene is evaluated (drawn or rendered): time it.
         t = time.perf_counter()
         bpy.context.evaluated_depsgraph_get().update()
@@ -137,6 +168,12 @@ def main():
     for name, cells, objects, times, total in rows:
         cols = " | ".join(f"{times[k]:.2f}" if k in times else "-" for k in keys)
         print(f"| {name} | {cells} | {objects} | {cols} | {total:.2f} |")
+    if rebuilds:
+        n = max(args.rebuilds, 1)
+        print(f"\n| mesh | block objects | first build (s, median of {n}) | rebuild (s, median of {n}) | rebuild / first |")
+        print("|---|---:|---:|---:|---:|")
+        for name, objects, first, again in rebuilds:
+            print(f"| {name} | {objects} | {first:.2f} | {again:.2f} | {again / first:.2f} |")
     sys.stdout.flush()
     addon.unregister()
     if failed:

@@ -13,7 +13,10 @@ first; --sheet N to choose), (e) its VSG, (f) its simplified VSG wireframe, (g) 
 subsheets (self-intersecting sheets only), each above its wireframe - and `<name>_contact.png`,
 all panels labelled. --compare A B: the paper's comparison layout, one column per mesh, rows mesh /
 singularity graph / base complex / VSG wireframe / sheet, into `compare_<A>_<B>.png` (and the
-panels). Every panel uses the same camera, framed on the mesh's bounding box. Each written file is printed as `wrote PATH`; any failure exits non-zero.
+panels). Every panel uses the same camera, framed on the mesh's bounding box. --legend adds under
+each panel a strip of colour swatches with words (the add-on's legend for what the panel shows)
+and writes `<name>_legend.json`. Each written file is printed as `wrote PATH`; any failure exits
+non-zero.
 
 The add-on is taken from --addon, else $HBC_ADDON_DIR, else <repo>/build/addon/hybrid_base_complex
 (the build's `addon` target, with the compiled hbc module inside).
@@ -73,6 +76,73 @@ def render_panel(scene, subject, key, colls, path, written):
     wrote(path, written)
 
 
+def highlights_shown(colls, subsheets=None):
+    """The sheet highlights (hbc_highlight) among the objects a panel renders; for panel g only
+    those of the subsheets it shows."""
+    return {ob["hbc_highlight"] for c in colls for ob in c.objects
+            if ob.get("hbc_highlight") and (subsheets is None or ob.get("hbc_subsheet") in subsheets)}
+
+
+def legend_of(subject, key, highlights=()):
+    return plan.panel_legend(subject.addon.P, key, subject.s.legend_facts(), highlights)
+
+
+def add_legends(items, args, name, written):
+    """--legend: every panel of `items` ([(key, path, entries)]) with entries gets its strip under it,
+    all strips of the run one height (the most rows any panel needs), so panels stay the same size;
+    the PNG is rewritten and `<name>_legend.json` lists each panel's entries, colours (display
+    sRGB) and where their swatches and words are."""
+    import json
+
+    m = plan.LegendMetrics.for_panel(args.resolution[1])
+    texts = sorted({words for _, _, entries in items for _, words, _ in entries})
+    if not texts:
+        R.log("render_figures: --legend: no panel shows colours a legend names")
+        return
+    tmp = tempfile.mkdtemp(prefix="hbc_fig_")
+    width = 20 * m.row  # room for the longest words (planning.LEGEND_MAX characters)
+    images = R.render_labels(texts, width, m.row, tmp)
+    os.rmdir(tmp)
+    words = {}
+    for text, img in zip(texts, images):
+        ink = C.ink_columns(img)
+        if ink is None or ink[1] >= width:
+            raise RuntimeError(f"legend: the words {text!r} rendered as nothing or cut off")
+        words[text] = img[:, ink[0]:ink[1]]
+    panels = []
+    loaded = {path: R.load_png(path) for _, path, entries in items if entries}
+    layouts = {path: plan.legend_layout([words[w].shape[1] for _, w, _ in entries], loaded[path].shape[1], m)
+               for _, path, entries in items if entries}
+    rows = max(layout.rows for layout in layouts.values())
+    height = plan.strip_height(m, rows)
+    for key, path, entries in items:
+        if not entries:
+            continue
+        img = loaded[path]
+        layout = plan.legend_layout([words[w].shape[1] for _, w, _ in entries], img.shape[1], m, rows)
+        strip = C.legend_strip(img.shape[1], height, [c for _, _, c in entries], [words[w] for _, w, _ in entries],
+                               layout)
+        R.save_png(C.stack(img, strip), path)
+        h0 = img.shape[0]
+        panels.append({
+            "file": os.path.basename(path), "panel": key, "height_without_strip": h0,
+            "entries": [{"key": k, "words": w, "srgb": [round(float(v), 4) for v in C.linear_to_srgb(c[:3])],
+                         "swatch": [x, h0 + y, side], "words_at": [wx, h0 + wy, int(words[w].shape[1]), m.row]}
+                        for (k, w, c), (x, y, side), (wx, wy) in zip(entries, layout.swatches, layout.words)]})
+        R.log(f"render_figures: legend under {os.path.basename(path)}: {len(entries)} entries, "
+              f"{layout.rows} row(s) of {layout.columns}")
+    path = os.path.abspath(os.path.join(args.out, f"{name}_legend.json"))
+    with open(path, "w") as f:
+        json.dump({"strip_height": height, "row": m.row, "panels": panels}, f, indent=1)
+    wrote(path, written)
+
+
+def same_height(tiles):
+    """Tiles padded below to the tallest (panels with and without a legend strip)."""
+    h = max(t.shape[0] for t in tiles if t is not None)
+    return [C.pad_to_height(t, h) if t is not None else None for t in tiles]
+
+
 def render_subsheets(scene, subject, args, path, written):
     """Panel g: the largest subsheets side by side, each above its VSG wireframe, each tile the
     same view of the whole mesh (framed for the tile's shape)."""
@@ -114,6 +184,7 @@ def render_subsheets(scene, subject, args, path, written):
     wrote(path, written)
     R.log(f"render_figures: subsheets {picked} of {count} shown")
     subject.subsheets_shown = (picked, count)
+    subject.subsheets_highlights = highlights_shown([coll], set(picked))
     return path
 
 
@@ -139,13 +210,14 @@ def single(args):
     R.log(f"render_figures: {subject.name}: {subject.s.num_cells} cells, analyzed in {subject.t_analysis:.2f} s; "
           f"panels d-g: {sheet_caption(subject) or 'no sheets'}")
     os.makedirs(args.out, exist_ok=True)
-    written, shown = [], []
+    written, shown, legends = [], [], []
     for key in args.panels:
         letter = plan.PANEL_LETTER[key]
         path = os.path.abspath(os.path.join(args.out, f"{subject.name}_{letter}_{key}.png"))
         if key == "subsheets":
             if render_subsheets(scene, subject, args, path, written):
                 shown.append((key, path))
+                legends.append((key, path, legend_of(subject, key, subject.subsheets_highlights)))
             continue
         colls = getattr(subject, f"panel_{key}")()
         if colls is None:
@@ -154,6 +226,9 @@ def single(args):
             continue
         render_panel(scene, subject, key, colls, path, written)
         shown.append((key, path))
+        legends.append((key, path, legend_of(subject, key, highlights_shown(colls))))
+    if args.legend:
+        add_legends(legends, args, subject.name, written)
     if args.blend:
         blend = os.path.abspath(os.path.join(args.out, f"{subject.name}_figures.blend"))
         bpy.ops.wm.save_as_mainfile(filepath=blend, check_existing=False)
@@ -168,7 +243,7 @@ def single(args):
     tmp = tempfile.mkdtemp(prefix="hbc_fig_")
     labels = [R.render_labels([t], span * w + (span - 1) * C.PAD, label_h, tmp)[0] for t, span in zip(texts, spans)]
     os.rmdir(tmp)
-    tiles = [R.load_png(p) for _, p in shown]
+    tiles = same_height([R.load_png(p) for _, p in shown])
     sheet = C.contact_sheet(tiles, labels, C.contact_columns(spans), spans)
     path = os.path.abspath(os.path.join(args.out, f"{subject.name}_contact.png"))
     R.save_png(sheet, path)
@@ -180,6 +255,7 @@ def compare(args):
     written = []
     columns, names = [], []
     os.makedirs(args.out, exist_ok=True)
+    legends = []
     for mesh in args.compare:
         scene, subject = start(args, mesh)
         print(stats_row(subject), flush=True)
@@ -194,7 +270,10 @@ def compare(args):
                 continue
             render_panel(scene, subject, key, colls, path, written)
             col.append(path)
+            legends.append((key, path, legend_of(subject, key, highlights_shown(colls))))
         columns.append(col)
+    if args.legend:
+        add_legends(legends, args, "compare_" + "_".join(names), written)
     w, h = args.resolution
     label_h = max(14, round(h * 0.07))
     tmp = tempfile.mkdtemp(prefix="hbc_fig_")
@@ -202,8 +281,9 @@ def compare(args):
     row_w = max(120, round(w * 0.4))
     rows = R.render_labels([title for _, title in plan.COMPARE_ROWS], row_w, label_h, tmp)
     os.rmdir(tmp)
-    cells = [[R.load_png(columns[c][r]) if columns[c][r] else None for c in range(len(columns))]
-             for r in range(len(plan.COMPARE_ROWS))]
+    n = len(plan.COMPARE_ROWS)
+    flat = same_height([R.load_png(columns[c][r]) if columns[c][r] else None for r in range(n) for c in range(len(columns))])
+    cells = [flat[r * len(columns):(r + 1) * len(columns)] for r in range(n)]
     if all(t is None for r in cells for t in r):
         raise RuntimeError("no panel rendered")
     img = C.table(cells, rows, heads)

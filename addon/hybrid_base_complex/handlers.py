@@ -1,5 +1,6 @@
 """File and undo handlers: after undo, redo or loading a file the layers look as they did (their
-colour attribute is the active and rendered one again), and the source paths are stored the
+colour attribute is the active and rendered one, their material the one they were built with),
+Blender's object caches of the imported meshes are fresh, and the source paths are stored the
 Blender way on save (sources.py)."""
 
 from __future__ import annotations
@@ -12,19 +13,53 @@ from . import scene as S
 from . import sources
 
 
+def _is_current(me, attr) -> bool:
+    ca = me.color_attributes
+    active = ca.active_color
+    i = ca.render_color_index
+    return active is not None and active.name == attr.name and 0 <= i < len(ca) and ca[i].name == attr.name
+
+
 def relink_colors() -> int:
-    """Makes `hbc_color` the active and rendered colour attribute of every layer mesh (undo
-    restores meshes without it, so Solid > Attribute drew them black); returns how many changed."""
+    """Makes `hbc_color` the active and rendered colour attribute of every layer mesh again, and its
+    material the one the build gave it (`hbc_material`), where either was lost: Solid > Attribute
+    draws the active colour attribute, Material Preview and renders read `hbc_color` through the
+    material. Only what differs is set (setting a mesh's colour attribute makes Blender evaluate it
+    again). Returns how many meshes changed."""
     changed = 0
     for me in bpy.data.meshes:
         attr = me.color_attributes.get(S.COLOR_ATTR)
         if attr is None:
             continue
-        active = me.color_attributes.active_color
-        if active is None or active.name != attr.name:
-            changed += 1
-        compat.make_active_color(me, attr)
+        fixed = False
+        if not _is_current(me, attr):
+            compat.make_active_color(me, attr)
+            fixed = True
+        want = me.get(S.MATERIAL_PROP)
+        if isinstance(want, bpy.types.Material) and list(me.materials) != [want]:
+            S.set_materials(me, [want])
+            fixed = True
+        changed += fixed
     return changed
+
+
+def refresh_caches() -> int:
+    """Blender (3.4 to 4.5 seen) keeps the object cache behind `Collection.all_objects` of a
+    collection an undo did not change, so it still lists objects the undo freed: reading them
+    crashes or gives another object. The add-on reads no `all_objects` (scene.objects_in), and
+    this refreshes the caches of every imported mesh's collection and those above it for any other
+    script: a child linked and unlinked again frees them up the hierarchy."""
+    roots = [c for c in bpy.data.collections if c.get("hbc_source") is not None]
+    if not roots:
+        return 0
+    tmp = bpy.data.collections.new("HBC cache refresh")
+    try:
+        for coll in roots:
+            coll.children.link(tmp)
+            coll.children.unlink(tmp)
+    finally:
+        bpy.data.collections.remove(tmp)
+    return len(roots)
 
 
 @persistent
@@ -32,18 +67,24 @@ def _relink(*_args):
     relink_colors()
 
 
-HANDLERS = ("undo_post", "redo_post", "load_post")
+@persistent
+def _after_undo(*_args):
+    refresh_caches()
+    relink_colors()
+
+
+HANDLERS = {"undo_post": _after_undo, "redo_post": _after_undo, "load_post": _relink}
 
 
 def register():
-    for name in HANDLERS:
-        getattr(bpy.app.handlers, name).append(_relink)
+    for name, fn in HANDLERS.items():
+        getattr(bpy.app.handlers, name).append(fn)
     sources.register()
 
 
 def unregister():
     sources.unregister()
-    for name in HANDLERS:
+    for name, fn in HANDLERS.items():
         handlers = getattr(bpy.app.handlers, name)
-        if _relink in handlers:
-            handlers.remove(_relink)
+        if fn in handlers:
+            handlers.remove(fn)

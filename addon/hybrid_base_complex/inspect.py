@@ -259,8 +259,10 @@ def equip_object(tx, ob, data, in_sheet):
     ob["hbc_inspect"] = True
     if ob.get("hbc_surface"):
         return
-    mod = ob.modifiers.get(MODIFIER) or ob.modifiers.new(MODIFIER, "NODES")
-    mod.node_group = inspect_group(tx)
+    mod = tx.modifier(ob, MODIFIER)
+    ng = inspect_group(tx)
+    if mod.node_group != ng:  # assigning even the same group rebuilds the scene's relations
+        mod.node_group = ng
     apply_to_object(ob, settings())
 
 
@@ -269,7 +271,7 @@ def equip_layer(tx, coll, layer, s, st):
     # The per-cell arrays come from the hbc module: stand-in meshes (tests' fakes) get no filters.
     if layer not in INSPECT_LAYERS or not isinstance(s.mesh, _hbc().Mesh):
         return 0
-    obs = [ob for ob in coll.all_objects if ob.type == "MESH" and CELL_ATTR in ob.data.attributes
+    obs = [ob for ob in S.objects_in(coll) if ob.type == "MESH" and CELL_ATTR in ob.data.attributes
            and ob.get("hbc_highlight") is None]
     if not obs:
         return 0
@@ -380,8 +382,7 @@ def refresh_surface(ob, s, ins):
     old = ob.data
     with S.Transaction() as tx:
         me = S._mesh_from_soup(tx, old.name, soup, cell_colors(s, soup, ins.color_by_quality))
-    for mat in old.materials:
-        me.materials.append(mat)
+    S.set_materials(me, list(old.materials))
     write_attributes(me, cell_data(s), sheet_mask(s, _picked_sheet()))
     ob["hbc_in_sheet_of"] = _picked_sheet()
     name = old.name
@@ -477,7 +478,8 @@ def set_filters(ob, values, enabled=True):
     for k, v in values.items():
         if compat.get_modifier_input(mod, k) != v:
             compat.set_modifier_input(mod, k, v)
-    mod.show_viewport = mod.show_render = bool(enabled)
+    if mod.show_viewport != bool(enabled) or mod.show_render != bool(enabled):
+        mod.show_viewport = mod.show_render = bool(enabled)
     ob.update_tag()
 
 
@@ -487,7 +489,7 @@ def apply_to_object(ob, ins):
 
 
 def inspected_objects(root):
-    return [ob for ob in root.all_objects if ob.get("hbc_inspect")] if root is not None else []
+    return [ob for ob in S.objects_in(root) if ob.get("hbc_inspect")] if root is not None else []
 
 
 def _active_root(context):

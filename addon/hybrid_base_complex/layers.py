@@ -103,7 +103,8 @@ def _dot_radius(s, st):
 
 
 def build_sheet(tx, coll, s, st, name):
-    """The picked sheet with its highlights."""
+    """The picked sheet with its highlights (named "picked sheet": the sheets layer has a "sheet i"
+    of its own, and a second one would be named "sheet i.001")."""
     i = st.sheet_index
     if not (0 <= i < s.num_sheets):
         raise ValueError(f"no sheet {i} (the mesh has {s.num_sheets})")
@@ -114,26 +115,26 @@ def build_sheet(tx, coll, s, st, name):
     shade = 0.8 + 0.2 * ((soup.face_owner * 7) % 3) / 2.0
     fc = np.tile(color, (soup.num_faces, 1))
     fc[:, :3] *= shade[:, None]
-    S.soup_object(tx, coll, f"{name} sheet {i}", soup, fc, None,
+    S.soup_object(tx, coll, f"{name} picked sheet {i}", soup, fc, None,
                   _props(name, "sheet", hbc_sheet=i, hbc_sheet_type=t, hbc_owner="component"))
     made = 1
     unmatched, shared, edges, cells = s.sheet_highlights(i, _dot_radius(s, st))
     if unmatched.num_faces:
-        S.soup_object(tx, coll, f"{name} sheet {i} unmatched vertices", unmatched,
+        S.soup_object(tx, coll, f"{name} picked sheet {i} unmatched vertices", unmatched,
                       np.tile(P.UNMATCHED_COLOR, (unmatched.num_faces, 1)), None,
                       _props(name, "sheet", hbc_sheet=i, hbc_highlight="unmatched", hbc_count=unmatched.num_faces // 8))
         made += 1
     if shared.num_faces:
-        S.soup_object(tx, coll, f"{name} sheet {i} shared vertices", shared,
+        S.soup_object(tx, coll, f"{name} picked sheet {i} shared vertices", shared,
                       np.tile(P.SHARED_COLOR, (shared.num_faces, 1)), None,
                       _props(name, "sheet", hbc_sheet=i, hbc_highlight="shared", hbc_count=shared.num_faces // 8))
         made += 1
     if edges.positions.size:
-        S.lines_object(tx, coll, f"{name} sheet {i} self-parallel edges", edges, st.line_radius * s.length * 1.5,
+        S.lines_object(tx, coll, f"{name} picked sheet {i} self-parallel edges", edges, st.line_radius * s.length * 1.5,
                        _props(name, "sheet", hbc_sheet=i, hbc_highlight="self_parallel"))
         made += 1
     if cells.num_faces:
-        S.soup_object(tx, coll, f"{name} sheet {i} self-intersecting cells", cells,
+        S.soup_object(tx, coll, f"{name} picked sheet {i} self-intersecting cells", cells,
                       np.tile(P.SELF_INTERSECTING_COLOR, (cells.num_faces, 1)), None,
                       _props(name, "sheet", hbc_sheet=i, hbc_highlight="self_intersecting"))
         made += 1
@@ -202,14 +203,16 @@ NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
 
 
 def build_into(tx, root, layer, s, st):
-    """Builds a layer into a new unlinked collection (registered in tx); returns it. The old
-    layer is retired first so the new objects get the names a first build gives. `root` is the
-    mesh's collection, or (blender_scripts/figures/render.py, which links the result itself) a
-    name: then nothing is retired."""
+    """Builds a layer and returns its collection: the existing layer, rebuilt in place (its
+    objects refilled, see scene.Transaction), else a new unlinked collection (registered in tx).
+    `root` is the mesh's collection, or (blender_scripts/figures/render.py, which links the result
+    itself) a name: then the layer is always new."""
     name = root if isinstance(root, str) else root.name
-    if not isinstance(root, str):
-        S.retire_layer(tx, root, layer)
-    coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
+    coll = None if isinstance(root, str) else S.find_layer(root, layer)
+    if coll is not None:
+        tx.reuse(coll)
+    else:
+        coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
     BUILDERS[layer](tx, coll, s, st, name)
     inspect.equip_layer(tx, coll, layer, s, st)
     return coll
@@ -222,7 +225,7 @@ def build_layer(root, layer, s, st, log=print):
     with S.Transaction() as tx:
         coll = build_into(tx, root, layer, s, st)
         S.swap_layer(root, layer, coll, tx)
-    done = (f"{root.name}: built {P.LAYER_TITLES[layer]} ({len(coll.all_objects)} objects) "
+    done = (f"{root.name}: built {P.LAYER_TITLES[layer]} ({len(S.objects_in(coll))} objects) "
             f"in {time.perf_counter() - t:.2f} s")
     log("hbc: " + done)
     return coll, done

@@ -99,7 +99,7 @@ def model_boxes():
 
     boxes = []
     for root in (c for c in bpy.data.collections if c.get("hbc_source") is not None):
-        pts = [ob.matrix_world @ mathutils.Vector(corner) for ob in root.all_objects for corner in ob.bound_box]
+        pts = [ob.matrix_world @ mathutils.Vector(corner) for ob in S.objects_in(root) for corner in ob.bound_box]
         if pts:
             boxes.append((tuple(min(p[i] for p in pts) for i in range(3)), tuple(max(p[i] for p in pts) for i in range(3))))
     return boxes
@@ -188,7 +188,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
         st.active_mesh = root.name
         fill_sheet_list(st, s)
         if self.frame:
-            compat.frame_objects(context, list(root.all_objects))
+            compat.frame_objects(context, S.objects_in(root))
         return self.finish_with(f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s", log)
 
 
@@ -299,7 +299,7 @@ class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e, prog)
         prog.end(context)
-        n = sum(len(S.find_layer(root, layer).all_objects) for layer in BUILD_ALL)
+        n = sum(len(S.objects_in(S.find_layer(root, layer))) for layer in BUILD_ALL)
         return self.finish_with(f"{root.name}: built {len(BUILD_ALL)} layers ({n} objects) in "
                                 f"{time.perf_counter() - t0:.2f} s; showing {P.LAYER_TITLES[BUILD_ALL_SHOWN]}", log)
 

@@ -231,22 +231,16 @@ layer_panels = tuple(_layer_panel(order, *row) for order, row in enumerate(LAYER
 
 
 def legend_entries(context):
-    """planning.legend for the active mesh's built, visible layers."""
-    import numpy as np
-
+    """planning.legend for the active mesh's built, visible layers and the highlights they hold."""
     root = active_root(context)
-    s = session.get(root.name) if root is not None else None
     shown = [layer for layer, _ in P.LAYERS
              if root is not None and (c := S.find_layer(root, layer)) is not None and not c.hide_viewport]
+    s = session.get(root.name) if root is not None else None
     if s is None:
         return P.legend(shown)
-    types = np.asarray(s.mesh.cell_types)
-    kwargs = {"non_hex_types": sorted(int(t) for t in np.unique(types) if t != 0)}
-    if s.analysis is not None:
-        cls = np.asarray(s.analysis.graph.edge_class)
-        kwargs.update(valences=[int(v) for v in np.unique(s.analysis.graph.chain_valence)],
-                      has_pseudo=bool(np.any(cls == 2)), has_non_manifold=bool(np.any(cls == 3)))
-    return P.legend(shown, **kwargs)
+    highlights = {ob.get("hbc_highlight") for layer in ("sheet", "subsheets") if layer in shown
+                  for ob in S.objects_in(S.find_layer(root, layer))}
+    return P.legend(shown, highlights=highlights, **s.legend_facts())
 
 
 class HBC_PT_legend(_Sub, bpy.types.Panel):

@@ -459,10 +459,21 @@ LEGEND_COLORS = {
 #: Longest legend words: beside a swatch at the default sidebar width about 20 characters show.
 LEGEND_MAX = 19
 
+#: The highlights of a picked sheet (and its subsheets), in legend order, with their words.
+SHEET_HIGHLIGHTS = (
+    ("unmatched", "Dot: unmatched"),
+    ("shared", "Dot: shared vertex"),
+    ("self_parallel", "Self-parallel edge"),
+    ("self_intersecting", "Self-intersecting"),
+)
 
-def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_hex_types=()):
+
+def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_hex_types=(),
+           has_non_hex_blocks=True, highlights=None):
     """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
-    edge means (the swatch gives the colour, the words what it marks)."""
+    edge means (the swatch gives the colour, the words what it marks). The add-on's Legend panel and
+    the figure script's legend strip (blender_scripts/figures) both show exactly this.
+    highlights: the sheet highlights drawn (keys of SHEET_HIGHLIGHTS), None for all of them."""
     out = []
     if "direct" in layers:
         out.append(("hex", "Boundary, hex cells"))
@@ -475,13 +486,10 @@ def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_he
             out.append(("pseudo", "Pseudo-singular"))
         if has_non_manifold:
             out.append(("non_manifold", "Non-manifold edge"))
-    if "blocks" in layers:
+    if "blocks" in layers and has_non_hex_blocks:
         out.append(("non_hex_block", "Non-hex block"))
     if "sheet" in layers or "subsheets" in layers:
-        out += [("unmatched", "Dot: unmatched"),
-                ("shared", "Dot: shared vertex"),
-                ("self_parallel", "Self-parallel edge"),
-                ("self_intersecting", "Self-intersecting")]
+        out += [(key, words) for key, words in SHEET_HIGHLIGHTS if highlights is None or key in highlights]
     return out
 
 

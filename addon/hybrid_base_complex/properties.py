@@ -80,7 +80,7 @@ def _sheets_visibility(settings):
     root = layers.find_root(settings.active_mesh) if settings.active_mesh else None
     coll = scene.find_layer(root, "sheets") if root is not None else None
     if coll is not None:
-        layers.show_sheets([ob for ob in coll.all_objects if "hbc_sheet" in ob], settings)
+        layers.show_sheets([ob for ob in scene.objects_in(coll) if "hbc_sheet" in ob], settings)
 
 
 def _sheet_picked(settings, context):
@@ -96,7 +96,7 @@ def _sheet_picked(settings, context):
     _sheets_visibility(settings)
     sub = scene.find_layer(root, "subsheets")
     if sub is not None:
-        stale = any(ob.get("hbc_sheet") != settings.sheet_index for ob in sub.all_objects)
+        stale = any(ob.get("hbc_sheet") != settings.sheet_index for ob in scene.objects_in(sub))
         if stale != bool(sub.get("hbc_stale")):  # hidden while stale, shown again when current
             sub.hide_viewport = stale
         sub["hbc_stale"] = stale

@@ -9,8 +9,9 @@
   that makes tubes; the attribute is carried onto the tubes so the shared line material renders
   the per-point opacity.
 - Every datablock made while building goes through a `Transaction`; on an exception it removes
-  them all, so a failed build leaves the file exactly as it was. Layers are built into an unlinked
-  collection and only swapped in (replacing the old one) at the end.
+  them all and puts back what it changed, so a failed build leaves the file as it was. A first
+  build goes into an unlinked collection swapped in at the end; a rebuild refills the layer's
+  objects in place (same names, links and view-layer entries; see Transaction).
 """
 
 from __future__ import annotations
@@ -26,20 +27,138 @@ from . import planning as P
 COLOR_ATTR = "hbc_color"
 OWNER_ATTR = "owner"
 CELL_ATTR = "hbc_cell"
+MATERIAL_PROP = "hbc_material"  # a layer mesh's material as built (handlers put it back if lost)
 TUBE_GROUP = "HBC Tube"
+TUBE_GROUP_VERSION = 3  # files made with an older group get this one on their next build
 
 
 # ---------------------------------------------------------------------------------------------
 # Transactions
 
+#: How foreach_get/foreach_set read each attribute type: (property, components, numpy dtype).
+_ATTR_IO = {
+    "FLOAT": ("value", 1, np.float32), "INT": ("value", 1, np.int32), "INT8": ("value", 1, np.int32),
+    "BOOLEAN": ("value", 1, bool), "FLOAT_VECTOR": ("vector", 3, np.float32), "FLOAT2": ("vector", 2, np.float32),
+    "FLOAT_COLOR": ("color", 4, np.float32), "BYTE_COLOR": ("color", 4, np.float32),
+}
+
+
+def _plain(value):
+    """An ID property value as plain Python (arrays and groups are views into the datablock)."""
+    if isinstance(value, (int, float, str)):
+        return value
+    if hasattr(value, "to_dict"):
+        return value.to_dict()
+    if hasattr(value, "to_list"):
+        return value.to_list()
+    return value
+
+
+class _MeshState:
+    """A mesh's geometry, attributes and materials, read in bulk, to put back on a rollback. Internal
+    attributes (names starting with '.': selection, corner and edge maps) are Blender's own and
+    follow from the geometry, and so do the edges of a mesh with faces."""
+
+    def __init__(self, me):
+        nv, nl, nf = len(me.vertices), len(me.loops), len(me.polygons)
+        ne = 0 if nf else len(me.edges)
+        self.co = np.empty(3 * nv, np.float32)
+        me.vertices.foreach_get("co", self.co)
+        self.edges = np.empty(2 * ne, np.int32)
+        if ne:
+            me.edges.foreach_get("vertices", self.edges)
+        self.loops = np.empty(nl, np.int32)
+        me.loops.foreach_get("vertex_index", self.loops)
+        self.starts = np.empty(nf, np.int32)
+        me.polygons.foreach_get("loop_start", self.starts)
+        size = {"POINT": nv, "CORNER": nl, "FACE": nf}
+        self.attrs = []
+        for a in me.attributes:
+            name = a.name
+            if name[:1] == "." or name == "position":
+                continue
+            data_type, domain = a.data_type, a.domain
+            io = _ATTR_IO.get(data_type)
+            if io is None or domain not in size:
+                continue
+            key, width, dtype = io
+            values = np.empty(size[domain] * width, dtype)
+            a.data.foreach_get(key, values)
+            self.attrs.append((name, data_type, domain, key, values))
+        active = me.color_attributes.active_color
+        self.active = active.name if active is not None else None
+        self.materials = list(me.materials)
+
+    def restore(self, me):
+        me.clear_geometry()
+        me.vertices.add(len(self.co) // 3)
+        me.vertices.foreach_set("co", self.co)
+        if len(self.edges):
+            me.edges.add(len(self.edges) // 2)
+            me.edges.foreach_set("vertices", self.edges)
+        me.loops.add(len(self.loops))
+        me.loops.foreach_set("vertex_index", self.loops)
+        me.polygons.add(len(self.starts))
+        compat.set_polygons(me, self.starts, np.diff(np.append(self.starts, len(self.loops))).astype(np.int32))
+        for name, data_type, domain, key, values in self.attrs:
+            attr = me.attributes.get(name) or me.attributes.new(name, data_type, domain)
+            attr.data.foreach_set(key, values)
+        if self.active is not None and self.active in me.color_attributes:
+            compat.make_active_color(me, me.color_attributes[self.active])
+        me.update(calc_edges=len(self.starts) > 0)
+        me.materials.clear()
+        for mat in self.materials:
+            me.materials.append(mat)
+
+
+class _ObjectState:
+    """What refilling an object in place changes on it (its data, its add-on properties, colour,
+    visibility, placement, modifiers), to put back on a rollback."""
+
+    def __init__(self, ob, refill_mesh: bool):
+        self.ob, self.data = ob, ob.data
+        self.mesh = _MeshState(ob.data) if refill_mesh else None
+        self.props = {k: _plain(v) for k, v in ob.items() if k.startswith("hbc_")}
+        self.color = tuple(ob.color)
+        self.hidden = (ob.hide_viewport, ob.hide_render)
+        self.matrix = ob.matrix_basis.copy()
+        self.modifiers = [m.name for m in ob.modifiers]
+
+    def restore(self):
+        ob = self.ob
+        if ob.data != self.data:
+            ob.data = self.data
+        if self.mesh is not None:
+            self.mesh.restore(ob.data)
+        for k in [k for k in ob.keys() if k.startswith("hbc_")]:
+            del ob[k]
+        for k, v in self.props.items():
+            ob[k] = v
+        ob.color = self.color
+        ob.hide_viewport, ob.hide_render = self.hidden
+        ob.matrix_basis = self.matrix
+        for mod in [m for m in ob.modifiers if m.name not in self.modifiers]:
+            ob.modifiers.remove(mod)
+
+
 class Transaction:
-    """Records the datablocks it creates; `with Transaction() as tx:` removes them on error."""
+    """Records what a build creates and changes; `with Transaction() as tx:` undoes it on error.
+
+    A layer that is built again is rebuilt in place (`reuse`): the objects the new build asks for
+    by name (`mesh_object`) are the old ones, their meshes cleared and filled again, so a rebuild
+    keeps names, collection links and view-layer entries and costs no more than a first build
+    (removing and making objects again is what made rebuilds slow: Blender's removal of objects and
+    meshes and the view layer's resync dominate). Objects the new build does not ask for go when
+    the layer is swapped in (`swap_layer`); what is refilled is saved first, so a failed build
+    still leaves the file as it was."""
 
     def __init__(self):
         self.created = []  # (collection name in bpy.data, datablock)
-        self.renamed = []  # (datablock, its name before)
-        self.retired = {}  # (root name, layer) -> the old layer collection, unlinked from its root
-        self.removed = []  # (collection, name, data, ID properties, colour, hidden) of objects removed early
+        self.pools = {}  # layer collection -> {object name: object} not yet asked for by the rebuild
+        self.kept = {}  # object -> its _ObjectState, for every object refilled in place
+        self.used_modifiers = set()  # (object, modifier name) the build asked for
+        self.inputs = []  # (modifier, input name, value before) set on kept objects
+        self.layers = []  # (layer collection, name, hide_viewport, hide_render, stale) rebuilt in place
 
     def __enter__(self):
         return self
@@ -53,40 +172,28 @@ class Transaction:
         self.created.append((kind, block))
         return block
 
-    def rename(self, block, name):
-        """Renames an existing datablock; a rollback gives it its old name back."""
-        self.renamed.append((block, block.name))
-        block.name = name
-
     def rollback(self):
+        for mod, name, value in reversed(self.inputs):
+            compat.set_modifier_input(mod, name, value)
+        for state in reversed(list(self.kept.values())):
+            try:
+                state.restore()
+            except Exception as e:  # noqa: BLE001 - keep undoing the rest; say what stays changed
+                print(f"hbc: rollback could not restore {state.ob.name}: {e}")
         ids = []
         for _, block in reversed(self.created):
             try:
-                ids.append(block)
                 block.name  # noqa: B018 - raises ReferenceError for a block already gone
-            except ReferenceError:
-                ids.pop()
-        if ids:
-            bpy.data.batch_remove(ids)
-        for block, name in reversed(self.renamed):
-            try:
-                block.name = name
+                ids.append(block)
             except ReferenceError:
                 pass
-        for coll, name, data, props, color, hidden in self.removed:
-            ob = bpy.data.objects.new(name, data)
-            for k, v in props.items():
-                ob[k] = v
-            ob.color, ob.hide_viewport = color, hidden
-            coll.objects.link(ob)
-        self.removed.clear()
-        for (root_name, _), old in self.retired.items():
-            root = bpy.data.collections.get(root_name)
-            if root is not None and old.name not in root.children:
-                root.children.link(old)
-        self.created.clear()
-        self.renamed.clear()
-        self.retired.clear()
+        if ids:
+            bpy.data.batch_remove(ids)
+        for coll, name, hide_viewport, hide_render, stale in self.layers:
+            coll.name, coll.hide_viewport, coll.hide_render = name, hide_viewport, hide_render
+            if stale is not None:
+                coll["hbc_stale"] = stale
+        self.__init__()
 
     # factories
     def collection(self, name):
@@ -99,6 +206,89 @@ class Transaction:
         ob = self.add("objects", bpy.data.objects.new(name, data))
         coll.objects.link(ob)
         return ob
+
+    # rebuilding in place
+    def reuse(self, coll):
+        """Rebuilds the layer collection `coll` in place: its objects become the pool `mesh_object`
+        takes from."""
+        self.pools[coll] = {ob.name: ob for ob in coll.objects}
+        self.layers.append((coll, coll.name, coll.hide_viewport, coll.hide_render, coll.get("hbc_stale")))
+
+    def mesh_object(self, name, coll):
+        """(object, empty mesh) called `name` in `coll`: the old object of that name when `coll` is
+        rebuilt in place (its mesh cleared; a mesh other objects share is left to them and replaced),
+        else new ones. A refilled object is reset to what a new object has (no add-on properties,
+        white, shown, at the origin) before the builder sets what it wants."""
+        ob = self.pools.get(coll, {}).pop(name, None)
+        if ob is None or ob.type != "MESH":
+            me = self.mesh(name)
+            return self.object(name, me, coll), me
+        own = ob.data.users == 1 and ob.data.library is None
+        state = self.kept[ob] = _ObjectState(ob, refill_mesh=own)
+        if own:
+            me = ob.data
+            me.clear_geometry()  # keeps the materials: set_materials changes them only if they differ
+        else:
+            me = self.mesh(name)
+            ob.data = me
+        for k in state.props:
+            del ob[k]
+        if tuple(ob.color) != (1.0, 1.0, 1.0, 1.0):
+            ob.color = (1.0, 1.0, 1.0, 1.0)
+        if ob.hide_viewport or ob.hide_render:
+            ob.hide_viewport = ob.hide_render = False
+        if not _is_identity(ob.matrix_basis):
+            ob.matrix_basis.identity()
+        return ob, me
+
+    def modifier(self, ob, name, kind="NODES"):
+        """The object's modifier `name`: the one it has (a refilled object keeps it, with its inputs),
+        else a new one. Modifiers of refilled objects the build does not ask for go at the swap."""
+        self.used_modifiers.add((ob, name))
+        return ob.modifiers.get(name) or ob.modifiers.new(name, kind)
+
+    def set_input(self, mod, name, value):
+        """Sets a geometry-nodes modifier input; a rollback puts a refilled object's old value back."""
+        old = compat.get_modifier_input(mod, name)
+        if old == value:
+            return
+        state = self.kept.get(mod.id_data)
+        if state is not None and mod.name in state.modifiers:
+            self.inputs.append((mod, name, old))
+        compat.set_modifier_input(mod, name, value)
+
+    def finish(self, coll):
+        """The rebuild of `coll` succeeded: the objects it did not ask for go with their own data,
+        and so do child collections; refilled objects lose the modifiers the build did not ask for."""
+        pool = self.pools.pop(coll, {})
+        surplus = set(pool.values())
+        children = []
+        if coll.children:
+            colls, objects, _ = _tree(coll)
+            children = [c for c in colls if c != coll]
+            surplus |= objects - set(coll.objects)
+        for ob in coll.objects:
+            if ob in self.kept and ob not in surplus:
+                for mod in [m for m in ob.modifiers if (ob, m.name) not in self.used_modifiers]:
+                    ob.modifiers.remove(mod)
+        uses = Counter(ob.data for ob in surplus if ob.data is not None)
+        own = [d for d, n in uses.items() if d.users <= n]
+        # Objects first, then their data (see remove_collection_tree).
+        for ids in (list(surplus), own, children):
+            if ids:
+                bpy.data.batch_remove(ids)
+
+
+_IDENTITY = None
+
+
+def _is_identity(m) -> bool:
+    global _IDENTITY
+    if _IDENTITY is None:
+        from mathutils import Matrix
+
+        _IDENTITY = Matrix.Identity(4)
+    return m == _IDENTITY
 
 
 # ---------------------------------------------------------------------------------------------
@@ -142,10 +332,10 @@ def material(tx: Transaction, kind: str, color=(0.8, 0.8, 0.8, 1.0), alpha: floa
 def tube_group(tx: Transaction):
     """Geometry nodes: edges -> curves -> tubes of radius `Radius`, attributes carried along."""
     ng = bpy.data.node_groups.get(TUBE_GROUP)
-    if ng is not None and ng.get("hbc_group") == 2:
+    if ng is not None and ng.get("hbc_group") == TUBE_GROUP_VERSION:
         return ng
     ng = tx.add("node_groups", bpy.data.node_groups.new(TUBE_GROUP, "GeometryNodeTree"))
-    ng["hbc_group"] = 2
+    ng["hbc_group"] = TUBE_GROUP_VERSION
     compat.group_socket(ng, "INPUT", "NodeSocketGeometry", "Geometry")
     r = compat.group_socket(ng, "INPUT", "NodeSocketFloat", "Radius")
     r.default_value = 0.01
@@ -167,15 +357,28 @@ def tube_group(tx: Transaction):
     L(gi.outputs["Resolution"], circ.inputs["Resolution"])
     L(circ.outputs["Curve"], c2m.inputs["Profile Curve"])
     L(c2m.outputs["Mesh"], setmat.inputs["Geometry"])
-    L(setmat.outputs["Geometry"], go.inputs["Geometry"])
+    # Curve to Mesh makes a new mesh that (4.2 and later) has no active colour attribute: Solid >
+    # Attribute drew every tube black. Joined after the input's own points (its edges deleted;
+    # loose points draw nothing), the tubes get the input mesh's settings, `hbc_color` active
+    # among them: Join takes them from its first mesh, and a multi-input socket lists the link
+    # made last first.
+    points = n.new("GeometryNodeDeleteGeometry")
+    points.domain, points.mode = "EDGE", "EDGE_FACE"
+    points.inputs["Selection"].default_value = True
+    join = n.new("GeometryNodeJoinGeometry")
+    L(gi.outputs["Geometry"], points.inputs["Geometry"])
+    L(setmat.outputs["Geometry"], join.inputs["Geometry"])
+    L(points.outputs["Geometry"], join.inputs["Geometry"])
+    L(join.outputs["Geometry"], go.inputs["Geometry"])
     return ng
 
 
 # ---------------------------------------------------------------------------------------------
 # Geometry
 
-def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
-    me = tx.mesh(name)
+def fill_soup(me, soup: P.Soup, face_colors=None):
+    """Writes a soup into an empty mesh: points, corners, faces, the `owner` (and `hbc_cell`) face
+    attributes and, with face_colors (one per face, or one for all), the colour attribute."""
     nv, nf = len(soup.positions), soup.num_faces
     me.vertices.add(nv)
     me.vertices.foreach_set("co", np.ascontiguousarray(soup.positions, np.float32).ravel())
@@ -197,12 +400,30 @@ def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
     return me
 
 
+def set_materials(me, materials):
+    """Gives a mesh these material slots and records a single one as the mesh's `hbc_material`.
+    A refilled mesh usually has them already: changing a mesh's materials rebuilds the whole
+    scene's dependency graph, so equal ones are left alone."""
+    materials = list(materials)
+    if len(materials) == 1 and me.get(MATERIAL_PROP) != materials[0]:
+        me[MATERIAL_PROP] = materials[0]
+    if list(me.materials) == materials:
+        return
+    me.materials.clear()
+    for mat in materials:
+        me.materials.append(mat)
+
+
+def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
+    return fill_soup(tx.mesh(name), soup, face_colors)
+
+
 def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None):
-    me = _mesh_from_soup(tx, name, soup, face_colors)
+    ob, me = tx.mesh_object(name, coll)
+    fill_soup(me, soup, face_colors)
     if mat is None:
         mat = material(tx, "attr")
-    me.materials.append(mat)
-    ob = tx.object(name, me, coll)
+    set_materials(me, [mat])
     for k, v in (props or {}).items():
         ob[k] = v
     return ob
@@ -242,7 +463,7 @@ def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of
 
 def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
     """Tubes along polylines; per-point colour with alpha = opacity."""
-    me = tx.mesh(name)
+    ob, me = tx.mesh_object(name, coll)
     me.vertices.add(len(lines.positions))
     me.vertices.foreach_set("co", np.ascontiguousarray(lines.positions, np.float32).ravel())
     me.edges.add(len(lines.edges))
@@ -253,12 +474,12 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
     poly = me.attributes.new("polyline", "INT", "POINT")
     poly.data.foreach_set("value", np.ascontiguousarray(lines.polyline, np.int32))
     me.update()
-    me.materials.append(material(tx, "attr"))
-    ob = tx.object(name, me, coll)
+    set_materials(me, [material(tx, "attr")])
     ng = tube_group(tx)
-    mod = ob.modifiers.new("Tubes", "NODES")
-    mod.node_group = ng
-    compat.set_modifier_input(mod, "Radius", float(radius))
+    mod = tx.modifier(ob, "Tubes")
+    if mod.node_group != ng:  # assigning even the same group rebuilds the scene's relations
+        mod.node_group = ng
+    tx.set_input(mod, "Radius", float(radius))
     ob["hbc_polylines"] = lines.num_polylines
     for k, v in (props or {}).items():
         ob[k] = v
@@ -267,6 +488,22 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
 
 # ---------------------------------------------------------------------------------------------
 # Collections
+
+def objects_in(coll) -> list:
+    """Every object of a collection and of the collections below it. `Collection.all_objects`
+    reads a cache Blender does not refresh after an undo (3.4: it still lists objects the undo
+    freed, and reading them crashes or yields another object), so the add-on walks the collections
+    itself wherever it may run after an undo (handlers, update callbacks, panels, operators)."""
+    out, seen, stack = [], set(), [coll]
+    while stack:
+        c = stack.pop()
+        for ob in c.objects:
+            if ob.name not in seen:
+                seen.add(ob.name)
+                out.append(ob)
+        stack.extend(c.children)
+    return out
+
 
 def find_layer(root, layer: str):
     for c in root.children:
@@ -300,55 +537,27 @@ def remove_collection_tree(coll):
             bpy.data.batch_remove(list(ids))
 
 
-def retire_layer(tx: Transaction, root, layer: str):
-    """Takes the layer about to be replaced out of the scene (its objects leave the view layer, so
-    renaming and removing them costs no view-layer update each), removes its plain objects and
-    renames what stays (meshes, tube objects), so the new ones get the plain names of a first build
-    (no `.001`, no search for a free number). A rollback makes the removed objects again and links
-    the layer back under its old names; swap_layer removes the rest."""
-    old = find_layer(root, layer)
-    if old is None:
-        return None
-    root.children.unlink(old)
-    tx.retired[(root.name, layer)] = old
-    colls, objects, data = _tree(old)
-    for block in data:
-        tx.rename(block, "~" + block.name[:60])
-    # Plain mesh objects go now, while the file does not hold the new ones yet (Blender removes
-    # objects in time growing with the objects in the file); a rollback makes them again from
-    # what is kept here (their data stays until the swap). Objects with modifiers (tubes) stay.
-    home = {ob: c for c in colls for ob in c.objects}
-    plain = [ob for ob in objects if ob.type == "MESH" and not ob.modifiers]
-    tx.removed += [(home[ob], ob.name, ob.data, {k: ob[k] for k in ob.keys()}, tuple(ob.color), ob.hide_viewport)
-                   for ob in plain]
-    if plain:
-        bpy.data.batch_remove(plain)
-    for ob in objects:
-        if ob not in plain:
-            tx.rename(ob, "~" + ob.name[:60])
-    return old
-
-
 def swap_layer(root, layer: str, new_coll, tx: Transaction | None = None):
-    """Puts a freshly built layer collection under root, replacing the old one (never both): the
-    one retired into `tx`, else the one under root."""
-    old = tx.retired.pop((root.name, layer), None) if tx is not None else None
-    if old is None:
-        old = find_layer(root, layer)
-        if old is not None:
-            root.children.unlink(old)
+    """Puts a freshly built layer collection under root, replacing the old one (never both); a
+    layer rebuilt in place (Transaction.reuse) stays where it is and drops what the rebuild left
+    over."""
+    old = find_layer(root, layer)
+    final_name = P.layer_collection_name(root.name, layer)
+    if old is not None and old == new_coll:
+        if tx is not None:
+            tx.finish(new_coll)
+        if new_coll.get("hbc_stale"):  # hidden for being another sheet's: shown as a new layer is
+            new_coll.hide_viewport = new_coll.hide_render = False
+            del new_coll["hbc_stale"]
+        if new_coll.name != final_name:
+            new_coll.name = final_name
+        compat.show_attribute_colors()
+        return new_coll
     # The old layer's eye and camera icons carry over (not when it was hidden for being stale).
     keep_hidden = (old.hide_viewport, old.hide_render) if old is not None and not old.get("hbc_stale") else None
-    final_name = P.layer_collection_name(root.name, layer)
     if old is not None:
-        old_colls = set(_tree(old)[0])
-        early = [d for coll, _, d, *_ in (tx.removed if tx is not None else []) if coll in old_colls]
+        root.children.unlink(old)
         remove_collection_tree(old)
-        if tx is not None:
-            tx.removed = [r for r in tx.removed if r[2] not in early]
-        early = [d for d in early if d.users == 0]
-        if early:
-            bpy.data.batch_remove(early)
     new_coll["hbc_layer"] = layer
     new_coll["hbc_mesh"] = root.name
     root.children.link(new_coll)

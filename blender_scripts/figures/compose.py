@@ -125,7 +125,24 @@ def contact_sheet(tiles, labels, cols, spans=None, pad=PAD, label_gap=4, bg=BACK
         lab = labels[i] if i < len(labels) else None
         if lab is not None:
             paste(out, lab[:, :slot_w], x, y)
-        paste(out, border(flatten(tile)), x + (slot_w - tile.shape[1]) // 2, y + cell_h - th)
+        paste(out, framed(tile), x + (slot_w - tile.shape[1]) // 2, y + cell_h - th)
+    return out
+
+
+def content_height(img):
+    """Rows from the top down to the last one holding anything opaque (tiles padded below by
+    pad_to_height end in transparent rows)."""
+    rows = np.nonzero((np.asarray(img)[..., 3] > 0.0).any(axis=1))[0]
+    return int(rows[-1]) + 1 if len(rows) else 0
+
+
+def framed(tile, bg=BACKGROUND):
+    """The tile flattened onto bg with a thin frame around its content; transparent padding below
+    the content stays unframed background."""
+    h = content_height(tile)
+    out = flatten(tile, bg)
+    if h:
+        out[:h] = border(out[:h])
     return out
 
 
@@ -163,7 +180,7 @@ def table(cells, row_labels, col_labels, pad=PAD, gap=4, bg=BACKGROUND):
             paste(out, lab[:th], pad, y + (th - min(th, lab.shape[0])) // 2)
         for c, tile in enumerate(cells[r]):
             if tile is not None:
-                paste(out, border(flatten(tile)), x0 + c * (tw + pad), y)
+                paste(out, framed(tile), x0 + c * (tw + pad), y)
     return out
 
 
@@ -198,3 +215,53 @@ def foreground_bbox(img, bg=None, tol=0.02):
         return None
     ys, xs = np.nonzero(mask)
     return int(xs.min()), int(ys.min()), int(xs.max()) + 1, int(ys.max()) + 1
+
+
+# ---------------------------------------------------------------------------------------------
+# Legend strip
+
+SWATCH_EDGE = (0.25, 0.25, 0.27, 1.0)  # a thin dark frame: light swatches (yellow, grey) on white
+
+
+def linear_to_srgb(rgb):
+    """Scene-linear colour values (what Blender's colours and the add-on's palette hold) to the
+    display values a PNG holds (the figures' view transform is Standard: plain sRGB)."""
+    c = np.clip(np.asarray(rgb, np.float64), 0.0, 1.0)
+    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * c ** (1.0 / 2.4) - 0.055)
+
+
+def ink_columns(img, threshold=0.02):
+    """(x0, x1) of the columns of a label image holding any ink (alpha above threshold), or None."""
+    cols = np.nonzero((np.asarray(img)[..., 3] > threshold).any(axis=0))[0]
+    return (int(cols[0]), int(cols[-1]) + 1) if len(cols) else None
+
+
+def legend_strip(width, height, colors, words, layout, bg=BACKGROUND):
+    """A strip `width` x `height`: for each entry a square swatch of its linear colour (shown in
+    display values, framed thinly) at layout.swatches[i] and its words (a label image cut to its
+    ink) at layout.words[i]."""
+    out = canvas(width, height, bg)
+    edge = np.asarray(SWATCH_EDGE, np.float32)
+    for color, word, (x, y, side), (wx, wy) in zip(colors, words, layout.swatches, layout.words):
+        sw = np.empty((side, side, 4), np.float32)
+        sw[:] = edge
+        sw[1:-1, 1:-1, :3] = linear_to_srgb(color[:3])
+        paste(out, sw, x, y)
+        paste(out, word, wx, wy)
+    return out
+
+
+def stack(top, bottom, bg=BACKGROUND):
+    """`bottom` under `top` (a panel and its strip), both flattened onto bg; widths must agree."""
+    if top.shape[1] != bottom.shape[1]:
+        raise ValueError("stack: widths differ")
+    return np.concatenate([flatten(top, bg), flatten(bottom, bg)], axis=0)
+
+
+def pad_to_height(img, height):
+    """The image with transparent rows added below it up to `height` (tiles of one contact sheet
+    or comparison table must share a height: panels without a legend strip)."""
+    h = img.shape[0]
+    if h >= height:
+        return img
+    return np.concatenate([img, np.zeros((height - h,) + img.shape[1:], np.float32)], axis=0)

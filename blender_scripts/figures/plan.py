@@ -1,6 +1,7 @@
 """What the figure script decides without Blender (no ``bpy``; tested with plain pytest):
 command line, the panels and their titles, which sheet and subsheets to show, the camera that
-frames a set of points, and the feature edges that outline blocks.
+frames a set of points, the feature edges that outline blocks, and what each panel's legend strip
+lists and where its swatches and words go.
 """
 
 from __future__ import annotations
@@ -90,6 +91,9 @@ def parser():
                     help="the add-on package folder (default: $HBC_ADDON_DIR, else <repo>/build/addon/"
                          "hybrid_base_complex)")
     ap.add_argument("--blend", action="store_true", help="also save the scene as a .blend next to the images")
+    ap.add_argument("--legend", action="store_true",
+                    help="add under every panel a strip of colour swatches with words for what it shows (the "
+                         "add-on's legend), and write <name>_legend.json")
     return ap
 
 
@@ -357,3 +361,96 @@ def all_edges(face_sizes, face_vertices):
     nxt = np.where(pos_in + 1 == np.repeat(sizes, sizes), np.repeat(starts, sizes), np.arange(len(fv)) + 1)
     e = np.sort(np.stack([fv, fv[nxt]], axis=1), axis=1)
     return np.unique(e, axis=0).astype(np.int32)
+
+
+# ---------------------------------------------------------------------------------------------
+# Legend strip (--legend)
+
+#: The add-on layers whose legend (hybrid_base_complex.planning.legend) each panel shows. Panels
+#: coloured from the palette only (VSG, wireframes: one colour per chain, meaning nothing beyond
+#: telling chains apart) have no entries; nor has the quality panel, whose title names its colour map.
+LEGEND_LAYERS = {
+    "mesh": ("direct",),
+    "graph": ("graph",),
+    "complex": ("blocks",),
+    "sheet": ("sheet",),
+    "vsg": (),
+    "wireframe": (),
+    "subsheets": ("subsheets",),
+    "cut": ("blocks",),
+    "quality": (),
+    "mesh_wireframe": (),
+}
+
+
+def panel_legend(P, key, facts, highlights=()):
+    """[(colour key, words, linear RGBA)] of panel `key`: the add-on's legend (P: its planning
+    module, the one place that defines the colours and words) for the layers the panel shows.
+    facts: Structure.legend_facts(); highlights: the sheet highlights the panel draws."""
+    layers = LEGEND_LAYERS.get(key, ())
+    if not layers:
+        return []
+    return [(k, words, tuple(float(c) for c in P.LEGEND_COLORS[k]))
+            for k, words in P.legend(layers, highlights=set(highlights), **facts)]
+
+
+@dataclass
+class LegendMetrics:
+    """Sizes of a legend strip in pixels, all from the row height: words are rendered at the
+    labels' proportion of a row (render.render_labels), the swatch is a square a little taller
+    than the words' capitals."""
+
+    row: int  # height of one row of entries (and of a rendered word image)
+    swatch: int  # side of a colour swatch
+    gap: int  # between a swatch and its words
+    column_gap: int  # between two columns of entries
+    margin: int  # above the first row, below the last and left/right of the widest row
+
+    @staticmethod
+    def for_panel(height):
+        row = max(24, round(0.065 * height))
+        return LegendMetrics(row, max(7, round(0.55 * row)), max(3, round(0.3 * row)),
+                             max(8, round(1.1 * row)), max(4, round(0.4 * row)))
+
+
+@dataclass
+class LegendLayout:
+    """Where each entry goes in a strip `width` wide: swatch boxes (x, y, side) and word origins (x,
+    y) of the row images, entries in reading order on a grid whose columns line up."""
+
+    width: int
+    rows: int
+    columns: int
+    swatches: list
+    words: list
+
+def strip_height(metrics: LegendMetrics, rows: int) -> int:
+    """Height of a strip of `rows` rows (0: no strip)."""
+    return 0 if rows <= 0 else 2 * metrics.margin + rows * metrics.row
+
+
+def legend_layout(word_widths, width, metrics: LegendMetrics, strip_rows=None) -> LegendLayout:
+    """Entries (their words `word_widths` pixels wide) on a grid of equal columns as many as fit in
+    `width`, filled row by row, the grid centred (also vertically in a strip of `strip_rows` rows,
+    when the strips of a figure share the height of the fullest): every swatch of a column at the
+    same x, every row the same height, so the strip reads as a table. An entry wider than the strip
+    keeps its place at the margin (its words are cut at the edge)."""
+    n = len(word_widths)
+    if n == 0:
+        return LegendLayout(int(width), 0, 0, [], [])
+    m = metrics
+    cell = m.swatch + m.gap + max(int(w) for w in word_widths)
+    usable = width - 2 * m.margin
+    columns = max(1, min(n, (usable + m.column_gap) // (cell + m.column_gap)))
+    rows = -(-n // columns)
+    block = columns * cell + (columns - 1) * m.column_gap
+    x0 = max(m.margin, (width - block) // 2)
+    y0 = m.margin + max(0, (strip_rows or rows) - rows) * m.row // 2
+    swatches, words = [], []
+    for i in range(n):
+        r, c = divmod(i, columns)
+        x = x0 + c * (cell + m.column_gap)
+        y = y0 + r * m.row
+        swatches.append((x, y + (m.row - m.swatch) // 2, m.swatch))
+        words.append((x + m.swatch + m.gap, y))
+    return LegendLayout(int(width), rows, columns, swatches, words)

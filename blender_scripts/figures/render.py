@@ -387,8 +387,7 @@ class Subject:
             mat = S.material(tx, "flat", self.addon.P.SELF_INTERSECTING_COLOR, 0.35)
             for ob in coll.objects:
                 if ob.get("hbc_highlight") == "self_intersecting":
-                    ob.data.materials.clear()
-                    ob.data.materials.append(mat)
+                    S.set_materials(ob.data, [mat])
         return [coll] + self.shell()
 
     def sheet_wireframe(self, sheet):
@@ -585,6 +584,24 @@ def save_png(arr, path):
     return path
 
 
+#: Fonts for labels and legend words, the first one present used (else Blender's own, whose "1"
+#: reads like an "I" in 3.x): DejaVu Sans, clear digits, the same glyphs in every Blender.
+LABEL_FONTS = ("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+               "/usr/share/fonts/TTF/DejaVuSans.ttf",
+               "/usr/share/fonts/dejavu/DejaVuSans.ttf")
+
+
+CAP_HEIGHT = 0.42  # capitals' height in a label, as a fraction of the label's height
+
+
+def label_font():
+    """The font datablock of the first LABEL_FONTS file present, or None (Blender's own)."""
+    for path in LABEL_FONTS:
+        if os.path.isfile(path):
+            return bpy.data.fonts.load(path, check_existing=True)
+    return None
+
+
 def render_labels(texts, width, height, tmpdir, align="LEFT", bold=False):
     """Each text rendered (Workbench, flat, dark on white) into a (height, width, 4) image whose
     background is transparent: one scene, one text object, one render per label."""
@@ -610,6 +627,9 @@ def render_labels(texts, width, height, tmpdir, align="LEFT", bold=False):
         scene.camera = cam
         cam.location = (width / 2.0, height / 2.0, 10.0)
         curve = bpy.data.curves.new("Label", "FONT")
+        font = label_font()
+        if font is not None:
+            curve.font = font
         curve.size = 0.62 * height
         curve.align_x = {"LEFT": "LEFT", "CENTER": "CENTER"}[align]
         curve.align_y = "CENTER"
@@ -617,13 +637,34 @@ def render_labels(texts, width, height, tmpdir, align="LEFT", bold=False):
         scene.collection.objects.link(ob)
         x = 0.25 * height if align == "LEFT" else width / 2.0
         ob.location = (x, height / 2.0 - 0.05 * height, 0.0)
-        out = []
-        for i, text in enumerate(texts):
+
+        def render(text, i):
             curve.body = text
             path = os.path.join(tmpdir, f"label_{i}.png")
             render_to(scene, path)
-            out.append(load_png(path))
+            img = load_png(path)
             os.remove(path)
+            return img
+
+        if font is not None:
+            # Fonts fill their size differently: scale so that capitals stand CAP_HEIGHT of the
+            # label high, as Blender's own font does at 0.62 of it. Measured on a large "H" (a
+            # small one's edges fall between pixels).
+            big = 200
+            r.resolution_x = r.resolution_y = big
+            cam_data.ortho_scale = float(big)
+            cam.location = (big / 2.0, big / 2.0, 10.0)
+            ob.location = (big / 4.0, big / 2.0, 0.0)
+            curve.size = 100.0
+            ink = np.nonzero((render("H", "cap")[..., 3] > 0.5).any(axis=1))[0]
+            r.resolution_x, r.resolution_y = int(width), int(height)
+            cam_data.ortho_scale = float(max(width, height))
+            cam.location = (width / 2.0, height / 2.0, 10.0)
+            ob.location = (x, height / 2.0 - 0.05 * height, 0.0)
+            curve.size = 0.62 * height
+            if len(ink) > 10:
+                curve.size = CAP_HEIGHT * height * 100.0 / (ink[-1] - ink[0] + 1)
+        out = [render(text, i) for i, text in enumerate(texts)]
         bpy.data.objects.remove(ob)
         bpy.data.curves.remove(curve)
         bpy.data.objects.remove(cam)

@@ -158,3 +158,26 @@ def test_real_mesh_highlights_and_subsheets(shared_data_dir):
     sub = s.subsheets(sheet)
     soup = s.subsheet_soup(sheet, sub, 0.0)
     assert set(soup.face_owner.tolist()) == set(range(int(sub.count)))
+
+
+def test_legend_facts_of_known_meshes(grid, sector5, pyramids):
+    """What the legend names comes from the analysis: the grid has only valence-1 boundary chains
+    and no non-hex cell; the sector adds its valence-5 axis; the split row has pyramids and a
+    non-hex block."""
+    facts = Structure(*grid).legend_facts()
+    assert facts == {"non_hex_types": [], "valences": [1], "has_pseudo": False, "has_non_manifold": False,
+                     "has_non_hex_blocks": False}
+    assert P.legend(["graph", "blocks"], **facts) == [("valence1", "Valence 1 edge")]
+    assert Structure(*sector5).legend_facts()["valences"] == [1, 5]
+    split = Structure(*pyramids).legend_facts()
+    assert split["non_hex_types"] == [3] and split["has_non_hex_blocks"]
+    assert P.legend(["direct", "blocks"], **split) == [("hex", "Boundary, hex cells"), ("pyramid", "Pyramid cells"),
+                                                       ("non_hex_block", "Non-hex block")]
+    assert Structure(pyramids[0]).legend_facts() == {"non_hex_types": [3]}  # not analysed: cell types only
+
+
+def test_legend_names_only_the_highlights_drawn():
+    every = [k for k, _ in P.legend(["sheet"])]
+    assert every == [k for k, _ in P.SHEET_HIGHLIGHTS]
+    assert P.legend(["subsheets"], highlights={"unmatched", None}) == [("unmatched", "Dot: unmatched")]
+    assert P.legend(["sheet"], highlights=set()) == []

@@ -337,22 +337,6 @@ def test_build_all_shows_one_layer_and_reports(clean_scene, data_dir, capsys):
     assert f"Info: Analyzed {root.name}: 1301 blocks, 20 sheets in " in capsys.readouterr().out
 
 
-def test_undo_handler_relinks_colour_attributes(clean_scene, data_dir):
-    """After undo the layers' colour attribute is the active one again (Solid > Attribute)."""
-    from hybrid_base_complex import handlers
-
-    root = import_mesh(data_dir)
-    bpy.context.scene.hbc.sheet_index = 0
-    assert bpy.ops.hbc.build_layer(layer="sheet") == {"FINISHED"}
-    me = next(o.data for o in layer_objects(root, "sheet") if "hbc_color" in o.data.color_attributes)
-    other = me.color_attributes.new("other", "FLOAT_COLOR", "CORNER")
-    me.color_attributes.active_color = other
-    assert handlers._relink in bpy.app.handlers.undo_post and handlers._relink in bpy.app.handlers.load_post
-    handlers._relink(bpy.context.scene)
-    assert me.color_attributes.active_color.name == "hbc_color"
-    assert handlers.relink_colors() == 0  # nothing left to fix
-
-
 RESAVE_AND_REBUILD = """
 import sys
 sys.path.insert(0, {addon_parent!r})

@@ -16,6 +16,7 @@ import subprocess
 import sys
 import time
 
+import numpy as np
 import pytest
 
 bpy = pytest.importorskip("bpy")
@@ -229,3 +230,100 @@ def test_cut_and_quality_panels(tmp_path):
     sheet = load(tmp_path / names[-1])
     label_h = max(14, round(H * 0.07))
     assert sheet.shape[:2][::-1] == C.sheet_size([1] * 3, C.contact_columns([1] * 3), W, H, label_h)
+
+
+# ---------------------------------------------------------------------------------------------
+# --legend: a strip of swatches and words under each panel
+
+LW, LH = 320, 240
+LEGEND_PANELS = ("mesh", "graph", "complex", "sheet", "vsg", "subsheets")
+
+
+@pytest.fixture(scope="module")
+def legend_pair(tmp_path_factory):
+    """The same panels rendered by Workbench (the same pixels every time) without and with
+    --legend."""
+    outs = []
+    for extra in ([], ["--legend"]):
+        out = tmp_path_factory.mktemp("legend" if extra else "plain")
+        p = run([data("twistcube_s.mesh"), "--out", out, "--engine", "workbench", "--resolution", LW, LH,
+                 "--panels", ",".join(LEGEND_PANELS), *extra])
+        assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+        outs.append((out, p))
+    return outs
+
+
+def expected_legends():
+    """{panel: [(key, words, colour)]} worked out here, apart from the script: the add-on's legend
+    for the layers each panel shows, with the facts of this mesh's analysis and the highlights the
+    picked sheet and its largest subsheets have."""
+    import importlib
+
+    addon = os.environ["HBC_ADDON_DIR"]
+    sys.path.insert(0, os.path.dirname(addon))
+    name = os.path.basename(addon)
+    P = importlib.import_module(name + ".planning")
+    session = importlib.import_module(name + ".session")
+    s = session.load(str(data("twistcube_s.mesh")), 1.0, lambda *_: None)
+    session.analyze(s, 0.8, lambda *_: None)
+    facts = s.legend_facts()
+    sheet = plan.pick_sheet(s.sheet_types(), s.sheet_sizes()[0])
+    unmatched, shared, edges, cells = s.sheet_highlights(sheet, 0.01)
+    drawn = {"unmatched": unmatched.num_faces, "shared": shared.num_faces, "self_parallel": edges.positions.size,
+             "self_intersecting": cells.num_faces}
+    sub = s.subsheets(sheet)
+    picked = plan.pick_subsheets(np.diff(np.asarray(sub.subsheet_cells_offsets)), 4)
+    sub_unmatched = any(len(s.subsheet_unmatched(sub, k)) for k in picked)
+    highlights = {"sheet": {k for k, n in drawn.items() if n}, "subsheets": {"unmatched"} if sub_unmatched else set()}
+    return P, {key: plan.panel_legend(P, key, facts, highlights.get(key, ())) for key in LEGEND_PANELS}
+
+
+def test_legend_strip_under_each_panel(legend_pair):
+    """Every panel with something to name grew by one strip (the same height for all) under the
+    very render it had without --legend; each swatch shows its colour (display values of the add-on's
+    colour) framed, beside its words, at the place <name>_legend.json gives, the swatches lined up
+    in columns; panels coloured by chain (VSG) are unchanged; the contact sheet grew by the strips."""
+    import json
+
+    (plain, _), (legend, p) = legend_pair
+    P, expected = expected_legends()
+    info = json.loads((legend / "twistcube_s_legend.json").read_text())
+    assert str((legend / "twistcube_s_legend.json").resolve()) in written(p)
+    strip = info["strip_height"]
+    m = plan.LegendMetrics.for_panel(LH)
+    assert info["row"] == m.row and strip > 0 and (strip - 2 * m.margin) % m.row == 0
+    listed = {q["panel"]: q for q in info["panels"]}
+    assert sorted(listed) == sorted(k for k, e in expected.items() if e)
+    assert {"mesh", "graph", "complex", "sheet", "subsheets"} <= set(listed)  # this mesh has them all
+    for key in LEGEND_PANELS:
+        name = f"twistcube_s_{plan.PANEL_LETTER[key]}_{key}.png"
+        before, after = load(plain / name), load(legend / name)
+        if key not in listed:
+            assert after.shape == before.shape, key
+            continue
+        q = listed[key]
+        assert q["file"] == name and q["height_without_strip"] == before.shape[0] == LH
+        assert after.shape[0] == before.shape[0] + strip and after.shape[1] == before.shape[1], key
+        assert np.abs(after[:LH, :, :3] - before[..., :3]).max() < 2.5 / 255, key  # the render itself is unchanged
+        assert [(e["key"], e["words"]) for e in q["entries"]] == [(k, w) for k, w, _ in expected[key]]
+        rows = {}
+        for e, (k, _, color) in zip(q["entries"], expected[key]):
+            want = C.linear_to_srgb(P.LEGEND_COLORS[k][:3])
+            assert np.allclose(e["srgb"], want, atol=1e-4), (key, k)
+            x, y, side = e["swatch"]
+            assert y >= LH and y + side <= LH + strip and side == m.swatch
+            inner = after[y + 1:y + side - 1, x + 1:x + side - 1, :3]
+            assert np.abs(inner - want).max() < 1.5 / 255, (key, k, inner.mean(axis=(0, 1)), want)
+            assert np.abs(after[y, x + side // 2, :3] - C.SWATCH_EDGE[:3]).max() < 1.5 / 255  # framed
+            wx, wy, ww, wh = e["words_at"]
+            assert wx == x + side + m.gap and wy <= y and y + side <= wy + wh  # beside it, on its row
+            ink = after[wy:wy + wh, wx:wx + ww, :3].min(axis=2)
+            assert ink.min() < 0.35, (key, e["words"])  # the words are drawn, dark on the strip
+            assert wx + ww <= after.shape[1]
+            rows.setdefault(wy, []).append(x)
+        xs = [sorted(v) for _, v in sorted(rows.items())]
+        for r in xs[1:]:
+            assert r == xs[0][:len(r)], (key, xs)  # every row starts at the first one's columns
+    # The contact sheet: both of its rows hold a panel with a strip.
+    a, b = load(plain / "twistcube_s_contact.png"), load(legend / "twistcube_s_contact.png")
+    assert b.shape[1] == a.shape[1] and b.shape[0] == a.shape[0] + 2 * strip

@@ -64,3 +64,42 @@ def test_tiles_panel_and_measures():
     assert C.foreground_bbox(C.canvas(5, 5)) is None
     assert C.differs(p, C.canvas(20, 10)) and not C.differs(p, p.copy())
     assert C.resize_nearest(C.canvas(8, 6), 4, 3).shape == (3, 4, 4)
+
+
+def test_linear_to_srgb():
+    assert np.allclose(C.linear_to_srgb([0.0, 1.0, 0.0031308]), [0.0, 1.0, 0.04045], atol=1e-5)
+    assert np.allclose(C.linear_to_srgb([0.214041]), [0.5], atol=1e-4)
+    assert np.allclose(C.linear_to_srgb([-1.0, 2.0]), [0.0, 1.0])
+
+
+def test_legend_strip_draws_framed_swatches_and_words():
+    from figures import plan
+
+    m = plan.LegendMetrics(row=20, swatch=12, gap=5, column_gap=22, margin=8)
+    words = [tile(30, 20, 0.1), tile(50, 20, 0.2)]
+    for w in words:
+        w[:4, :, 3] = 0.0  # words come with transparent space around the ink
+    layout = plan.legend_layout([w.shape[1] for w in words], 200, m)
+    colors = [(1.0, 0.0, 0.0, 1.0), (0.214041, 0.214041, 0.214041, 1.0)]
+    strip = C.legend_strip(200, plan.strip_height(m, layout.rows), colors, words, layout)
+    assert strip.shape == (plan.strip_height(m, 1), 200, 4)
+    for (x, y, side), color, (wx, wy), w in zip(layout.swatches, colors, layout.words, words):
+        inner = strip[y + 1:y + side - 1, x + 1:x + side - 1, :3]
+        assert np.allclose(inner, C.linear_to_srgb(color[:3]), atol=1e-4)  # display values
+        assert np.allclose(strip[y, x:x + side, :3], C.SWATCH_EDGE[:3])  # framed
+        assert np.allclose(strip[wy + 10, wx:wx + w.shape[1], :3], w[10, 0, 0])  # the words' ink
+        assert np.allclose(strip[wy + 1, wx, :3], 1.0)  # their transparent part shows the background
+    assert np.allclose(strip[0, :, :3], 1.0) and np.allclose(strip[-1, :, :3], 1.0)
+
+
+def test_stack_pad_and_frame():
+    panel, strip = tile(10, 6, 0.5), tile(10, 3, 1.0)
+    both = C.stack(panel, strip)
+    assert both.shape == (9, 10, 4) and np.allclose(both[:6], panel) and np.allclose(both[6:], strip)
+    with pytest.raises(ValueError):
+        C.stack(panel, tile(9, 3, 1.0))
+    padded = C.pad_to_height(panel, 9)
+    assert padded.shape == (9, 10, 4) and C.content_height(padded) == 6 and C.pad_to_height(padded, 5) is padded
+    framed = C.framed(padded)
+    assert np.allclose(framed[5, 5, :3], 0.75) and np.allclose(framed[0, 5, :3], 0.75)  # frame around the panel
+    assert np.allclose(framed[6:, :, :3], 1.0)  # the padding below stays background, unframed

@@ -154,3 +154,82 @@ def test_cut_plane():
     assert np.allclose(p, (1, 2, 3)) and np.allclose(n, (0, 0, 1))
     p, n = plan.cut_plane(pts, (0, 0, 3), [5, 5, 5, 3, 0, 4])
     assert np.allclose(p, (5, 5, 5)) and np.allclose(n, (0.6, 0, 0.8))
+
+
+# ---------------------------------------------------------------------------------------------
+# Legend strip (--legend)
+
+FACTS = {"non_hex_types": [2, 3], "valences": [3, 5, 7], "has_pseudo": True, "has_non_manifold": False,
+         "has_non_hex_blocks": True}
+
+
+def test_legend_option():
+    assert plan.parse(["m.mesh", "--out", "o"]).legend is False
+    assert plan.parse(["m.mesh", "--out", "o", "--legend"]).legend is True
+
+
+def test_panel_legends_are_the_addons_words_and_colours():
+    """Each panel's strip lists what the add-on's Legend panel lists for the layers the panel
+    shows, in the add-on's words and with its colours (the very values of planning.LEGEND_COLORS)."""
+    from hybrid_base_complex import planning as P
+
+    def legend(key, highlights=()):
+        entries = plan.panel_legend(P, key, FACTS, highlights)
+        for k, words, color in entries:
+            assert color == tuple(float(c) for c in P.LEGEND_COLORS[k])
+        return [(k, words) for k, words, _ in entries]
+
+    assert legend("mesh") == [("hex", "Boundary, hex cells"), ("prism", "Prism cells"), ("pyramid", "Pyramid cells")]
+    assert legend("graph") == [("valence3", "Valence 3 edge"), ("valence5", "Valence 5 edge"),
+                               ("valence_other", "Valence 7 edge"), ("pseudo", "Pseudo-singular")]
+    assert legend("complex") == legend("cut") == [("non_hex_block", "Non-hex block")]
+    # Only the highlights the panel draws, in the add-on's order.
+    assert legend("sheet", {"self_intersecting", "unmatched"}) == [
+        ("unmatched", "Dot: unmatched"), ("self_intersecting", "Self-intersecting")]
+    assert legend("subsheets", {"unmatched"}) == [("unmatched", "Dot: unmatched")]
+    assert legend("sheet") == []  # a sheet without highlights: nothing to name
+    # Palette-only panels (a colour per chain) and the quality panel have no strip.
+    for key in ("vsg", "wireframe", "mesh_wireframe", "quality"):
+        assert legend(key, {"unmatched"}) == []
+    # Every panel of the script is covered.
+    assert set(plan.LEGEND_LAYERS) == set(plan.ALL_PANEL_KEYS) | {k for k, _ in plan.COMPARE_ROWS}
+    # A mesh without non-hex blocks has no "Non-hex block" entry.
+    assert plan.panel_legend(P, "complex", dict(FACTS, has_non_hex_blocks=False)) == []
+
+
+@pytest.mark.parametrize("width", [160, 320, 640, 1292])
+def test_legend_layout_aligns_swatches_in_columns(width):
+    m = plan.LegendMetrics.for_panel(480)
+    words = [88, 140, 61, 120, 97, 150, 75]
+    layout = plan.legend_layout(words, width, m)
+    n = len(words)
+    assert layout.columns >= 1 and layout.rows == -(-n // layout.columns)
+    cell = m.swatch + m.gap + max(words)
+    xs = {}
+    for i, ((x, y, side), (wx, wy)) in enumerate(zip(layout.swatches, layout.words)):
+        r, c = divmod(i, layout.columns)
+        xs.setdefault(c, set()).add(x)
+        assert side == m.swatch and wx == x + m.swatch + m.gap
+        assert wy == m.margin + r * m.row and y == wy + (m.row - m.swatch) // 2  # swatch centred on its row
+        assert y >= 0 and y + side <= plan.strip_height(m, layout.rows)
+    assert all(len(v) == 1 for v in xs.values())  # one x per column: swatches line up
+    lefts = sorted(x.pop() for x in xs.values())
+    assert all(b - a == cell + m.column_gap for a, b in zip(lefts, lefts[1:]))
+    block = layout.columns * cell + (layout.columns - 1) * m.column_gap
+    if layout.columns > 1 or block <= width - 2 * m.margin:
+        assert lefts[0] + block <= width - m.margin  # inside the strip
+        assert abs(lefts[0] - (width - lefts[0] - block)) <= 1  # centred
+    # As many columns as fit: one more would not.
+    if layout.columns < n:
+        assert (layout.columns + 1) * cell + layout.columns * m.column_gap > width - 2 * m.margin
+
+
+def test_legend_layout_centres_fewer_rows_in_a_shared_strip():
+    m = plan.LegendMetrics.for_panel(480)
+    one = plan.legend_layout([100], 640, m, strip_rows=3)
+    assert one.rows == 1 and one.words[0][1] == m.margin + m.row  # the middle row of three
+    assert plan.strip_height(m, 3) == 2 * m.margin + 3 * m.row and plan.strip_height(m, 0) == 0
+    assert plan.legend_layout([], 640, m).rows == 0
+    # An entry wider than the strip starts at the margin.
+    wide = plan.legend_layout([900], 320, m)
+    assert wide.columns == 1 and wide.swatches[0][0] == m.margin
