@@ -1,77 +1,226 @@
-// The steps of build_mesh (see hbc/mesh_steps.hpp). Faces and edges are matched by sorting their
-// keys within buckets of a counting sort on their lowest vertex: no hash table, and the buckets
-// are small and independent, so threads split them by vertex range.
+// The face and edge steps of build_mesh (see hbc/mesh_steps.hpp). Faces and edges are matched by
+// a counting sort on their lowest vertex, then by sorting the few keys in each bucket: no hash
+// table, and the buckets are small and independent, so threads split them by vertex range.
 #include "hbc/mesh_steps.hpp"
 
 #include <algorithm>
-#include <atomic>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
+#include "cell_templates.hpp"
 #include "parallel.hpp"
+#include "small_table.hpp"
 
 namespace hbc::mesh_steps {
+
+std::string loop_text(std::span<const int32_t> loop) {
+  std::ostringstream s;
+  s << "(";
+  for (size_t i = 0; i < loop.size(); ++i) s << (i ? " " : "") << loop[i];
+  s << ")";
+  return s.str();
+}
+
 namespace {
+
+void validate_faces(const MeshInput& in, size_t nv) {
+  std::vector<int32_t> stamp(nv, -1);
+  for (size_t f = 0; f < in.faces.rows(); ++f) {
+    auto loop = in.faces[f];
+    if (loop.size() < 3)
+      throw InputError(in.source, in.loc_of(in.face_loc, f),
+                       "a face with at least 3 vertices, face " + std::to_string(f) + " has " +
+                           std::to_string(loop.size()));
+    for (int32_t v : loop) {
+      if (v < 0 || static_cast<size_t>(v) >= nv)
+        throw InputError(in.source, in.loc_of(in.face_loc, f),
+                         "vertex index in [0, " + std::to_string(nv) + ") in face " + std::to_string(f) +
+                             ", found " + std::to_string(v));
+      if (stamp[v] == static_cast<int32_t>(f))
+        throw InputError(in.source, in.loc_of(in.face_loc, f),
+                         "distinct vertices in face " + std::to_string(f) + ", vertex " + std::to_string(v) +
+                             " repeats in " + loop_text(loop));
+      stamp[v] = static_cast<int32_t>(f);
+    }
+  }
+}
+
+void validate_cells(const MeshInput& in, size_t nv) {
+  const size_t nf = in.faces.rows();
+  if (!in.cell_shape.empty() && in.cell_shape.size() != in.cells.rows())
+    throw InputError(in.source, {}, "a shape for every cell");
+  for (size_t c = 0; c < in.cells.rows(); ++c) {
+    const auto row = in.cells[c];
+    const CellShape shape = in.shape(c);
+    if (shape != CellShape::Faces) {
+      const bool ok = row.size() == static_cast<size_t>(corner_count(shape)) &&
+                      std::ranges::all_of(row, [&](int32_t v) { return v >= 0 && static_cast<size_t>(v) < nv; });
+      bool distinct = ok;
+      for (size_t i = 1; i < row.size() && distinct; ++i)
+        for (size_t j = 0; j < i; ++j) distinct = distinct && row[i] != row[j];
+      if (!distinct)
+        throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                         std::to_string(corner_count(shape)) + " distinct vertex indices in [0, " +
+                             std::to_string(nv) + ") for cell " + std::to_string(c) + ", found " + loop_text(row));
+      continue;
+    }
+    if (row.size() < 2)
+      throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                       "a cell with at least 2 faces, cell " + std::to_string(c) + " has " + std::to_string(row.size()));
+    for (int32_t r : row) {
+      const int32_t f = r >> 1;
+      if (r < 0 || static_cast<size_t>(f) >= nf)
+        throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                         "face index in [0, " + std::to_string(nf) + ") in cell " + std::to_string(c) + ", found " +
+                             std::to_string(r < 0 ? r : f));
+    }
+  }
+}
+
+}  // namespace
+
+// Checks what a reader handed over: counts, index ranges, finite coordinates, proper polygons.
+void validate_input(const MeshInput& in) {
+  const std::string& file = in.source;
+  if (in.points.size() % 3 != 0) throw InputError(file, {}, "3 coordinates per vertex");
+  const size_t nv = in.points.size() / 3;
+  if (nv > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
+      in.faces.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
+      in.cells.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
+    throw InputError(file, {}, "fewer than 2^31 vertices, face corners and cell faces");
+  for (size_t i = 0; i < in.points.size(); ++i)
+    if (!std::isfinite(in.points[i]))
+      throw InputError(file, in.loc_of(in.vertex_loc, i / 3), "a finite coordinate for vertex " + std::to_string(i / 3));
+  validate_faces(in, nv);
+  validate_cells(in, nv);
+}
+
+namespace {
+
+// The loops of the slots of a MeshInput's cells, as the cells give them.
+class SlotLoops {
+ public:
+  explicit SlotLoops(const MeshInput& in) : in_(in) {}
+  int count(size_t c) const {
+    const CellShape s = in_.shape(c);
+    return s == CellShape::Faces ? in_.cells.count(c) : detail::shape_faces(s).nfaces;
+  }
+  // Loop of face j of cell c; `buf` holds it for an element.
+  std::span<const int32_t> loop(size_t c, int j, std::array<int32_t, 4>& buf) const {
+    const auto row = in_.cells[c];
+    const CellShape s = in_.shape(c);
+    if (s == CellShape::Faces) return in_.faces[static_cast<size_t>(row[static_cast<size_t>(j)] >> 1)];
+    const detail::ShapeFaces& sf = detail::shape_faces(s);
+    const int n = sf.size[static_cast<size_t>(j)];
+    for (int i = 0; i < n; ++i) buf[static_cast<size_t>(i)] = row[static_cast<size_t>(sf.corner[static_cast<size_t>(j)][static_cast<size_t>(i)])];
+    return {buf.data(), static_cast<size_t>(n)};
+  }
+  // 1 when cell c sees loop j reversed, as the file says.
+  uint8_t flip(size_t c, int j) const {
+    return in_.shape(c) == CellShape::Faces ? static_cast<uint8_t>(in_.cells[c][static_cast<size_t>(j)] & 1) : 0;
+  }
+
+ private:
+  const MeshInput& in_;
+};
+
+// What face merging sorts: every slot, then every soup face no cell uses (so that those whose
+// vertex set no cell uses can be counted as dropped). item < nslots is a slot, else unused soup
+// face unused[item - nslots].
+struct FaceItems {
+  const MeshInput& in;
+  const SlotLoops& loops;
+  const std::vector<int32_t>& slot_offsets;  // per cell
+  std::vector<int32_t> slot_cell;            // the cell of every slot
+  std::vector<int32_t> unused;               // soup faces no cell uses
+  std::vector<int32_t> lowest;               // per item: the lowest vertex of its loop
+  size_t nslots() const { return slot_cell.size(); }
+  size_t size() const { return slot_cell.size() + unused.size(); }
+  std::span<const int32_t> loop(size_t item, std::array<int32_t, 4>& buf) const {
+    if (item >= nslots()) return in.faces[static_cast<size_t>(unused[item - nslots()])];
+    const size_t c = static_cast<size_t>(slot_cell[item]);
+    return loops.loop(c, static_cast<int>(item - static_cast<size_t>(slot_offsets[c])), buf);
+  }
+};
+
+// A face's vertex set as a sortable key: its size, then its vertices in increasing order.
+struct SmallKey {
+  int32_t n;
+  std::array<int32_t, 4> v;
+  int32_t item;
+  bool operator<(const SmallKey& o) const {
+    if (n != o.n) return n < o.n;
+    if (v != o.v) return v < o.v;
+    return item < o.item;
+  }
+  bool same_set(const SmallKey& o) const { return n == o.n && v == o.v; }
+};
+
+// rep[item] for the items of one bucket (all with the same lowest vertex): the lowest item with
+// the same vertex set.
+void group_bucket(const FaceItems& items, std::span<const int32_t> bucket, std::vector<int32_t>& rep,
+                  std::vector<SmallKey>& small, std::vector<std::vector<int32_t>>& big) {
+  std::array<int32_t, 4> buf;
+  bool all_small = true;
+  small.clear();
+  for (int32_t it : bucket) {
+    const auto loop = items.loop(static_cast<size_t>(it), buf);
+    if (loop.size() > 4) {
+      all_small = false;
+      break;
+    }
+    SmallKey k{static_cast<int32_t>(loop.size()), {INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX}, it};
+    std::copy(loop.begin(), loop.end(), k.v.begin());
+    detail::sort_small(k.v.begin(), k.v.begin() + k.n);
+    small.push_back(k);
+  }
+  if (all_small) {
+    detail::sort_small(small.begin(), small.end());  // buckets hold a handful of faces
+    for (size_t g = 0; g < small.size(); ++g)
+      rep[static_cast<size_t>(small[g].item)] = g > 0 && small[g].same_set(small[g - 1]) ? rep[static_cast<size_t>(small[g - 1].item)] : small[g].item;
+    return;
+  }
+  // Some polygon has more than 4 vertices: whole sorted vertex lists, then the item.
+  big.resize(bucket.size());
+  for (size_t i = 0; i < bucket.size(); ++i) {
+    const auto loop = items.loop(static_cast<size_t>(bucket[i]), buf);
+    big[i].assign(loop.begin(), loop.end());
+    std::sort(big[i].begin(), big[i].end());
+    big[i].insert(big[i].begin(), static_cast<int32_t>(loop.size()));
+    big[i].push_back(bucket[i]);
+  }
+  std::sort(big.begin(), big.end());
+  auto same_set = [](const std::vector<int32_t>& a, const std::vector<int32_t>& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end() - 1, b.begin());
+  };
+  for (size_t g = 0; g < big.size(); ++g)
+    rep[static_cast<size_t>(big[g].back())] = g > 0 && same_set(big[g], big[g - 1]) ? rep[static_cast<size_t>(big[g - 1].back())] : big[g].back();
+}
+
+// rep[item] = the lowest item with the same vertex set (see FaceItems).
+std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, const LoadOptions& par) {
+  const size_t n = items.size();
+  const Csr<int32_t> by_lowest = detail::group_by_key(n, nv, par, [&](size_t i) { return items.lowest[i]; });
+  std::vector<int32_t> rep(n);
+  detail::parallel_ranges(nv, par, [&](size_t vb, size_t ve, int) {
+    std::vector<SmallKey> small;
+    std::vector<std::vector<int32_t>> big;
+    for (size_t v = vb; v < ve; ++v) {
+      const auto bucket = by_lowest[v];
+      if (bucket.size() == 1) rep[static_cast<size_t>(bucket[0])] = bucket[0];
+      else if (!bucket.empty()) group_bucket(items, bucket, rep, small, big);
+    }
+  });
+  return rep;
+}
 
 // Same direction of two loops over the same vertex set?
 bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
   const size_t n = a.size();
   const size_t p = static_cast<size_t>(std::find(a.begin(), a.end(), b[0]) - a.begin());
   return a[(p + 1) % n] == b[1];
-}
-
-// rep[f] = the input face standing for all input faces with f's vertex set: the one a cell uses
-// first (lowest first_use), or -1 when no cell uses any of them.
-std::vector<int32_t> face_representatives(const Csr<int32_t>& faces, const std::vector<int32_t>& first_use,
-                                          size_t nv, const LoadOptions& par) {
-  const size_t nf = faces.rows();
-  std::vector<int32_t> lowest(nf);
-  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
-    for (size_t f = b; f < e; ++f) lowest[f] = *std::min_element(faces[f].begin(), faces[f].end());
-  });
-  const Csr<int32_t> by_lowest = group_by(lowest, nv);
-  std::vector<int32_t>().swap(lowest);
-  std::vector<int32_t> rep(nf, -1);
-  // An unused face sorts after the used ones of its group.
-  auto use_rank = [&](int32_t f) { return static_cast<uint32_t>(first_use[f]); };
-  detail::parallel_ranges(nv, par, [&](size_t vb, size_t ve, int) {
-    std::vector<int32_t> keys, order;
-    std::vector<int32_t> key_at;  // start of each bucket member's sorted key in keys
-    for (size_t v = vb; v < ve; ++v) {
-      auto ids = by_lowest[v];
-      if (ids.size() == 1) rep[ids[0]] = first_use[ids[0]] >= 0 ? ids[0] : -1;
-      if (ids.size() <= 1) continue;
-      keys.clear();
-      key_at.clear();
-      for (int32_t f : ids) {
-        key_at.push_back(static_cast<int32_t>(keys.size()));
-        keys.insert(keys.end(), faces[f].begin(), faces[f].end());
-        std::sort(keys.begin() + key_at.back(), keys.end());
-      }
-      key_at.push_back(static_cast<int32_t>(keys.size()));
-      auto key = [&](int32_t i) {
-        return std::span<const int32_t>(keys.data() + key_at[i], static_cast<size_t>(key_at[i + 1] - key_at[i]));
-      };
-      auto same_key = [&](int32_t i, int32_t j) { return std::ranges::equal(key(i), key(j)); };
-      order.resize(ids.size());
-      std::iota(order.begin(), order.end(), 0);
-      std::sort(order.begin(), order.end(), [&](int32_t i, int32_t j) {
-        auto a = key(i), b = key(j);
-        if (a.size() != b.size()) return a.size() < b.size();
-        const auto c = std::lexicographical_compare_three_way(a.begin(), a.end(), b.begin(), b.end());
-        return c != 0 ? c < 0 : use_rank(ids[i]) < use_rank(ids[j]);
-      });
-      for (size_t g = 0; g < order.size();) {
-        size_t h = g + 1;
-        while (h < order.size() && same_key(order[g], order[h])) ++h;
-        const int32_t first = ids[order[g]];
-        const int32_t r = first_use[first] >= 0 ? first : -1;
-        for (size_t i = g; i < h; ++i) rep[ids[order[i]]] = r;
-        g = h;
-      }
-    }
-  });
-  return rep;
 }
 
 // face_cells from cell_faces, in cell order, so that the first offending cell is reported.
@@ -91,172 +240,212 @@ void fill_face_cells(const MeshInput& in, Mesh& m) {
         fc[1] = ci;
       } else {
         throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                         "a face shared by at most 2 cells, face " + loop_text(m.face_verts[u]) +
-                             " is in cells " + std::to_string(fc[0]) + ", " + std::to_string(fc[1]) +
-                             " and " + std::to_string(c));
+                         "a face shared by at most 2 cells, face " + loop_text(m.face_verts[u]) + " is in cells " +
+                             std::to_string(fc[0]) + ", " + std::to_string(fc[1]) + " and " + std::to_string(c));
       }
     }
   }
+}
+
+// Slot offsets per cell, the cell of each slot, and the soup faces no cell uses.
+FaceItems face_items(const MeshInput& in, const SlotLoops& loops, std::vector<int32_t>& slot_offsets,
+                     const LoadOptions& par) {
+  const size_t nc = in.cells.rows();
+  slot_offsets.assign(nc + 1, 0);
+  int64_t total = 0, corners = 0;
+  for (size_t c = 0; c < nc; ++c) {
+    const CellShape shape = in.shape(c);
+    if (shape == CellShape::Faces) {
+      for (int32_t r : in.cells[c]) corners += in.faces.count(static_cast<size_t>(r >> 1));
+    } else {
+      const detail::ShapeFaces& sf = detail::shape_faces(shape);
+      for (int j = 0; j < sf.nfaces; ++j) corners += sf.size[static_cast<size_t>(j)];
+    }
+    total += loops.count(c);
+    if (total > std::numeric_limits<int32_t>::max() || corners > std::numeric_limits<int32_t>::max())
+      throw InputError(in.source, {}, "fewer than 2^31 cell faces and face corners");
+    slot_offsets[c + 1] = static_cast<int32_t>(total);
+  }
+  FaceItems items{in, loops, slot_offsets, std::vector<int32_t>(static_cast<size_t>(total)), {}, {}};
+  std::vector<uint8_t> used(in.faces.rows(), 0);
+  for (size_t c = 0; c < nc; ++c)
+    if (in.shape(c) == CellShape::Faces)
+      for (int32_t r : in.cells[c]) used[static_cast<size_t>(r >> 1)] = 1;
+  for (size_t f = 0; f < used.size(); ++f)
+    if (!used[f]) items.unused.push_back(static_cast<int32_t>(f));
+  items.lowest.resize(items.size());
+  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int) {
+    std::array<int32_t, 4> buf;
+    for (size_t c = cb; c < ce; ++c)
+      for (int j = 0; j < loops.count(c); ++j) {
+        const auto s = static_cast<size_t>(slot_offsets[c] + j);
+        items.slot_cell[s] = static_cast<int32_t>(c);
+        const auto loop = loops.loop(c, j, buf);
+        items.lowest[s] = *std::min_element(loop.begin(), loop.end());
+      }
+  });
+  for (size_t i = items.nslots(); i < items.size(); ++i) {
+    const auto loop = in.faces[static_cast<size_t>(items.unused[i - items.nslots()])];
+    items.lowest[i] = *std::min_element(loop.begin(), loop.end());
+  }
+  return items;
+}
+
+// Faces numbered in slot order from rep (consumed: it becomes cell_faces.items). Ranges of slots
+// count their new faces first, so that each then numbers its own from the right place; a face id
+// is kept as -1 - id until every slot has one.
+void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, const LoadOptions& par) {
+  const size_t nslots = items.nslots();
+  const int nr = detail::range_count(nslots, par);
+  std::vector<int64_t> first_face(static_cast<size_t>(nr) + 1, 0), first_corner(static_cast<size_t>(nr) + 1, 0);
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int r) {
+    std::array<int32_t, 4> buf;
+    for (size_t s = b; s < e; ++s)
+      if (rep[s] == static_cast<int32_t>(s)) {
+        ++first_face[static_cast<size_t>(r) + 1];
+        first_corner[static_cast<size_t>(r) + 1] += static_cast<int64_t>(items.loop(s, buf).size());
+      }
+  });
+  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) {
+    first_face[r + 1] += first_face[r];
+    first_corner[r + 1] += first_corner[r];
+  }
+  m.face_verts.offsets.assign(static_cast<size_t>(first_face.back()) + 1, 0);
+  m.face_verts.items.resize(static_cast<size_t>(first_corner.back()));
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int r) {
+    std::array<int32_t, 4> buf;
+    auto face = first_face[static_cast<size_t>(r)];
+    auto at = first_corner[static_cast<size_t>(r)];
+    for (size_t s = b; s < e; ++s) {
+      if (rep[s] != static_cast<int32_t>(s)) continue;
+      const auto loop = items.loop(s, buf);
+      std::copy(loop.begin(), loop.end(), m.face_verts.items.begin() + at);
+      at += static_cast<int64_t>(loop.size());
+      m.face_verts.offsets[static_cast<size_t>(face) + 1] = static_cast<int32_t>(at);
+      rep[s] = static_cast<int32_t>(-1 - face++);
+    }
+  });
+  // Other slots copy their representative's id (an earlier slot, which the pass above numbered).
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
+    for (size_t s = b; s < e; ++s)
+      if (rep[s] >= 0) rep[s] = rep[static_cast<size_t>(rep[s])];
+  });
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
+    for (size_t s = b; s < e; ++s) rep[s] = -1 - rep[s];
+  });
+  rep.resize(nslots);
+  rep.shrink_to_fit();
+  m.cell_faces.items = std::move(rep);
 }
 
 }  // namespace
 
 void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
-  const size_t nf_in = in.faces.rows(), nslots = in.cells.items.size();
-  std::vector<int32_t> first_use(nf_in, -1);
-  for (size_t s = 0; s < nslots; ++s) {
-    const int32_t f = in.cells.items[s] >> 1;
-    if (first_use[f] < 0) first_use[f] = static_cast<int32_t>(s);
-  }
-  const std::vector<int32_t> rep = face_representatives(in.faces, first_use, m.num_vertices(), par);
-  for (size_t f = 0; f < nf_in; ++f) m.dropped_faces += rep[f] < 0;
-  if (m.dropped_faces > 0)
-    m.warnings.push_back(std::to_string(m.dropped_faces) + " face(s) used by no cell dropped");
-
-  std::vector<int32_t>& face_id = first_use;  // reused: id of each representative, -1 until met
-  std::fill(face_id.begin(), face_id.end(), -1);
-  m.cell_faces.offsets = std::move(in.cells.offsets);
-  m.cell_faces.items.resize(nslots);
-  // Exactly the room the merged loops need: growing would copy them again and again.
-  size_t kept = 0, corners = 0;
-  for (size_t f = 0; f < nf_in; ++f)
-    if (rep[f] == static_cast<int32_t>(f)) ++kept, corners += static_cast<size_t>(in.faces.count(f));
-  m.face_verts.reserve(kept, corners);
-  for (size_t s = 0; s < nslots; ++s) {
-    const int32_t r = rep[in.cells.items[s] >> 1];
-    if (face_id[r] < 0) {
-      face_id[r] = static_cast<int32_t>(m.face_verts.rows());
-      m.face_verts.push_row(in.faces[r]);
-    }
-    m.cell_faces.items[s] = face_id[r];
-  }
-  // The cell sees the stored loop reversed when exactly one of (input flip, loop copy reversed
+  const SlotLoops loops(in);
+  std::vector<int32_t> slot_offsets;
+  FaceItems items = face_items(in, loops, slot_offsets, par);
+  std::vector<int32_t> rep = face_representatives(items, m.num_vertices(), par);
+  std::vector<int32_t>().swap(items.lowest);
+  for (size_t i = items.nslots(); i < items.size(); ++i) m.dropped_faces += rep[i] >= static_cast<int32_t>(items.nslots());
+  if (m.dropped_faces > 0) m.warnings.push_back(std::to_string(m.dropped_faces) + " face(s) used by no cell dropped");
+  number_faces(items, std::move(rep), m, par);
+  std::vector<int32_t>().swap(items.slot_cell);
+  m.cell_faces.offsets = std::move(slot_offsets);
+  // The cell sees the stored loop reversed when exactly one of (the file's flip, its loop running
   // against the stored one) holds.
-  m.cell_face_flip.resize(nslots);
-  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
-    for (size_t s = b; s < e; ++s) {
-      const int32_t f = in.cells.items[s] >> 1;
-      const bool same = rep[f] == f || same_direction(m.face_verts[m.cell_faces.items[s]], in.faces[f]);
-      m.cell_face_flip[s] = static_cast<uint8_t>(((in.cells.items[s] & 1) != 0) == same);
-    }
+  m.cell_face_flip.resize(m.cell_faces.items.size());
+  detail::parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
+    std::array<int32_t, 4> buf;
+    for (size_t c = b; c < e; ++c)
+      for (int j = 0; j < loops.count(c); ++j) {
+        const size_t s = static_cast<size_t>(m.cell_faces.offsets[c] + j);
+        const bool same = same_direction(m.face_verts[static_cast<size_t>(m.cell_faces.items[s])], loops.loop(c, j, buf));
+        m.cell_face_flip[s] = static_cast<uint8_t>(loops.flip(c, j) ^ (same ? 0 : 1));
+      }
   });
-  // The polygon soup is not needed from here on; releasing it (clear() would keep the capacity)
-  // lowers the peak memory.
+  // The input is not needed from here on; releasing it (clear() would keep the capacity) lowers
+  // the peak memory.
   in.faces = Csr<int32_t>{};
   in.cells = Csr<int32_t>{};
   fill_face_cells(in, m);
 }
 
-std::vector<int32_t> slot_faces(const Mesh& m, const LoadOptions& par) {
-  std::vector<int32_t> slot_face(m.face_verts.items.size());
-  detail::parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
-    for (size_t f = b; f < e; ++f)
-      std::fill(slot_face.begin() + m.face_verts.offsets[f], slot_face.begin() + m.face_verts.offsets[f + 1],
-                static_cast<int32_t>(f));
-  });
-  return slot_face;
-}
-
 namespace {
-// The vertex after slot k along its face loop.
-int32_t next_vertex(const Mesh& m, const std::vector<int32_t>& slot_face, size_t k) {
-  const int32_t f = slot_face[k];
-  return m.face_verts.items[static_cast<int32_t>(k) + 1 == m.face_verts.offsets[f + 1] ? m.face_verts.offsets[f] : k + 1];
-}
+
+// The vertex after each corner along its loop, found without a table of the corners' faces:
+// a flag marks the last corner of every loop, whose successor is the loop's first.
+class NextVertex {
+ public:
+  explicit NextVertex(const Csr<int32_t>& loops) : loops_(loops), last_(loops.items.size(), false) {
+    for (size_t f = 0; f < loops.rows(); ++f) last_[static_cast<size_t>(loops.offsets[f + 1] - 1)] = true;
+  }
+  int32_t operator()(size_t k) const {
+    if (!last_[k]) return loops_.items[k + 1];
+    size_t first = k;
+    while (first > 0 && !last_[first - 1]) --first;
+    return loops_.items[first];
+  }
+
+ private:
+  const Csr<int32_t>& loops_;
+  std::vector<bool> last_;
+};
+
 }  // namespace
 
-void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, const LoadOptions& par) {
-  const size_t ns = m.face_verts.items.size();
-  std::vector<int32_t>& rep = m.face_edges.items;  // first the lowest slot with the same edge
+std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
+  const size_t ns = m.face_verts.items.size(), nf = m.num_faces();
+  const NextVertex next(m.face_verts);
+  std::vector<int32_t>& rep = m.face_edge_ids;  // first the lowest corner with the same edge
   rep.resize(ns);
   {
-    std::vector<int32_t> lo(ns);
-    detail::parallel_ranges(ns, par, [&](size_t b, size_t e, int) {
-      for (size_t k = b; k < e; ++k) lo[k] = std::min(m.face_verts.items[k], next_vertex(m, slot_face, k));
+    const Csr<int32_t> by_lo = detail::group_by_key(ns, m.num_vertices(), par, [&](size_t k) {
+      return std::min(m.face_verts.items[k], next(k));
     });
-    const Csr<int32_t> by_lo = group_by(lo, m.num_vertices());
-    std::vector<int32_t>().swap(lo);
     detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
-      std::vector<uint64_t> hi_slot;  // other end << 32 | slot, sorted
+      std::vector<uint64_t> hi_corner;  // other end << 32 | corner, sorted
       for (size_t v = vb; v < ve; ++v) {
-        hi_slot.clear();
+        hi_corner.clear();
         for (int32_t k : by_lo[v]) {
-          const int32_t hi = std::max(m.face_verts.items[k], next_vertex(m, slot_face, k));
-          hi_slot.push_back(static_cast<uint64_t>(hi) << 32 | static_cast<uint32_t>(k));
+          const auto kk = static_cast<size_t>(k);
+          const int32_t hi = std::max(m.face_verts.items[kk], next(kk));
+          hi_corner.push_back(static_cast<uint64_t>(hi) << 32 | static_cast<uint32_t>(k));
         }
-        std::sort(hi_slot.begin(), hi_slot.end());
-        for (size_t i = 0; i < hi_slot.size(); ++i) {
-          const auto k = static_cast<int32_t>(hi_slot[i] & 0xffffffffu);
-          const bool same = i > 0 && (hi_slot[i - 1] >> 32) == (hi_slot[i] >> 32);
-          rep[k] = same ? rep[static_cast<int32_t>(hi_slot[i - 1] & 0xffffffffu)] : k;
+        detail::sort_small(hi_corner.begin(), hi_corner.end());  // a vertex starts a few edges, each in a few faces
+        for (size_t i = 0; i < hi_corner.size(); ++i) {
+          const auto k = static_cast<size_t>(hi_corner[i] & 0xffffffffu);
+          const bool same = i > 0 && (hi_corner[i - 1] >> 32) == (hi_corner[i] >> 32);
+          rep[k] = same ? rep[static_cast<size_t>(hi_corner[i - 1] & 0xffffffffu)] : static_cast<int32_t>(k);
         }
       }
     });
   }
-  // Numbering in slot order: a representative precedes the other slots of its edge, so by the
-  // time they are reached it already holds the edge id.
-  m.edge_verts.reserve(ns / 2);  // each edge of a closed cell is in two of its face slots
-  for (size_t k = 0; k < ns; ++k) {
-    if (rep[k] == static_cast<int32_t>(k)) {
-      const int32_t a = m.face_verts.items[k], b = next_vertex(m, slot_face, k);
-      rep[k] = static_cast<int32_t>(m.edge_verts.size());
-      m.edge_verts.push_back({std::min(a, b), std::max(a, b)});
-    } else {
-      rep[k] = rep[rep[k]];
+  // Numbering in corner order: a representative precedes the other corners of its edge, so by
+  // the time they are reached it already holds the edge id.
+  m.edge_verts.reserve(ns / 2);  // each edge of a closed cell is in two of its face corners
+  m.fan_start.reserve(ns / 2);
+  std::vector<EdgeFaceCount> count;
+  count.reserve(ns / 2);
+  for (size_t f = 0; f < nf; ++f) {
+    const bool boundary = m.face_cells[f][1] < 0;
+    for (size_t k = static_cast<size_t>(m.face_verts.offsets[f]); k < static_cast<size_t>(m.face_verts.offsets[f + 1]); ++k) {
+      if (rep[k] == static_cast<int32_t>(k)) {
+        const int32_t a = m.face_verts.items[k], b = next(k);
+        rep[k] = static_cast<int32_t>(m.edge_verts.size());
+        m.edge_verts.push_back({std::min(a, b), std::max(a, b)});
+        m.fan_start.push_back(static_cast<int32_t>(f));
+        count.emplace_back();
+      } else {
+        rep[k] = rep[static_cast<size_t>(rep[k])];
+      }
+      EdgeFaceCount& c = count[static_cast<size_t>(rep[k])];
+      ++c.faces;
+      if (boundary && c.boundary_faces++ == 0) m.fan_start[static_cast<size_t>(rep[k])] = static_cast<int32_t>(f);
     }
   }
-  m.face_edges.offsets = m.face_verts.offsets;
-}
-
-std::vector<int32_t> cell_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par) {
-  const size_t nc = m.num_cells();
-  std::vector<int32_t> partner(2 * m.face_edges.items.size(), -1);
-  const int nr = detail::range_count(nc, par);
-  std::vector<Csr<int32_t>> verts(static_cast<size_t>(nr)), edges(static_cast<size_t>(nr));
-  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int r) {
-    std::vector<uint64_t> edge_slot;  // edge << 32 | (2*slot + side), per slot of the cell: sorts as one integer
-    std::vector<int32_t> cv, cedges;
-    Csr<int32_t>& vrows = verts[static_cast<size_t>(r)];
-    Csr<int32_t>& erows = edges[static_cast<size_t>(r)];
-    const size_t slots = static_cast<size_t>(m.cell_faces.offsets[ce] - m.cell_faces.offsets[cb]);
-    vrows.reserve(ce - cb, 2 * slots);  // a hex: 6 faces, 8 vertices, 12 edges
-    erows.reserve(ce - cb, 2 * slots);
-    for (size_t c = cb; c < ce; ++c) {
-      edge_slot.clear();
-      cv.clear();
-      cedges.clear();
-      for (int32_t f : m.cell_faces[c]) {
-        const int32_t side = m.face_cells[f][0] == static_cast<int32_t>(c) ? 0 : 1;
-        for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k)
-          edge_slot.push_back(static_cast<uint64_t>(m.face_edges.items[k]) << 32 | static_cast<uint32_t>(2 * k + side));
-        cv.insert(cv.end(), m.face_verts[f].begin(), m.face_verts[f].end());
-      }
-      std::sort(edge_slot.begin(), edge_slot.end());
-      auto edge = [&](size_t i) { return static_cast<int32_t>(edge_slot[i] >> 32); };
-      auto slot = [&](size_t i) { return static_cast<int32_t>(edge_slot[i] & 0xffffffffu); };
-      for (size_t i = 0; i < edge_slot.size();) {
-        size_t j = i + 1;
-        while (j < edge_slot.size() && edge(j) == edge(i)) ++j;
-        if (j - i != 2) {
-          auto ev = m.edge_verts[edge(i)];
-          throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                           "a closed cell (each edge in exactly 2 of its faces), cell " + std::to_string(c) +
-                               " has edge (" + std::to_string(ev[0]) + " " + std::to_string(ev[1]) + ") in " +
-                               std::to_string(j - i));
-        }
-        partner[slot(i)] = slot(i + 1);
-        partner[slot(i + 1)] = slot(i);
-        cedges.push_back(edge(i));
-        i = j;
-      }
-      erows.push_row(cedges.begin(), cedges.end());
-      sort_unique(cv);
-      vrows.push_row(cv.begin(), cv.end());
-    }
-  });
-  m.cell_verts = concat(std::move(verts));
-  m.cell_edges = concat(std::move(edges));
-  return partner;
+  m.edge_verts.shrink_to_fit();
+  m.fan_start.shrink_to_fit();
+  return count;
 }
 
 }  // namespace hbc::mesh_steps

@@ -75,8 +75,10 @@ void read_elements(detail::TextScanner& s, Element el, int64_t n, RawElements& r
 // Cells from the elements read, once the vertex count nv is known, through the templates shared
 // with the other element-list readers (degenerate hexahedra included).
 void cells_from_elements(const RawElements& raw, int64_t nv, const detail::TextScanner& s, MeshInput& in) {
-  in.faces.reserve(raw.el.size() * 6, raw.ids.size() * 3);
-  in.cells.reserve(raw.el.size(), raw.el.size() * 6);
+  // Elements with distinct corners become element cells (their corners, no face soup); only
+  // degenerate ones add soup faces.
+  in.cells.reserve(raw.el.size(), raw.ids.size());
+  in.cell_shape.reserve(raw.el.size());
   in.cell_loc.reserve(raw.el.size());
   detail::CellAppender cells(in);
   size_t next_id = 0;

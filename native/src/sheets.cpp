@@ -35,12 +35,13 @@ bool contains(std::span<const int32_t> sorted, int32_t x) {
 // The edge of hex cell c at the first vertex of face f that is not an edge of f: it points
 // across the face, in the cell's direction orthogonal to f.
 int32_t orthogonal_edge(const Mesh& m, int32_t c, int32_t f) {
-  const int32_t v = m.face_verts[f][0];
-  auto fe = m.face_edges[f];
-  for (int32_t e : m.cell_edges[c]) {
-    if (m.edge_verts[e][0] != v && m.edge_verts[e][1] != v) continue;
-    if (std::find(fe.begin(), fe.end(), e) == fe.end()) return e;
-  }
+  const int32_t v = m.face_verts[static_cast<size_t>(f)][0];
+  const auto fe = m.face_edges(static_cast<size_t>(f));
+  for (int32_t g : m.cell_faces[static_cast<size_t>(c)])
+    for (int32_t e : m.face_edges(static_cast<size_t>(g))) {
+      if (m.edge_verts[static_cast<size_t>(e)][0] != v && m.edge_verts[static_cast<size_t>(e)][1] != v) continue;
+      if (std::find(fe.begin(), fe.end(), e) == fe.end()) return e;  // a hex has one such edge
+    }
   return -1;
 }
 
@@ -249,7 +250,7 @@ UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
   for (size_t c = 0; c < m.num_cells(); ++c) {
     if (!m.is_hex(c)) continue;
     for (int32_t f : m.cell_faces[c]) {
-      auto fe = m.face_edges[f];
+      auto fe = m.face_edges(static_cast<size_t>(f));
       uf.unite(fe[0], fe[2]);
       uf.unite(fe[1], fe[3]);
     }
@@ -280,7 +281,7 @@ ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
   for (size_t c = 0; c < nc; ++c) {
     if (d.cell_block[c] < 0) continue;
     const int32_t f = m.cell_faces[c][0];
-    const int32_t reps[3] = {m.face_edges[f][0], m.face_edges[f][1], orthogonal_edge(m, static_cast<int32_t>(c), f)};
+    const int32_t reps[3] = {m.face_edges(static_cast<size_t>(f))[0], m.face_edges(static_cast<size_t>(f))[1], orthogonal_edge(m, static_cast<int32_t>(c), f)};
     for (int k = 0; k < 3; ++k) {
       const int32_t r = uf.find(reps[k]);
       if (class_of_root[r] < 0) class_of_root[r] = pc.count++;

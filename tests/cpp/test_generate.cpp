@@ -23,7 +23,7 @@ namespace {
 // Signed volume of a cell from its face loops as the cell sees them (fan triangles, origin at
 // the first vertex of the cell): positive when the loops point outward.
 double cell_volume(const Mesh& m, size_t c) {
-  const double* o = &m.points[3 * static_cast<size_t>(m.cell_verts[c][0])];
+  const double* o = &m.points[3 * static_cast<size_t>(test::cell_verts(m, c)[0])];
   double vol = 0;
   for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i) {
     auto loop = m.face_verts[m.cell_faces.items[i]];
@@ -84,7 +84,7 @@ double expect_positive(const Mesh& m) {
 
 void expect_no_non_manifold(const Mesh& m) {
   for (size_t v = 0; v < m.num_vertices(); ++v) ASSERT_FALSE(m.vert_non_manifold[v]) << m.source << " vertex " << v;
-  for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok[e]) << m.source << " edge " << e;
+  for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok(e)) << m.source << " edge " << e;
 }
 
 
@@ -121,7 +121,7 @@ TEST(Generate, GridNumberingAndSpacing) {
   EXPECT_DOUBLE_EQ(in.points[3 * 21 + 2], 0.5);
   const Mesh m = build_mesh(in);
   // Cell (i,j,l) = i + 3(j + 2l): cell 10 = (1,1,1) spans vertices with x in {0.5,1}, y in {0.5,1}.
-  for (int32_t v : m.cell_verts[10]) {
+  for (int32_t v : test::cell_verts(m, 10)) {
     const double x = m.points[3 * v], y = m.points[3 * v + 1], z = m.points[3 * v + 2];
     EXPECT_TRUE(x == 0.5 || x == 1.0);
     EXPECT_TRUE(y == 0.5 || y == 1.0);

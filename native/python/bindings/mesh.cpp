@@ -121,7 +121,7 @@ void bind_mesh(py::module_& mod) {
            "int32 (nf + 1,): face f has vertices face_vertices[face_offsets[f]:face_offsets[f+1]].");
   int_view(cls, "face_vertices", [](const Mesh& m) -> auto& { return m.face_verts.items; },
            "int32 (face_offsets[-1],): vertex loop of each face.");
-  int_view(cls, "face_edges", [](const Mesh& m) -> auto& { return m.face_edges.items; },
+  int_view(cls, "face_edges", [](const Mesh& m) -> auto& { return m.face_edge_ids; },
            "int32 (face_offsets[-1],): aligned with face_vertices; entry i of a face is the edge "
            "joining its loop vertices i and i+1.");
   cls.def_property_readonly(
