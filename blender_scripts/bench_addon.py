@@ -95,8 +95,8 @@ def main():
         layers = ["graph", "blocks", "sheets", "wireframe"] if analyzed else []
         if analyzed:
             a = s.analysis
-            pick = int(a.largest_self_intersecting) if int(a.largest_self_intersecting) >= 0 else 0
-            st.sheet_index = pick if s.num_sheets else 0
+            big = a.largest_self_intersecting
+            st.sheet_index = big if big is not None else 0
         if analyzed and s.num_sheets:
             layers.append("sheet")
             if int(s.sheet_types()[st.sheet_index]) == 3:

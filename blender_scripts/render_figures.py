@@ -8,12 +8,12 @@ One MESH: the paper's pipeline panels (Fig. 1), each a PNG `<name>_<letter>_<pan
 (a) the mesh (transparent boundary with its cell edges, non-hex cells coloured by type),
 (b) the hybrid singularity graph, (c) the hybrid base complex (coloured blocks, slight shrink),
 (d) a sheet with its highlights (default: the largest self-intersecting sheet, else the largest
-imperfect one, else the largest; --sheet N to choose), (e) its VSG, (f) its simplified VSG
-wireframe, (g) its largest subsheets (self-intersecting sheets only), each above its wireframe -
-and `<name>_contact.png`, all panels labelled. --compare A B: the paper's comparison layout, one
-column per mesh, rows mesh / singularity graph / base complex / VSG wireframe / sheet, into
-`compare_<A>_<B>.png` (and the panels). Every panel uses the same camera, framed on the mesh's
-bounding box. Each written file is printed as `wrote PATH`; any failure exits non-zero.
+imperfect one, else the largest, within that class the largest with a non-empty VSG wireframe
+first; --sheet N to choose), (e) its VSG, (f) its simplified VSG wireframe, (g) its largest
+subsheets (self-intersecting sheets only), each above its wireframe - and `<name>_contact.png`,
+all panels labelled. --compare A B: the paper's comparison layout, one column per mesh, rows mesh /
+singularity graph / base complex / VSG wireframe / sheet, into `compare_<A>_<B>.png` (and the
+panels). Every panel uses the same camera, framed on the mesh's bounding box. Each written file is printed as `wrote PATH`; any failure exits non-zero.
 
 The add-on is taken from --addon, else $HBC_ADDON_DIR, else <repo>/build/addon/hybrid_base_complex
 (the build's `addon` target, with the compiled hbc module inside).

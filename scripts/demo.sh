@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # The main job on the bundled defaults: build, generate the demo meshes, analyze them (Table 1
 # rows), and render their figure sets (the paper's pipeline panels and a labelled contact sheet)
-# into out/. The first default, a twisted ring (`hbc generate twisted-ring`: a 5x5 section turning
-# a quarter turn round the ring, a column of prisms through its middle), has a self-intersecting
-# sheet with subsheets (panels d and g), a type-1 sheet and non-hex cells; its self-intersecting
-# sheet touches no non-hex cell, so that sheet's VSG and wireframe (panels e, f) are empty and
-# skipped. The second, a hex-dominant cylinder with prism columns like the paper's teaser, has
-# only perfect sheets.
+# into out/. The first default, a twisted pair (`hbc generate twisted-pair`: two concentric rings
+# of a 4x4 section, one hex of each split into pyramids), fills all seven panels: its outer ring
+# turns a quarter turn, so its sheets cross themselves (self-intersecting, with subsheets: panels d
+# and g) through the pyramids, where their VSG chains end (panels e, f); its inner ring turns a
+# half turn, so one sheet comes back beside itself (self-parallel). The second, a hex-dominant
+# cylinder with prism columns like the paper's teaser, has only perfect sheets: no subsheets (g).
 # When the shared data is there, teapot.hedra (LoopyCuts) is a third subject.
 #
 # Environment: HBC_DEMO_ENGINE (cycles | eevee | workbench, default cycles),
@@ -24,9 +24,9 @@ FIG=$OUT/figures
 mkdir -p "$FIG"
 start=$SECONDS
 
-./build/bin/hbc generate twisted-ring --section 5 --sections 12 --quarter-turns 1 --prisms -o "$OUT/twisted_ring.ovm"
+./build/bin/hbc generate twisted-pair --section 4 --sections 24 -o "$OUT/twisted_pair.ovm"
 ./build/bin/hbc generate cylinder --radius-cells 6 --layers 10 -o "$OUT/cylinder.ovm"
-meshes=("$OUT/twisted_ring.ovm" "$OUT/cylinder.ovm")
+meshes=("$OUT/twisted_pair.ovm" "$OUT/cylinder.ovm")
 teapot=$DATA/hybrid-base-complex/teapot.hedra
 [ -f "$teapot" ] && meshes+=("$teapot")
 

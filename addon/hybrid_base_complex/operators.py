@@ -105,14 +105,8 @@ def model_boxes():
     return boxes
 
 
-class _OnActiveMesh:
-    """Operators that act on the mesh the Hex Structure panel shows."""
-
-    bl_options = {"REGISTER", "UNDO"}
-
-    @classmethod
-    def poll(cls, context):
-        return active_root(context) is not None
+class _Reporting:
+    """How the operators end: one report, also written to the log when given."""
 
     def cancel_with(self, context, error, prog=None):
         """Reports a failure and cancels; the scene was not touched (builds are all or nothing)."""
@@ -121,8 +115,25 @@ class _OnActiveMesh:
         self.report({"ERROR"}, P.describe_error(error))
         return {"CANCELLED"}
 
+    def finish_with(self, done, log=None):
+        """Reports what was done and finishes."""
+        if log is not None:
+            log("hbc: " + done)
+        self.report({"INFO"}, done)
+        return {"FINISHED"}
 
-class HBC_OT_import(bpy.types.Operator, ImportHelper):
+
+class _OnActiveMesh(_Reporting):
+    """Operators that act on the mesh the Hex Structure panel shows."""
+
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return active_root(context) is not None
+
+
+class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
     """Import a hex-dominant volume mesh and show it (optionally analyzed)"""
 
     bl_idname = "import_mesh.hbc"
@@ -171,19 +182,14 @@ class HBC_OT_import(bpy.types.Operator, ImportHelper):
                     prog.step(f"built {P.LAYER_TITLES[layer]}")
                 context.scene.collection.children.link(root)
         except Exception as e:  # noqa: BLE001 - any failure must cancel cleanly
-            prog.end(context)
-            self.report({"ERROR"}, P.describe_error(e))
-            return {"CANCELLED"}
+            return self.cancel_with(context, e, prog)
         prog.end(context)
         session.put(root.name, s)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
         if self.frame:
             compat.frame_objects(context, list(root.all_objects))
-        done = f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s"
-        log("hbc: " + done)
-        self.report({"INFO"}, done)
-        return {"FINISHED"}
+        return self.finish_with(f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s", log)
 
 
 class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
@@ -205,9 +211,8 @@ class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
         root["hbc_rho"] = float(st.rho)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
-        self.report({"INFO"}, f"Analyzed {root.name}: {s.num_components} blocks, {s.num_sheets} sheets "
-                              f"in {time.perf_counter() - t0:.2f} s")
-        return {"FINISHED"}
+        return self.finish_with(f"Analyzed {root.name}: {s.num_components} blocks, {s.num_sheets} sheets "
+                                f"in {time.perf_counter() - t0:.2f} s")
 
 
 def picked_sheet_type(st):
@@ -258,8 +263,7 @@ class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
             return self.cancel_with(context, e, prog)
         prog.end(context)
         st.active_mesh = root.name
-        self.report({"INFO"}, done)
-        return {"FINISHED"}
+        return self.finish_with(done)
 
 
 #: Build All's layers, and the one left visible (the others are a click away: their eye icons).
@@ -296,11 +300,8 @@ class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
             return self.cancel_with(context, e, prog)
         prog.end(context)
         n = sum(len(S.find_layer(root, layer).all_objects) for layer in BUILD_ALL)
-        done = (f"{root.name}: built {len(BUILD_ALL)} layers ({n} objects) in {time.perf_counter() - t0:.2f} s; "
-                f"showing {P.LAYER_TITLES[BUILD_ALL_SHOWN]}")
-        log("hbc: " + done)
-        self.report({"INFO"}, done)
-        return {"FINISHED"}
+        return self.finish_with(f"{root.name}: built {len(BUILD_ALL)} layers ({n} objects) in "
+                                f"{time.perf_counter() - t0:.2f} s; showing {P.LAYER_TITLES[BUILD_ALL_SHOWN]}", log)
 
 
 class HBC_OT_clear_layer(_OnActiveMesh, bpy.types.Operator):

@@ -179,86 +179,55 @@ class HBC_PT_layers(_Sub, bpy.types.Panel):
         pass
 
 
-class HBC_PT_layer_direct(_Layer, bpy.types.Panel):
-    bl_idname = "HBC_PT_layer_direct"
-    bl_label = "Direct view"
-    bl_order = 0
-    layer = "direct"
+def _props(*names):
+    """A layer's draw_options drawing these settings, one a row."""
 
     def draw_options(self, col, st):
-        col.prop(st, "direct_boundary")
-        col.prop(st, "direct_transparent")
-        col.prop(st, "boundary_alpha")
-        col.prop(st, "direct_hex_cells")
-        col.prop(st, "direct_shrink")
+        for name in names:
+            col.prop(st, name)
+
+    return draw_options
 
 
-class HBC_PT_layer_graph(_Layer, bpy.types.Panel):
-    bl_idname = "HBC_PT_layer_graph"
-    bl_label = "Singularities"
-    bl_order = 1
-    layer = "graph"
-
-    def draw_options(self, col, st):
-        col.prop(st, "line_radius")
+def _sheets_options(self, col, st):
+    col.prop(st, "sheets_all")
+    col.template_list("HBC_UL_sheets", "", st, "sheets", st, "sheet_index", rows=5)
 
 
-class HBC_PT_layer_blocks(_Layer, bpy.types.Panel):
-    bl_idname = "HBC_PT_layer_blocks"
-    bl_label = "Blocks"
-    bl_order = 2
-    layer = "blocks"
-
-    def draw_options(self, col, st):
-        col.prop(st, "shrink")
-        col.prop(st, "split_max")
+def _subsheets_options(self, col, st):
+    col.prop(st, "spread")
+    if unavailable(bpy.context, "subsheets"):
+        col.label(text="Needs type 3", icon="INFO")
 
 
-class HBC_PT_layer_sheets(_Layer, bpy.types.Panel):
-    bl_idname = "HBC_PT_layer_sheets"
-    bl_label = "Sheets"
-    bl_order = 3
-    layer = "sheets"
-
-    def draw_options(self, col, st):
-        col.prop(st, "sheets_all")
-        col.template_list("HBC_UL_sheets", "", st, "sheets", st, "sheet_index", rows=5)
+def _wireframe_options(self, col, st):
+    col.row().prop(st, "wireframe_scope", expand=True)
+    for name in ("opacity_floor", "simplified", "line_radius"):
+        col.prop(st, name)
 
 
-class HBC_PT_layer_sheet(_Layer, bpy.types.Panel):
-    bl_idname = "HBC_PT_layer_sheet"
-    bl_label = "Picked sheet"
-    bl_order = 4
-    layer = "sheet"
-
-    def draw_options(self, col, st):
-        col.prop(st, "auto_show")
-        col.prop(st, "dot_radius")
-
-
-class HBC_PT_layer_subsheets(_Layer, bpy.types.Panel):
-    bl_idname = "HBC_PT_layer_subsheets"
-    bl_label = "Subsheets"
-    bl_order = 5
-    layer = "subsheets"
-
-    def draw_options(self, col, st):
-        col.prop(st, "spread")
-        if unavailable(bpy.context, "subsheets"):
-            col.label(text="Needs type 3", icon="INFO")
+#: The layer sub-panels in their order: layer, title, draw_options.
+LAYER_PANELS = (
+    ("direct", "Direct view",
+     _props("direct_boundary", "direct_transparent", "boundary_alpha", "direct_hex_cells", "direct_shrink")),
+    ("graph", "Singularities", _props("line_radius")),
+    ("blocks", "Blocks", _props("shrink", "split_max")),
+    ("sheets", "Sheets", _sheets_options),
+    ("sheet", "Picked sheet", _props("auto_show", "dot_radius")),
+    ("subsheets", "Subsheets", _subsheets_options),
+    ("wireframe", "Wireframe", _wireframe_options),
+)
 
 
-class HBC_PT_layer_wireframe(_Layer, bpy.types.Panel):
-    bl_idname = "HBC_PT_layer_wireframe"
-    bl_label = "Wireframe"
-    bl_order = 6
-    layer = "wireframe"
+def _layer_panel(order, layer, title, draw_options):
+    """The sub-panel class of one layer: Blender registers a class per panel, under its own
+    bl_idname, so each layer gets a class of its own made from the table above."""
+    name = f"HBC_PT_layer_{layer}"
+    return type(name, (_Layer, bpy.types.Panel), {
+        "bl_idname": name, "bl_label": title, "bl_order": order, "layer": layer, "draw_options": draw_options})
 
-    def draw_options(self, col, st):
-        col.row().prop(st, "wireframe_scope", expand=True)
-        col.prop(st, "opacity_floor")
-        col.prop(st, "simplified")
-        col.prop(st, "line_radius")
+
+layer_panels = tuple(_layer_panel(order, *row) for order, row in enumerate(LAYER_PANELS))
 
 
 def legend_entries(context):
@@ -354,6 +323,4 @@ class HBC_PT_selection(_Base, bpy.types.Panel):
             layout.label(text="sheets: " + (", ".join(str(int(x)) for x in sheets) or "none"))
 
 
-classes = (HBC_UL_sheets, HBC_PT_main, HBC_PT_table1, HBC_PT_layers, HBC_PT_layer_direct, HBC_PT_layer_graph,
-           HBC_PT_layer_blocks, HBC_PT_layer_sheets, HBC_PT_layer_sheet, HBC_PT_layer_subsheets,
-           HBC_PT_layer_wireframe, HBC_PT_legend, HBC_PT_selection)
+classes = (HBC_UL_sheets, HBC_PT_main, HBC_PT_table1, HBC_PT_layers, *layer_panels, HBC_PT_legend, HBC_PT_selection)

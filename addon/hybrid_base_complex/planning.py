@@ -190,7 +190,8 @@ def csr_invert(offsets, items, n_items: int):
 @dataclass
 class Soup:
     """Polygons with their own vertices: positions (n,3) float32, face_sizes (m,), face_vertices
-    (sum sizes,) int32 into positions, face_owner (m,) int32 (the block a face belongs to)."""
+    (sum sizes,) int32 into positions, face_owner (m,) int32 (the block a face belongs to). Sizes,
+    as Blender's loop totals; hbc's soups come as a CSR (from_dict)."""
 
     positions: np.ndarray
     face_sizes: np.ndarray
@@ -212,8 +213,10 @@ class Soup:
 
     @staticmethod
     def from_dict(d) -> "Soup":
+        """A soup from hbc.block_soup's dict."""
         return Soup(np.asarray(d["positions"], np.float32).reshape(-1, 3),
-                    np.asarray(d["face_sizes"], np.int32), np.asarray(d["face_vertices"], np.int32),
+                    np.diff(np.asarray(d["face_vertices_offsets"], np.int32)).astype(np.int32),
+                    np.asarray(d["face_vertices_items"], np.int32),
                     np.asarray(d["face_owner"], np.int32),
                     np.asarray(d["face_cell"], np.int32) if "face_cell" in d else None)
 

@@ -74,15 +74,8 @@ def module_problem():
 
 
 def _csr(obj, name):
-    """(offsets, items) of the CSR `name` on obj: `<name>_offsets` with `<name>_items`, or the
-    items named after what they list (`_cells`, `_vertices`, ...) where the binding still does
-    (issue 15 item 4 renames them all to `_items`)."""
-    offsets = getattr(obj, f"{name}_offsets")
-    for suffix in ("items", "cells", "vertices", "components", "curves"):
-        items = getattr(obj, f"{name}_{suffix}", None)
-        if items is not None:
-            return np.asarray(offsets), np.asarray(items)
-    raise AttributeError(f"{type(obj).__name__} has {name}_offsets but no items array")
+    """(offsets, items) of the CSR `name` on an hbc object: its `<name>_offsets` and `<name>_items`."""
+    return np.asarray(getattr(obj, f"{name}_offsets")), np.asarray(getattr(obj, f"{name}_items"))
 
 
 class Structure:
@@ -105,9 +98,10 @@ class Structure:
         return (np.asarray(positions, np.float32) * np.float32(self.scale) + self.offset).astype(np.float32)
 
     # -- geometry, all made by hbc (render_geometry.hpp) -----------------------------------------
-    def _soup(self, what: str, sheet: int = -1, shrink: float = 0.0) -> P.Soup:
+    def _soup(self, what: str, sheet: int | None = None, shrink: float = 0.0) -> P.Soup:
         """hbc.block_soup as a planning Soup, placed like self.points."""
-        soup = P.Soup.from_dict(import_hbc().block_soup(self.mesh, self.analysis, what, sheet=int(sheet),
+        sheet = None if sheet is None else int(sheet)
+        soup = P.Soup.from_dict(import_hbc().block_soup(self.mesh, self.analysis, what, sheet=sheet,
                                                         shrink=float(shrink)))
         soup.positions = self._place(soup.positions)
         return soup
@@ -168,7 +162,7 @@ class Structure:
         """[(name, colour, Lines)]: one group per singularity valence, then pseudo-singular and
         non-manifold edges."""
         g = self.analysis.graph
-        offsets, verts = np.asarray(g.chain_vertex_offsets), np.asarray(g.chain_vertex_items)
+        offsets, verts = _csr(g, "chain_vertices")
         valence = np.asarray(g.chain_valence)
         closed = np.asarray(g.chain_closed, bool)
         groups = []
@@ -202,7 +196,7 @@ class Structure:
     def component_sheets(self, component: int) -> np.ndarray:
         """Sheets holding a component."""
         if self._component_sheets is None:
-            off, items = _csr(self.analysis, "sheet_component")
+            off, items = _csr(self.analysis, "sheet_components")
             self._component_sheets = P.csr_invert(off, items, self.num_components)
         off, rows = self._component_sheets
         return P.csr_row(off, rows, component)
@@ -217,12 +211,12 @@ class Structure:
 
     def sheet_sizes(self):
         """(cells, components) per sheet."""
-        co, _ = _csr(self.analysis, "sheet_cell")
-        po, _ = _csr(self.analysis, "sheet_component")
+        co, _ = _csr(self.analysis, "sheet_cells")
+        po, _ = _csr(self.analysis, "sheet_components")
         return np.diff(np.asarray(co)), np.diff(np.asarray(po))
 
     def sheet_cells(self, sheet: int) -> np.ndarray:
-        off, items = _csr(self.analysis, "sheet_cell")
+        off, items = _csr(self.analysis, "sheet_cells")
         return P.csr_row(off, items, sheet)
 
     def all_sheets(self, shrink: float) -> P.Soup:
@@ -238,11 +232,11 @@ class Structure:
         """Highlights per SPEC §6: (unmatched dots, shared dots, self-parallel edge lines,
         self-intersecting cells soup)."""
         a = self.analysis
-        off, items = _csr(a, "sheet_unmatched")
+        off, items = _csr(a, "sheet_unmatched_vertices")
         unmatched = P.csr_row(off, items, sheet)
-        off, items = _csr(a, "sheet_shared")
+        off, items = _csr(a, "sheet_shared_vertices")
         shared = P.csr_row(off, items, sheet)
-        off, items = _csr(a, "sheet_self_parallel")
+        off, items = _csr(a, "sheet_self_parallel_curves")
         curves = P.csr_row(off, items, sheet)
         cx = a.complex
         if len(curves):
@@ -250,7 +244,7 @@ class Structure:
             lines = self._lines(*self._curve_subset(cx, curves), P.SELF_PARALLEL_EDGE_COLOR, closed=closed)
         else:
             lines = P.Lines.concat([])
-        off, items = _csr(a, "sheet_self_intersecting")
+        off, items = _csr(a, "sheet_self_intersecting_components")
         comps = P.csr_row(off, items, sheet)
         if len(comps):
             # The blocks (components) holding a type-3 pair, each its own piece.
@@ -263,7 +257,7 @@ class Structure:
 
     @staticmethod
     def _curve_subset(cx, curves):
-        off, verts = _csr(cx, "curve_vertex")
+        off, verts = _csr(cx, "curve_vertices")
         curves = np.asarray(curves, np.int64)
         off = np.asarray(off, np.int64)
         sizes = off[curves + 1] - off[curves]
@@ -278,7 +272,7 @@ class Structure:
         return self._soup("subsheets", sheet, shrink)
 
     def subsheet_unmatched(self, sub, index: int) -> np.ndarray:
-        off, items = _csr(sub, "unmatched")
+        off, items = _csr(sub, "subsheet_unmatched_vertices")
         return P.csr_row(off, items, index)
 
     # -- VSG wireframe ------------------------------------------------------------------------
@@ -291,8 +285,7 @@ class Structure:
             if subsheet is not None and subsheet >= 0:
                 kwargs["subsheet"] = int(subsheet)
         w = a.wireframe(**kwargs)
-        off = np.asarray(w.polyline_offsets)
-        verts = np.asarray(w.polyline_items)
+        off, verts = _csr(w, "polylines")
         k = len(off) - 1
         colors = P.palette_color(np.asarray(w.color, np.int64)) if k else np.zeros((0, 4), np.float32)
         keep = np.asarray(w.shown, bool) if simplified else None

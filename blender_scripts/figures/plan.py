@@ -74,7 +74,8 @@ def parser():
     ap.add_argument("--resolution", type=int, nargs=2, metavar=("W", "H"), default=(640, 480))
     ap.add_argument("--sheet", type=int, default=None,
                     help="sheet of panels d-g (default: the largest self-intersecting sheet, else the "
-                         "largest imperfect one, else the largest)")
+                         "largest imperfect one, else the largest; within that class the largest with a "
+                         "non-empty VSG wireframe first)")
     ap.add_argument("--panels", default=",".join(PANEL_KEYS),
                     help="comma-separated subset of " + ",".join(ALL_PANEL_KEYS) + " (default: the first seven)")
     ap.add_argument("--cut-plane", type=float, nargs=6, metavar=("PX", "PY", "PZ", "NX", "NY", "NZ"), default=None,
@@ -132,10 +133,14 @@ def cut_plane(points, direction, requested=None):
 # ---------------------------------------------------------------------------------------------
 # Choices
 
-def pick_sheet(types, cells, requested=None):
+def pick_sheet(types, cells, requested=None, shows_vsg=None):
     """The sheet of panels d-g: `requested` if given (checked), else the largest (by cells)
     self-intersecting sheet, else the largest imperfect one, else the largest; None when there are
-    no sheets."""
+    no sheets. `shows_vsg` (sheet id -> bool, optional): whether a sheet's VSG wireframe has
+    something to draw (panels e and f). Within the class chosen, the largest sheet that has one
+    comes first: a sheet whose region is the same all along (a twisted ring's, with no cell that
+    ends its VSG chains) has an empty wireframe and would leave e and f out. It is asked about the
+    class's sheets from the largest down, until one has one; if none has, the largest."""
     types = np.asarray(types, np.int64)
     cells = np.asarray(cells, np.int64)
     n = len(types)
@@ -149,7 +154,12 @@ def pick_sheet(types, cells, requested=None):
         if mask.any():
             idx = np.nonzero(mask)[0]
             # Largest first; ties to the lower id.
-            return int(idx[np.lexsort((idx, -cells[idx]))[0]])
+            order = [int(i) for i in idx[np.lexsort((idx, -cells[idx]))]]
+            if shows_vsg is not None:
+                for i in order:
+                    if shows_vsg(i):
+                        return i
+            return order[0]
     return None
 
 

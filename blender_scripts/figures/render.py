@@ -285,7 +285,8 @@ class Subject:
         self.shared = {}  # name -> collection (shell) shown by several panels
         types_ = s.sheet_types() if s.num_sheets else np.zeros(0, np.uint8)
         cells = s.sheet_sizes()[0] if s.num_sheets else np.zeros(0, np.int64)
-        self.sheet = plan.pick_sheet(types_, cells, args.sheet)
+        self._wireframes = {}  # sheet id -> its VSG wireframe (asked for by the choice, drawn by e)
+        self.sheet = plan.pick_sheet(types_, cells, args.sheet, self.shows_vsg)
         self.sheet_type = int(types_[self.sheet]) if self.sheet is not None else None
 
     # -- helpers --------------------------------------------------------------------------------
@@ -390,12 +391,25 @@ class Subject:
                     ob.data.materials.append(mat)
         return [coll] + self.shell()
 
+    def sheet_wireframe(self, sheet):
+        """The VSG wireframe of a sheet's region, computed once."""
+        sheet = int(sheet)
+        if sheet not in self._wireframes:
+            self._wireframes[sheet] = self.s.analysis.wireframe(sheet=sheet)
+        return self._wireframes[sheet]
+
+    def shows_vsg(self, sheet):
+        """Whether panels e and f of this sheet have something to draw: VSG chains (kind 0) and a
+        simplified wireframe."""
+        w = self.sheet_wireframe(sheet)
+        return bool(np.any(np.asarray(w.kind) == 0)) and len(np.asarray(w.simplified_polylines_offsets)) > 1
+
     def _vsg_lines(self, sheet):
         """The VSG chains of a sheet's wireframe (kind 0), palette colours, opaque."""
         P = self.addon.P
-        w = self.s.analysis.wireframe(sheet=int(sheet))
-        off = np.asarray(w.polyline_offsets)
-        verts = np.asarray(w.polyline_items)
+        w = self.sheet_wireframe(sheet)
+        off = np.asarray(w.polylines_offsets)
+        verts = np.asarray(w.polylines_items)
         k = len(off) - 1
         if k == 0:
             return None
@@ -439,7 +453,7 @@ class Subject:
         if self.sheet is None or self.sheet_type != 3:
             return None
         sub = self.s.subsheets(self.sheet)
-        off = np.asarray(sub.cell_offsets)
+        off = np.asarray(sub.subsheet_cells_offsets)
         picked = plan.pick_subsheets(np.diff(off), self.args.max_subsheets)
         coll = self.build("subsheets", "subsheets", spread=False)
         with self.addon.S.Transaction() as tx:

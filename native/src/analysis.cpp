@@ -3,19 +3,45 @@
 #include <chrono>
 
 namespace hbc {
+
+const Subsheets* SheetStage::subsheets_of(int32_t s) const {
+  if (!subsheets) return nullptr;
+  for (const Subsheets& x : *subsheets)
+    if (x.sheet == s) return &x;
+  return nullptr;
+}
+
 namespace {
 
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-}  // namespace
-
-const Subsheets* Analysis::subsheets_of(int32_t s) const {
-  for (const Subsheets& x : subsheets)
-    if (x.sheet == s) return &x;
-  return nullptr;
+SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt, Timings& timings) {
+  auto t = std::chrono::steady_clock::now();
+  SheetStage st;
+  st.domain = sheet_domain(mesh, complex, opt.sheet_level);
+  st.sheets = extract_sheets(mesh, st.domain);
+  st.largest_self_intersecting = largest_self_intersecting(st.sheets);
+  timings.sheets = since(t);
+  if (opt.subsheets) {
+    t = std::chrono::steady_clock::now();
+    st.subsheets.emplace();
+    for (size_t s = 0; s < st.sheets.size(); ++s)
+      if (st.sheets.classes[s].type3) st.subsheets->push_back(decompose_sheet(st.domain, st.sheets, static_cast<int32_t>(s)));
+    timings.subsheets = since(t);
+  }
+  return st;
 }
+
+WireframeStage wireframe_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt) {
+  WireframeStage st;
+  st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, complex) : complex_from_mesh(mesh);
+  st.wireframe = vsg_wireframe(st.view, opt.wireframe_options);
+  return st;
+}
+
+}  // namespace
 
 Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
   Analysis a;
@@ -27,28 +53,11 @@ Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
   a.complex = base_complex(mesh, a.graph);
   a.timings.base_complex = since(t);
 
-  if (opt.sheets) {
-    t = std::chrono::steady_clock::now();
-    a.domain = sheet_domain(mesh, a.complex, opt.sheet_level);
-    a.sheets = extract_sheets(mesh, a.domain);
-    a.largest_self_intersecting = largest_self_intersecting(a.sheets);
-    a.timings.sheets = since(t);
-    a.has_sheets = true;
-    if (opt.subsheets) {
-      t = std::chrono::steady_clock::now();
-      for (size_t s = 0; s < a.sheets.size(); ++s)
-        if (a.sheets.classes[s].type3) a.subsheets.push_back(decompose_sheet(a.domain, a.sheets, static_cast<int32_t>(s)));
-      a.timings.subsheets = since(t);
-      a.has_subsheets = true;
-    }
-  }
+  if (opt.sheets) a.sheet_stage = sheet_stage(mesh, a.complex, opt, a.timings);
   if (opt.wireframe) {
     t = std::chrono::steady_clock::now();
-    a.wire_complex = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, a.complex)
-                                                                  : complex_from_mesh(mesh);
-    a.wireframe = vsg_wireframe(a.wire_complex, opt.wireframe_options);
+    a.wireframe_stage = wireframe_stage(mesh, a.complex, opt);
     a.timings.vsg_wireframe = since(t);
-    a.has_wireframe = true;
   }
   return a;
 }
@@ -70,19 +79,23 @@ Stats compute_stats(const Mesh& m, const Analysis& a) {
   s.curves = static_cast<int64_t>(a.complex.num_curves());
   s.corners = static_cast<int64_t>(a.complex.corners.size());
   s.self_adjacent_faces = static_cast<int64_t>(a.complex.self_adjacent_faces.size());
-  if (a.has_sheets) {
-    s.sheets = static_cast<int64_t>(a.sheets.size());
-    s.sheets_perfect = static_cast<int64_t>(a.sheets.count(SheetType::Perfect));
-    s.sheets_type1 = static_cast<int64_t>(a.sheets.count(SheetType::Type1));
-    s.sheets_type2 = static_cast<int64_t>(a.sheets.count(SheetType::Type2));
-    s.sheets_type3 = static_cast<int64_t>(a.sheets.count(SheetType::Type3));
-    const Subsheets* big = a.subsheets_of(a.largest_self_intersecting);
-    if (a.has_subsheets) s.subsheets_of_largest_self_intersecting = big ? static_cast<int64_t>(big->size()) : 0;
+  if (const auto& st = a.sheet_stage) {
+    const Sheets& sh = st->sheets;
+    s.sheets = static_cast<int64_t>(sh.size());
+    s.sheets_perfect = static_cast<int64_t>(sh.count(SheetType::Perfect));
+    s.sheets_type1 = static_cast<int64_t>(sh.count(SheetType::Type1));
+    s.sheets_type2 = static_cast<int64_t>(sh.count(SheetType::Type2));
+    s.sheets_type3 = static_cast<int64_t>(sh.count(SheetType::Type3));
+    if (st->subsheets) {
+      const Subsheets* big = st->largest_self_intersecting ? st->subsheets_of(*st->largest_self_intersecting) : nullptr;
+      s.subsheets_of_largest_self_intersecting = big ? static_cast<int64_t>(big->size()) : 0;
+    }
   }
-  if (a.has_wireframe) {
-    s.vsg_edges = a.wireframe.vsg_edges;
-    s.wireframe_edges = a.wireframe.wireframe_edges();
-    s.wireframe_edges_simplified = a.wireframe.wireframe_edges_simplified();
+  if (const auto& st = a.wireframe_stage) {
+    const VsgWireframe& w = st->wireframe;
+    s.vsg_edges = w.vsg_edges;
+    s.wireframe_edges = w.wireframe_edges();
+    s.wireframe_edges_simplified = w.wireframe_edges_simplified();
   }
   s.timings = a.timings;
   return s;

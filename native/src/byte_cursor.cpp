@@ -13,6 +13,14 @@ static std::string shown(std::string_view t) {
   return "'" + s + (t.size() > 40 ? "...'" : "'");
 }
 
+// The whole token as a number (a leading '+' allowed, which from_chars refuses).
+template <class T>
+static bool parse_whole(std::string_view t, T& v) {
+  const char* b = t.data() + (t.front() == '+' ? 1 : 0);
+  const auto r = std::from_chars(b, t.data() + t.size(), v);
+  return r.ec == std::errc() && r.ptr == t.data() + t.size();
+}
+
 void ByteCursor::skip_space() {
   while (pos_ < d_.size() && is_space(d_[pos_])) {
     if (d_[pos_] == '\n') ++line_;
@@ -38,9 +46,7 @@ std::string_view ByteCursor::word(const char* expected) {
 int64_t ByteCursor::integer(const char* expected) {
   const std::string_view t = word(expected);
   int64_t v = 0;
-  const char* b = t.data() + (t.front() == '+' ? 1 : 0);
-  const auto r = std::from_chars(b, t.data() + t.size(), v);
-  if (r.ec != std::errc() || r.ptr != t.data() + t.size()) fail(std::string(expected) + " (an integer), found " + shown(t));
+  if (!parse_whole(t, v)) fail(std::string(expected) + " (an integer), found " + shown(t));
   return v;
 }
 
@@ -54,9 +60,7 @@ int64_t ByteCursor::integer_in(int64_t lo, int64_t hi, const char* expected) {
 double ByteCursor::real(const char* expected) {
   const std::string_view t = word(expected);
   double v = 0;
-  const char* b = t.data() + (t.front() == '+' ? 1 : 0);
-  const auto r = std::from_chars(b, t.data() + t.size(), v);
-  if (r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v))
+  if (!parse_whole(t, v) || !std::isfinite(v))
     fail(std::string(expected) + " (a finite number), found " + shown(t));
   return v;
 }

@@ -55,14 +55,14 @@ FaceSelection cells_selection(const Mesh& m, std::span<const int32_t> cells) {
   return sel;
 }
 
-FaceSelection cell_set_selection(const Mesh& m, const Csr<int32_t>& sets, int32_t only) {
+FaceSelection cell_set_selection(const Mesh& m, const Csr<int32_t>& sets, std::optional<int32_t> only) {
   FaceSelection sel;
   sel.separate_ids = true;
   // The row a cell was last marked for, so rows may share cells and nothing is cleared between rows.
   std::vector<int32_t> mark(m.num_cells(), -1);
   for (size_t r = 0; r < sets.rows(); ++r) {
     const int32_t id = static_cast<int32_t>(r);
-    if (only >= 0 && id != only) continue;
+    if (only && id != *only) continue;
     for (int32_t c : sets[r]) mark[static_cast<size_t>(c)] = id;
     for (int32_t c : sets[r])
       add_cell_faces(m, c, id, sel, [&](int32_t f) {
@@ -112,7 +112,7 @@ FaceSelection component_selection(const Mesh& m, const BaseComplex& bc) {
   return sel;
 }
 
-FaceSelection sheet_selection(const Mesh& m, const Sheets& sheets, int32_t sheet) {
+FaceSelection sheet_selection(const Mesh& m, const Sheets& sheets, std::optional<int32_t> sheet) {
   return cell_set_selection(m, sheets.sheet_cells, sheet);
 }
 

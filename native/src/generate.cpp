@@ -524,27 +524,37 @@ Planar ring_section(int a, bool prisms, int quarter_turns, bool spread) {
 }
 
 // The section vertex that vertex v of `pl` lands on when the section turns by `angle` about the
-// origin (the section must map onto itself).
+// origin (the section must map onto itself). Vertices sorted by x: each turned point looks only at
+// those within the tolerance in x, so large sections take n log n, not n².
 std::vector<int32_t> turn_map(const Planar& pl, double angle) {
+  constexpr double tol = 1e-9;
   const size_t nv = pl.num_vertices();
+  std::vector<int32_t> by_x(nv);
+  std::iota(by_x.begin(), by_x.end(), 0);
+  std::sort(by_x.begin(), by_x.end(), [&](int32_t a, int32_t b) { return pl.xy[2 * static_cast<size_t>(a)] < pl.xy[2 * static_cast<size_t>(b)]; });
   std::vector<int32_t> to(nv, -1);
   const double c = std::cos(angle), sn = std::sin(angle);
   for (size_t v = 0; v < nv; ++v) {
     const double x = c * pl.xy[2 * v] - sn * pl.xy[2 * v + 1], y = sn * pl.xy[2 * v] + c * pl.xy[2 * v + 1];
-    for (size_t w = 0; w < nv; ++w)
-      if (std::abs(pl.xy[2 * w] - x) < 1e-9 && std::abs(pl.xy[2 * w + 1] - y) < 1e-9) to[v] = static_cast<int32_t>(w);
+    auto w = std::lower_bound(by_x.begin(), by_x.end(), x - tol,
+                              [&](int32_t a, double t) { return pl.xy[2 * static_cast<size_t>(a)] < t; });
+    for (; w != by_x.end() && pl.xy[2 * static_cast<size_t>(*w)] < x + tol; ++w)
+      if (std::abs(pl.xy[2 * static_cast<size_t>(*w) + 1] - y) < tol) to[v] = *w;
     require(to[v] >= 0, "twisted ring: the section does not map onto itself");
   }
   return to;
 }
 
+// Radius of a twisted ring of an a×a section: its hole is 2a + 4 across.
+double ring_radius(int a) { return 1.5 * a + 2.0; }
+
 // The section swept round the z axis in `sections` layers, turning by `angle` on the way round,
 // the last layer closed on the first one turned (build_mesh merges the faces that then repeat
-// layer 0's). `width`: the section's extent, for the ring's radius.
-MeshInput ring_of(const Planar& pl, int sections, double angle, double width, const std::string& source) {
+// layer 0's). `radius`: of the circle the section's centre follows.
+MeshInput ring_of(const Planar& pl, int sections, double angle, double radius, const std::string& source) {
   MeshInput in = extrude(pl, sections, 1.0, source);
   const size_t nv = pl.num_vertices();
-  const double radius = 1.5 * width + 2.0, pi = std::acos(-1.0);
+  const double pi = std::acos(-1.0);
   for (int l = 0; l < sections; ++l) {
     const double phi = 2 * pi * l / sections, alpha = angle * l / sections;
     for (size_t v = 0; v < nv; ++v) {
@@ -565,7 +575,104 @@ MeshInput ring_of(const Planar& pl, int sections, double angle, double width, co
   return in;
 }
 
+// Hex `cell` of `in` becomes 6 pyramids, one per face, around an added vertex at the centroid of
+// its corners (generate_split's Pyramids on any hex): its quads stay, so its neighbours stay hexes.
+// The 12 triangles (a hex edge and the centre) are each shared by the pyramids of the two faces at
+// that edge. The pieces take the cell's place in the numbering, consecutively.
+void split_into_pyramids(MeshInput& in, size_t cell) {
+  const auto row = in.cells[cell];
+  const std::vector<int32_t> faces(row.begin(), row.end());
+  if (faces.size() != 6) throw std::logic_error("split_into_pyramids: not a hex");
+  std::vector<int32_t> corners;
+  for (int32_t half : faces)
+    for (int32_t v : in.faces[static_cast<size_t>(half / 2)]) corners.push_back(v);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  const int32_t apex = static_cast<int32_t>(in.points.size() / 3);
+  for (int d = 0; d < 3; ++d) {
+    double c = 0;
+    for (int32_t v : corners) c += in.points[3 * static_cast<size_t>(v) + d];
+    in.points.push_back(c / static_cast<double>(corners.size()));
+  }
+  std::vector<std::array<int32_t, 3>> triangles;  // (lo, hi, face) of each hex edge's triangle
+  Csr<int32_t> pieces;
+  for (int32_t half : faces) {
+    auto l = in.faces[static_cast<size_t>(half / 2)];
+    std::vector<int32_t> loop(l.begin(), l.end());  // as the cell sees it: outward
+    if (half % 2) std::reverse(loop.begin(), loop.end());
+    std::vector<int32_t> piece{half};
+    for (size_t i = 0; i < loop.size(); ++i) {
+      // (b, a, apex) walks the base edge a -> b backwards: outward for this pyramid.
+      const int32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+      const std::array<int32_t, 2> key{std::min(a, b), std::max(a, b)};
+      auto it = std::find_if(triangles.begin(), triangles.end(),
+                             [&](const auto& t) { return t[0] == key[0] && t[1] == key[1]; });
+      if (it == triangles.end()) {
+        const int32_t f = static_cast<int32_t>(in.faces.rows());
+        const int32_t tri[3] = {b, a, apex};
+        in.faces.push_row(tri, tri + 3);
+        triangles.push_back({key[0], key[1], f});
+        piece.push_back(2 * f);
+      } else {  // the neighbouring pyramid made it walking the edge the other way
+        piece.push_back(2 * (*it)[2] + (in.faces[static_cast<size_t>((*it)[2])][0] == b ? 0 : 1));
+      }
+    }
+    pieces.push_row(piece.begin(), piece.end());
+  }
+  Csr<int32_t> cells;
+  for (size_t c = 0; c < in.cells.rows(); ++c) {
+    if (c != cell) {
+      cells.push_row(in.cells[c]);
+      continue;
+    }
+    for (size_t p = 0; p < pieces.rows(); ++p) cells.push_row(pieces[p]);
+  }
+  in.cells = std::move(cells);
+}
+
+// `from` appended to `to`: a second, disjoint part of the same mesh.
+void append_part(MeshInput& to, const MeshInput& from) {
+  const int32_t nv = static_cast<int32_t>(to.points.size() / 3), nf = static_cast<int32_t>(to.faces.rows());
+  to.points.insert(to.points.end(), from.points.begin(), from.points.end());
+  std::vector<int32_t> row;
+  for (size_t f = 0; f < from.faces.rows(); ++f) {
+    row.clear();
+    for (int32_t v : from.faces[f]) row.push_back(v + nv);
+    to.faces.push_row(row.begin(), row.end());
+  }
+  for (size_t c = 0; c < from.cells.rows(); ++c) {
+    row.clear();
+    for (int32_t half : from.cells[c]) row.push_back(half + 2 * nf);
+    to.cells.push_row(row.begin(), row.end());
+  }
+}
+
+// A twisted ring of an a×a section (a even) round a circle of `radius`, whose first layer has the
+// cell at quad (a/2 - 1, 0), the boundary quad just left of the middle line, split into pyramids.
+MeshInput pyramid_ring(int a, int sections, int quarter_turns, double radius) {
+  MeshInput in = ring_of(ring_section(a, false, quarter_turns, false), sections, quarter_turns * 0.5 * std::acos(-1.0),
+                         radius, "twisted_pair");
+  // Quad (i, j) of the section is polygon i + a j, and layer 0's cells are the polygons in order.
+  split_into_pyramids(in, static_cast<size_t>(a / 2 - 1));
+  return in;
+}
+
 }  // namespace
+
+MeshInput generate_twisted_pair(int section, int sections) {
+  require(section >= 2 && section % 2 == 0 && sections >= 3,
+          "twisted pair: an even section of at least 2 cells and at least 3 sections");
+  require(static_cast<int64_t>(section + 1) * (section + 1) * sections * 13 < kMaxIndex,
+          "twisted pair: too large for 32-bit ids");
+  // The half-turned ring where a single twisted ring lies, the quarter-turned one round it. A
+  // section turned by 45° reaches section/√2 from its centre: 2 sections between the circles leave
+  // at least 0.59 of a section between the rings.
+  const double inner = ring_radius(section), outer = inner + 2.0 * section;
+  MeshInput pair = pyramid_ring(section, sections, 1, outer);
+  append_part(pair, pyramid_ring(section, sections, 2, inner));
+  pair.source = "twisted_pair";
+  return pair;
+}
 
 MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms, bool spread) {
   require(section >= 1 && sections >= 3, "twisted ring: a section of at least 1 cell and at least 3 sections");
@@ -573,7 +680,7 @@ MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bo
   require(!prisms || section >= 3 || (section % 2 == 1 && !spread),
           "twisted ring: prisms need an odd section or one of at least 3 cells");
   const Planar pl = ring_section(section, prisms, quarter_turns, spread || section % 2 == 0);
-  return ring_of(pl, sections, quarter_turns * 0.5 * std::acos(-1.0), section, "twisted_ring");
+  return ring_of(pl, sections, quarter_turns * 0.5 * std::acos(-1.0), ring_radius(section), "twisted_ring");
 }
 
 }  // namespace hbc

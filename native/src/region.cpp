@@ -8,43 +8,46 @@
 
 namespace hbc {
 
-void require_sheet(const Analysis& a, int32_t sheet) {
-  if (!a.has_sheets) throw std::invalid_argument("the analysis was run without sheets");
-  if (sheet < 0 || static_cast<size_t>(sheet) >= a.sheets.size())
-    throw std::invalid_argument("sheet " + std::to_string(sheet) + " out of range: the mesh has " +
-                                std::to_string(a.sheets.size()) + " sheets");
+const SheetStage& require_sheet(const Analysis& a, int32_t sheet) {
+  if (!a.sheet_stage) throw std::invalid_argument("the analysis was run without sheets");
+  const size_t n = a.sheet_stage->sheets.size();
+  if (sheet < 0 || static_cast<size_t>(sheet) >= n)
+    throw std::invalid_argument("sheet " + std::to_string(sheet) + " out of range: the mesh has " + std::to_string(n) +
+                                " sheets");
+  return *a.sheet_stage;
 }
 
 const Subsheets& require_subsheets(const Analysis& a, int32_t sheet) {
-  require_sheet(a, sheet);
-  if (!a.has_subsheets) throw std::invalid_argument("the analysis was run without subsheets");
-  const Subsheets* sub = a.subsheets_of(sheet);
+  const SheetStage& st = require_sheet(a, sheet);
+  if (!st.subsheets) throw std::invalid_argument("the analysis was run without subsheets");
+  const Subsheets* sub = st.subsheets_of(sheet);
   if (!sub) throw std::invalid_argument("sheet " + std::to_string(sheet) + " is not self-intersecting");
   return *sub;
 }
 
-std::vector<int32_t> region_cells(const Mesh& m, const Analysis& a, int32_t sheet, int32_t subsheet) {
+std::vector<int32_t> region_cells(const Mesh& m, const Analysis& a, std::optional<int32_t> sheet,
+                                  std::optional<int32_t> subsheet) {
   std::vector<int32_t> cells;
-  if (sheet < 0) {
-    if (subsheet >= 0) throw std::invalid_argument("a subsheet needs its sheet");
+  if (!sheet) {
+    if (subsheet) throw std::invalid_argument("a subsheet needs its sheet");
     cells.resize(m.num_cells());
     for (size_t c = 0; c < cells.size(); ++c) cells[c] = static_cast<int32_t>(c);
     return cells;
   }
-  require_sheet(a, sheet);
-  if (subsheet < 0) {
-    for (auto row : {a.sheets.sheet_cells[static_cast<size_t>(sheet)], a.sheets.sheet_non_hex_cells[static_cast<size_t>(sheet)]})
-      cells.insert(cells.end(), row.begin(), row.end());
+  const SheetStage& st = require_sheet(a, *sheet);
+  const size_t s = static_cast<size_t>(*sheet);
+  if (!subsheet) {
+    for (auto row : {st.sheets.sheet_cells[s], st.sheets.sheet_non_hex_cells[s]}) cells.insert(cells.end(), row.begin(), row.end());
   } else {
-    const Subsheets& sub = require_subsheets(a, sheet);
-    if (static_cast<size_t>(subsheet) >= sub.size())
-      throw std::invalid_argument("subsheet " + std::to_string(subsheet) + " out of range: sheet " +
-                                  std::to_string(sheet) + " has " + std::to_string(sub.size()) + " subsheets");
-    const auto own = sub.cells[static_cast<size_t>(subsheet)];
+    const Subsheets& sub = require_subsheets(a, *sheet);
+    if (*subsheet < 0 || static_cast<size_t>(*subsheet) >= sub.size())
+      throw std::invalid_argument("subsheet " + std::to_string(*subsheet) + " out of range: sheet " +
+                                  std::to_string(*sheet) + " has " + std::to_string(sub.size()) + " subsheets");
+    const auto own = sub.cells[static_cast<size_t>(*subsheet)];
     cells.assign(own.begin(), own.end());
     // A sheet's adjacent non-hex cells are those touching its curves; the same rule for a subsheet.
-    for (int32_t k : sub.curves[static_cast<size_t>(subsheet)]) {
-      const auto nh = a.domain.curve_non_hex_cells[static_cast<size_t>(k)];
+    for (int32_t k : sub.curves[static_cast<size_t>(*subsheet)]) {
+      const auto nh = st.domain.curve_non_hex_cells[static_cast<size_t>(k)];
       cells.insert(cells.end(), nh.begin(), nh.end());
     }
   }
@@ -57,30 +60,32 @@ namespace {
 
 // The sheet's (or subsheet's) parallel edges as complex edge ids of `cx`: the authors remove, last,
 // the simplified chains made of them only, so the wireframe of a sheet shows what crosses it.
-std::vector<int32_t> region_parallel_edges(const Analysis& a, const CellComplex& cx, int32_t sheet, int32_t subsheet) {
+std::vector<int32_t> region_parallel_edges(const Analysis& a, const CellComplex& cx, int32_t sheet,
+                                           std::optional<int32_t> subsheet) {
+  const SheetStage& st = require_sheet(a, sheet);
   std::vector<int32_t> mesh_edges;
-  if (subsheet < 0) {
-    const auto row = a.sheets.sheet_edges[static_cast<size_t>(sheet)];
+  if (!subsheet) {
+    const auto row = st.sheets.sheet_edges[static_cast<size_t>(sheet)];
     mesh_edges.assign(row.begin(), row.end());
   } else {
-    for (int32_t k : require_subsheets(a, sheet).curves[static_cast<size_t>(subsheet)])
-      for (int32_t e : a.domain.curve_edges[static_cast<size_t>(k)]) mesh_edges.push_back(e);
+    for (int32_t k : require_subsheets(a, sheet).curves[static_cast<size_t>(*subsheet)])
+      for (int32_t e : st.domain.curve_edges[static_cast<size_t>(k)]) mesh_edges.push_back(e);
   }
   return complex_edges_of(cx, a.complex, mesh_edges);
 }
 
 }  // namespace
 
-VsgWireframe region_wireframe(const Mesh& m, const Analysis& a, Level level,
-                              const WireframeOptions& options, int32_t sheet, int32_t subsheet) {
-  if (sheet < 0 && subsheet < 0)
+VsgWireframe region_wireframe(const Mesh& m, const Analysis& a, Level level, const WireframeOptions& options,
+                              std::optional<int32_t> sheet, std::optional<int32_t> subsheet) {
+  if (!sheet && !subsheet)
     return vsg_wireframe(level == Level::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m), options);
-  const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);
+  const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);  // checks the ids
   const CellComplex cx = level == Level::Complex
                              ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
                              : complex_from_mesh(m, cells);
   WireframeOptions opt = options;
-  opt.parallel_edges = region_parallel_edges(a, cx, sheet, subsheet);
+  opt.parallel_edges = region_parallel_edges(a, cx, *sheet, subsheet);
   return vsg_wireframe(cx, opt);
 }
 

@@ -42,7 +42,11 @@ bool soup_kind_needs_analysis(SoupKind kind) {
   return kind != SoupKind::Cells && kind != SoupKind::NonHex && kind != SoupKind::Hex && kind != SoupKind::Boundary;
 }
 
-FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet) {
+FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, std::optional<int32_t> sheet) {
+  if (soup_kind_needs_sheet(kind) && !sheet) {
+    const auto named = std::find_if(kSoupNames.begin(), kSoupNames.end(), [&](const auto& nk) { return nk.second == kind; });
+    throw std::invalid_argument("the block set '" + std::string(named->first) + "' needs a sheet");
+  }
   switch (kind) {
     case SoupKind::Cells: {
       std::vector<int32_t> all(m.num_cells());
@@ -57,15 +61,12 @@ FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, int32_
     }
     case SoupKind::Components: return component_selection(m, a.complex);
     case SoupKind::Sheets:
-      if (!a.has_sheets) throw std::invalid_argument("the analysis was run without sheets");
-      return sheet_selection(m, a.sheets);
-    case SoupKind::Subsheets: return cell_set_selection(m, require_subsheets(a, sheet).cells);
-    case SoupKind::Sheet:
-      require_sheet(a, sheet);
-      return sheet_component_selection(m, a.complex, a.sheets, sheet);
+      if (!a.sheet_stage) throw std::invalid_argument("the analysis was run without sheets");
+      return sheet_selection(m, a.sheet_stage->sheets);
+    case SoupKind::Subsheets: return cell_set_selection(m, require_subsheets(a, *sheet).cells);
+    case SoupKind::Sheet: return sheet_component_selection(m, a.complex, require_sheet(a, *sheet).sheets, *sheet);
     case SoupKind::SheetNonHex: {
-      require_sheet(a, sheet);
-      const auto cells = a.sheets.sheet_non_hex_cells[static_cast<size_t>(sheet)];
+      const auto cells = require_sheet(a, *sheet).sheets.sheet_non_hex_cells[static_cast<size_t>(*sheet)];
       return cells_selection(m, {cells.begin(), cells.end()});
     }
     case SoupKind::Boundary: return boundary_selection(m);
@@ -81,7 +82,7 @@ BlockSoup build_soup(const Mesh& m, const FaceSelection& in, double shrink) {
   if (in.ids.size() != n || in.reversed.size() != n || in.cells.size() != n)
     throw std::invalid_argument("face selection: faces, cells, reversed and ids differ in length");
   int32_t num_owners = 0;
-  size_t corners = 0;  // face corners: the soup's face_vertices and an upper bound on its points
+  size_t corners = 0;  // face corners: the soup's face_vertices items and an upper bound on its points
   for (size_t i = 0; i < n; ++i) {
     if (in.ids[i] < 0) throw std::invalid_argument("face selection: negative id");
     if (in.faces[i] < 0 || static_cast<size_t>(in.faces[i]) >= m.num_faces())
@@ -102,11 +103,10 @@ BlockSoup build_soup(const Mesh& m, const FaceSelection& in, double shrink) {
   }
 
   BlockSoup s;
-  s.face_sizes.reserve(n);
   s.face_owner.reserve(n);
   s.face_source.reserve(n);
   s.face_cell.reserve(n);
-  s.face_vertices.reserve(corners);
+  s.face_vertices.reserve(n, corners);
   s.point_vertex.reserve(corners);
   s.positions.reserve(3 * corners);
   // Mesh vertex -> point of the current owner; `seen` holds the owner that made the point, so the
@@ -117,7 +117,6 @@ BlockSoup build_soup(const Mesh& m, const FaceSelection& in, double shrink) {
     for (int32_t k = start[static_cast<size_t>(o)]; k < start[static_cast<size_t>(o) + 1]; ++k) {
       const size_t i = static_cast<size_t>(order[static_cast<size_t>(k)]);
       const auto loop = m.face_verts[static_cast<size_t>(in.faces[i])];
-      s.face_sizes.push_back(static_cast<int32_t>(loop.size()));
       s.face_owner.push_back(o);
       s.face_source.push_back(in.faces[i]);
       s.face_cell.push_back(in.cells[i]);
@@ -128,8 +127,9 @@ BlockSoup build_soup(const Mesh& m, const FaceSelection& in, double shrink) {
           point_of[static_cast<size_t>(v)] = static_cast<int32_t>(s.point_vertex.size());
           s.point_vertex.push_back(v);
         }
-        s.face_vertices.push_back(point_of[static_cast<size_t>(v)]);
+        s.face_vertices.items.push_back(point_of[static_cast<size_t>(v)]);
       }
+      s.face_vertices.offsets.push_back(static_cast<int32_t>(s.face_vertices.items.size()));
     }
     const size_t np = s.point_vertex.size() - first_point;
     if (np == 0) continue;
@@ -147,7 +147,7 @@ BlockSoup build_soup(const Mesh& m, const FaceSelection& in, double shrink) {
   return s;
 }
 
-BlockSoup block_soup(const Mesh& m, const Analysis& a, SoupKind kind, int32_t sheet, double shrink) {
+BlockSoup block_soup(const Mesh& m, const Analysis& a, SoupKind kind, std::optional<int32_t> sheet, double shrink) {
   return build_soup(m, soup_faces(m, a, kind, sheet), shrink);
 }
 
@@ -213,14 +213,14 @@ ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClas
   for (const SheetClass& k : classes) {
     out.type.push_back(static_cast<uint8_t>(k.type));
     out.flags.insert(out.flags.end(), {uint8_t(k.type1), uint8_t(k.type2), uint8_t(k.type3)});
-    out.unmatched.push_row(k.unmatched_vertices.begin(), k.unmatched_vertices.end());
-    out.shared.push_row(k.shared_vertices.begin(), k.shared_vertices.end());
-    out.self_parallel.push_row(k.self_parallel_curves.begin(), k.self_parallel_curves.end());
+    out.unmatched_vertices.push_row(k.unmatched_vertices.begin(), k.unmatched_vertices.end());
+    out.shared_vertices.push_row(k.shared_vertices.begin(), k.shared_vertices.end());
+    out.self_parallel_curves.push_row(k.self_parallel_curves.begin(), k.self_parallel_curves.end());
     comps.clear();
     for (int32_t u : k.self_intersecting_blocks) comps.push_back(domain.block_component[static_cast<size_t>(u)]);
     std::sort(comps.begin(), comps.end());
     comps.erase(std::unique(comps.begin(), comps.end()), comps.end());
-    out.self_intersecting.push_row(comps.begin(), comps.end());
+    out.self_intersecting_components.push_row(comps.begin(), comps.end());
   }
   return out;
 }

@@ -523,11 +523,11 @@ Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sh
   return out;
 }
 
-int32_t largest_self_intersecting(const Sheets& s) {
-  int32_t best = -1;
+std::optional<int32_t> largest_self_intersecting(const Sheets& s) {
+  std::optional<int32_t> best;
   for (size_t i = 0; i < s.size(); ++i) {
     if (!s.classes[i].type3) continue;
-    if (best < 0 || s.sheet_cells.count(i) > s.sheet_cells.count(static_cast<size_t>(best))) best = static_cast<int32_t>(i);
+    if (!best || s.sheet_cells.count(i) > s.sheet_cells.count(static_cast<size_t>(*best))) best = static_cast<int32_t>(i);
   }
   return best;
 }

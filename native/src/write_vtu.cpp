@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "base64.hpp"
+#include "hbc/region.hpp"
 #include "hbc/vtu_export.hpp"
 
 namespace hbc {
@@ -153,18 +154,19 @@ void write_cell_data(VtuDoc& d, const Mesh& m, const Analysis& a, const VtuExpor
   d.array("component", a.complex.cell_component);
   d.array("is_hex", is_hex);
   d.array("cell_type", type);
-  if (a.has_sheets) {
+  if (a.sheet_stage) {
     std::vector<int32_t> first, count;
-    first_and_count(a.sheets.sheet_cells, nc, first, count);
+    first_and_count(a.sheet_stage->sheets.sheet_cells, nc, first, count);
     d.array("sheet", first);
     d.array("sheet_count", count);
   }
-  if (o.sheet >= 0) {
+  if (o.sheet) {
+    const SheetStage& st = require_sheet(a, *o.sheet);
     std::vector<uint8_t> in(nc, 0);
-    for (int32_t c : a.sheets.sheet_cells[static_cast<size_t>(o.sheet)]) in[c] = 1;
+    for (int32_t c : st.sheets.sheet_cells[static_cast<size_t>(*o.sheet)]) in[c] = 1;
     d.array("in_sheet", in);
     std::vector<int32_t> first(nc, -1), count(nc, 0);
-    if (const Subsheets* s = a.subsheets_of(o.sheet)) first_and_count(s->cells, nc, first, count);
+    if (const Subsheets* s = st.subsheets_of(*o.sheet)) first_and_count(s->cells, nc, first, count);
     d.array("subsheet", first);
     d.array("subsheet_count", count);
   }
@@ -184,9 +186,7 @@ void write_point_data(VtuDoc& d, const Mesh& m, const Analysis& a) {
 }  // namespace
 
 std::string vtu_cells_text(const Mesh& m, const Analysis& a, const VtuExportOptions& o) {
-  if (o.sheet >= 0 && (!a.has_sheets || o.sheet >= static_cast<int32_t>(a.sheets.sheet_cells.rows())))
-    throw std::invalid_argument("sheet " + std::to_string(o.sheet) + ": the analysis has " +
-                                std::to_string(a.has_sheets ? a.sheets.sheet_cells.rows() : 0) + " sheets");
+  if (o.sheet) require_sheet(a, *o.sheet);  // before any work
   const size_t nc = m.num_cells();
   std::vector<int64_t> conn, offsets, faces, faceoffsets, corners, loop64;
   std::vector<uint8_t> types(nc);

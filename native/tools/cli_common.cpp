@@ -48,6 +48,24 @@ CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::st
   return cmd;
 }
 
+CLI::App* add_export_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,
+                             std::string& out, const std::string& out_help) {
+  CLI::App* cmd = app.add_subcommand(name, help);
+  add_input(*cmd, input);
+  cmd->add_option("-o", out, out_help)->required();
+  return cmd;
+}
+
+void add_sheet_option(CLI::App& cmd, std::optional<int32_t>& sheet, const std::string& help) {
+  cmd.add_option("--sheet", sheet, help)->check(at_least(0));
+}
+
+void check_sheet_option(const Analysis& a, const std::optional<int32_t>& sheet) {
+  const size_t n = a.sheet_stage ? a.sheet_stage->sheets.size() : 0;
+  if (sheet && static_cast<size_t>(*sheet) >= n)
+    throw std::invalid_argument("--sheet " + std::to_string(*sheet) + ": the mesh has " + std::to_string(n) + " sheets");
+}
+
 void add_level(CLI::App& cmd, std::string& level, const std::string& help) {
   cmd.add_option("--level", level, help)
       ->check(parsed_by([](const std::string& s) { level_from_name(s); }, "complex|mesh"))

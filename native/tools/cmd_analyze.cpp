@@ -37,9 +37,10 @@ void run_analyze(const AnalyzeArgs& args) {
     std::printf("%s\n%s\n", stats_csv_header().c_str(), stats_csv_row(file, s).c_str());
   } else {
     std::printf("%s", stats_table(file, s).c_str());
-    for (const Subsheets& x : a.subsheets)
-      std::printf("  self-intersecting sheet %d (%d blocks): %zu subsheets\n", x.sheet,
-                  a.sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size());
+    if (a.sheet_stage && a.sheet_stage->subsheets)
+      for (const Subsheets& x : *a.sheet_stage->subsheets)
+        std::printf("  self-intersecting sheet %d (%d blocks): %zu subsheets\n", x.sheet,
+                    a.sheet_stage->sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size());
   }
 }
 

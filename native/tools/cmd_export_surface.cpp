@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "commands.hpp"
@@ -17,7 +18,7 @@ struct ExportSurfaceArgs {
   InputArgs input;
   std::string out;
   std::string what = "boundary";
-  int32_t sheet = -1;
+  std::optional<int32_t> sheet;
 };
 
 FaceSelection selection(const Mesh& mesh, const ExportSurfaceArgs& args) {
@@ -29,10 +30,8 @@ FaceSelection selection(const Mesh& mesh, const ExportSurfaceArgs& args) {
   const Analysis a = analyze(mesh, opt);
   if (args.what == "patches") return patch_selection(mesh, a.complex);
   if (args.what == "components") return component_selection(mesh, a.complex);
-  if (args.sheet >= static_cast<int32_t>(a.sheets.size()))
-    throw std::invalid_argument("--sheet " + std::to_string(args.sheet) + ": the mesh has " +
-                                std::to_string(a.sheets.size()) + " sheets");
-  return sheet_selection(mesh, a.sheets, args.sheet);
+  check_sheet_option(a, args.sheet);
+  return sheet_selection(mesh, a.sheet_stage->sheets, args.sheet);
 }
 
 void run_export_surface(const ExportSurfaceArgs& args) {
@@ -51,14 +50,12 @@ void run_export_surface(const ExportSurfaceArgs& args) {
 
 void add_export_surface(CLI::App& app) {
   auto args = std::make_shared<ExportSurfaceArgs>();
-  CLI::App* cmd = app.add_subcommand("export-surface", "surfaces with per-face ids, through OpenMesh");
-  add_input(*cmd, args->input);
-  cmd->add_option("-o", args->out, "output surface, .obj, .ply or .off")->required();
+  CLI::App* cmd = add_export_command(app, "export-surface", "surfaces with per-face ids, through OpenMesh", args->input,
+                                     args->out, "output surface, .obj, .ply or .off");
   cmd->add_option("--what", args->what, "which faces")
       ->check(CLI::IsMember({"boundary", "patches", "components", "sheets"}))
       ->capture_default_str();
-  cmd->add_option("--sheet", args->sheet, "with --what sheets: that sheet only (default: all)")
-      ->check(at_least(0));
+  add_sheet_option(*cmd, args->sheet, "with --what sheets: that sheet only (default: all)");
   cmd->callback([args] { run_export_surface(*args); });
 }
 

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands.hpp"
@@ -16,7 +17,7 @@ namespace {
 struct ExportVtuArgs {
   InputArgs input;
   std::string out;
-  int sheet = -1;
+  std::optional<int32_t> sheet;
   std::string level = "complex";
   bool ascii = false;
 };
@@ -30,6 +31,7 @@ void run_export_vtu(const ExportVtuArgs& args) {
   opt.sheet_level = level_from_name(args.level);
   const Mesh mesh = load_for_cli(args.input);
   const Analysis a = analyze(mesh, opt);
+  check_sheet_option(a, args.sheet);
   export_vtu(mesh, a, args.out, vo);
   std::printf("wrote %s: %zu cells, %zu components; %s: %zu singularity-graph edges\n", args.out.c_str(),
               mesh.num_cells(), a.complex.component_cells.rows(), vtu_graph_path(args.out).c_str(),
@@ -40,10 +42,9 @@ void run_export_vtu(const ExportVtuArgs& args) {
 
 void add_export_vtu(CLI::App& app) {
   auto args = std::make_shared<ExportVtuArgs>();
-  CLI::App* cmd = app.add_subcommand("export-vtu", "cells with block/sheet ids for ParaView (+ OUT_graph.vtu)");
-  add_input(*cmd, args->input);
-  cmd->add_option("-o", args->out, "the .vtu file to write")->required();
-  cmd->add_option("--sheet", args->sheet, "also write in_sheet and the subsheets of this sheet")->check(at_least(0));
+  CLI::App* cmd = add_export_command(app, "export-vtu", "cells with block/sheet ids for ParaView (+ OUT_graph.vtu)",
+                                     args->input, args->out, "the .vtu file to write");
+  add_sheet_option(*cmd, args->sheet, "also write in_sheet and the subsheets of this sheet");
   add_level(*cmd, args->level, "level of the sheets");
   cmd->add_flag("--ascii", args->ascii, "text arrays instead of zlib-compressed base64");
   cmd->callback([args] { run_export_vtu(*args); });

@@ -152,6 +152,20 @@ void add_generate(CLI::App& app) {
       ->capture_default_str();
   ring->add_flag("--prisms", args->prisms, "columns of prisms: through the middle of an odd section, else off the middle");
   ring->add_flag("--spread", args->spread, "the prism columns off the middle even in an odd section");
+  auto* pair = add_kind(*cmd, args, "twisted-pair",
+                        "two concentric rings turning a quarter and a half turn, a hex of each split into pyramids: "
+                        "self-intersecting and self-parallel sheets",
+                        [](const GenerateArgs& a) { return generate_twisted_pair(a.section, a.sections); });
+  pair->add_option("--section", args->section, "cells across the square section (even)")
+      ->required()
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            int x = 0;
+            return CLI::detail::lexical_cast(v, x) && x >= 2 && x % 2 == 0 ? std::string()
+                                                                        : "must be an even number of at least 2, got " + v;
+          },
+          "EVEN"));
+  pair->add_option("--sections", args->sections, "layers round each ring")->required()->check(at_least(3));
 }
 
 }  // namespace hbc::cli

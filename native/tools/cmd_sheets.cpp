@@ -29,8 +29,8 @@ void add_class(Json& j, const SheetClass& k) {
   j["self_intersecting_blocks"] = k.self_intersecting_blocks.size();
 }
 
-Json sheets_json(const std::string& file, Level level, const Analysis& a) {
-  const Sheets& sh = a.sheets;
+Json sheets_json(const std::string& file, Level level, const SheetStage& st) {
+  const Sheets& sh = st.sheets;
   Json sheets = Json::object();
   for (size_t s = 0; s < sh.size(); ++s) {
     Json j = {{"blocks", sh.sheet_blocks.count(s)},
@@ -39,7 +39,7 @@ Json sheets_json(const std::string& file, Level level, const Analysis& a) {
               {"edges", sh.sheet_edges.count(s)},
               {"non_hex_cells", sh.sheet_non_hex_cells.count(s)}};
     add_class(j, sh.classes[s]);
-    if (const Subsheets* x = a.subsheets_of(static_cast<int32_t>(s))) {
+    if (const Subsheets* x = st.subsheets_of(static_cast<int32_t>(s))) {
       Json& subs = j["subsheets"] = Json::object();
       for (size_t i = 0; i < x->size(); ++i) {
         Json& sub = subs[std::to_string(i)] = {{"blocks", x->blocks.count(i)}, {"cells", x->cells.count(i)}, {"curves", x->curves.count(i)}};
@@ -50,12 +50,12 @@ Json sheets_json(const std::string& file, Level level, const Analysis& a) {
   }
   return {{"file", file},
           {"level", level_name(level)},
-          {"largest_self_intersecting", a.largest_self_intersecting},
+          {"largest_self_intersecting", st.largest_self_intersecting.value_or(-1)},
           {"sheets", std::move(sheets)}};
 }
 
-void print_sheets_table(const std::string& file, const Analysis& a) {
-  const Sheets& sh = a.sheets;
+void print_sheets_table(const std::string& file, const SheetStage& st) {
+  const Sheets& sh = st.sheets;
   std::printf("%s: %zu sheets (%zu perfect, %zu type 1, %zu type 2, %zu type 3)\n", file.c_str(), sh.size(),
               sh.count(SheetType::Perfect), sh.count(SheetType::Type1), sh.count(SheetType::Type2),
               sh.count(SheetType::Type3));
@@ -66,7 +66,7 @@ void print_sheets_table(const std::string& file, const Analysis& a) {
     std::printf("%5zu %-8s   %d%d%d %5s %7d %7d %7d %9d %9zu\n", s, sheet_type_name(k.type), k.type1, k.type2, k.type3,
                 "", sh.sheet_blocks.count(s), sh.sheet_cells.count(s), sh.sheet_curves.count(s),
                 sh.sheet_non_hex_cells.count(s), k.unmatched_vertices.size());
-    if (const Subsheets* x = a.subsheets_of(static_cast<int32_t>(s)))
+    if (const Subsheets* x = st.subsheets_of(static_cast<int32_t>(s)))
       for (size_t i = 0; i < x->size(); ++i)
         std::printf("      subsheet %-3zu %-8s blocks %d cells %d curves %d\n", i, sheet_type_name(x->classes[i].type),
                     x->blocks.count(i), x->cells.count(i), x->curves.count(i));
@@ -79,8 +79,9 @@ void run_sheets(const SheetsArgs& args) {
   opt.sheet_level = level_from_name(args.level);
   const Mesh m = load_for_cli(args.input);
   const Analysis a = analyze(m, opt);
-  if (args.json) write_output(json_text(sheets_json(args.input.file, opt.sheet_level, a)), std::nullopt);
-  else print_sheets_table(args.input.file, a);
+  const SheetStage& st = *a.sheet_stage;  // opt.sheets is on
+  if (args.json) write_output(json_text(sheets_json(args.input.file, opt.sheet_level, st)), std::nullopt);
+  else print_sheets_table(args.input.file, st);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ struct WireframeArgs {
   InputArgs input;
   std::string level = "complex";
   double rho = WireframeOptions{}.rho;
-  int32_t sheet = -1;
+  std::optional<int32_t> sheet;
   bool all = false, json = false, obj = false;
   std::optional<std::string> out;
 };
@@ -67,7 +67,7 @@ std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeO
   for (size_t i = 0; i < w.size(); ++i) edges.push_back(edge_json(m, w, i));
   const Json j = {{"file", args.input.file},
                   {"level", args.level},
-                  {"sheet", args.sheet},
+                  {"sheet", args.sheet.value_or(-1)},
                   {"rho", opt.rho},
                   {"opacity_floor", opt.opacity_floor},
                   {"palette_size", opt.palette_size},
@@ -120,13 +120,11 @@ void run_wireframe(const WireframeArgs& args) {
   const Mesh m = load_for_cli(args.input);
   // --sheet picks a complex-level sheet at either level (the paper's sheets).
   AnalysisOptions analysis_opt;
-  analysis_opt.sheets = args.sheet >= 0;
+  analysis_opt.sheets = args.sheet.has_value();
   analysis_opt.subsheets = false;
   analysis_opt.wireframe = false;
   const Analysis a = analyze(m, analysis_opt);
-  if (args.sheet >= 0 && static_cast<size_t>(args.sheet) >= a.sheets.size())
-    throw std::invalid_argument("--sheet " + std::to_string(args.sheet) + ": the mesh has " +
-                                std::to_string(a.sheets.size()) + " sheets");
+  check_sheet_option(a, args.sheet);
   WireframeOptions opt;
   opt.rho = args.rho;
   const auto t1 = std::chrono::steady_clock::now();
@@ -147,8 +145,7 @@ void add_wireframe(CLI::App& app) {
   cmd->add_option("--rho", args->rho, "partial-parallel threshold of the colour classes")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd->add_option("--sheet", args->sheet, "restrict to sheet N (complex-level sheets) and its adjacent non-hex cells")
-      ->check(at_least(0));
+  add_sheet_option(*cmd, args->sheet, "restrict to sheet N (complex-level sheets) and its adjacent non-hex cells");
   cmd->add_flag("--obj", args->obj, "OBJ line objects, one per colour class")->excludes("--json");
   cmd->add_flag("--all", args->all, "OBJ: also write the hidden (non-important) edges");
   cmd->add_option("-o", args->out, "output file (default: stdout)");

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "hbc/analysis.hpp"
 #include "hbc/io.hpp"
 #include "hbc/level.hpp"
 
@@ -46,6 +47,15 @@ CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::st
 void add_format(CLI::App& cmd, std::string& format);
 // --level complex|mesh, parsed by level_from_name (the binding's parser too).
 void add_level(CLI::App& cmd, std::string& level, const std::string& help);
+
+// A subcommand that reads one mesh (FILE, --format) and writes -o OUT (required; help `out_help`).
+CLI::App* add_export_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,
+                             std::string& out, const std::string& out_help);
+// --sheet N (N >= 0; absent: none), help `help`.
+void add_sheet_option(CLI::App& cmd, std::optional<int32_t>& sheet, const std::string& help);
+// Throws std::invalid_argument ("--sheet N: the mesh has K sheets") unless the analysis' sheet
+// stage holds `sheet` (when one is given).
+void check_sheet_option(const Analysis& analysis, const std::optional<int32_t>& sheet);
 
 // An integer option's range [min, INT32_MAX] (CLI11's NonNegativeNumber prints DBL_MAX).
 CLI::Range at_least(int min);

@@ -148,10 +148,10 @@ def test_real_mesh_highlights_and_subsheets(shared_data_dir):
     for i in (int(np.flatnonzero(types == t)[0]) for t in (1, 2, 3)):
         unmatched, shared, edges, si = s.sheet_highlights(i, 0.1)
         # One octahedron (8 triangles) per listed vertex, one polyline per self-parallel curve.
-        assert unmatched.num_faces == 8 * len(row("unmatched", i))
-        assert shared.num_faces == 8 * len(row("shared", i))
-        assert edges.num_polylines == len(row("self_parallel", i))
-        comps = row("self_intersecting", i)
+        assert unmatched.num_faces == 8 * len(row("unmatched_vertices", i))
+        assert shared.num_faces == 8 * len(row("shared_vertices", i))
+        assert edges.num_polylines == len(row("self_parallel_curves", i))
+        comps = row("self_intersecting_components", i)
         assert set(si.face_owner.tolist()) == set(comps.tolist())
         assert (si.num_faces > 0) == (types[i] == 3)
     (sheet,) = [int(x) for x in a.self_intersecting_sheets]

@@ -15,7 +15,8 @@ using test::run_cli;
 
 TEST(CliOptions, EveryCommandHasHelp) {
   for (const char* cmd : {"info", "analyze", "sheets", "table", "generate", "generate grid", "generate split",
-                          "generate sector", "generate cylinder", "export-surface", "wireframe"}) {
+                          "generate sector", "generate cylinder", "generate twisted-ring", "generate twisted-pair",
+                          "export-surface", "wireframe"}) {
     const test::CliRun r = run_cli(std::string(cmd) + " --help");
     EXPECT_EQ(r.status, 0) << cmd << ": " << r.err;
     // CLI11's help starts with the command's description and names the command in its usage line.
@@ -68,6 +69,12 @@ TEST_F(CliBadValues, RangesAndChoices) {
   expect_rejected("export-surface '" + mesh_ + "' -o '" + (dir_ / "o.obj").string() + "' --what sheets --sheet -3", "--sheet");
   expect_rejected("sheets '" + mesh_ + "' --format stl", "--format");
   expect_rejected("table '" + mesh_ + "' -j 0", "-j");
+  // The twisted pair's middle line needs an even section.
+  const std::string out = " -o '" + (dir_ / "p.ovm").string() + "'";
+  expect_rejected("generate twisted-pair --section 5 --sections 12" + out, "--section");
+  expect_rejected("generate twisted-pair --section 0 --sections 12" + out, "--section");
+  expect_rejected("generate twisted-pair --section 4 --sections 2" + out, "--sections");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "p.ovm"));
   // The edges are right at the ends of the range.
   EXPECT_EQ(run_cli("wireframe '" + mesh_ + "' --rho 0").status, 0);
   EXPECT_EQ(run_cli("wireframe '" + mesh_ + "' --rho 1").status, 0);

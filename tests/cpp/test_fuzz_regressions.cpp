@@ -158,8 +158,8 @@ TEST(ResourceBounds, TetFanAnalyze) {
   const auto t0 = std::chrono::steady_clock::now();
   const Analysis a = analyze(m);
   const double seconds = seconds_since(t0);
-  EXPECT_EQ(a.wireframe.vsg_edges, k + 1);  // the axis and the k spokes at its ends
-  EXPECT_EQ(a.wireframe.style.color.size(), a.wireframe.size());
+  EXPECT_EQ(a.wireframe_stage->wireframe.vsg_edges, k + 1);  // the axis and the k spokes at its ends
+  EXPECT_EQ(a.wireframe_stage->wireframe.style.color.size(), a.wireframe_stage->wireframe.size());
   EXPECT_LT(seconds, 5.0) << "quadratic again? (the pair list took 10 s and 270 MB here)";
 }
 

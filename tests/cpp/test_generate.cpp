@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +15,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
+#include "hbc/region.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
@@ -87,6 +89,20 @@ void expect_no_non_manifold(const Mesh& m) {
   for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok(e)) << m.source << " edge " << e;
 }
 
+// The centre cell (1,1,1) of a 3x3x3 grid split by `kind` (prisms along `axis`): the counts each
+// test derives, the cell types, every cell positive with the grid's volume 27, and no
+// non-manifold vertex or edge.
+Mesh expect_split_centre(SplitKind kind, Counts want, std::map<CellType, size_t> want_types, int axis = 2) {
+  const std::array<int32_t, 3> centre{1, 1, 1};
+  const Mesh m = build_mesh(generate_split(3, 3, 3, kind, {&centre, 1}, axis));
+  expect_counts(m, want);
+  auto t = types(m);
+  for (const auto& [type, n] : want_types) EXPECT_EQ(t[type], n) << cell_type_name(type);
+  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
+  expect_no_non_manifold(m);
+  return m;
+}
+
 
 TEST(Generate, GridCountsAndValences) {
   // 2x3x4: V = 3*4*5 = 60; E = 2*4*5 + 3*3*5 + 3*4*4 = 133; F = 3*3*4 + 2*4*4 + 2*3*5 = 98;
@@ -149,14 +165,8 @@ TEST(Generate, SplitPyramidsKeepsNeighboursHex) {
   // 3x3x3 grid: V 64, E 3*3*4*4 = 144, F 3*4*3*3 = 108, C 27, boundary 54. The centre cell
   // becomes 6 pyramids: +1 vertex (centre), +8 edges (centre to corners), +12 triangles (one per
   // hex edge), +5 cells. Its quads stay, so the 26 other cells stay hexes.
-  const std::array<int32_t, 3> centre{1, 1, 1};
-  const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Pyramids, {&centre, 1}));
-  expect_counts(m, {65, 152, 120, 32, 54});
-  auto t = types(m);
-  EXPECT_EQ(t[CellType::Pyramid], 6u);
-  EXPECT_EQ(t[CellType::Hex], 26u);
-  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
-  expect_no_non_manifold(m);
+  const Mesh m = expect_split_centre(SplitKind::Pyramids, {65, 152, 120, 32, 54},
+                                     {{CellType::Pyramid, 6}, {CellType::Hex, 26}});
   // The 12 hex edges of the split cell now have 4 + 1 cells around them (interior edges).
   size_t five = 0;
   for (size_t e = 0; e < m.num_edges(); ++e) five += !m.edge_boundary[e] && m.edge_valence(e) == 5;
@@ -168,15 +178,8 @@ TEST(Generate, SplitPrismsSplitsTheColumn) {
   // of the column become 2 triangles each (+4 faces), plus 3 diagonal quads (+3 faces); the 4
   // diagonals are new edges (+4). Top and bottom quads are on the boundary: +2 boundary faces.
   for (int axis = 0; axis < 3; ++axis) {
-    const std::array<int32_t, 3> cell{1, 1, 1};
-    const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Prisms, {&cell, 1}, axis));
     SCOPED_TRACE(axis);
-    expect_counts(m, {64, 148, 115, 30, 56});
-    auto t = types(m);
-    EXPECT_EQ(t[CellType::Prism], 6u);
-    EXPECT_EQ(t[CellType::Hex], 24u);
-    EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
-    expect_no_non_manifold(m);
+    expect_split_centre(SplitKind::Prisms, {64, 148, 115, 30, 56}, {{CellType::Prism, 6}, {CellType::Hex, 24}}, axis);
   }
   // Two columns from cells of one column give the same mesh as one.
   const std::array<int32_t, 3> two[2] = {{0, 2, 0}, {0, 2, 3}};
@@ -188,17 +191,10 @@ TEST(Generate, SplitTetsMakesNeighboursPolyhedra) {
   // Centre of 3x3x3 into 6 Kuhn tets: each of its 6 quads becomes 2 triangles (+6 faces) and 6
   // triangles lie inside (+6); 6 face diagonals and the body diagonal are new edges (+7); +5
   // cells. The 6 face neighbours see 2 triangles instead of a quad: 7-face polyhedra.
-  const std::array<int32_t, 3> centre{1, 1, 1};
-  const Mesh m = build_mesh(generate_split(3, 3, 3, SplitKind::Tets, {&centre, 1}));
-  expect_counts(m, {64, 151, 120, 32, 54});
-  auto t = types(m);
-  EXPECT_EQ(t[CellType::Tet], 6u);
-  EXPECT_EQ(t[CellType::Polyhedron], 6u);
-  EXPECT_EQ(t[CellType::Hex], 20u);
+  const Mesh m = expect_split_centre(SplitKind::Tets, {64, 151, 120, 32, 54},
+                                     {{CellType::Tet, 6}, {CellType::Polyhedron, 6}, {CellType::Hex, 20}});
   for (size_t c = 0; c < m.num_cells(); ++c)
     if (m.cell_type[c] == CellType::Polyhedron) EXPECT_EQ(m.cell_faces.count(c), 7);
-  EXPECT_NEAR(expect_positive(m), 27.0, 1e-9);
-  expect_no_non_manifold(m);
 
   // Corner cell of 2x2x2 (V 27, E 54, F 36, C 8, boundary 24): same increments, and its 3
   // boundary quads become 6 triangles (+3 boundary faces); 3 neighbours become polyhedra.
@@ -363,6 +359,8 @@ TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   expect_counts(load_mesh(d + "/s.mesh"), counts(build_mesh(generate_sector(5, 2, 2))));
   ASSERT_EQ(run_cli("generate cylinder --radius-cells 3 --layers 2 -o '" + d + "/c.ovm'"), 0);
   EXPECT_EQ(types(load_mesh(d + "/c.ovm")), types(build_mesh(generate_cylinder(3, 2))));
+  ASSERT_EQ(run_cli("generate twisted-pair --section 2 --sections 5 -o '" + d + "/tp.ovm'"), 0);
+  EXPECT_EQ(types(load_mesh(d + "/tp.ovm")), types(build_mesh(generate_twisted_pair(2, 5))));
 
   // Usage errors (a malformed line, or values wrong together): exit 1.
   EXPECT_EQ(run_cli("generate grid --size 2 3 -o '" + d + "/x.mesh'"), 1);
@@ -374,6 +372,7 @@ TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   EXPECT_EQ(run_cli("generate split --size 3 3 3 --split cubes --cells 1,1,1 -o '" + d + "/x.mesh'"), 2);
   EXPECT_EQ(run_cli("generate grid --size 2 0 3 -o '" + d + "/x.mesh'"), 2);
   EXPECT_EQ(run_cli("generate sector --valence 2 --rings 1 --layers 1 -o '" + d + "/x.mesh'"), 2);
+  EXPECT_EQ(run_cli("generate twisted-pair --section 5 --sections 12 -o '" + d + "/x.mesh'"), 2);
   EXPECT_FALSE(std::filesystem::exists(d + "/x.mesh"));
   std::filesystem::remove_all(dir);
 }
@@ -409,21 +408,154 @@ TEST(Generate, TwistedRingSheets) {
   opt.wireframe = false;
   const Mesh flat = build_mesh(generate_twisted_ring(1, 12, 0, false));
   const Analysis a0 = analyze(flat, opt);
-  EXPECT_EQ(a0.sheets.count(SheetType::Type3), 0u);
+  EXPECT_EQ(a0.sheet_stage->sheets.count(SheetType::Type3), 0u);
   const Mesh turned = build_mesh(generate_twisted_ring(1, 12, 1, false));
   const Analysis a1 = analyze(turned, opt);
-  EXPECT_EQ(a1.sheets.count(SheetType::Type3), 1u);
+  EXPECT_EQ(a1.sheet_stage->sheets.count(SheetType::Type3), 1u);
   // The demo's ring, at the complex level: a self-intersecting sheet with subsheets, a type-1
   // sheet (the one through the prism column) and non-hex cells.
   const Mesh demo = build_mesh(generate_twisted_ring(5, 12, 1, true));
   const Analysis d = analyze(demo, {});
-  EXPECT_EQ(d.sheets.count(SheetType::Type3), 1u);
-  EXPECT_EQ(d.sheets.count(SheetType::Type1), 1u);
-  EXPECT_GE(d.largest_self_intersecting, 0);
-  ASSERT_NE(d.subsheets_of(d.largest_self_intersecting), nullptr);
-  EXPECT_GT(d.subsheets_of(d.largest_self_intersecting)->size(), 1u);
+  EXPECT_EQ(d.sheet_stage->sheets.count(SheetType::Type3), 1u);
+  EXPECT_EQ(d.sheet_stage->sheets.count(SheetType::Type1), 1u);
+  ASSERT_TRUE(d.sheet_stage->largest_self_intersecting.has_value());
+  const Subsheets* big = d.sheet_stage->subsheets_of(*d.sheet_stage->largest_self_intersecting);
+  ASSERT_NE(big, nullptr);
+  EXPECT_GT(big->size(), 1u);
   // Prism fans need a middle quad (odd section) or room for fans off the middle (3+ cells).
   EXPECT_THROW(generate_twisted_ring(2, 12, 1, true), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hbc
+
+namespace hbc {
+namespace {
+
+// Distance of a cell's corner centroid from the z axis: which of the twisted pair's rings it is in
+// (section 4: the inner ring round radius 8, the outer round 16, each cell within 2√2, the half
+// diagonal of the section, of its circle).
+double cell_radius(const Mesh& m, size_t c) {
+  double x = 0, y = 0;
+  const std::vector<int32_t> vs = test::cell_verts(m, c);
+  for (int32_t v : vs) x += m.points[3 * static_cast<size_t>(v)], y += m.points[3 * static_cast<size_t>(v) + 1];
+  return std::hypot(x, y) / static_cast<double>(vs.size());
+}
+
+// Section 4, 12 sections. One ring: the 5x5 grid vertices of each of the 12 layer planes = 300,
+// 16 quads and 40 grid edges a plane: 16*12 section faces + 40*12 side faces = 672 faces, edges
+// 40*12 in the planes + 25*12 round the ring = 780, 16*12 = 192 hexes. Splitting one hex into 6
+// pyramids adds its centre (+1 vertex), the 8 edges from it to the corners and 12 triangles (one a
+// hex edge), +5 cells. Its boundary: the 16 outline quads of each layer, 192. Each ring is a solid
+// torus (V - E + F - C = 0); the pair doubles everything.
+TEST(Generate, TwistedPairCounts) {
+  const Mesh m = build_mesh(generate_twisted_pair(4, 12));
+  expect_no_non_manifold(m);
+  EXPECT_EQ(m.num_vertices(), 602u);
+  EXPECT_EQ(m.num_edges(), 1576u);
+  EXPECT_EQ(m.num_faces(), 1368u);
+  EXPECT_EQ(m.num_cells(), 394u);
+  EXPECT_EQ(types(m)[CellType::Hex], 382u);
+  EXPECT_EQ(types(m)[CellType::Pyramid], 12u);
+  size_t boundary = 0;
+  for (uint8_t b : m.face_boundary) boundary += b;
+  EXPECT_EQ(boundary, 384u);
+  EXPECT_EQ(static_cast<int64_t>(m.num_vertices()) - static_cast<int64_t>(m.num_edges()) +
+                static_cast<int64_t>(m.num_faces()) - static_cast<int64_t>(m.num_cells()),
+            0);
+  expect_positive(m);
+  // The rings are apart: the first 197 cells (the outer ring) lie round radius 16, the others
+  // round 8.
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    const double r = cell_radius(m, c);
+    EXPECT_LT(std::abs(r - (c < 197 ? 16.0 : 8.0)), 2.0 * std::sqrt(2.0)) << "cell " << c << " at radius " << r;
+  }
+  EXPECT_THROW(generate_twisted_pair(3, 12), std::invalid_argument);
+  EXPECT_THROW(generate_twisted_pair(0, 12), std::invalid_argument);
+  EXPECT_THROW(generate_twisted_pair(4, 2), std::invalid_argument);
+  test::expect_same_cells(generate_twisted_pair(4, 5), generate_twisted_pair(4, 5));
+}
+
+// Why the pair has the sheets it has (complex level, what hbc sheets and hbc analyze report). In
+// each ring the pyramid cell, at quad (1, 0) of layer 0 of the 4x4 section, makes its faces'
+// planes separation surfaces: the section planes at both ends of layer 0, and the planes along
+// the grid lines u = 1, u = 2, v = 1 of the section, which run round the ring and come back turned.
+//  - Outer ring, a quarter turn: u = 1 comes back as v = 1, then u = 3, v = 3; u = 2 as v = 2. The
+//    section is cut along every grid line: 16 blocks in the rest of the ring, 15 hex ones in layer 0
+//    (31). A column of blocks comes back as a row, which crosses it: the sheets of columns 0 and 3
+//    and rows 0 and 3 (the frame) are one self-intersecting sheet, those of columns 1, 2 and rows 1,
+//    2 another. The pyramid cell's edges along u are curves of column 1, those along v curves of
+//    row 0: both sheets have the pyramids in their regions. A region without them would be the
+//    same in every layer, and its VSG chains would close round the ring with no end to trace a
+//    wireframe from; with them the region differs in layer 0, the valences change at its two
+//    section planes, and every VSG chain ends there: both wireframes are non-empty. The two layers
+//    of blocks (layer 0 and the rest of the ring) are 2 perfect sheets.
+//  - Inner ring, a half turn: u = 1 comes back as u = 3, v = 1 as v = 3, u = 2 as itself. Columns
+//    [0,1] [1,2] [2,3] [3,4], rows [0,1] [1,3] [3,4]: 12 blocks in the rest of the ring and 11 hex
+//    ones in layer 0 (23). Column [1,2] comes back as column [2,3]: its parallel curves meet those
+//    of [2,3] end to end across u = 2, in blocks that share a face and no curve: self-parallel.
+//    Columns [0,1] and [3,4] come back as each other, apart (perfect); row [1,3] as itself and rows
+//    [0,1], [3,4] as each other (perfect); the two layers (perfect).
+TEST(Generate, TwistedPairSheets) {
+  const Mesh m = build_mesh(generate_twisted_pair(4, 12));
+  const Analysis a = analyze(m, {});
+  ASSERT_TRUE(a.sheet_stage);
+  const SheetStage& st = *a.sheet_stage;
+  size_t cubes[2] = {0, 0};  // inner, outer
+  for (size_t k = 0; k < a.complex.num_components(); ++k)
+    if (a.complex.component_kind[k] == ComponentKind::Cube) ++cubes[cell_radius(m, a.complex.component_cells[k][0]) > 12.0];
+  EXPECT_EQ(cubes[1], 31u);
+  EXPECT_EQ(cubes[0], 23u);
+  EXPECT_EQ(a.complex.num_components(), 31u + 23u + 12u);
+  ASSERT_EQ(st.sheets.size(), 10u);
+  EXPECT_EQ(st.sheets.count(SheetType::Perfect), 7u);
+  EXPECT_EQ(st.sheets.count(SheetType::Type1), 0u);
+  EXPECT_EQ(st.sheets.count(SheetType::Type2), 1u);
+  EXPECT_EQ(st.sheets.count(SheetType::Type3), 2u);
+  auto outer = [&](int32_t s) {
+    const auto cells = st.sheets.sheet_cells[static_cast<size_t>(s)];
+    return std::all_of(cells.begin(), cells.end(), [&](int32_t c) { return cell_radius(m, c) > 12.0; });
+  };
+  for (size_t s = 0; s < st.sheets.size(); ++s) {
+    const SheetClass& k = st.sheets.classes[s];
+    SCOPED_TRACE(s);
+    if (k.type == SheetType::Type3) {
+      EXPECT_TRUE(outer(static_cast<int32_t>(s)));
+      const auto nh = st.sheets.sheet_non_hex_cells[s];
+      EXPECT_FALSE(nh.empty());
+      for (int32_t c : nh) EXPECT_EQ(m.cell_type[c], CellType::Pyramid);
+      const VsgWireframe w = region_wireframe(m, a, Level::Complex, {}, static_cast<int32_t>(s));
+      EXPECT_GT(std::count(w.kind.begin(), w.kind.end(), WireKind::Vsg), 0);
+      EXPECT_GT(w.wireframe_edges_simplified(), 0);
+      // The outer ring is built first: its section planes 0 and 1 hold vertices 0-24 and 25-49.
+      for (size_t k = 0; k < w.size(); ++k) {
+        if (w.kind[k] != WireKind::Vsg) continue;
+        const auto p = w.polylines[k];
+        EXPECT_NE(p.front(), p.back()) << "closed VSG chain " << k;
+        EXPECT_LT(p.front(), 50);
+        EXPECT_LT(p.back(), 50);
+      }
+      ASSERT_NE(st.subsheets_of(static_cast<int32_t>(s)), nullptr);
+      EXPECT_GT(st.subsheets_of(static_cast<int32_t>(s))->size(), 1u);
+    } else if (k.type == SheetType::Type2) {
+      EXPECT_FALSE(outer(static_cast<int32_t>(s)));
+      EXPECT_FALSE(k.self_parallel_curves.empty());
+      EXPECT_TRUE(k.self_intersecting_blocks.empty());
+    }
+  }
+}
+
+// The contrast the pair's pyramids make: the twisted ring with a prism column all round has a
+// self-intersecting sheet whose region is the same in every layer: VSG chains, all closed round the
+// ring (no chain end), and an empty wireframe.
+TEST(Generate, TwistedRingWithoutLocalCellsHasNoSheetWireframe) {
+  const Mesh m = build_mesh(generate_twisted_ring(5, 12, 1, true));
+  const Analysis a = analyze(m, {});
+  ASSERT_TRUE(a.sheet_stage && a.sheet_stage->largest_self_intersecting);
+  const VsgWireframe w = region_wireframe(m, a, Level::Complex, {}, a.sheet_stage->largest_self_intersecting);
+  EXPECT_GT(w.vsg_chains, 0);
+  EXPECT_EQ(std::count(w.vert_vsg.begin(), w.vert_vsg.end(), 1), 0);
+  EXPECT_EQ(w.size(), 0u);
 }
 
 }  // namespace

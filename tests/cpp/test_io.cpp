@@ -338,19 +338,14 @@ TEST(IoReaders, OvmAcceptsCommentsCaseAndPropertyBlocks) {
 }
 
 TEST(IoFormats, FromPathAndName) {
-  EXPECT_EQ(format_from_path("a/b/c.ovm"), Format::Ovm);
-  EXPECT_EQ(format_from_path("c.OVMB"), Format::Ovmb);
-  EXPECT_EQ(format_from_path("x.mesh"), Format::Medit);
-  EXPECT_EQ(format_from_path("cube_twist-comp.obj.HYBRID"), Format::Hybrid);
-  EXPECT_EQ(format_from_path("t.hybrid"), Format::Hybrid);
-  EXPECT_EQ(format_from_path("teapot.hedra"), Format::Hedra);
-  EXPECT_THROW(format_from_path("noextension"), InputError);
-  EXPECT_THROW(format_from_path("dir.v2/noextension"), InputError);
-  EXPECT_THROW(format_from_path("mesh.stl"), InputError);
-  EXPECT_THROW(format_from_path("mesh.obj"), InputError);
-  EXPECT_EQ(format_from_path("g.msh"), Format::Msh);
-  EXPECT_EQ(format_from_path("model.VTK"), Format::Vtk);
-  EXPECT_EQ(format_from_path("p.vtu"), Format::Vtu);
+  const std::pair<const char*, Format> by_path[] = {
+      {"a/b/c.ovm", Format::Ovm},   {"c.OVMB", Format::Ovmb},   {"x.mesh", Format::Medit},
+      {"cube_twist-comp.obj.HYBRID", Format::Hybrid},           {"t.hybrid", Format::Hybrid},
+      {"teapot.hedra", Format::Hedra}, {"g.msh", Format::Msh},  {"model.VTK", Format::Vtk},
+      {"p.vtu", Format::Vtu}};
+  for (const auto& [path, f] : by_path) EXPECT_EQ(format_from_path(path), f) << path;
+  for (const char* path : {"noextension", "dir.v2/noextension", "mesh.stl", "mesh.obj"})
+    EXPECT_THROW(format_from_path(path), InputError) << path;
   try {
     format_from_path("model.ply");
     FAIL();
@@ -358,14 +353,11 @@ TEST(IoFormats, FromPathAndName) {
     EXPECT_EQ(e.file(), "model.ply");
     EXPECT_NE(e.detail().find("--format"), std::string::npos);
   }
-  EXPECT_EQ(format_from_name("ovm"), Format::Ovm);
-  EXPECT_EQ(format_from_name("OVMB"), Format::Ovmb);
-  EXPECT_EQ(format_from_name("mesh"), Format::Medit);
-  EXPECT_EQ(format_from_name("Medit"), Format::Medit);
-  EXPECT_EQ(format_from_name("HYBRID"), Format::Hybrid);
-  EXPECT_EQ(format_from_name("hedra"), Format::Hedra);
-  EXPECT_THROW(format_from_name("stl"), std::invalid_argument);
-  EXPECT_THROW(format_from_name(""), std::invalid_argument);
+  const std::pair<const char*, Format> by_name[] = {{"ovm", Format::Ovm},       {"OVMB", Format::Ovmb},
+                                                    {"mesh", Format::Medit},    {"Medit", Format::Medit},
+                                                    {"HYBRID", Format::Hybrid}, {"hedra", Format::Hedra}};
+  for (const auto& [name, f] : by_name) EXPECT_EQ(format_from_name(name), f) << name;
+  for (const char* name : {"stl", ""}) EXPECT_THROW(format_from_name(name), std::invalid_argument) << name;
   for (Format f : {Format::Ovm, Format::Ovmb, Format::Medit, Format::Hybrid, Format::Hedra, Format::Msh, Format::Vtk,
                    Format::Vtu})
     EXPECT_EQ(format_from_name(format_name(f)), f);

@@ -35,32 +35,6 @@ Case random_split(std::mt19937& rng) {
   return {name.str(), generate_split(n, m, k, kind, cells, axis)};
 }
 
-// Stage outputs whose meaning does not depend on numbering, compared between a mesh and its
-// renumbered copy. Counts that depend on a "lowest index" choice are left out (see
-// docs/reliability.md): subsheet counts and the simplified wireframe.
-void expect_same_counts(const Stats& a, const Stats& b) {
-  EXPECT_EQ(a.cells, b.cells);
-  EXPECT_EQ(a.hex_cells, b.hex_cells);
-  EXPECT_EQ(a.singular_edges, b.singular_edges);
-  EXPECT_EQ(a.singularities, b.singularities);
-  EXPECT_EQ(a.pseudo_singular_edges, b.pseudo_singular_edges);
-  EXPECT_EQ(a.non_manifold_edges, b.non_manifold_edges);
-  EXPECT_EQ(a.singular_vertices, b.singular_vertices);
-  EXPECT_EQ(a.components, b.components);
-  EXPECT_EQ(a.hex_components, b.hex_components);
-  EXPECT_EQ(a.patches, b.patches);
-  EXPECT_EQ(a.curves, b.curves);
-  EXPECT_EQ(a.corners, b.corners);
-  EXPECT_EQ(a.self_adjacent_faces, b.self_adjacent_faces);
-  EXPECT_EQ(a.sheets, b.sheets);
-  EXPECT_EQ(a.sheets_perfect, b.sheets_perfect);
-  EXPECT_EQ(a.sheets_type1, b.sheets_type1);
-  EXPECT_EQ(a.sheets_type2, b.sheets_type2);
-  EXPECT_EQ(a.sheets_type3, b.sheets_type3);
-  EXPECT_EQ(a.vsg_edges, b.vsg_edges);
-  EXPECT_EQ(a.wireframe_edges, b.wireframe_edges);
-}
-
 // ve = vertex_edges(m).
 bool is_mesh_edge(const Mesh& m, const Csr<int32_t>& ve, int32_t a, int32_t b) {
   for (int32_t e : ve[static_cast<size_t>(a)])
@@ -129,9 +103,9 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
 
   // Sheets: a perfect sheet shares no curve end and leaves no vertex unmatched; no subsheet is
   // self-intersecting.
-  ASSERT_TRUE(a.has_sheets);
-  for (size_t s = 0; s < a.sheets.size(); ++s) {
-    const SheetClass& k = a.sheets.classes[s];
+  ASSERT_TRUE(a.sheet_stage.has_value());
+  for (size_t s = 0; s < a.sheet_stage->sheets.size(); ++s) {
+    const SheetClass& k = a.sheet_stage->sheets.classes[s];
     if (k.type == SheetType::Perfect) {
       EXPECT_TRUE(k.shared_vertices.empty()) << "perfect sheet " << s;
       EXPECT_TRUE(k.unmatched_vertices.empty()) << "perfect sheet " << s;
@@ -139,13 +113,13 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
       EXPECT_FALSE(k.shared_vertices.empty()) << "imperfect sheet " << s;
     }
   }
-  for (const Subsheets& sub : a.subsheets)
+  for (const Subsheets& sub : *a.sheet_stage->subsheets)
     for (size_t i = 0; i < sub.size(); ++i)
       EXPECT_NE(sub.classes[i].type, SheetType::Type3) << "subsheet " << i << " of sheet " << sub.sheet;
 
   // Wireframe: polylines follow mesh edges, opacities in [floor, 1].
-  ASSERT_TRUE(a.has_wireframe);
-  const VsgWireframe& w = a.wireframe;
+  ASSERT_TRUE(a.wireframe_stage.has_value());
+  const VsgWireframe& w = a.wireframe_stage->wireframe;
   const Csr<int32_t> ve = vertex_edges(m);
   for (size_t i = 0; i < w.size(); ++i) {
     const auto p = w.polylines[i];
@@ -163,7 +137,7 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
 
 int64_t unmatched_total(const Analysis& a) {
   int64_t n = 0;
-  for (const SheetClass& k : a.sheets.classes) n += static_cast<int64_t>(k.unmatched_vertices.size());
+  for (const SheetClass& k : a.sheet_stage->sheets.classes) n += static_cast<int64_t>(k.unmatched_vertices.size());
   return n;
 }
 
@@ -183,21 +157,9 @@ bool check_case(const Case& cs, std::mt19937& rng, const AnalysisOptions& opt) {
     SCOPED_TRACE("renumbered");
     expect_invariants(r, b, opt);
   }
-  expect_same_counts(compute_stats(m, a), compute_stats(r, b));
+  test::expect_same_counts(compute_stats(m, a), compute_stats(r, b));
   EXPECT_EQ(unmatched_total(a), unmatched_total(b)) << "a maximum matching has one size";
-
-  // The same component partition: c and d together in m iff cperm[c] and cperm[d] together in r.
-  const size_t ncomp = a.complex.num_components();
-  if (ncomp == b.complex.num_components()) {
-    std::vector<int32_t> fwd(ncomp, -1), back(ncomp, -1);
-    for (size_t c = 0; c < m.num_cells(); ++c) {
-      const int32_t ka = a.complex.cell_component[c], kb = b.complex.cell_component[cperm[c]];
-      if (fwd[ka] < 0 && back[kb] < 0) fwd[ka] = kb, back[kb] = ka;
-      EXPECT_EQ(fwd[ka], kb) << "cell " << c;
-      EXPECT_EQ(back[kb], ka) << "cell " << c;
-      if (fwd[ka] != kb || back[kb] != ka) break;
-    }
-  }
+  test::expect_same_partition(a.complex, b.complex, cperm);
   // The same sheets: each sheet's cells, mapped through cperm, are the cells of one sheet of r.
   auto sheet_sets = [](const Sheets& sh, const std::vector<int32_t>* perm) {
     std::vector<std::vector<int32_t>> sets;
@@ -210,7 +172,7 @@ bool check_case(const Case& cs, std::mt19937& rng, const AnalysisOptions& opt) {
     std::sort(sets.begin(), sets.end());
     return sets;
   };
-  EXPECT_TRUE(sheet_sets(a.sheets, &cperm) == sheet_sets(b.sheets, nullptr)) << "sheets differ";
+  EXPECT_TRUE(sheet_sets(a.sheet_stage->sheets, &cperm) == sheet_sets(b.sheet_stage->sheets, nullptr)) << "sheets differ";
   return !::testing::Test::HasFailure();
 }
 

@@ -43,12 +43,10 @@ std::set<int32_t> owners(const BlockSoup& s) { return {s.face_owner.begin(), s.f
 // directed pair appears once (a consistently oriented closed surface uses each edge once per way).
 void expect_closed_oriented(const BlockSoup& s, int32_t owner) {
   std::map<std::pair<int32_t, int32_t>, int> directed;
-  int32_t at = 0;
   for (size_t f = 0; f < s.num_faces(); ++f) {
-    const int32_t n = s.face_sizes[f];
+    const auto loop = s.face_vertices[f];
     if (s.face_owner[f] == owner)
-      for (int32_t i = 0; i < n; ++i) ++directed[{s.face_vertices[at + i], s.face_vertices[at + (i + 1) % n]}];
-    at += n;
+      for (size_t i = 0; i < loop.size(); ++i) ++directed[{loop[i], loop[(i + 1) % loop.size()]}];
   }
   ASSERT_FALSE(directed.empty());
   for (const auto& [e, count] : directed) {
@@ -62,7 +60,7 @@ TEST(RenderGeometry, GridCellsComponentsBoundary) {
   const BlockSoup cells = block_soup(g.mesh, g.analysis, SoupKind::Cells);
   EXPECT_EQ(cells.num_faces(), 48u);  // 8 cells × 6 quads
   EXPECT_EQ(cells.num_points(), 64u);  // 8 corners each, not shared between cells
-  EXPECT_EQ(cells.face_vertices.size(), 192u);
+  EXPECT_EQ(cells.face_vertices.items.size(), 192u);
   EXPECT_EQ(owners(cells).size(), 8u);
   for (int32_t c = 0; c < 8; ++c) expect_closed_oriented(cells, c);
 
@@ -89,27 +87,27 @@ TEST(RenderGeometry, ShrinkTowardOwnerCentroid) {
   const Analysed g = grid2();
   // The component's vertex centroid is the grid centre (1,1,1); halfway in, corner (0,0,0) lands at
   // (0.5,0.5,0.5) and (2,2,2) at (1.5,1.5,1.5).
-  const BlockSoup s = block_soup(g.mesh, g.analysis, SoupKind::Components, -1, 0.5);
+  const BlockSoup s = block_soup(g.mesh, g.analysis, SoupKind::Components, std::nullopt, 0.5);
   for (size_t p = 0; p < s.num_points(); ++p)
     for (int d = 0; d < 3; ++d) {
       const double x = g.mesh.points[3 * static_cast<size_t>(s.point_vertex[p]) + d];
       EXPECT_FLOAT_EQ(s.positions[3 * p + d], static_cast<float>(1.0 + 0.5 * (x - 1.0)));
     }
   // Cells shrink toward their own centres: cell 0 spans [0,1]^3.
-  const BlockSoup c = block_soup(g.mesh, g.analysis, SoupKind::Cells, -1, 0.5);
+  const BlockSoup c = block_soup(g.mesh, g.analysis, SoupKind::Cells, std::nullopt, 0.5);
   for (size_t p = 0; p < 8; ++p)
     for (int d = 0; d < 3; ++d) {
       const float v = c.positions[3 * p + d];
       EXPECT_TRUE(v == 0.25f || v == 0.75f) << v;
     }
-  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Cells, -1, 1.0), std::invalid_argument);
-  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Cells, -1, -0.5), std::invalid_argument);
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Cells, std::nullopt, 1.0), std::invalid_argument);
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Cells, std::nullopt, -0.5), std::invalid_argument);
 }
 
 TEST(RenderGeometry, GridSheets) {
   // Complex level: the single cube component carries 3 sheets, each holding all 8 cells.
   const Analysed g = grid2();
-  ASSERT_EQ(g.analysis.sheets.size(), 3u);
+  ASSERT_EQ(g.analysis.sheet_stage->sheets.size(), 3u);
   const BlockSoup sheets = block_soup(g.mesh, g.analysis, SoupKind::Sheets);
   EXPECT_EQ(sheets.num_faces(), 72u);  // 3 × the 24 boundary quads
   EXPECT_EQ(sheets.num_points(), 78u);
@@ -119,11 +117,13 @@ TEST(RenderGeometry, GridSheets) {
   EXPECT_EQ(owners(one), std::set<int32_t>{0});  // component 0
   EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Sheet, 3), std::invalid_argument);
   EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Subsheets, 0), std::invalid_argument);
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Sheet), std::invalid_argument);  // no sheet given
+  EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Sheet, -1), std::invalid_argument);
 
   // Mesh level: 6 one-cell-thick slabs of 2×2×1 cells; each slab's boundary has 8 + 8 quads and
   // 18 vertices, and within the one component it stays one block.
   const Analysed fine = grid2(Level::Mesh);
-  ASSERT_EQ(fine.analysis.sheets.size(), 6u);
+  ASSERT_EQ(fine.analysis.sheet_stage->sheets.size(), 6u);
   const BlockSoup slabs = block_soup(fine.mesh, fine.analysis, SoupKind::Sheets);
   EXPECT_EQ(slabs.num_faces(), 96u);
   EXPECT_EQ(slabs.num_points(), 108u);
@@ -147,7 +147,7 @@ TEST(RenderGeometry, SplitGrid) {
   EXPECT_EQ(owners(nonhex).size(), 6u);
   for (int32_t o : owners(nonhex)) expect_closed_oriented(nonhex, o);
   int triangles = 0;
-  for (int32_t n : nonhex.face_sizes) triangles += n == 3;
+  for (size_t f = 0; f < nonhex.num_faces(); ++f) triangles += nonhex.face_vertices.count(f) == 3;
   EXPECT_EQ(triangles, 24);
 
   const BlockSoup comps = block_soup(g.mesh, g.analysis, SoupKind::Components);
@@ -163,9 +163,9 @@ TEST(RenderGeometry, SplitGrid) {
   // The sheets through the centre are type 1 (their shared corners come from the pyramids) and
   // have those pyramids as adjacent non-hex cells.
   size_t with_pyramids = 0;
-  for (size_t s = 0; s < g.analysis.sheets.size(); ++s) {
+  for (size_t s = 0; s < g.analysis.sheet_stage->sheets.size(); ++s) {
     const BlockSoup nh = block_soup(g.mesh, g.analysis, SoupKind::SheetNonHex, static_cast<int32_t>(s));
-    EXPECT_EQ(nh.num_faces(), 5 * g.analysis.sheets.sheet_non_hex_cells.count(s));
+    EXPECT_EQ(nh.num_faces(), 5 * g.analysis.sheet_stage->sheets.sheet_non_hex_cells.count(s));
     with_pyramids += nh.num_faces() > 0;
   }
   EXPECT_GT(with_pyramids, 0u);
@@ -206,7 +206,7 @@ TEST(RenderGeometry, KeptSurface) {
   for (size_t c = 0; c < m.num_cells(); ++c) kept[c] = m.is_hex(c) ? 0 : 1;
   const BlockSoup pyr = kept_surface_soup(m, kept);
   EXPECT_EQ(pyr.num_faces(), 6u);
-  for (int32_t n : pyr.face_sizes) EXPECT_EQ(n, 4);
+  for (size_t f = 0; f < pyr.num_faces(); ++f) EXPECT_EQ(pyr.face_vertices.count(f), 4);
   std::fill(kept.begin(), kept.end(), 0);
   EXPECT_EQ(kept_surface_soup(m, kept).num_faces(), 0u);
   kept[0] = 1;
@@ -232,19 +232,21 @@ TEST(RenderGeometry, Polylines) {
 
 TEST(RenderGeometry, RegionsAndClasses) {
   const Analysed g = grid2();
-  EXPECT_EQ(region_cells(g.mesh, g.analysis, -1).size(), 8u);
+  EXPECT_EQ(region_cells(g.mesh, g.analysis, std::nullopt).size(), 8u);
   EXPECT_EQ(region_cells(g.mesh, g.analysis, 0).size(), 8u);
   EXPECT_THROW(region_cells(g.mesh, g.analysis, 0, 0), std::invalid_argument);  // not type 3
-  const VsgWireframe whole = region_wireframe(g.mesh, g.analysis, Level::Complex, {}, -1);
-  EXPECT_EQ(whole.wireframe_edges(), g.analysis.wireframe.wireframe_edges());
-  const ClassArrays k = flatten_classes(g.analysis.domain, g.analysis.sheets.classes);
+  EXPECT_THROW(region_cells(g.mesh, g.analysis, -1), std::invalid_argument);    // an id, not "none"
+  EXPECT_THROW(region_cells(g.mesh, g.analysis, std::nullopt, 0), std::invalid_argument);  // no sheet
+  const VsgWireframe whole = region_wireframe(g.mesh, g.analysis, Level::Complex, {}, std::nullopt);
+  EXPECT_EQ(whole.wireframe_edges(), g.analysis.wireframe_stage->wireframe.wireframe_edges());
+  const ClassArrays k = flatten_classes(g.analysis.sheet_stage->domain, g.analysis.sheet_stage->sheets.classes);
   EXPECT_EQ(k.type, std::vector<uint8_t>(3, 0));  // a grid's sheets are perfect
   EXPECT_EQ(k.flags.size(), 9u);
-  EXPECT_EQ(k.unmatched.rows(), 3u);
-  const Csr<int32_t> comps = blocks_as_components(g.analysis.domain, g.analysis.sheets.sheet_blocks);
+  EXPECT_EQ(k.unmatched_vertices.rows(), 3u);
+  const Csr<int32_t> comps = blocks_as_components(g.analysis.sheet_stage->domain, g.analysis.sheet_stage->sheets.sheet_blocks);
   EXPECT_EQ(comps.items, std::vector<int32_t>(3, 0));
   const Analysed fine = grid2(Level::Mesh);
-  const Csr<int32_t> fine_comps = blocks_as_components(fine.analysis.domain, fine.analysis.sheets.sheet_blocks);
+  const Csr<int32_t> fine_comps = blocks_as_components(fine.analysis.sheet_stage->domain, fine.analysis.sheet_stage->sheets.sheet_blocks);
   EXPECT_EQ(fine_comps.items, std::vector<int32_t>(6, 0));  // 4 cells per slab, one component
 }
 

@@ -9,6 +9,7 @@
 // cell (adjacent hex cells share a face and so its edges), split into face-connected groups of
 // hex cells. Curves are written as vertex pairs, cells by their input index.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -105,9 +106,9 @@ SheetView view(const Mesh& m, const SheetDomain& d, std::span<const int32_t> cur
 
 std::vector<SheetView> views(const Mesh& m, const Analysis& a, const Maps& mp = {}) {
   std::vector<SheetView> out;
-  for (size_t s = 0; s < a.sheets.size(); ++s)
-    out.push_back(view(m, a.domain, a.sheets.sheet_curves[s], a.sheets.sheet_cells[s],
-                       a.sheets.sheet_non_hex_cells[s], a.sheets.classes[s], mp));
+  for (size_t s = 0; s < a.sheet_stage->sheets.size(); ++s)
+    out.push_back(view(m, a.sheet_stage->domain, a.sheet_stage->sheets.sheet_curves[s], a.sheet_stage->sheets.sheet_cells[s],
+                       a.sheet_stage->sheets.sheet_non_hex_cells[s], a.sheet_stage->sheets.classes[s], mp));
   return out;
 }
 
@@ -117,6 +118,14 @@ Analysis run(const Mesh& m, Level level) {
   o.wireframe = false;
   return analyze(m, o);
 }
+
+// How many sheets of each type the analysis found: {perfect, type 1, type 2, type 3}.
+std::array<size_t, 4> type_counts(const Analysis& a) {
+  const Sheets& sh = a.sheet_stage.value().sheets;
+  return {sh.count(SheetType::Perfect), sh.count(SheetType::Type1), sh.count(SheetType::Type2),
+          sh.count(SheetType::Type3)};
+}
+using Counts4 = std::array<size_t, 4>;
 
 std::set<std::set<Edge>> single_edges(const std::vector<Edge>& edges) {
   std::set<std::set<Edge>> out;
@@ -146,14 +155,14 @@ void expect_same_after_renumbering(const Mesh& m, Level level, uint32_t seed) {
   // Subsheets: the decomposition starts from the lowest curve id, so only what SPEC §3 requires
   // of any decomposition is compared: no subsheet is type 3 and every curve of the sheet lands in
   // exactly one subsheet.
-  EXPECT_EQ(a.subsheets.size(), b.subsheets.size());
-  for (const Subsheets& sub : b.subsheets) {
+  EXPECT_EQ(a.sheet_stage->subsheets->size(), b.sheet_stage->subsheets->size());
+  for (const Subsheets& sub : *b.sheet_stage->subsheets) {
     std::multiset<int32_t> seen;
     for (size_t i = 0; i < sub.size(); ++i) {
       EXPECT_NE(sub.classes[i].type, SheetType::Type3);
       for (int32_t c : sub.curves[i]) seen.insert(c);
     }
-    auto all = b.sheets.sheet_curves[sub.sheet];
+    auto all = b.sheet_stage->sheets.sheet_curves[sub.sheet];
     EXPECT_EQ(seen, std::multiset<int32_t>(all.begin(), all.end()));
   }
 }
@@ -258,11 +267,8 @@ void check_prism_ring(Level level) {
 
   std::vector<SheetView> got = views(m, a);
   ASSERT_EQ(got.size(), 4u);
-  EXPECT_EQ(a.sheets.count(SheetType::Perfect), 2u);
-  EXPECT_EQ(a.sheets.count(SheetType::Type1), 2u);
-  EXPECT_EQ(a.sheets.count(SheetType::Type2), 0u);
-  EXPECT_EQ(a.sheets.count(SheetType::Type3), 0u);
-  EXPECT_TRUE(a.subsheets.empty());
+  EXPECT_EQ(type_counts(a), (Counts4{2, 2, 0, 0}));
+  EXPECT_TRUE(a.sheet_stage->subsheets->empty());
   std::map<std::set<std::set<Edge>>, SheetView> by_curves;
   for (const SheetView& s : got) by_curves[s.curves] = s;
   for (const SheetView* want : {&A, &B, &C, &Z}) {
@@ -374,12 +380,8 @@ TEST(SheetTypes, Type2TwistedRingMeshLevel) {
     for (int y = 0; y <= 2; ++y) z_edges.push_back({w(k, y, 0), w(k, y, 1)});
     all_cells.insert({cell(0, k), cell(1, k)});
   }
-  ASSERT_EQ(a.sheets.size(), static_cast<size_t>(n + 2));
-  EXPECT_EQ(a.sheets.count(SheetType::Perfect), static_cast<size_t>(n + 1));
-  EXPECT_EQ(a.sheets.count(SheetType::Type2), 1u);
-  EXPECT_EQ(a.sheets.count(SheetType::Type1), 0u);
-  EXPECT_EQ(a.sheets.count(SheetType::Type3), 0u);
-  EXPECT_TRUE(a.subsheets.empty());
+  ASSERT_EQ(type_counts(a), (Counts4{n + 1, 0, 1, 0}));
+  EXPECT_TRUE(a.sheet_stage->subsheets->empty());
   int layers = 0, zs = 0, ys = 0;
   for (const SheetView& s : views(m, a)) {
     EXPECT_TRUE(s.non_hex.empty());
@@ -491,9 +493,7 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
     EXPECT_LT(edge_id(m, v(t / 4, t % 4), v(t / 4, t % 4 + 1)),
               edge_id(m, v((t + 1) / 4, (t + 1) % 4), v((t + 1) / 4, (t + 1) % 4 + 1)));
   const Analysis a = run(m, Level::Mesh);
-  ASSERT_EQ(a.sheets.size(), static_cast<size_t>(n + 1));
-  EXPECT_EQ(a.sheets.count(SheetType::Perfect), static_cast<size_t>(n));
-  EXPECT_EQ(a.sheets.count(SheetType::Type3), 1u);
+  ASSERT_EQ(type_counts(a), (Counts4{n, 0, 0, 1}));
   std::vector<Edge> section;
   std::set<int32_t> all_cells, all_verts;
   for (int k = 0; k < n; ++k) {
@@ -534,9 +534,9 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
   ASSERT_GE(sheet3, 0);
 
   // The decomposition, as derived above (in the order it is built).
-  const Subsheets* sub = a.subsheets_of(sheet3);
+  const Subsheets* sub = a.sheet_stage->subsheets_of(sheet3);
   ASSERT_NE(sub, nullptr);
-  EXPECT_EQ(a.largest_self_intersecting, sheet3);
+  EXPECT_EQ(a.sheet_stage->largest_self_intersecting, sheet3);
   const std::vector<std::pair<std::vector<Edge>, std::set<int32_t>>> want = {
       {{E(0, 0), E(0, 2), E(1, 0), E(1, 2), E(4, 1), E(4, 3)}, {0, 4}},
       {{E(0, 1), E(0, 3), E(1, 1), E(1, 3), E(4, 0), E(4, 2)}, {0, 4}},
@@ -545,7 +545,7 @@ TEST(SheetTypes, Type3TwistedRingMeshLevel) {
   };
   ASSERT_EQ(sub->size(), want.size());
   for (size_t i = 0; i < want.size(); ++i) {
-    const SheetView x = view(m, a.domain, sub->curves[i], sub->cells[i], {}, sub->classes[i]);
+    const SheetView x = view(m, a.sheet_stage->domain, sub->curves[i], sub->cells[i], {}, sub->classes[i]);
     EXPECT_EQ(x.curves, single_edges(want[i].first)) << "subsheet " << i;
     EXPECT_EQ(x.cells, want[i].second) << "subsheet " << i;
     EXPECT_EQ(x.type, SheetType::Perfect) << "subsheet " << i;
@@ -585,8 +585,8 @@ TEST(SheetTypes, TwistedRingsLevel) {
     EXPECT_TRUE(a.complex.corners.empty());
     ASSERT_EQ(a.complex.num_curves(), c.curves);
     for (size_t k = 0; k < c.curves; ++k) EXPECT_TRUE(a.complex.curve_closed[k]);
-    EXPECT_EQ(a.sheets.count(SheetType::Perfect), a.sheets.size());
-    EXPECT_TRUE(a.subsheets.empty());
+    EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Perfect), a.sheet_stage->sheets.size());
+    EXPECT_TRUE(a.sheet_stage->subsheets->empty());
   }
 }
 

@@ -35,14 +35,14 @@ TEST(Structure, Grid) {
   EXPECT_EQ(a.complex.num_patches(), 6u);
   EXPECT_EQ(a.complex.num_curves(), 12u);
   EXPECT_EQ(a.complex.corners.size(), 8u);
-  ASSERT_EQ(a.sheets.size(), 3u);
-  for (const SheetClass& k : a.sheets.classes) EXPECT_EQ(k.type, SheetType::Perfect);
+  ASSERT_EQ(a.sheet_stage->sheets.size(), 3u);
+  for (const SheetClass& k : a.sheet_stage->sheets.classes) EXPECT_EQ(k.type, SheetType::Perfect);
   // Mesh level: one sheet per layer of cells, 3 + 4 + 5.
   AnalysisOptions mesh_level;
   mesh_level.sheet_level = Level::Mesh;
   const Analysis b = analyze(m, mesh_level);
-  EXPECT_EQ(b.sheets.size(), 12u);
-  EXPECT_EQ(b.sheets.count(SheetType::Perfect), 12u);
+  EXPECT_EQ(b.sheet_stage->sheets.size(), 12u);
+  EXPECT_EQ(b.sheet_stage->sheets.count(SheetType::Perfect), 12u);
 }
 
 // A 5×5×5 grid whose centre cell (2,2,2) is cut into 6 pyramids. Its 12 edges and the 8 edges to
@@ -74,11 +74,11 @@ TEST(Structure, SplitCellCutsFullPlanes) {
     bool pyramid = !m.is_hex(m.face_cells[f][0]) || (m.face_cells[f][1] >= 0 && !m.is_hex(m.face_cells[f][1]));
     EXPECT_EQ(a.complex.face_separation[f] != 0, on_plane || pyramid) << "face " << f;
   }
-  ASSERT_EQ(a.sheets.size(), 9u);
-  EXPECT_EQ(a.sheets.count(SheetType::Perfect), 9u);
+  ASSERT_EQ(a.sheet_stage->sheets.size(), 9u);
+  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Perfect), 9u);
   // The three ring sheets are the ones touching the pyramids.
   int with_non_hex = 0;
-  for (size_t s = 0; s < a.sheets.size(); ++s) with_non_hex += a.sheets.sheet_non_hex_cells.count(s) > 0;
+  for (size_t s = 0; s < a.sheet_stage->sheets.size(); ++s) with_non_hex += a.sheet_stage->sheets.sheet_non_hex_cells.count(s) > 0;
   EXPECT_EQ(with_non_hex, 3);
 }
 
@@ -106,8 +106,8 @@ void check_sector(int n) {
       EXPECT_EQ(a.graph.chain_edges.count(s), 3);
     }
   EXPECT_EQ(axis_chains, 1);
-  EXPECT_EQ(a.sheets.size(), static_cast<size_t>(n + 1));
-  EXPECT_EQ(a.sheets.count(SheetType::Perfect), static_cast<size_t>(n + 1));
+  EXPECT_EQ(a.sheet_stage->sheets.size(), static_cast<size_t>(n + 1));
+  EXPECT_EQ(a.sheet_stage->sheets.count(SheetType::Perfect), static_cast<size_t>(n + 1));
 }
 
 TEST(Structure, SectorValence3) { check_sector(3); }
@@ -118,31 +118,9 @@ TEST(Structure, SectorValence5) { check_sector(5); }
 void check_renumbering(const Mesh& m, uint32_t seed) {
   std::mt19937 rng(seed);
   const test::Renumbering rn = test::random_renumbering(m, rng);
-  const Mesh& r = rn.mesh;
-  const std::vector<int32_t>& cperm = rn.cell;
-  const Analysis a = run(m), b = run(r);
-  const Stats sa = compute_stats(m, a), sb = compute_stats(r, b);
-  EXPECT_EQ(sa.singular_edges, sb.singular_edges);
-  EXPECT_EQ(sa.singularities, sb.singularities);
-  EXPECT_EQ(sa.pseudo_singular_edges, sb.pseudo_singular_edges);
-  EXPECT_EQ(sa.non_manifold_edges, sb.non_manifold_edges);
-  EXPECT_EQ(sa.singular_vertices, sb.singular_vertices);
-  EXPECT_EQ(sa.components, sb.components);
-  EXPECT_EQ(sa.hex_components, sb.hex_components);
-  EXPECT_EQ(sa.patches, sb.patches);
-  EXPECT_EQ(sa.curves, sb.curves);
-  EXPECT_EQ(sa.corners, sb.corners);
-  EXPECT_EQ(sa.sheets, sb.sheets);
-  EXPECT_EQ(sa.sheets_type1, sb.sheets_type1);
-  EXPECT_EQ(sa.sheets_type2, sb.sheets_type2);
-  EXPECT_EQ(sa.sheets_type3, sb.sheets_type3);
-  // Same partition: cells c, d together in m iff cperm[c], cperm[d] together in r.
-  std::vector<int32_t> map(a.complex.num_components(), -1);
-  for (size_t c = 0; c < m.num_cells(); ++c) {
-    const int32_t ka = a.complex.cell_component[c], kb = b.complex.cell_component[cperm[c]];
-    if (map[ka] < 0) map[ka] = kb;
-    ASSERT_EQ(map[ka], kb) << "cell " << c;
-  }
+  const Analysis a = run(m), b = run(rn.mesh);
+  test::expect_same_counts(compute_stats(m, a), compute_stats(rn.mesh, b));
+  test::expect_same_partition(a.complex, b.complex, rn.cell);
 }
 
 TEST(Structure, RenumberedGeneratedMeshes) {
@@ -196,13 +174,13 @@ TEST_P(RealMesh, Invariants) {
       EXPECT_EQ(m.edge_valence(e), a.graph.chain_valence[s]);
     }
   // Sheets: no subsheet self-intersects; sheet curves are curves of its blocks.
-  for (const Subsheets& x : a.subsheets)
+  for (const Subsheets& x : *a.sheet_stage->subsheets)
     for (const SheetClass& k : x.classes) EXPECT_FALSE(k.type3);
-  for (size_t s = 0; s < a.sheets.size(); ++s) {
-    EXPECT_FALSE(a.sheets.sheet_blocks[s].empty());
-    const bool perfect = a.sheets.classes[s].type == SheetType::Perfect;
-    EXPECT_EQ(perfect, a.sheets.classes[s].shared_vertices.empty());
-    if (perfect) EXPECT_TRUE(a.sheets.classes[s].unmatched_vertices.empty());
+  for (size_t s = 0; s < a.sheet_stage->sheets.size(); ++s) {
+    EXPECT_FALSE(a.sheet_stage->sheets.sheet_blocks[s].empty());
+    const bool perfect = a.sheet_stage->sheets.classes[s].type == SheetType::Perfect;
+    EXPECT_EQ(perfect, a.sheet_stage->sheets.classes[s].shared_vertices.empty());
+    if (perfect) EXPECT_TRUE(a.sheet_stage->sheets.classes[s].unmatched_vertices.empty());
   }
 }
 

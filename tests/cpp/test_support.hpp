@@ -9,6 +9,7 @@
 #include <vector>
 #include <string>
 
+#include "hbc/analysis.hpp"
 #include "hbc/io.hpp"
 #include "hbc/mesh.hpp"
 
@@ -101,6 +102,46 @@ inline void expect_same_cells(const MeshInput& a, const MeshInput& b) {
   EXPECT_EQ(a.faces.items, b.faces.items);
   EXPECT_EQ(a.cells.offsets, b.cells.offsets);
   EXPECT_EQ(a.cells.items, b.cells.items);
+}
+
+// Stage outputs whose meaning does not depend on numbering, compared between two analyses of the
+// same mesh (renumbered, or read from another format). Counts that depend on a "lowest index"
+// choice are left out (see docs/reliability.md): subsheet counts and the simplified wireframe.
+inline void expect_same_counts(const Stats& a, const Stats& b) {
+  EXPECT_EQ(a.cells, b.cells);
+  EXPECT_EQ(a.hex_cells, b.hex_cells);
+  EXPECT_EQ(a.singular_edges, b.singular_edges);
+  EXPECT_EQ(a.singularities, b.singularities);
+  EXPECT_EQ(a.pseudo_singular_edges, b.pseudo_singular_edges);
+  EXPECT_EQ(a.non_manifold_edges, b.non_manifold_edges);
+  EXPECT_EQ(a.singular_vertices, b.singular_vertices);
+  EXPECT_EQ(a.components, b.components);
+  EXPECT_EQ(a.hex_components, b.hex_components);
+  EXPECT_EQ(a.patches, b.patches);
+  EXPECT_EQ(a.curves, b.curves);
+  EXPECT_EQ(a.corners, b.corners);
+  EXPECT_EQ(a.self_adjacent_faces, b.self_adjacent_faces);
+  EXPECT_EQ(a.sheets, b.sheets);
+  EXPECT_EQ(a.sheets_perfect, b.sheets_perfect);
+  EXPECT_EQ(a.sheets_type1, b.sheets_type1);
+  EXPECT_EQ(a.sheets_type2, b.sheets_type2);
+  EXPECT_EQ(a.sheets_type3, b.sheets_type3);
+  EXPECT_EQ(a.vsg_edges, b.vsg_edges);
+  EXPECT_EQ(a.wireframe_edges, b.wireframe_edges);
+}
+
+// The same component partition in the base complex `a` of a mesh and `b` of its renumbering
+// (cell c became cell[c]): c and d share a component in a iff cell[c] and cell[d] do in b.
+inline void expect_same_partition(const BaseComplex& a, const BaseComplex& b, const std::vector<int32_t>& cell) {
+  ASSERT_EQ(a.num_components(), b.num_components());
+  const size_t ncomp = a.num_components();
+  std::vector<int32_t> fwd(ncomp, -1), back(ncomp, -1);
+  for (size_t c = 0; c < cell.size(); ++c) {
+    const int32_t ka = a.cell_component[c], kb = b.cell_component[static_cast<size_t>(cell[c])];
+    if (fwd[ka] < 0 && back[kb] < 0) fwd[ka] = kb, back[kb] = ka;
+    ASSERT_EQ(fwd[ka], kb) << "cell " << c;
+    ASSERT_EQ(back[kb], ka) << "cell " << c;
+  }
 }
 
 }  // namespace hbc::test

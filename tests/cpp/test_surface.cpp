@@ -198,7 +198,7 @@ TEST(StructureSurfaces, SplitGridPiecesAreClean) {
   opt.wireframe = false;
   const Analysis a = analyze(m, opt);
   for (const FaceSelection& sel :
-       {patch_selection(m, a.complex), component_selection(m, a.complex), sheet_selection(m, a.sheets)}) {
+       {patch_selection(m, a.complex), component_selection(m, a.complex), sheet_selection(m, a.sheet_stage->sheets)}) {
     SurfaceStats st;
     const SurfaceMesh s = build_surface(m, sel, &st);
     EXPECT_EQ(st.unwelded_faces, 0);

@@ -43,7 +43,7 @@ TEST_P(Table1, MatchesThePaper) {
     EXPECT_EQ(s.subsheets_of_largest_self_intersecting, r.subsheets);
   }
   // Every subsheet is free of self-intersection.
-  for (const Subsheets& x : a.subsheets)
+  for (const Subsheets& x : *a.sheet_stage->subsheets)
     for (const SheetClass& k : x.classes) EXPECT_FALSE(k.type3);
 }
 
@@ -62,14 +62,14 @@ TEST(Table1, TeapotSubsheets) {
   HBC_REQUIRE_DATA("hybrid-base-complex/teapot.hedra");
   const Mesh m = test::load_data("hybrid-base-complex/teapot.hedra");
   const Analysis a = analyze(m);
-  ASSERT_EQ(a.subsheets.size(), 2u);
+  ASSERT_EQ(a.sheet_stage->subsheets->size(), 2u);
   std::vector<std::pair<int32_t, size_t>> blocks_to_subsheets;
-  for (const Subsheets& x : a.subsheets)
-    blocks_to_subsheets.push_back({a.sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size()});
+  for (const Subsheets& x : *a.sheet_stage->subsheets)
+    blocks_to_subsheets.push_back({a.sheet_stage->sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size()});
   std::sort(blocks_to_subsheets.begin(), blocks_to_subsheets.end());
   EXPECT_EQ(blocks_to_subsheets[0], std::make_pair(int32_t{224}, size_t{3}));
   EXPECT_EQ(blocks_to_subsheets[1], std::make_pair(int32_t{352}, size_t{6}));
-  EXPECT_EQ(a.sheets.sheet_blocks.count(static_cast<size_t>(a.largest_self_intersecting)), 352);
+  EXPECT_EQ(a.sheet_stage->sheets.sheet_blocks.count(static_cast<size_t>(a.sheet_stage->largest_self_intersecting.value())), 352);
 }
 
 }  // namespace

@@ -354,7 +354,7 @@ TEST(VsgWireframe, SheetWireframesMatchTheAuthors) {
       {12, 12, 0},  {13, 20, 0},  {13, 28, 6},  {14, 38, 7},  {14, 43, 13}, {14, 54, 6},   {14, 55, 5},
       {14, 55, 14}, {15, 49, 8},  {15, 71, 13}, {16, 49, 12}, {17, 71, 22}, {18, 57, 13},  {18, 90, 33},
       {18, 92, 40}, {19, 65, 50}, {21, 71, 17}, {26, 199, 136}, {55, 204, 170}};
-  for (size_t k = 0; k < a.sheets.size(); ++k) {
+  for (size_t k = 0; k < a.sheet_stage->sheets.size(); ++k) {
     const VsgWireframe w = region_wireframe(m, a, Level::Complex, {}, static_cast<int32_t>(k));
     ours.push_back({w.vsg_chains, w.wireframe_edges(), w.wireframe_edges_simplified()});
   }

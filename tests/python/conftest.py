@@ -13,6 +13,12 @@ import pytest
 # File endings the readers support (the .HYBRID ending is matched case-insensitively like the CLI).
 MESH_SUFFIXES = (".ovm", ".ovmb", ".mesh", ".hybrid", ".hedra")
 
+TABLE1 = "hybrid-base-complex/"
+#: The three Table 1 meshes we hold and two others (a tiny hybrid one and a polyhedral one): the
+#: meshes of the `analyzed` fixture.
+MESHES = [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh", TABLE1 + "cube_twist-comp.obj.HYBRID",
+          TABLE1 + "test_2.HYBRID", "cinolib/eight_voronoi.hedra"]
+
 
 def data_dir():
     value = os.environ.get("HBC_DATA_DIR")
@@ -43,6 +49,45 @@ def shared_data_dir():
     if not root.is_dir():
         pytest.fail(f"HBC_DATA_DIR={root} is not a folder")
     return root
+
+
+@pytest.fixture(scope="session")
+def analyzed(shared_data_dir):
+    """name -> (mesh, analysis) with the defaults for every mesh of MESHES, computed once."""
+    import hbc
+
+    out = {}
+    for name in MESHES:
+        m = hbc.load(shared_data_dir / name)
+        out[name] = (m, m.analyze())
+    return out
+
+
+@pytest.fixture
+def resident_growth():
+    """Runs `cycle` 10 times (the allocator and caches reach their steady state), then 100 times;
+    returns by how many bytes the resident memory grew over the 100. Skips under AddressSanitizer,
+    which keeps freed memory in quarantine (the plain build runs these tests)."""
+    import gc
+
+    if os.environ.get("HBC_SANITIZED") == "1":
+        pytest.skip("ASan keeps freed memory in quarantine; the plain build runs this test")
+
+    def resident_bytes():
+        with open("/proc/self/statm") as f:
+            return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+
+    def measure(cycle):
+        for _ in range(10):
+            cycle()
+        gc.collect()
+        before = resident_bytes()
+        for _ in range(100):
+            cycle()
+        gc.collect()
+        return resident_bytes() - before
+
+    return measure
 
 
 @pytest.fixture(scope="session")

@@ -20,10 +20,10 @@ def two_hexes():
     faces = a + b[:4] + b[5:]  # b[4] (x = 1) is a[5] reversed: listed once
     cells = [[0, 1, 2, 3, 4, 5], [6, 7, 8, 9, 5, 10]]
     return dict(points=points,
-                face_offsets=np.arange(0, 4 * len(faces) + 1, 4),
-                face_vertices=np.array(faces).ravel(),
-                cell_offsets=np.array([0, 6, 12]),
-                cell_faces=np.array(cells).ravel())
+                face_vertices_offsets=np.arange(0, 4 * len(faces) + 1, 4),
+                face_vertices_items=np.array(faces).ravel(),
+                cell_faces_offsets=np.array([0, 6, 12]),
+                cell_faces_items=np.array(cells).ravel())
 
 
 SHARED_FACE = 5
@@ -45,7 +45,7 @@ def test_two_hexes():
     assert m.vertex_boundary.all() and m.edge_boundary.all()
     assert not m.vertex_non_manifold.any()
     # The four edges of the shared face are in both cells, every other edge in one.
-    shared = m.face_edges[m.face_offsets[SHARED_FACE]:m.face_offsets[SHARED_FACE + 1]]
+    shared = m.face_edges_items[m.face_vertices_offsets[SHARED_FACE]:m.face_vertices_offsets[SHARED_FACE + 1]]
     expected = np.ones(20, np.int32)
     expected[shared] = 2
     assert np.array_equal(m.edge_valence, expected)
@@ -68,7 +68,7 @@ def test_same_as_medit_file(tmp_path):
     assert np.array_equal(a.points64, b.points64)
 
     def face_sets(m):
-        loops = np.split(m.face_vertices, m.face_offsets[1:-1])
+        loops = np.split(m.face_vertices_items, m.face_vertices_offsets[1:-1])
         return sorted(tuple(sorted(loop)) for loop in loops)
 
     assert face_sets(a) == face_sets(b)
@@ -99,26 +99,26 @@ def with_change(**changes):
 
 def test_content_errors_are_mesh_format_errors():
     base = two_hexes()
-    bad_vertex = base["face_vertices"].copy()
+    bad_vertex = base["face_vertices_items"].copy()
     bad_vertex[7] = 99
     with pytest.raises(hbc.MeshFormatError, match=r"^<arrays>: .*found 99"):
-        hbc.Mesh.from_arrays(**with_change(face_vertices=bad_vertex))
+        hbc.Mesh.from_arrays(**with_change(face_vertices_items=bad_vertex))
 
-    open_cell = dict(cell_offsets=np.array([0, 6, 11]), cell_faces=base["cell_faces"][:11])
+    open_cell = dict(cell_faces_offsets=np.array([0, 6, 11]), cell_faces_items=base["cell_faces_items"][:11])
     with pytest.raises(hbc.MeshFormatError, match="closed cell"):
         hbc.Mesh.from_arrays(**with_change(**open_cell))
 
-    bad_face = base["cell_faces"].copy()
+    bad_face = base["cell_faces_items"].copy()
     bad_face[3] = 11
-    with pytest.raises(hbc.MeshFormatError, match=r"cell_faces values in \[0, 11\), found 11 at index 3"):
-        hbc.Mesh.from_arrays(**with_change(cell_faces=bad_face))
+    with pytest.raises(hbc.MeshFormatError, match=r"cell_faces_items values in \[0, 11\), found 11 at index 3"):
+        hbc.Mesh.from_arrays(**with_change(cell_faces_items=bad_face))
 
-    with pytest.raises(hbc.MeshFormatError, match="face_offsets starting with 0"):
-        hbc.Mesh.from_arrays(**with_change(face_offsets=base["face_offsets"] + 1))
-    with pytest.raises(hbc.MeshFormatError, match=r"face_offsets\[-1\] == len\(face_vertices\)"):
-        hbc.Mesh.from_arrays(**with_change(face_offsets=base["face_offsets"][:-1]))
+    with pytest.raises(hbc.MeshFormatError, match="face_vertices_offsets starting with 0"):
+        hbc.Mesh.from_arrays(**with_change(face_vertices_offsets=base["face_vertices_offsets"] + 1))
+    with pytest.raises(hbc.MeshFormatError, match=r"face_vertices_offsets\[-1\] == len\(face_vertices_items\)"):
+        hbc.Mesh.from_arrays(**with_change(face_vertices_offsets=base["face_vertices_offsets"][:-1]))
     with pytest.raises(hbc.MeshFormatError, match="non-decreasing"):
-        hbc.Mesh.from_arrays(**with_change(cell_offsets=np.array([0, 13, 12])))
+        hbc.Mesh.from_arrays(**with_change(cell_faces_offsets=np.array([0, 13, 12])))
 
     nan_points = base["points"].copy()
     nan_points[4, 1] = np.nan
@@ -129,12 +129,12 @@ def test_content_errors_are_mesh_format_errors():
 def test_shape_and_dtype_errors():
     base = two_hexes()
     with pytest.raises(TypeError, match="integer array"):
-        hbc.Mesh.from_arrays(**with_change(face_vertices=base["face_vertices"].astype(float)))
+        hbc.Mesh.from_arrays(**with_change(face_vertices_items=base["face_vertices_items"].astype(float)))
     with pytest.raises(ValueError, match=r"shape \(n, 3\)"):
         hbc.Mesh.from_arrays(**with_change(points=base["points"][:, :2]))
     with pytest.raises(ValueError, match="1-D"):
-        hbc.Mesh.from_arrays(**with_change(cell_faces=base["cell_faces"].reshape(2, 6)))
-    with pytest.raises(ValueError, match="len\\(cell_faces\\) = 12"):
+        hbc.Mesh.from_arrays(**with_change(cell_faces_items=base["cell_faces_items"].reshape(2, 6)))
+    with pytest.raises(ValueError, match="len\\(cell_faces_items\\) = 12"):
         hbc.Mesh.from_arrays(**base, cell_face_flip=np.zeros(11, np.uint8))
     with pytest.raises(ValueError, match="0 or 1, found 2"):
         hbc.Mesh.from_arrays(**base, cell_face_flip=np.full(12, 2))
@@ -145,10 +145,11 @@ def test_round_trip_of_every_shared_mesh(shared_mesh):
     # the builder numbers faces by first use and edges by first appearance, which the arrays keep.
     m = hbc.load(shared_mesh)
     points = np.asfortranarray(m.points64).astype(">f8")  # non-native byte order, column-major
-    again = hbc.Mesh.from_arrays(points, m.face_offsets.astype(np.int64), m.face_vertices,
-                                 m.cell_offsets, m.cell_faces, m.cell_face_flip)
-    for name in ("points64", "edges", "face_offsets", "face_vertices", "face_edges", "face_cells",
-                 "cell_offsets", "cell_faces", "cell_face_flip", "cell_types", "face_boundary",
+    again = hbc.Mesh.from_arrays(points, m.face_vertices_offsets.astype(np.int64), m.face_vertices_items,
+                                 m.cell_faces_offsets, m.cell_faces_items, m.cell_face_flip)
+    for name in ("points64", "edges", "face_vertices_offsets", "face_vertices_items", "face_edges_offsets",
+                 "face_edges_items", "face_cells", "cell_faces_offsets", "cell_faces_items", "cell_face_flip",
+                 "cell_types", "face_boundary",
                  "edge_boundary", "vertex_boundary", "vertex_non_manifold", "edge_valence"):
         assert np.array_equal(getattr(again, name), getattr(m, name)), name
     assert again.warnings == []

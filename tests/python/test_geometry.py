@@ -9,18 +9,7 @@ import pytest
 
 import hbc
 
-TABLE1 = "hybrid-base-complex/"
-MESHES = [TABLE1 + "teapot.hedra", TABLE1 + "twistcube_s.mesh", TABLE1 + "cube_twist-comp.obj.HYBRID",
-          TABLE1 + "test_2.HYBRID", "cinolib/eight_voronoi.hedra"]
-
-
-@pytest.fixture(scope="module")
-def analyzed(shared_data_dir):
-    out = {}
-    for name in MESHES:
-        m = hbc.load(shared_data_dir / name)
-        out[name] = (m, m.analyze())
-    return out
+from conftest import MESHES, TABLE1
 
 
 def rows(offsets, items):
@@ -29,9 +18,9 @@ def rows(offsets, items):
 
 def kinds(a):
     """(what, sheet, number of possible owners) for every block set the analysis allows."""
-    out = [("cells", -1, a.mesh.num_cells), ("components", -1, len(a.complex.component_kind)),
-           ("sheets", -1, a.num_sheets), ("non_hex", -1, a.mesh.num_cells), ("boundary", -1, 5),
-           ("hex", -1, 1)]
+    out = [("cells", None, a.mesh.num_cells), ("components", None, len(a.complex.component_kind)),
+           ("sheets", None, a.num_sheets), ("non_hex", None, a.mesh.num_cells), ("boundary", None, 5),
+           ("hex", None, 1)]
     for s in range(min(a.num_sheets, 3)):
         out += [("sheet", s, len(a.complex.component_kind)), ("sheet_non_hex", s, a.mesh.num_cells)]
     for s in a.self_intersecting_sheets:
@@ -42,13 +31,14 @@ def kinds(a):
 def check_soup(m, d, owners):
     """Shapes, ranges, and the point/owner structure every soup has."""
     pos, pv = d["positions"], d["point_vertex"]
-    sizes, fv, owner, src = d["face_sizes"], d["face_vertices"], d["face_owner"], d["face_source"]
+    starts, fv, owner, src = d["face_vertices_offsets"], d["face_vertices_items"], d["face_owner"], d["face_source"]
+    sizes = np.diff(starts)
     npnt, nf = len(pv), len(sizes)
     assert pos.dtype == np.float32 and pos.shape == (npnt, 3)
-    for arr in (pv, sizes, fv, owner, src):
+    for arr in (pv, starts, fv, owner, src):
         assert arr.dtype == np.int32 and arr.ndim == 1
     assert owner.shape == src.shape == (nf,)
-    assert int(sizes.sum()) == len(fv)
+    assert starts[0] == 0 and starts[-1] == len(fv)
     assert np.all(sizes >= 3)
     assert np.all((fv >= 0) & (fv < npnt))
     assert np.all((owner >= 0) & (owner < owners))
@@ -56,11 +46,10 @@ def check_soup(m, d, owners):
     assert np.all((pv >= 0) & (pv < m.num_vertices))
     assert np.all((src >= 0) & (src < m.num_faces))
     # Each face is the mesh face it comes from, as a loop (either direction, any rotation).
-    starts = np.concatenate(([0], np.cumsum(sizes)))
     for i in range(0, nf, max(1, nf // 200)):
         loop = pv[fv[starts[i]:starts[i + 1]]].tolist()
         f = src[i]
-        mesh_loop = m.face_vertices[m.face_offsets[f]:m.face_offsets[f + 1]].tolist()
+        mesh_loop = m.face_vertices_items[m.face_vertices_offsets[f]:m.face_vertices_offsets[f + 1]].tolist()
         assert sorted(loop) == sorted(mesh_loop)
     # Points are not shared between owners, and shared within one (one copy per mesh vertex).
     point_owner = np.full(npnt, -1)
@@ -83,7 +72,7 @@ def test_soups_valid_and_shrink(analyzed, name):
         assert np.array_equal(d0["positions"], m.points[d0["point_vertex"]]), what
         shrink = 0.3
         d = hbc.block_soup(m, a, what, sheet=sheet, shrink=shrink)
-        for k in ("face_sizes", "face_vertices", "face_owner", "face_source", "point_vertex"):
+        for k in ("face_vertices_offsets", "face_vertices_items", "face_owner", "face_source", "point_vertex"):
             assert np.array_equal(d[k], d0[k]), (what, k)
         if len(po) == 0:
             continue
@@ -104,13 +93,13 @@ def test_soups_valid_and_shrink(analyzed, name):
 @pytest.mark.parametrize("name", MESHES)
 def test_soup_face_counts(analyzed, name):
     m, a = analyzed[name]
-    nfaces = np.diff(m.cell_offsets)
+    nfaces = np.diff(m.cell_faces_offsets)
     hexes = m.cell_types == 0
     cells = hbc.block_soup(m, a, "cells")
-    assert len(cells["face_sizes"]) == len(m.cell_faces)
+    assert len(cells["face_owner"]) == len(m.cell_faces_items)
     assert np.array_equal(np.bincount(cells["face_owner"], minlength=m.num_cells), nfaces)
     non_hex = hbc.block_soup(m, a, "non_hex")
-    assert len(non_hex["face_sizes"]) == nfaces[~hexes].sum()
+    assert len(non_hex["face_owner"]) == nfaces[~hexes].sum()
     assert set(np.unique(non_hex["face_owner"])) == set(np.flatnonzero(~hexes))
     boundary = hbc.block_soup(m, a, "boundary")
     bf = np.flatnonzero(m.face_boundary)
@@ -129,25 +118,25 @@ def test_soup_face_counts(analyzed, name):
     # Components: separation faces, once per side; interior ones twice.
     comps = hbc.block_soup(m, a, "components")
     sep = a.complex.face_separation
-    assert len(comps["face_sizes"]) == int(sep.sum() + (sep & ~m.face_boundary).sum())
+    assert len(comps["face_owner"]) == int(sep.sum() + (sep & ~m.face_boundary).sum())
     assert np.all(sep[comps["face_source"]])
     # Sheets: for each sheet, the faces of its cells with the other side outside the sheet.
     sheets = hbc.block_soup(m, a, "sheets")
     for s in range(min(a.num_sheets, 5)):
         inside = np.zeros(m.num_cells + 1, bool)
-        inside[rows(a.sheet_cell_offsets, a.sheet_cell_items)[s]] = True
+        inside[rows(a.sheet_cells_offsets, a.sheet_cells_items)[s]] = True
         fc = m.face_cells
         expected = np.flatnonzero(inside[fc[:, 0]] != inside[fc[:, 1]])
         assert np.array_equal(np.sort(sheets["face_source"][sheets["face_owner"] == s]), expected)
         one = hbc.block_soup(m, a, "sheet", sheet=s)
         owners = np.unique(one["face_owner"])
-        assert np.array_equal(owners, rows(a.sheet_component_offsets, a.sheet_component_items)[s])
+        assert np.array_equal(owners, rows(a.sheet_components_offsets, a.sheet_components_items)[s])
         nh = hbc.block_soup(m, a, "sheet_non_hex", sheet=s)
-        assert np.array_equal(np.unique(nh["face_owner"]), rows(a.sheet_non_hex_offsets, a.sheet_non_hex_items)[s])
+        assert np.array_equal(np.unique(nh["face_owner"]), rows(a.sheet_non_hex_cells_offsets, a.sheet_non_hex_cells_items)[s])
     for s in a.self_intersecting_sheets:
         sub = a.subsheets(int(s))
         d = hbc.block_soup(m, a, "subsheets", sheet=int(s))
-        assert np.array_equal(np.unique(d["face_owner"]), np.flatnonzero(np.diff(sub.cell_offsets) > 0))
+        assert np.array_equal(np.unique(d["face_owner"]), np.flatnonzero(np.diff(sub.subsheet_cells_offsets) > 0))
 
 
 def signed_volume(pos, sizes, fv):
@@ -164,7 +153,7 @@ def signed_volume(pos, sizes, fv):
 def disagreeing_cells(m):
     """Cells on an interior face that both its cells see with the same loop direction."""
     seen = np.zeros(m.num_faces, int)
-    np.add.at(seen, m.cell_faces, m.cell_face_flip.astype(int))
+    np.add.at(seen, m.cell_faces_items, m.cell_face_flip.astype(int))
     fc = m.face_cells
     bad = (fc[:, 1] >= 0) & (seen != 1)
     return np.unique(fc[bad].ravel())
@@ -175,8 +164,8 @@ def inverted_cells(m, a):
     neighbours (tangled or inverted cells in the data)."""
     d = hbc.block_soup(m, a, "cells")
     pos = d["positions"].astype(np.float64)
-    sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
-    starts = np.concatenate(([0], np.cumsum(sizes)))
+    starts, fv, owner = d["face_vertices_offsets"], d["face_vertices_items"], d["face_owner"]
+    sizes = np.diff(starts)
     out = []
     for c in range(m.num_cells):
         faces = np.flatnonzero(owner == c)
@@ -191,8 +180,8 @@ def test_cube_component_blocks_closed_and_outward(analyzed, name):
     m, a = analyzed[name]
     d = hbc.block_soup(m, a, "components")
     pos = d["positions"].astype(np.float64) - m.points64.mean(axis=0)
-    sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
-    starts = np.concatenate(([0], np.cumsum(sizes)))
+    starts, fv, owner = d["face_vertices_offsets"], d["face_vertices_items"], d["face_owner"]
+    sizes = np.diff(starts)
     cubes = np.flatnonzero(a.complex.component_kind == 0)
     # The mesh builder orients neighbouring cells consistently: no interior face is seen the same
     # way from both sides. Blocks holding an inverted cell may enclose a negative volume.
@@ -224,8 +213,8 @@ def test_hex_cells_outward(analyzed):
     m, a = analyzed[TABLE1 + "cube_twist-comp.obj.HYBRID"]
     d = hbc.block_soup(m, a, "cells")
     pos = d["positions"].astype(np.float64)
-    sizes, fv, owner = d["face_sizes"], d["face_vertices"], d["face_owner"]
-    starts = np.concatenate(([0], np.cumsum(sizes)))
+    starts, fv, owner = d["face_vertices_offsets"], d["face_vertices_items"], d["face_owner"]
+    sizes = np.diff(starts)
     for c in np.flatnonzero(m.cell_types == 0)[::7]:
         faces = np.flatnonzero(owner == c)
         loops = np.concatenate([fv[starts[f]:starts[f + 1]] for f in faces])
@@ -240,8 +229,10 @@ def test_soup_errors(analyzed):
     for bad in (-0.1, 1.0, float("nan")):
         with pytest.raises(ValueError, match="shrink"):
             hbc.block_soup(m, a, "cells", shrink=bad)
-    with pytest.raises(ValueError, match="out of range"):
-        hbc.block_soup(m, a, "sheet")  # no sheet given
+    with pytest.raises(ValueError, match="needs a sheet"):
+        hbc.block_soup(m, a, "sheet")
+    with pytest.raises(ValueError, match="non-negative"):
+        hbc.block_soup(m, a, "sheet", sheet=-1)
     with pytest.raises(ValueError, match="out of range"):
         hbc.block_soup(m, a, "sheet", sheet=a.num_sheets)
     not_type3 = int(np.flatnonzero(a.sheet_type != 3)[0])
@@ -267,11 +258,11 @@ def test_soup_arrays_are_owned(analyzed):
 def test_polylines(analyzed):
     m, a = analyzed[TABLE1 + "teapot.hedra"]
     c = a.complex
-    p = hbc.polylines(m, c.curve_vertex_offsets, c.curve_vertex_items)
-    assert p.dtype == np.float32 and p.shape == (len(c.curve_vertex_items), 3)
-    assert np.array_equal(p, m.points[c.curve_vertex_items])
+    p = hbc.polylines(m, c.curve_vertices_offsets, c.curve_vertices_items)
+    assert p.dtype == np.float32 and p.shape == (len(c.curve_vertices_items), 3)
+    assert np.array_equal(p, m.points[c.curve_vertices_items])
     w = a.wireframe()
-    assert np.array_equal(hbc.polylines(m, w.polyline_offsets, w.polyline_items), m.points[w.polyline_items])
+    assert np.array_equal(hbc.polylines(m, w.polylines_offsets, w.polylines_items), m.points[w.polylines_items])
     assert hbc.polylines(m, [0, 2, 3], [0, 1, 2]).shape == (3, 3)  # any integer sequence
     assert hbc.polylines(m, [0], []).shape == (0, 3)
     with pytest.raises(ValueError, match="offsets"):
@@ -301,7 +292,7 @@ def test_soup_face_cell(analyzed, name):
     m, a = analyzed[name]
     comp = a.complex.cell_component
     fc = m.face_cells
-    sheet_cells = rows(a.sheet_cell_offsets, a.sheet_cell_items)
+    sheet_cells = rows(a.sheet_cells_offsets, a.sheet_cells_items)
     for what, sheet, _ in kinds(a):
         d = hbc.block_soup(m, a, what, sheet=sheet)
         cell, src, owner = d["face_cell"], d["face_source"], d["face_owner"]
@@ -337,8 +328,8 @@ def test_cell_centroids_mean_of_distinct_vertices(analyzed, name):
     assert c.shape == (m.num_cells, 3)
     pts = m.points64
     for cell in range(0, m.num_cells, max(1, m.num_cells // 50)):
-        faces = m.cell_faces[m.cell_offsets[cell]:m.cell_offsets[cell + 1]]
-        verts = np.unique(np.concatenate([m.face_vertices[m.face_offsets[f]:m.face_offsets[f + 1]] for f in faces]))
+        faces = m.cell_faces_items[m.cell_faces_offsets[cell]:m.cell_faces_offsets[cell + 1]]
+        verts = np.unique(np.concatenate([m.face_vertices_items[m.face_vertices_offsets[f]:m.face_vertices_offsets[f + 1]] for f in faces]))
         assert np.allclose(c[cell], pts[verts].mean(axis=0))
 
 
@@ -350,19 +341,19 @@ def test_kept_surface_soup_of_a_grid(hbc_cli, tmp_path):
                    capture_output=True)
     m = hbc.load(out)
     every = hbc.kept_surface_soup(m, np.ones(64, bool))
-    assert len(every["face_sizes"]) == 96
+    assert len(every["face_owner"]) == 96
     assert np.array_equal(np.sort(every["face_source"]), np.flatnonzero(m.face_boundary))
     inner = hbc.cell_depth(m) >= 1
     d = hbc.kept_surface_soup(m, inner)
-    assert len(d["face_sizes"]) == 24 and set(d["face_cell"]) == set(np.flatnonzero(inner))
+    assert len(d["face_owner"]) == 24 and set(d["face_cell"]) == set(np.flatnonzero(inner))
     assert np.array_equal(d["face_owner"], d["face_cell"])
     # Outward: the loop's normal points from the cell's centroid to the face's centre.
     cen = hbc.cell_centroids(m)
-    starts = np.concatenate(([0], np.cumsum(d["face_sizes"])))
-    for i in range(len(d["face_sizes"])):
-        p = d["positions"][d["face_vertices"][starts[i]:starts[i + 1]]].astype(float)
+    starts = d["face_vertices_offsets"]
+    for i in range(len(d["face_owner"])):
+        p = d["positions"][d["face_vertices_items"][starts[i]:starts[i + 1]]].astype(float)
         n = np.cross(p[1] - p[0], p[2] - p[0])
         assert np.dot(n, p.mean(axis=0) - cen[d["face_cell"][i]]) > 0
-    assert len(hbc.kept_surface_soup(m, np.zeros(64, bool))["face_sizes"]) == 0
+    assert len(hbc.kept_surface_soup(m, np.zeros(64, bool))["face_owner"]) == 0
     with pytest.raises(ValueError, match="entries for 64 cells"):
         hbc.kept_surface_soup(m, np.ones(3, bool))

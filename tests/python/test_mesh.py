@@ -62,8 +62,9 @@ def test_arrays(shared_mesh):
 
     expected = {
         "points": (np.float32, (nv, 3)), "points64": (np.float64, (nv, 3)),
-        "edges": (np.int32, (ne, 2)), "face_offsets": (np.int32, (nf + 1,)),
-        "face_cells": (np.int32, (nf, 2)), "cell_offsets": (np.int32, (nc + 1,)),
+        "edges": (np.int32, (ne, 2)), "face_vertices_offsets": (np.int32, (nf + 1,)),
+        "face_edges_offsets": (np.int32, (nf + 1,)),
+        "face_cells": (np.int32, (nf, 2)), "cell_faces_offsets": (np.int32, (nc + 1,)),
         "cell_types": (np.uint8, (nc,)), "face_boundary": (np.bool_, (nf,)),
         "edge_boundary": (np.bool_, (ne,)), "vertex_boundary": (np.bool_, (nv,)),
         "vertex_non_manifold": (np.bool_, (nv,)), "edge_valence": (np.int32, (ne,)),
@@ -72,16 +73,17 @@ def test_arrays(shared_mesh):
         a = getattr(m, name)
         assert a.dtype == dtype, name
         assert a.shape == shape, name
-    for name in ("face_vertices", "face_edges", "cell_faces", "cell_face_flip"):
+    for name in ("face_vertices_items", "face_edges_items", "cell_faces_items", "cell_face_flip"):
         assert getattr(m, name).ndim == 1, name
 
-    check_csr(m.face_offsets, m.face_vertices, nf)
-    check_csr(m.cell_offsets, m.cell_faces, nc)
-    assert m.face_edges.shape == m.face_vertices.shape
-    assert m.cell_face_flip.shape == m.cell_faces.shape
+    check_csr(m.face_vertices_offsets, m.face_vertices_items, nf)
+    check_csr(m.cell_faces_offsets, m.cell_faces_items, nc)
+    assert np.array_equal(m.face_edges_offsets, m.face_vertices_offsets)  # aligned item for item
+    assert m.face_edges_items.shape == m.face_vertices_items.shape
+    assert m.cell_face_flip.shape == m.cell_faces_items.shape
     assert np.array_equal(m.points, m.points64.astype(np.float32))
     assert np.all(m.edges[:, 0] < m.edges[:, 1])
-    assert m.face_vertices.max() < nv and m.cell_faces.max() < nf and m.face_edges.max() < ne
+    assert m.face_vertices_items.max() < nv and m.cell_faces_items.max() < nf and m.face_edges_items.max() < ne
     assert np.all(m.cell_types <= 4)
     assert np.count_nonzero(m.cell_types == 0) == info["hex_cells"]
 
@@ -91,37 +93,38 @@ def test_arrays(shared_mesh):
     assert np.array_equal(m.face_boundary, fc[:, 1] == -1)
     assert np.count_nonzero(m.face_boundary) == info["boundary_faces"]
     # Each face appears in the cell lists exactly as often as it has cells.
-    assert np.array_equal(np.bincount(m.cell_faces, minlength=nf), (fc >= 0).sum(axis=1))
+    assert np.array_equal(np.bincount(m.cell_faces_items, minlength=nf), (fc >= 0).sum(axis=1))
 
     # Boundary vertices/edges are exactly those of boundary faces.
-    corner_face = np.repeat(np.arange(nf), np.diff(m.face_offsets))
+    corner_face = np.repeat(np.arange(nf), np.diff(m.face_vertices_offsets))
     on_boundary = m.face_boundary[corner_face]
     vb = np.zeros(nv, bool)
-    vb[m.face_vertices[on_boundary]] = True
+    vb[m.face_vertices_items[on_boundary]] = True
     eb = np.zeros(ne, bool)
-    eb[m.face_edges[on_boundary]] = True
+    eb[m.face_edges_items[on_boundary]] = True
     assert np.array_equal(m.vertex_boundary, vb)
     assert np.array_equal(m.edge_boundary, eb)
 
     # Face edge i joins loop vertices i and i+1.
-    nxt = np.arange(len(m.face_vertices)) + 1
-    ends = m.face_offsets[1:][corner_face]
-    nxt[nxt == ends] = m.face_offsets[:-1][corner_face][nxt == ends]
-    pairs = np.sort(np.stack([m.face_vertices, m.face_vertices[nxt]], axis=1), axis=1)
-    assert np.array_equal(m.edges[m.face_edges], pairs)
+    nxt = np.arange(len(m.face_vertices_items)) + 1
+    ends = m.face_vertices_offsets[1:][corner_face]
+    nxt[nxt == ends] = m.face_vertices_offsets[:-1][corner_face][nxt == ends]
+    pairs = np.sort(np.stack([m.face_vertices_items, m.face_vertices_items[nxt]], axis=1), axis=1)
+    assert np.array_equal(m.edges[m.face_edges_items], pairs)
 
     # Closed cells: at an edge every cell has two faces, every face two cell sides of which the
     # boundary ones lack a cell, so valence = faces at the edge - boundary faces at it / 2.
-    faces_at = np.bincount(m.face_edges, minlength=ne)
-    boundary_at = np.bincount(m.face_edges[on_boundary], minlength=ne)
+    faces_at = np.bincount(m.face_edges_items, minlength=ne)
+    boundary_at = np.bincount(m.face_edges_items[on_boundary], minlength=ne)
     assert np.array_equal(2 * m.edge_valence, 2 * faces_at - boundary_at)
 
 
 def test_arrays_are_readonly_views_that_keep_the_mesh_alive(shared_data_dir):
     m = hbc.load(shared_data_dir / "hybrid-base-complex" / "test_2.HYBRID")
     views = {name: getattr(m, name) for name in (
-        "points", "points64", "edges", "face_offsets", "face_vertices", "face_edges", "face_cells",
-        "cell_offsets", "cell_faces", "cell_face_flip", "cell_types", "face_boundary",
+        "points", "points64", "edges", "face_vertices_offsets", "face_vertices_items", "face_edges_offsets",
+        "face_edges_items", "face_cells", "cell_faces_offsets", "cell_faces_items", "cell_face_flip", "cell_types",
+        "face_boundary",
         "edge_boundary", "vertex_boundary", "vertex_non_manifold")}
     for name, a in views.items():
         assert a.base is m, name
@@ -160,7 +163,7 @@ def test_load_accepts_path_and_format(shared_data_dir):
     b = hbc.load(str(path), format="mesh")
     c = hbc.load(pathlib.PurePath(path), "MESH")
     assert a.info() == b.info() == c.info()
-    assert np.array_equal(a.cell_faces, b.cell_faces)
+    assert np.array_equal(a.cell_faces_items, b.cell_faces_items)
 
 
 def test_load_rejects_unknown_format_and_non_paths(shared_data_dir):

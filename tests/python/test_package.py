@@ -64,3 +64,16 @@ def test_stub_matches_module():
             assert members and all(hasattr(info.value, m) for m in members), members
         else:
             assert members == public(vars(runtime)), cls.name
+
+
+def test_every_csr_is_offsets_and_items():
+    """One vocabulary (issue 15): every CSR a class exposes is `<name>_offsets` with `<name>_items`,
+    and nothing else ends in `_offsets` or `_items`."""
+    pairs = 0
+    for cls in (hbc.Mesh, hbc.Analysis, hbc.SingularityGraph, hbc.BaseComplex, hbc.Subsheets, hbc.Wireframe):
+        names = public(vars(cls))
+        offsets = {n[:-len("_offsets")] for n in names if n.endswith("_offsets")}
+        items = {n[:-len("_items")] for n in names if n.endswith("_items")}
+        assert offsets == items, (cls.__name__, offsets ^ items)
+        pairs += len(offsets)
+    assert pairs == 28  # Mesh 3, SingularityGraph 2, BaseComplex 5, Subsheets 7, Wireframe 2, Analysis 9

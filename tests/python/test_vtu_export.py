@@ -84,9 +84,9 @@ def test_to_vtu_opens_in_meshio_with_the_block_ids(shared_data_dir, tmp_path, na
     # meshio regroups the cells by VTK type: compare the counts of hbc's cell types.
     assert np.array_equal(np.bincount(data["cell_type"], minlength=5), np.bincount(mesh.cell_types, minlength=5))
     # Sheet 0's membership array holds exactly its cells.
-    sheet0 = a.sheet_cell_items[a.sheet_cell_offsets[0]:a.sheet_cell_offsets[1]]
+    sheet0 = a.sheet_cells_items[a.sheet_cells_offsets[0]:a.sheet_cells_offsets[1]]
     assert int(data["in_sheet"].sum()) == len(sheet0)
-    assert int((data["sheet_count"] > 0).sum()) == len(np.unique(a.sheet_cell_items))
+    assert int((data["sheet_count"] > 0).sum()) == len(np.unique(a.sheet_cells_items))
     g = meshio.read(graph_path)
     lines, gdata = cells_of(g)
     st = a.stats

@@ -2,6 +2,7 @@
 // The whole pipeline on one mesh, with per-stage timings, and the Table 1 statistics (SPEC §5).
 // The CLI, the Python binding and the table command all go through here.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "hbc/base_complex.hpp"
@@ -27,27 +28,39 @@ struct Timings {
   double load = 0, singularity_graph = 0, base_complex = 0, sheets = 0, subsheets = 0, vsg_wireframe = 0;
 };
 
+// The sheet stage (SPEC §3): the curve/block domain, the sheets on it and, when the subsheet
+// stage ran too, the decomposition of every self-intersecting sheet.
+struct SheetStage {
+  SheetDomain domain;
+  Sheets sheets;
+  std::optional<int32_t> largest_self_intersecting;  // the sheet id, when there is such a sheet
+  // The subsheet stage ran: one decomposition per self-intersecting sheet, in sheet order.
+  std::optional<std::vector<Subsheets>> subsheets;
+
+  // The decomposition of sheet s; nullptr when s is not self-intersecting or the subsheet stage
+  // did not run.
+  const Subsheets* subsheets_of(int32_t s) const;
+};
+
+// The whole-mesh VSG wireframe stage (SPEC §4).
+struct WireframeStage {
+  CellComplex view;  // the view the wireframe was computed on
+  VsgWireframe wireframe;
+};
+
+// The graph and the base complex are always computed; a stage that may be skipped
+// (AnalysisOptions) is an optional that holds a value exactly when it ran.
 struct Analysis {
   SingularityGraph graph;
   BaseComplex complex;
-  SheetDomain domain;
-  Sheets sheets;
-  std::vector<Subsheets> subsheets;        // one per self-intersecting sheet, in sheet order
-  int32_t largest_self_intersecting = -1;  // sheet id, or -1
-  CellComplex wire_complex;                // the view the whole-mesh wireframe was computed on
-  VsgWireframe wireframe;
+  std::optional<SheetStage> sheet_stage;
+  std::optional<WireframeStage> wireframe_stage;
   Timings timings;
-  bool has_sheets = false;     // the sheet stage ran
-  bool has_subsheets = false;  // the subsheet stage ran
-  bool has_wireframe = false;  // the wireframe stage ran
-
-  // The decomposition of sheet s, or nullptr when s is not self-intersecting.
-  const Subsheets* subsheets_of(int32_t s) const;
 };
 
 Analysis analyze(const Mesh& mesh, const AnalysisOptions& options = {});
 
-// The SPEC §5 statistics. Counts are -1 for stages that were not run.
+// The SPEC §5 statistics. The counts of a stage that did not run hold no value.
 struct Stats {
   int64_t cells = 0, hex_cells = 0;
   double hex_ratio = 0;
@@ -56,9 +69,9 @@ struct Stats {
   int64_t components = 0, hex_components = 0;
   double hex_component_ratio = 0;
   int64_t patches = 0, curves = 0, corners = 0, self_adjacent_faces = 0;
-  int64_t sheets = -1, sheets_perfect = -1, sheets_type1 = -1, sheets_type2 = -1, sheets_type3 = -1;
-  int64_t subsheets_of_largest_self_intersecting = -1;
-  int64_t vsg_edges = -1, wireframe_edges = -1, wireframe_edges_simplified = -1;
+  std::optional<int64_t> sheets, sheets_perfect, sheets_type1, sheets_type2, sheets_type3;
+  std::optional<int64_t> subsheets_of_largest_self_intersecting;
+  std::optional<int64_t> vsg_edges, wireframe_edges, wireframe_edges_simplified;
   Timings timings;
 };
 

@@ -4,6 +4,7 @@
 // `hbc export-surface` (surface.hpp) and the block soups of the viewer (render_geometry.hpp).
 // Every selector is a pure function; faces follow the mesh's cell and face order.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -41,10 +42,10 @@ FaceSelection boundary_selection(const Mesh& mesh);
 // Every face of each listed cell, id = the cell.
 FaceSelection cells_selection(const Mesh& mesh, std::span<const int32_t> cells);
 
-// Each row of `sets` (mesh cells) is a block, id = its row (`only` >= 0: that row alone): the
+// Each row of `sets` (mesh cells) is a block, id = its row (with `only`, that row alone): the
 // faces of its cells whose other side is not in the row (or is outside the mesh). Rows may share
 // cells. Sheets, subsheets and the hex region are such sets.
-FaceSelection cell_set_selection(const Mesh& mesh, const Csr<int32_t>& sets, int32_t only = -1);
+FaceSelection cell_set_selection(const Mesh& mesh, const Csr<int32_t>& sets, std::optional<int32_t> only = std::nullopt);
 
 // The surface of the hex cells (one block, id 0): hex faces whose other side is not a hex cell.
 FaceSelection hex_region_selection(const Mesh& mesh);
@@ -56,9 +57,9 @@ FaceSelection patch_selection(const Mesh& mesh, const BaseComplex& bc);
 // it; id = component. A face between two components appears once for each.
 FaceSelection component_selection(const Mesh& mesh, const BaseComplex& bc);
 
-// For every sheet (or sheet `sheet` >= 0 only), the faces of its cells whose other side is not a
+// For every sheet (or that one `sheet` only), the faces of its cells whose other side is not a
 // cell of the sheet, oriented out of the sheet; id = sheet.
-FaceSelection sheet_selection(const Mesh& mesh, const Sheets& sheets, int32_t sheet = -1);
+FaceSelection sheet_selection(const Mesh& mesh, const Sheets& sheets, std::optional<int32_t> sheet = std::nullopt);
 
 // One sheet split by component: the faces of the sheet's cells in each component whose other side
 // is outside the sheet or in another component; id = component. At the mesh level a sheet is a

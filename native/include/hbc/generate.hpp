@@ -72,4 +72,20 @@ MeshInput generate_cylinder(int radius_cells, int layers);
 // and the quads it turns into on the way round (so the ring still closes on itself).
 MeshInput generate_twisted_ring(int section, int sections, int quarter_turns, bool prisms, bool spread = false);
 
+// Two concentric twisted rings of one `section` × `section` section (even, >= 2) in `sections`
+// layers each, the inner one where generate_twisted_ring puts a ring, the outer one round it (its
+// circle 2 sections further out). In each ring one hex of the first layer, the boundary quad left of the section's
+// middle line, is split into 6 pyramids around its centre (its quads stay). Its faces start
+// separation surfaces that run round the ring turning with the section: the base complex is cut
+// into that layer and the rest of the ring, and across the section along the lines of the split
+// quad and the lines they turn into. The outer ring turns a quarter turn: each sheet through the
+// section comes back as one of the other direction and crosses itself (self-intersecting), and
+// those through the split quad's row and column have its edges for parallel curves, so their
+// regions hold the pyramids, at which their VSG chains round the ring end. The inner ring turns a
+// half turn: the column of blocks left of the middle line comes back as the column right of it, so
+// that sheet's parallel curves meet end to end across the line (self-parallel) and never cross.
+// Section 4: 2 self-intersecting sheets, 1 self-parallel sheet and 7 perfect ones
+// (tests/cpp/test_generate.cpp derives them).
+MeshInput generate_twisted_pair(int section, int sections);
+
 }  // namespace hbc

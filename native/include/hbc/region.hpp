@@ -3,6 +3,7 @@
 // which the viewer and `hbc wireframe --sheet` compute a sheet's own VSG wireframe. Part of the
 // analysis: a region is a function of an Analysis and a sheet (or subsheet) id.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "hbc/analysis.hpp"
@@ -11,22 +12,22 @@
 
 namespace hbc {
 
-// Sheet `sheet` of the analysis; throws std::invalid_argument when the analysis has no sheets or
-// the id is out of range.
-void require_sheet(const Analysis& analysis, int32_t sheet);
+// The sheet stage of the analysis, checked to hold sheet `sheet`; throws std::invalid_argument when
+// the analysis has no sheets or the id is out of range.
+const SheetStage& require_sheet(const Analysis& analysis, int32_t sheet);
 // The subsheets of `sheet`; throws std::invalid_argument as require_sheet, when the analysis has
 // no subsheets, or when the sheet is not self-intersecting.
 const Subsheets& require_subsheets(const Analysis& analysis, int32_t sheet);
 
-// The mesh cells of a region, sorted: the whole mesh's cells when sheet < 0; else the cells of
-// that sheet (subsheet < 0) or of that subsheet of the sheet, plus the non-hex cells adjacent to
-// it (touching one of its curves). Throws std::invalid_argument for ids out of range or a
-// subsheet of a sheet without a decomposition.
-std::vector<int32_t> region_cells(const Mesh& mesh, const Analysis& analysis, int32_t sheet,
-                                  int32_t subsheet = -1);
+// The mesh cells of a region, sorted: the whole mesh's cells without a sheet; else the cells of
+// that sheet (without a subsheet) or of that subsheet of the sheet, plus the non-hex cells
+// adjacent to it (touching one of its curves). Throws std::invalid_argument for ids out of range,
+// a subsheet without its sheet, or a subsheet of a sheet without a decomposition.
+std::vector<int32_t> region_cells(const Mesh& mesh, const Analysis& analysis, std::optional<int32_t> sheet,
+                                  std::optional<int32_t> subsheet = std::nullopt);
 
-// The VSG wireframe of that region (whole mesh when sheet < 0) at `level`.
-VsgWireframe region_wireframe(const Mesh& mesh, const Analysis& analysis, Level level,
-                              const WireframeOptions& options, int32_t sheet, int32_t subsheet = -1);
+// The VSG wireframe of that region (the whole mesh without a sheet) at `level`.
+VsgWireframe region_wireframe(const Mesh& mesh, const Analysis& analysis, Level level, const WireframeOptions& options,
+                              std::optional<int32_t> sheet, std::optional<int32_t> subsheet = std::nullopt);
 
 }  // namespace hbc

@@ -8,6 +8,7 @@
 // The region of a sheet and its wireframe are part of the analysis (region.hpp).
 // Everything is a pure, deterministic function of its arguments.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -42,11 +43,12 @@ bool soup_kind_needs_sheet(SoupKind kind);
 // Cells, NonHex and Boundary read only the mesh (any Analysis, even an empty one, will do).
 bool soup_kind_needs_analysis(SoupKind kind);
 
-// Selects the faces of `kind`. `sheet` is required (a sheet id) for Subsheets, Sheet and
-// SheetNonHex and ignored otherwise. Throws std::invalid_argument when the analysis lacks the
-// stage the kind needs (sheets, subsheets), for a sheet id out of range, and for Subsheets of a
-// sheet that is not self-intersecting.
-FaceSelection soup_faces(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1);
+// Selects the faces of `kind`. `sheet` is required for Subsheets, Sheet and SheetNonHex
+// (soup_kind_needs_sheet) and ignored otherwise. Throws std::invalid_argument without a sheet
+// those kinds need, when the analysis lacks the stage the kind needs (sheets, subsheets), for a
+// sheet id out of range, and for Subsheets of a sheet that is not self-intersecting.
+FaceSelection soup_faces(const Mesh& mesh, const Analysis& analysis, SoupKind kind,
+                         std::optional<int32_t> sheet = std::nullopt);
 
 struct BlockSoup {
   // Points: each owner has its own copies of the mesh vertices its faces use (shared between
@@ -54,15 +56,14 @@ struct BlockSoup {
   std::vector<float> positions;        // 3 * np: x y z
   std::vector<int32_t> point_vertex;   // np: the mesh vertex the point copies
   // Faces, grouped by increasing owner, in selection order within an owner.
-  std::vector<int32_t> face_sizes;     // nf: loop length
-  std::vector<int32_t> face_vertices;  // sum(face_sizes): point ids, loops outward (right-hand rule)
+  Csr<int32_t> face_vertices;          // nf rows: point ids, loops outward (right-hand rule)
   std::vector<int32_t> face_owner;     // nf
   std::vector<int32_t> face_source;    // nf: mesh face id
   std::vector<int32_t> face_cell;      // nf: mesh cell on the owner's side of the face (the cell
                                        // whose faces were selected), for per-cell attributes
 
   size_t num_points() const { return point_vertex.size(); }
-  size_t num_faces() const { return face_sizes.size(); }
+  size_t num_faces() const { return face_vertices.rows(); }
 };
 
 // Builds the soup of `faces` (ids >= 0 are the owners, faces in range). Every point p of an owner is moved to
@@ -71,8 +72,8 @@ struct BlockSoup {
 BlockSoup build_soup(const Mesh& mesh, const FaceSelection& faces, double shrink = 0.0);
 
 // soup_faces then build_soup.
-BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind, int32_t sheet = -1,
-                     double shrink = 0.0);
+BlockSoup block_soup(const Mesh& mesh, const Analysis& analysis, SoupKind kind,
+                     std::optional<int32_t> sheet = std::nullopt, double shrink = 0.0);
 
 // The surface of a set of cells (kept[c] != 0; nc entries, else std::invalid_argument): every face
 // of a kept cell whose other side is not kept or is the boundary, owner = cell id, pointing out of
@@ -92,12 +93,12 @@ std::vector<float> polyline_positions(const Mesh& mesh, std::span<const int32_t>
 
 // The classifications of n sheets or subsheets as flat arrays.
 struct ClassArrays {
-  std::vector<uint8_t> type;       // n: SheetType
-  std::vector<uint8_t> flags;      // 3n: type1, type2, type3 configuration present (0/1)
-  Csr<int32_t> unmatched;          // n rows: mesh vertices left unmatched
-  Csr<int32_t> shared;             // n rows: mesh vertices shared by two parallel curves
-  Csr<int32_t> self_parallel;      // n rows: curve ids (SheetDomain curves) of type-2 pairs
-  Csr<int32_t> self_intersecting;  // n rows: base-complex component ids holding type-3 pairs
+  std::vector<uint8_t> type;                  // n: SheetType
+  std::vector<uint8_t> flags;                 // 3n: type1, type2, type3 configuration present (0/1)
+  Csr<int32_t> unmatched_vertices;            // n rows: mesh vertices left unmatched
+  Csr<int32_t> shared_vertices;               // n rows: mesh vertices shared by two parallel curves
+  Csr<int32_t> self_parallel_curves;          // n rows: curve ids (SheetDomain curves) of type-2 pairs
+  Csr<int32_t> self_intersecting_components;  // n rows: base-complex component ids holding type-3 pairs
 };
 ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClass> classes);
 

@@ -8,6 +8,7 @@
 // level the blocks are the hex cells, the curves the mesh edges and the quads the cells' faces.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "hbc/base_complex.hpp"
@@ -86,7 +87,7 @@ struct Subsheets {
 // block of the sheet.
 Subsheets decompose_sheet(const SheetDomain& domain, const Sheets& sheets, int32_t sheet);
 
-// The self-intersecting sheet with most cells (ties: lowest id), or -1.
-int32_t largest_self_intersecting(const Sheets& sheets);
+// The self-intersecting sheet with most cells (ties: lowest id); none without such a sheet.
+std::optional<int32_t> largest_self_intersecting(const Sheets& sheets);
 
 }  // namespace hbc

@@ -22,6 +22,7 @@
 // valence (Int32, cells around the edge) and singularity (Int32, chain id, -1 for none).
 // Arrays are zlib-compressed base64 (UInt64 headers) unless ascii is asked for.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "hbc/analysis.hpp"
@@ -31,7 +32,7 @@ namespace hbc {
 
 struct VtuExportOptions {
   bool ascii = false;
-  int32_t sheet = -1;  // the chosen sheet, or -1
+  std::optional<int32_t> sheet;  // the chosen sheet, if any
 };
 
 std::string vtu_cells_text(const Mesh& mesh, const Analysis& analysis, const VtuExportOptions& options = {});

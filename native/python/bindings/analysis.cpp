@@ -4,19 +4,28 @@
 // copy) whose numpy base is the Python object that returned it; that object keeps the analysis,
 // and the analysis its mesh, alive.
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+
+#include <pybind11/stl.h>  // std::optional results as None
 
 #include "bindings.hpp"
 #include "hbc/vtu_export.hpp"
 
 namespace hbc::python {
 
+std::optional<int32_t> optional_id(const py::object& v, const char* what) {
+  if (v.is_none()) return std::nullopt;
+  const int64_t i = v.cast<int64_t>();
+  if (i < 0 || i > INT32_MAX) throw std::invalid_argument(std::string(what) + " must be a non-negative id");
+  return static_cast<int32_t>(i);
+}
+
 namespace {
 
 static_assert(sizeof(EdgeClass) == 1 && sizeof(ComponentKind) == 1, "enums are exposed as uint8");
-
-py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
 
 // Views of the analysis' parts; each keeps the whole analysis alive.
 struct GraphView {
@@ -27,7 +36,7 @@ struct ComplexView {
 };
 struct SubsheetsView {
   PyAnalysisPtr a;
-  size_t index;  // into analysis.subsheets
+  size_t index;  // into the sheet stage's subsheets
 };
 
 const PyAnalysis& analysis_of(const PyAnalysis& p) { return p; }
@@ -55,47 +64,32 @@ void prop(py::class_<H, Opts...>& cls, const char* name, F f, const char* doc) {
       name, [f](py::object self) -> py::array { return f(analysis_of(self.cast<const H&>()), self); }, doc);
 }
 
-// The two properties `<offsets_name>` and `<items_name>` of a CSR returned by get(analysis).
+// The CSR get(analysis) returns as `<name>_offsets` / `<name>_items` (def_csr) of class H.
 template <class H, class... Opts, class Get>
-void csr(py::class_<H, Opts...>& cls, const char* offsets_name, const char* items_name, Get get, const char* doc) {
-  cls.def_property_readonly(
-      offsets_name, [get](py::object self) -> py::array { return vec(get(analysis_of(self.cast<const H&>())).offsets, self); },
-      (std::string("int32 (n + 1,): row offsets of ") + items_name + ". " + doc).c_str());
-  cls.def_property_readonly(
-      items_name, [get](py::object self) -> py::array { return vec(get(analysis_of(self.cast<const H&>())).items, self); },
-      (std::string("int32: ") + doc).c_str());
+void csr(py::class_<H, Opts...>& cls, const std::string& name, Get get, const std::string& rows, const std::string& doc) {
+  def_csr(cls, name, [get](const H& h) -> const Csr<int32_t>& { return get(analysis_of(h)); }, rows, doc);
 }
 
-// The per-row classification arrays shared by Analysis (prefix "sheet_") and Subsheets (none).
+// The per-row classification arrays shared by Analysis (row "sheet", rows "num_sheets") and
+// Subsheets (row "subsheet", rows "count"): `<row>_type`, `<row>_flags` and four CSRs.
 template <class H, class... Opts, class Get>
-void class_arrays(py::class_<H, Opts...>& cls, const std::string& prefix, Get get) {
-  // pybind11 copies names and docstrings, so temporaries are fine.
-  auto name = [&](const std::string& n) { return prefix + n; };
-  cls.def_property_readonly(name("type").c_str(), [get](py::object self) -> py::array {
+void class_arrays(py::class_<H, Opts...>& cls, const std::string& row, const std::string& rows, Get get) {
+  cls.def_property_readonly((row + "_type").c_str(), [get](py::object self) -> py::array {
     return vec(get(self.cast<const H&>()).type, self);
-  }, "uint8 (n,): 0 perfect, 1 type 1, 2 type 2 (self-parallel), 3 type 3 (self-intersecting).");
-  cls.def_property_readonly(name("flags").c_str(), [get](py::object self) -> py::array {
+  }, ("uint8 (" + rows + ",): 0 perfect, 1 type 1, 2 type 2 (self-parallel), 3 type 3 (self-intersecting).").c_str());
+  cls.def_property_readonly((row + "_flags").c_str(), [get](py::object self) -> py::array {
     const auto& f = get(self.cast<const H&>()).flags;
     return view(f.data(), {ssize(f.size() / 3), 3}, self, py::dtype::of<bool>());
-  }, "bool (n, 3): type-1, type-2, type-3 configurations present.");
-  const std::pair<const char*, Csr<int32_t> ClassArrays::*> rows[] = {
-      {"unmatched", &ClassArrays::unmatched},
-      {"shared", &ClassArrays::shared},
-      {"self_parallel", &ClassArrays::self_parallel},
-      {"self_intersecting", &ClassArrays::self_intersecting}};
-  const char* docs[] = {"mesh vertices left unmatched by a maximum matching",
-                        "mesh vertices shared by two parallel curves",
-                        "curve ids of self-parallel (type-2) pairs",
-                        "base-complex components holding two parallel curves sharing an end (type 3)"};
-  for (size_t i = 0; i < 4; ++i) {
-    auto member = rows[i].second;
-    cls.def_property_readonly(name(std::string(rows[i].first) + "_offsets").c_str(),
-                              [get, member](py::object self) -> py::array { return vec((get(self.cast<const H&>()).*member).offsets, self); },
-                              (std::string("int32 (n + 1,): row offsets of the ") + docs[i] + ".").c_str());
-    cls.def_property_readonly(name(std::string(rows[i].first) + "_items").c_str(),
-                              [get, member](py::object self) -> py::array { return vec((get(self.cast<const H&>()).*member).items, self); },
-                              (std::string("int32: ") + docs[i] + ".").c_str());
-  }
+  }, ("bool (" + rows + ", 3): type-1, type-2, type-3 configurations present.").c_str());
+  const std::tuple<const char*, Csr<int32_t> ClassArrays::*, const char*> csrs[] = {
+      {"unmatched_vertices", &ClassArrays::unmatched_vertices, "mesh vertices left unmatched by a maximum matching."},
+      {"shared_vertices", &ClassArrays::shared_vertices, "mesh vertices shared by two parallel curves."},
+      {"self_parallel_curves", &ClassArrays::self_parallel_curves, "curve ids of self-parallel (type-2) pairs."},
+      {"self_intersecting_components", &ClassArrays::self_intersecting_components,
+       "base-complex components holding two parallel curves sharing an end (type 3)."}};
+  for (const auto& [name, member, doc] : csrs)
+    def_csr(cls, row + "_" + name, [get, member = member](const H& h) -> const Csr<int32_t>& { return get(h).*member; },
+            rows, doc);
 }
 
 PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool sheets, bool subsheets,
@@ -116,12 +110,14 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
     PyAnalysis& p = *out;
     p.analysis = hbc::analyze(p.mesh->mesh, o);
     p.analysis.timings.load = p.mesh->load_seconds;
-    const Analysis& a = p.analysis;
-    p.sheet_classes = flatten_classes(a.domain, a.sheets.classes);
-    p.sheet_components = blocks_as_components(a.domain, a.sheets.sheet_blocks);
-    for (const Subsheets& s : a.subsheets) {
-      p.self_intersecting.push_back(s.sheet);
-      p.subsheets.push_back({flatten_classes(a.domain, s.classes), blocks_as_components(a.domain, s.blocks)});
+    if (const auto& st = p.analysis.sheet_stage) {
+      p.sheet_classes = flatten_classes(st->domain, st->sheets.classes);
+      p.sheet_components = blocks_as_components(st->domain, st->sheets.sheet_blocks);
+      if (st->subsheets)
+        for (const Subsheets& s : *st->subsheets) {
+          p.self_intersecting.push_back(s.sheet);
+          p.subsheets.push_back({flatten_classes(st->domain, s.classes), blocks_as_components(st->domain, s.blocks)});
+        }
     }
   }
   return out;
@@ -132,8 +128,8 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
 py::dict stats_dict(const PyAnalysis& p) {
   const Stats s = compute_stats(p.mesh->mesh, p.analysis);
   py::dict d;
-  auto count = [&](const char* key, int64_t v) {
-    if (v >= 0) d[key] = v;
+  auto count = [&](const char* key, std::optional<int64_t> v) {
+    if (v) d[key] = *v;
   };
   count("cells", s.cells);
   d["hex_ratio"] = s.hex_ratio;
@@ -169,18 +165,11 @@ py::dict stats_dict(const PyAnalysis& p) {
   return d;
 }
 
-int32_t optional_id(const py::object& v, const char* what) {
-  if (v.is_none()) return -1;
-  const int64_t i = v.cast<int64_t>();
-  if (i < 0 || i > INT32_MAX) throw std::invalid_argument(std::string(what) + " must be a non-negative id");
-  return static_cast<int32_t>(i);
-}
-
 PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const py::object& subsheet_arg) {
-  const int32_t sheet = optional_id(sheet_arg, "sheet"), subsheet = optional_id(subsheet_arg, "subsheet");
-  if (sheet < 0 && subsheet >= 0) throw std::invalid_argument("a subsheet needs its sheet");
-  if (sheet < 0 && p->analysis.has_wireframe)
-    return {std::shared_ptr<const VsgWireframe>(p, &p->analysis.wireframe)};
+  const auto sheet = optional_id(sheet_arg, "sheet"), subsheet = optional_id(subsheet_arg, "subsheet");
+  if (!sheet && subsheet) throw std::invalid_argument("a subsheet needs its sheet");
+  if (!sheet && p->analysis.wireframe_stage)
+    return {std::shared_ptr<const VsgWireframe>(p, &p->analysis.wireframe_stage->wireframe)};
   auto w = std::make_shared<VsgWireframe>();
   {
     py::gil_scoped_release unlocked;
@@ -191,14 +180,9 @@ PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const
 }
 
 SubsheetsView subsheets(const PyAnalysisPtr& p, int64_t sheet) {
-  const Analysis& a = p->analysis;
-  if (!a.has_sheets || !a.has_subsheets) throw std::invalid_argument("the analysis was run without subsheets");
-  if (sheet < 0 || static_cast<size_t>(sheet) >= a.sheets.size())
-    throw std::invalid_argument("sheet " + std::to_string(sheet) + " out of range: the mesh has " +
-                                std::to_string(a.sheets.size()) + " sheets");
-  for (size_t i = 0; i < a.subsheets.size(); ++i)
-    if (a.subsheets[i].sheet == sheet) return {p, i};
-  throw std::invalid_argument("sheet " + std::to_string(sheet) + " is not self-intersecting (type 3)");
+  if (sheet < 0 || sheet > INT32_MAX) throw std::invalid_argument("sheet must be a non-negative id");
+  const Subsheets& sub = require_subsheets(p->analysis, static_cast<int32_t>(sheet));
+  return {p, static_cast<size_t>(&sub - p->decompositions().data())};
 }
 
 void bind_graph(py::module_& m) {
@@ -210,9 +194,9 @@ void bind_graph(py::module_& m) {
        "bool (ne,): valence other than 4 inside / 2 on the boundary.");
   prop(g, "edge_chain", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.edge_chain, s); },
        "int32 (ne,): singularity of a singular edge, else -1.");
-  csr(g, "chain_vertex_offsets", "chain_vertex_items", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; },
+  csr(g, "chain_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; }, "ns",
       "ordered vertices of each singularity (a closed chain does not repeat its first vertex).");
-  csr(g, "chain_edge_offsets", "chain_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; },
+  csr(g, "chain_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; }, "ns",
       "ordered edges of each singularity; edge i joins chain vertices i and i+1 (mod n).");
   prop(g, "chain_valence", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.chain_valence, s); },
        "int32 (ns,): valence of each singularity.");
@@ -238,20 +222,19 @@ void bind_complex(py::module_& m) {
        "int32 (nc,): component of each cell.");
   prop(c, "component_kind", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.complex.component_kind, s); },
        "uint8 (ncomp,): 0 cube, 1 ring, 2 other, 3 non-hex.");
-  csr(c, "component_cell_offsets", "component_cell_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; },
+  csr(c, "component_cells", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; }, "ncomp",
       "sorted cells of each component.");
-  csr(c, "component_adjacency_offsets", "component_adjacency_items",
-      [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_adjacency; },
-      "sorted components sharing a separation face with each component.");
+  csr(c, "component_adjacency", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_adjacency; },
+      "ncomp", "sorted components sharing a separation face with each component.");
   prop(c, "face_separation", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.face_separation, s); },
        "bool (nf,): separation face.");
   prop(c, "face_patch", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.face_patch, s); },
        "int32 (nf,): patch of a separation face, else -1.");
-  csr(c, "patch_face_offsets", "patch_face_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; },
+  csr(c, "patch_faces", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; }, "npatch",
       "sorted mesh faces of each patch.");
-  csr(c, "curve_vertex_offsets", "curve_vertex_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; },
+  csr(c, "curve_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; }, "ncurve",
       "mesh vertex polyline of each curve (a closed curve does not repeat its first vertex).");
-  csr(c, "curve_edge_offsets", "curve_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; },
+  csr(c, "curve_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; }, "ncurve",
       "ordered mesh edges of each curve.");
   prop(c, "curve_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.curve_closed, s); },
        "bool (ncurve,): a closed curve (no corner on it).");
@@ -269,32 +252,23 @@ void bind_complex(py::module_& m) {
 void bind_subsheets(py::module_& m) {
   py::class_<SubsheetsView> c(m, "Subsheets",
                               "The subsheets of one self-intersecting sheet (SPEC section 3); arrays are views.");
-  c.def_property_readonly("sheet", [](const SubsheetsView& v) { return v.a->analysis.subsheets[v.index].sheet; });
-  c.def_property_readonly("count", [](const SubsheetsView& v) { return v.a->analysis.subsheets[v.index].size(); });
-  const auto sub = [](const SubsheetsView& v) -> const Subsheets& { return v.a->analysis.subsheets[v.index]; };
+  const auto sub = [](const SubsheetsView& v) -> const Subsheets& { return v.a->decompositions()[v.index]; };
+  c.def_property_readonly("sheet", [sub](const SubsheetsView& v) { return sub(v).sheet; });
+  c.def_property_readonly("count", [sub](const SubsheetsView& v) { return sub(v).size(); });
   const auto flat = [](const SubsheetsView& v) -> const PyAnalysis::Sub& { return v.a->subsheets[v.index]; };
-  auto rows = [&](const char* off, const char* items, auto get, const char* doc) {
-    c.def_property_readonly(off, [get](py::object self) -> py::array { return vec(get(self.cast<const SubsheetsView&>()).offsets, self); },
-                            (std::string("int32 (count + 1,): row offsets of ") + items + ".").c_str());
-    c.def_property_readonly(items, [get](py::object self) -> py::array { return vec(get(self.cast<const SubsheetsView&>()).items, self); },
-                            doc);
-  };
-  rows("component_offsets", "component_items", [flat](const SubsheetsView& v) -> auto& { return flat(v).components; },
-       "int32: base-complex components of each subsheet, sorted.");
-  rows("cell_offsets", "cell_items", [sub](const SubsheetsView& v) -> auto& { return sub(v).cells; },
-       "int32: mesh hex cells of each subsheet, sorted.");
-  rows("curve_offsets", "curve_items", [sub](const SubsheetsView& v) -> auto& { return sub(v).curves; },
-       "int32: parallel curves of each subsheet, sorted (complex curves, or mesh edges at level 'mesh').");
-  class_arrays(c, "", [flat](const SubsheetsView& v) -> const ClassArrays& { return flat(v).classes; });
+  def_csr(c, "subsheet_components", [flat](const SubsheetsView& v) -> auto& { return flat(v).components; }, "count",
+          "base-complex components of each subsheet, sorted.");
+  def_csr(c, "subsheet_cells", [sub](const SubsheetsView& v) -> auto& { return sub(v).cells; }, "count",
+          "mesh hex cells of each subsheet, sorted.");
+  def_csr(c, "subsheet_curves", [sub](const SubsheetsView& v) -> auto& { return sub(v).curves; }, "count",
+          "parallel curves of each subsheet, sorted (complex curves, or mesh edges at level 'mesh').");
+  class_arrays(c, "subsheet", "count", [flat](const SubsheetsView& v) -> const ClassArrays& { return flat(v).classes; });
 }
 
 std::string to_vtu(const PyAnalysis& p, const std::string& path, py::object sheet, bool ascii) {
   VtuExportOptions o;
   o.ascii = ascii;
-  if (!sheet.is_none()) {
-    o.sheet = sheet.cast<int32_t>();
-    if (o.sheet < 0) throw py::value_error("sheet must be >= 0, got " + std::to_string(o.sheet));
-  }
+  o.sheet = optional_id(sheet, "sheet");
   py::gil_scoped_release unlocked;  // writing touches no Python object
   export_vtu(p.mesh->mesh, p.analysis, path, o);
   return vtu_graph_path(path);
@@ -313,29 +287,36 @@ void bind_analysis(py::module_& m) {
   c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analyzed hbc.Mesh.");
   c.def_property_readonly("level", [](const PyAnalysis& p) { return level_name(p.options.wireframe_level); });
   c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; });
-  c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.has_sheets; });
-  c.def_property_readonly("has_subsheets", [](const PyAnalysis& p) { return p.analysis.has_subsheets; });
-  c.def_property_readonly("has_wireframe", [](const PyAnalysis& p) { return p.analysis.has_wireframe; });
+  c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.sheet_stage.has_value(); },
+                          "The sheet stage ran (else the per-sheet arrays are empty).");
+  c.def_property_readonly("has_subsheets",
+                          [](const PyAnalysis& p) { return p.analysis.sheet_stage && p.analysis.sheet_stage->subsheets; },
+                          "The subsheet stage ran (else subsheets() raises ValueError).");
+  c.def_property_readonly("has_wireframe", [](const PyAnalysis& p) { return p.analysis.wireframe_stage.has_value(); },
+                          "The whole-mesh wireframe stage ran (else wireframe() computes it on demand).");
   c.def_property_readonly("stats", &stats_dict,
                           "dict: the `hbc analyze --json` keys (SPEC section 5), timings in seconds.");
   c.def_property_readonly("graph", [](const PyAnalysisPtr& p) { return GraphView{p}; });
   c.def_property_readonly("complex", [](const PyAnalysisPtr& p) { return ComplexView{p}; });
 
-  c.def_property_readonly("num_sheets", [](const PyAnalysis& p) { return p.analysis.sheets.size(); });
-  csr(c, "sheet_component_offsets", "sheet_component_items", [](const PyAnalysis& p) -> auto& { return p.sheet_components; },
+  c.def_property_readonly("num_sheets", [](const PyAnalysis& p) { return p.sheets().size(); });
+  csr(c, "sheet_components", [](const PyAnalysis& p) -> auto& { return p.sheet_components; }, "num_sheets",
       "base-complex components of each sheet, sorted.");
-  csr(c, "sheet_cell_offsets", "sheet_cell_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_cells; },
+  csr(c, "sheet_cells", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_cells; }, "num_sheets",
       "mesh hex cells of each sheet, sorted.");
-  csr(c, "sheet_curve_offsets", "sheet_curve_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_curves; },
+  csr(c, "sheet_curves", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_curves; }, "num_sheets",
       "parallel curves E_P of each sheet, sorted (complex curves, or mesh edges at level 'mesh').");
-  csr(c, "sheet_edge_offsets", "sheet_edge_items", [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_edges; },
+  csr(c, "sheet_edges", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_edges; }, "num_sheets",
       "mesh edges of each sheet's parallel curves, sorted.");
-  csr(c, "sheet_non_hex_offsets", "sheet_non_hex_items",
-      [](const PyAnalysis& p) -> auto& { return p.analysis.sheets.sheet_non_hex_cells; },
-      "non-hex cells adjacent to each sheet, sorted.");
-  class_arrays(c, "sheet_", [](const PyAnalysis& p) -> const ClassArrays& { return p.sheet_classes; });
-  c.def_property_readonly("largest_self_intersecting", [](const PyAnalysis& p) { return p.analysis.largest_self_intersecting; },
-                          "The self-intersecting sheet with most cells, or -1.");
+  csr(c, "sheet_non_hex_cells", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_non_hex_cells; },
+      "num_sheets", "non-hex cells adjacent to each sheet, sorted.");
+  class_arrays(c, "sheet", "num_sheets", [](const PyAnalysis& p) -> const ClassArrays& { return p.sheet_classes; });
+  c.def_property_readonly(
+      "largest_self_intersecting",
+      [](const PyAnalysis& p) -> std::optional<int32_t> {
+        return p.analysis.sheet_stage ? p.analysis.sheet_stage->largest_self_intersecting : std::nullopt;
+      },
+      "The self-intersecting sheet with most cells; None without one (or without the sheet stage).");
   prop(c, "self_intersecting_sheets", [](const PyAnalysis& p, py::handle s) { return vec(p.self_intersecting, s); },
        "int32: the sheets with a subsheet decomposition, increasing.");
   c.def("subsheets", &subsheets, py::arg("sheet"),

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "hbc/analysis.hpp"
@@ -25,6 +27,8 @@ struct PyMesh {
   double load_seconds = 0;  // set by hbc.load(); reported as the analysis' "load" timing
 };
 using PyMeshPtr = std::shared_ptr<PyMesh>;
+
+inline py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
 
 // A read-only numpy array over `data` (no copy) with the given shape (C order). `owner` is the
 // Python object whose lifetime covers `data`; numpy keeps a reference to it as the array's base.
@@ -46,8 +50,35 @@ py::array adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape, py::dtype dt
   return py::array(std::move(dtype), std::move(shape), std::vector<py::ssize_t>{}, heap->data(), owner);
 }
 
+// Every CSR is exposed the same way: `<name>_offsets`, int32 (rows + 1,), and `<name>_items`,
+// int32 (<name>_offsets[-1],), read-only views of the Csr get(holder) returns, whose numpy base is
+// the Python object (which keeps the data alive). `rows` names the row count in the docstring;
+// `doc` says what the items of a row are.
+template <class H, class... Opts, class Get>
+void def_csr(py::class_<H, Opts...>& cls, const std::string& name, Get get, const std::string& rows,
+             const std::string& doc) {
+  // pybind11 copies names and docstrings, so temporaries are fine.
+  cls.def_property_readonly(
+      (name + "_offsets").c_str(),
+      [get](py::object self) -> py::array {
+        const auto& v = get(self.cast<const H&>()).offsets;
+        return view(v.data(), {ssize(v.size())}, self);
+      },
+      ("int32 (" + rows + " + 1,): row r's items are " + name + "_items[" + name + "_offsets[r]:" + name +
+       "_offsets[r + 1]].")
+          .c_str());
+  cls.def_property_readonly(
+      (name + "_items").c_str(),
+      [get](py::object self) -> py::array {
+        const auto& v = get(self.cast<const H&>()).items;
+        return view(v.data(), {ssize(v.size())}, self);
+      },
+      ("int32 (" + name + "_offsets[-1],): " + doc).c_str());
+}
+
 // What a Python hbc.Analysis holds: the mesh it was computed on (kept alive), the options (for
 // the region wireframes computed on demand), the analysis, and the per-sheet arrays flattened once.
+// Without a sheet stage the per-sheet arrays are empty (Analysis.has_sheets tells the two apart).
 struct PyAnalysis {
   PyMeshPtr mesh;
   AnalysisOptions options;
@@ -59,7 +90,12 @@ struct PyAnalysis {
     ClassArrays classes;
     Csr<int32_t> components;
   };
-  std::vector<Sub> subsheets;              // aligned with analysis.subsheets
+  std::vector<Sub> subsheets;              // aligned with the sheet stage's subsheets
+  Sheets no_sheets;                        // what sheets() returns without a sheet stage
+
+  const Sheets& sheets() const { return analysis.sheet_stage ? analysis.sheet_stage->sheets : no_sheets; }
+  // The decompositions; the subsheet stage must have run (subsheets() checks it).
+  const std::vector<Subsheets>& decompositions() const { return *analysis.sheet_stage->subsheets; }
 };
 using PyAnalysisPtr = std::shared_ptr<PyAnalysis>;
 
@@ -68,6 +104,10 @@ using PyAnalysisPtr = std::shared_ptr<PyAnalysis>;
 struct PyWireframe {
   std::shared_ptr<const VsgWireframe> w;
 };
+
+// An optional id argument: None is none; anything else must be an int in [0, INT32_MAX]
+// (std::invalid_argument naming `what` otherwise).
+std::optional<int32_t> optional_id(const py::object& v, const char* what);
 
 // A new (owning, writable) 1-D numpy array holding a copy of `v`.
 template <class T>

@@ -34,16 +34,18 @@ std::vector<int64_t> int_values(const py::object& obj, const char* name) {
   return std::vector<int64_t>(c.data(), c.data() + c.size());
 }
 
-// offsets/items as one CSR table; items are range-checked against [0, limit).
-Csr<int32_t> csr(const py::object& offsets_obj, const py::object& items_obj, const char* offsets_name,
-                 const char* items_name, int64_t limit, const std::string& source) {
-  const std::vector<int64_t> off = int_values(offsets_obj, offsets_name);
-  const std::vector<int64_t> items = int_values(items_obj, items_name);
+// The arguments <name>_offsets and <name>_items as one CSR table; items are range-checked against
+// [0, limit).
+Csr<int32_t> csr(const py::object& offsets_obj, const py::object& items_obj, const std::string& name, int64_t limit,
+                 const std::string& source) {
+  const std::string offsets_name = name + "_offsets", items_name = name + "_items";
+  const std::vector<int64_t> off = int_values(offsets_obj, offsets_name.c_str());
+  const std::vector<int64_t> items = int_values(items_obj, items_name.c_str());
   if (off.empty() || off.front() != 0)
-    throw InputError(source, {}, std::string(offsets_name) + " starting with 0");
+    throw InputError(source, {}, offsets_name + " starting with 0");
   if (off.back() != static_cast<int64_t>(items.size()) || items.size() > static_cast<size_t>(kMaxIndex))
     throw InputError(source, {},
-                     std::string(offsets_name) + "[-1] == len(" + items_name + ") = " +
+                     offsets_name + "[-1] == len(" + items_name + ") = " +
                          std::to_string(items.size()) + " (below 2^31), found " +
                          std::to_string(off.back()));
   Csr<int32_t> out;
@@ -51,7 +53,7 @@ Csr<int32_t> csr(const py::object& offsets_obj, const py::object& items_obj, con
   for (size_t i = 0; i < off.size(); ++i) {
     if (i > 0 && off[i] < off[i - 1])
       throw InputError(source, {},
-                       std::string(offsets_name) + " non-decreasing, found " +
+                       offsets_name + " non-decreasing, found " +
                            std::to_string(off[i]) + " after " + std::to_string(off[i - 1]) +
                            " at index " + std::to_string(i));
     out.offsets[i] = static_cast<int32_t>(off[i]);
@@ -81,26 +83,26 @@ std::vector<double> point_values(const py::object& obj) {
   return std::vector<double>(c.data(), c.data() + c.size());
 }
 
-PyMeshPtr from_arrays(const py::object& points, const py::object& face_offsets,
-                      const py::object& face_vertices, const py::object& cell_offsets,
-                      const py::object& cell_faces, const py::object& cell_face_flip,
+PyMeshPtr from_arrays(const py::object& points, const py::object& face_vertices_offsets,
+                      const py::object& face_vertices_items, const py::object& cell_faces_offsets,
+                      const py::object& cell_faces_items, const py::object& cell_face_flip,
                       const std::string& source) {
   MeshInput in;
   in.source = source;
   in.points = point_values(points);
   // Vertex ids are range-checked by build_mesh with a better message; here only int32 fit.
-  in.faces = csr(face_offsets, face_vertices, "face_offsets", "face_vertices", kMaxIndex, source);
+  in.faces = csr(face_vertices_offsets, face_vertices_items, "face_vertices", kMaxIndex, source);
   // Cells store 2*face+flip, so face ids must stay below 2^30.
   const int64_t nf = static_cast<int64_t>(in.faces.rows());
   if (nf > kMaxIndex / 2) throw InputError(source, {}, "fewer than 2^30 faces");
-  in.cells = csr(cell_offsets, cell_faces, "cell_offsets", "cell_faces", nf, source);
+  in.cells = csr(cell_faces_offsets, cell_faces_items, "cell_faces", nf, source);
   if (!cell_face_flip.is_none()) {
     py::array a = as_array(cell_face_flip, "cell_face_flip");
     const std::vector<int64_t> flip =
         a.dtype().kind() == 'b' ? int_values(a.attr("astype")("uint8"), "cell_face_flip")
                                 : int_values(a, "cell_face_flip");
     if (flip.size() != in.cells.items.size())
-      throw py::value_error("cell_face_flip: expected len(cell_faces) = " +
+      throw py::value_error("cell_face_flip: expected len(cell_faces_items) = " +
                             std::to_string(in.cells.items.size()) + " entries, got " +
                             std::to_string(flip.size()));
     for (size_t i = 0; i < flip.size(); ++i) {
@@ -123,12 +125,13 @@ PyMeshPtr from_arrays(const py::object& points, const py::object& face_offsets,
 }  // namespace
 
 void bind_from_arrays(py::class_<PyMesh, PyMeshPtr>& cls) {
-  cls.def_static("from_arrays", &from_arrays, py::arg("points"), py::arg("face_offsets"),
-                 py::arg("face_vertices"), py::arg("cell_offsets"), py::arg("cell_faces"),
+  cls.def_static("from_arrays", &from_arrays, py::arg("points"), py::arg("face_vertices_offsets"),
+                 py::arg("face_vertices_items"), py::arg("cell_faces_offsets"), py::arg("cell_faces_items"),
                  py::arg("cell_face_flip") = py::none(), py::arg("source") = "<arrays>",
                  "Builds a mesh from arrays in the layout the Mesh properties use: points (nv, 3) "
-                 "float; face_offsets (nf + 1,) and face_vertices CSR vertex loops; cell_offsets "
-                 "(nc + 1,) and cell_faces CSR face ids; optional cell_face_flip (len(cell_faces),) "
+                 "float; face_vertices_offsets (nf + 1,) and face_vertices_items, the CSR of vertex "
+                 "loops; cell_faces_offsets (nc + 1,) and cell_faces_items, the CSR of face ids; "
+                 "optional cell_face_flip (len(cell_faces_items),) "
                  "0/1, 1 when the cell sees the loop reversed (orientation only; topology does not "
                  "depend on it). Copies the data. Raises MeshFormatError (a ValueError) for a "
                  "mesh that is not valid, TypeError/ValueError for wrong dtypes or shapes.");

@@ -12,8 +12,6 @@ namespace {
 
 static_assert(sizeof(WireKind) == 1 && sizeof(TraceStop) == 1, "enums are exposed as uint8");
 
-py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
-
 using IntArray = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
 
 // A read-only view of a wireframe vector; the Wireframe object is the numpy base.
@@ -39,12 +37,10 @@ void bind_wireframe(py::module_& m) {
                             "A VSG wireframe (SPEC section 4): polylines of mesh vertices with per-point "
                             "opacity and per-polyline kind, simplification flags and colours. Arrays are views.");
   c.def_property_readonly("count", [](const PyWireframe& p) { return p.w->size(); }, "Number of polylines.");
-  wire_prop(c, "polyline_offsets", [](const VsgWireframe& w) -> auto& { return w.polylines.offsets; },
-            "int32 (count + 1,): row offsets of polyline_items.");
-  wire_prop(c, "polyline_items", [](const VsgWireframe& w) -> auto& { return w.polylines.items; },
-            "int32: mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
+  def_csr(c, "polylines", [](const PyWireframe& p) -> auto& { return p.w->polylines; }, "count",
+          "mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
   wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.style.point_opacity; },
-            "float32, aligned with polyline_items: opacity in [floor, 1].");
+            "float32 (polylines_offsets[-1],), aligned with polylines_items: opacity in [floor, 1].");
   wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
             "int32 (count,): region valence of the chain's first edge.");
@@ -56,10 +52,9 @@ void bind_wireframe(py::module_& m) {
             "uint8 (count,): 0 kept, 1 both ends redundant, 2 in a removable pair at a singular vertex.");
   wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
             "bool (count,): non-important but kept: it continues a kept chain.", true);
-  wire_prop(c, "simplified_offsets", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.offsets; },
-            "int32 (counts['wireframe_edges_simplified'] + 1,): row offsets of simplified_items.");
-  wire_prop(c, "simplified_items", [](const VsgWireframe& w) -> auto& { return w.simplified_polylines.items; },
-            "int32: mesh vertices along each simplified polyline (kept chains re-chained).");
+  def_csr(c, "simplified_polylines", [](const PyWireframe& p) -> auto& { return p.w->simplified_polylines; },
+          "counts['wireframe_edges_simplified']",
+          "mesh vertices along each simplified polyline (kept chains re-chained).");
   wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
   wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
@@ -86,11 +81,12 @@ void bind_wireframe(py::module_& m) {
 }
 
 py::dict soup_dict(BlockSoup&& s) {
-  const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces()), nfv = ssize(s.face_vertices.size());
+  const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces());
+  const py::ssize_t nfv = ssize(s.face_vertices.items.size());
   py::dict d;
   d["positions"] = adopt(std::move(s.positions), {np, 3});
-  d["face_sizes"] = adopt(std::move(s.face_sizes), {nf});
-  d["face_vertices"] = adopt(std::move(s.face_vertices), {nfv});
+  d["face_vertices_offsets"] = adopt(std::move(s.face_vertices.offsets), {nf + 1});
+  d["face_vertices_items"] = adopt(std::move(s.face_vertices.items), {nfv});
   d["face_owner"] = adopt(std::move(s.face_owner), {nf});
   d["face_source"] = adopt(std::move(s.face_source), {nf});
   d["face_cell"] = adopt(std::move(s.face_cell), {nf});
@@ -110,8 +106,9 @@ py::dict kept_surface(const PyMeshPtr& mesh, const MaskArray& kept, double shrin
   return soup_dict(std::move(s));
 }
 
-py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what, int32_t sheet,
-                    double shrink) {
+py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const std::string& what,
+                    const py::object& sheet_arg, double shrink) {
+  const std::optional<int32_t> sheet = optional_id(sheet_arg, "sheet");
   const SoupKind kind = soup_kind_from_name(what);
   if (!analysis && soup_kind_needs_analysis(kind))
     throw std::invalid_argument("block_soup: '" + what + "' needs an analysis (only 'cells', 'non_hex', 'hex' and "
@@ -128,14 +125,13 @@ py::dict block_soup(const PyMeshPtr& mesh, const PyAnalysisPtr& analysis, const 
   return soup_dict(std::move(s));
 }
 
-py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArray& vertices) {
-  if (offsets.ndim() != 1 || vertices.ndim() != 1)
-    throw std::invalid_argument("polylines: offsets and vertices must be 1-D");
+py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArray& items) {
+  if (offsets.ndim() != 1 || items.ndim() != 1) throw std::invalid_argument("polylines: offsets and items must be 1-D");
   std::vector<float> pos;
   {
     py::gil_scoped_release unlocked;
     pos = polyline_positions(mesh->mesh, {offsets.data(), static_cast<size_t>(offsets.size())},
-                             {vertices.data(), static_cast<size_t>(vertices.size())});
+                             {items.data(), static_cast<size_t>(items.size())});
   }
   const py::ssize_t n = ssize(pos.size() / 3);
   return adopt(std::move(pos), {n, 3});
@@ -155,14 +151,15 @@ py::array cell_centroid_array(const PyMeshPtr& mesh) {
 
 void bind_geometry(py::module_& m) {
   bind_wireframe(m);
-  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = -1,
+  m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = py::none(),
         py::arg("shrink") = 0.0,
         "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
         "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex' (the hex region's surface, owner 0). Returns a dict: "
-        "positions float32 (np, 3), point_vertex int32 (np,), face_sizes int32 (nf,), face_vertices "
-        "int32 (sum of face_sizes,), face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
+        "positions float32 (np, 3), point_vertex int32 (np,), face_vertices_offsets int32 (nf + 1,) "
+        "and face_vertices_items int32 (face_vertices_offsets[-1],) the CSR of each face's point loop, "
+        "face_owner int32 (nf,), face_source int32 (nf,) mesh face ids. "
         "face_cell int32 (nf,) the mesh cell on the owner's side (the face points out of it). "
         "Loops are outward; faces grouped by increasing owner. analysis may be None for 'cells', "
         "'non_hex', 'hex' and 'boundary'.");
@@ -172,9 +169,10 @@ void bind_geometry(py::module_& m) {
         "of the kept cell.");
   m.def("cell_centroids", &cell_centroid_array, py::arg("mesh"),
         "float64 (num_cells, 3): the mean of each cell's distinct vertices.");
-  m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("vertices"),
-        "float32 (len(vertices), 3): the positions of the polyline points given as a CSR of mesh "
-        "vertex ids (offsets start at 0 and end at len(vertices)).");
+  m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("items"),
+        "float32 (len(items), 3): the positions of the polyline points given as a CSR of mesh "
+        "vertex ids (offsets start at 0 and end at len(items)), e.g. a Wireframe's "
+        "polylines_offsets and polylines_items.");
 }
 
 }  // namespace hbc::python

@@ -12,12 +12,16 @@ namespace hbc::python {
 
 namespace {
 
+// Rows sharing another CSR's offsets (def_csr reads .offsets and .items).
+struct RowsOf {
+  const std::vector<int32_t>& offsets;
+  const std::vector<int32_t>& items;
+};
+
 static_assert(sizeof(CellType) == 1, "cell_types is exposed as uint8");
 static_assert(sizeof(std::array<int32_t, 2>) == 2 * sizeof(int32_t), "pairs are exposed as (n, 2)");
 
 using Cls = py::class_<PyMesh, PyMeshPtr>;
-
-py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
 
 py::array points32(py::object self) {
   PyMesh& pm = self.cast<PyMesh&>();
@@ -26,26 +30,27 @@ py::array points32(py::object self) {
   return view(pm.points32.data(), {ssize(pm.mesh.num_vertices()), 3}, self);
 }
 
-// A property returning a view of an int32 vector.
+// A property returning a view of get(mesh), a vector of one-byte values (0/1 flags, enums) as
+// `dtype`: uint8 or bool.
 template <class Get>
-void int_view(Cls& cls, const char* name, Get get, const char* doc) {
+void byte_view(Cls& cls, const char* name, Get get, py::dtype dtype, const char* doc) {
   cls.def_property_readonly(
       name,
-      [get](py::object self) {
+      [get, dtype](py::object self) {
         const auto& v = get(self.cast<const PyMesh&>().mesh);
-        return view(v.data(), {ssize(v.size())}, self);
+        return view(reinterpret_cast<const uint8_t*>(v.data()), {ssize(v.size())}, self, dtype);
       },
       doc);
 }
 
-// A property returning a view of a std::vector<uint8_t> of 0/1 flags as numpy bool.
+// A property returning a view of get(mesh), a vector of id pairs, as int32 (n, 2).
 template <class Get>
-void bool_view(Cls& cls, const char* name, Get get, const char* doc) {
+void pair_view(Cls& cls, const char* name, Get get, const char* doc) {
   cls.def_property_readonly(
       name,
       [get](py::object self) {
-        const std::vector<uint8_t>& v = get(self.cast<const PyMesh&>().mesh);
-        return view(v.data(), {ssize(v.size())}, self, py::dtype::of<bool>());
+        const auto& v = get(self.cast<const PyMesh&>().mesh);
+        return view(reinterpret_cast<const int32_t*>(v.data()), {ssize(v.size()), 2}, self);
       },
       doc);
 }
@@ -109,55 +114,31 @@ void bind_mesh(py::module_& mod) {
         return view(m.points.data(), {ssize(m.num_vertices()), 3}, self);
       },
       "float64 (nv, 3): vertex positions as stored (no copy).");
-  cls.def_property_readonly(
-      "edges",
-      [](py::object self) {
-        const Mesh& m = self.cast<const PyMesh&>().mesh;
-        return view(reinterpret_cast<const int32_t*>(m.edge_verts.data()), {ssize(m.num_edges()), 2}, self);
-      },
-      "int32 (ne, 2): edge end vertices, lower id first.");
+  pair_view(cls, "edges", [](const Mesh& m) -> auto& { return m.edge_verts; },
+            "int32 (ne, 2): edge end vertices, lower id first.");
 
-  int_view(cls, "face_offsets", [](const Mesh& m) -> auto& { return m.face_verts.offsets; },
-           "int32 (nf + 1,): face f has vertices face_vertices[face_offsets[f]:face_offsets[f+1]].");
-  int_view(cls, "face_vertices", [](const Mesh& m) -> auto& { return m.face_verts.items; },
-           "int32 (face_offsets[-1],): vertex loop of each face.");
-  int_view(cls, "face_edges", [](const Mesh& m) -> auto& { return m.face_edge_ids; },
-           "int32 (face_offsets[-1],): aligned with face_vertices; entry i of a face is the edge "
-           "joining its loop vertices i and i+1.");
-  cls.def_property_readonly(
-      "face_cells",
-      [](py::object self) {
-        const Mesh& m = self.cast<const PyMesh&>().mesh;
-        return view(reinterpret_cast<const int32_t*>(m.face_cells.data()), {ssize(m.num_faces()), 2}, self);
-      },
-      "int32 (nf, 2): the cells on both sides of each face; column 1 is -1 on the boundary.");
-  int_view(cls, "cell_offsets", [](const Mesh& m) -> auto& { return m.cell_faces.offsets; },
-           "int32 (nc + 1,): cell c has faces cell_faces[cell_offsets[c]:cell_offsets[c+1]].");
-  int_view(cls, "cell_faces", [](const Mesh& m) -> auto& { return m.cell_faces.items; },
-           "int32 (cell_offsets[-1],): face ids of each cell.");
-  cls.def_property_readonly(
-      "cell_face_flip",
-      [](py::object self) {
-        const auto& v = self.cast<const PyMesh&>().mesh.cell_face_flip;
-        return view(v.data(), {ssize(v.size())}, self);
-      },
-      "uint8 (cell_offsets[-1],): aligned with cell_faces; 1 when the cell sees the face loop "
-      "reversed.");
-  cls.def_property_readonly(
-      "cell_types",
-      [](py::object self) {
-        const auto& v = self.cast<const PyMesh&>().mesh.cell_type;
-        return view(reinterpret_cast<const uint8_t*>(v.data()), {ssize(v.size())}, self);
-      },
-      "uint8 (nc,): 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron.");
-
-  bool_view(cls, "face_boundary", [](const Mesh& m) -> auto& { return m.face_boundary; },
+  def_csr(cls, "face_vertices", [](const PyMesh& p) -> auto& { return p.mesh.face_verts; }, "nf",
+          "the vertex loop of each face.");
+  // Stored as items aligned with face_vertices_items; the offsets are those of face_vertices.
+  def_csr(cls, "face_edges", [](const PyMesh& p) { return RowsOf{p.mesh.face_verts.offsets, p.mesh.face_edge_ids}; }, "nf",
+          "aligned with face_vertices_items: entry i of a face is the edge joining its loop vertices i and i+1.");
+  pair_view(cls, "face_cells", [](const Mesh& m) -> auto& { return m.face_cells; },
+            "int32 (nf, 2): the cells on both sides of each face; column 1 is -1 on the boundary.");
+  def_csr(cls, "cell_faces", [](const PyMesh& p) -> auto& { return p.mesh.cell_faces; }, "nc",
+          "the face ids of each cell.");
+  const py::dtype u8 = py::dtype::of<uint8_t>(), boolean = py::dtype::of<bool>();
+  byte_view(cls, "cell_face_flip", [](const Mesh& m) -> auto& { return m.cell_face_flip; }, u8,
+            "uint8 (cell_faces_offsets[-1],): aligned with cell_faces_items; 1 when the cell sees the face "
+            "loop reversed.");
+  byte_view(cls, "cell_types", [](const Mesh& m) -> auto& { return m.cell_type; }, u8,
+            "uint8 (nc,): 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron.");
+  byte_view(cls, "face_boundary", [](const Mesh& m) -> auto& { return m.face_boundary; }, boolean,
             "bool (nf,): face has a cell on one side only.");
-  bool_view(cls, "edge_boundary", [](const Mesh& m) -> auto& { return m.edge_boundary; },
+  byte_view(cls, "edge_boundary", [](const Mesh& m) -> auto& { return m.edge_boundary; }, boolean,
             "bool (ne,): edge lies on a boundary face.");
-  bool_view(cls, "vertex_boundary", [](const Mesh& m) -> auto& { return m.vert_boundary; },
+  byte_view(cls, "vertex_boundary", [](const Mesh& m) -> auto& { return m.vert_boundary; }, boolean,
             "bool (nv,): vertex lies on a boundary face.");
-  bool_view(cls, "vertex_non_manifold", [](const Mesh& m) -> auto& { return m.vert_non_manifold; },
+  byte_view(cls, "vertex_non_manifold", [](const Mesh& m) -> auto& { return m.vert_non_manifold; }, boolean,
             "bool (nv,): vertex whose neighbourhood is not a ball or half-ball (SPEC section 1).");
 
   cls.def_property_readonly(

@@ -44,7 +44,8 @@ class MeshInfo(TypedDict):
     dropped_edges: int
 
 class Mesh:
-    """A conforming polyhedral volume mesh. Array properties are read-only views (no copy)."""
+    """A conforming polyhedral volume mesh. Array properties are read-only views (no copy); every
+    CSR is <name>_offsets, int32 (rows + 1,), with <name>_items, int32 (<name>_offsets[-1],)."""
 
     @property
     def source(self) -> str: ...
@@ -65,46 +66,49 @@ class Mesh:
     def points64(self) -> npt.NDArray[np.float64]:
         """(nv, 3) float64, no copy."""
     @property
-    def edges(self) -> npt.NDArray[np.int32]:
+    def edges(self) -> I32:
         """(ne, 2), lower vertex id first."""
     @property
-    def face_offsets(self) -> npt.NDArray[np.int32]:
-        """(nf + 1,)"""
+    def face_vertices_offsets(self) -> I32:
+        """(nf + 1,) face f's vertex loop is face_vertices_items[offsets[f]:offsets[f + 1]]."""
     @property
-    def face_vertices(self) -> npt.NDArray[np.int32]:
-        """(face_offsets[-1],) vertex loops."""
+    def face_vertices_items(self) -> I32:
+        """(face_vertices_offsets[-1],) the vertex loop of each face."""
     @property
-    def face_edges(self) -> npt.NDArray[np.int32]:
-        """(face_offsets[-1],) entry i joins loop vertices i and i+1."""
+    def face_edges_offsets(self) -> I32:
+        """(nf + 1,) equal to face_vertices_offsets."""
     @property
-    def face_cells(self) -> npt.NDArray[np.int32]:
+    def face_edges_items(self) -> I32:
+        """(face_edges_offsets[-1],) aligned with face_vertices_items: entry i joins loop vertices i and i+1."""
+    @property
+    def face_cells(self) -> I32:
         """(nf, 2), column 1 is -1 on the boundary."""
     @property
-    def cell_offsets(self) -> npt.NDArray[np.int32]:
-        """(nc + 1,)"""
+    def cell_faces_offsets(self) -> I32:
+        """(nc + 1,) cell c's faces are cell_faces_items[offsets[c]:offsets[c + 1]]."""
     @property
-    def cell_faces(self) -> npt.NDArray[np.int32]:
-        """(cell_offsets[-1],) face ids."""
+    def cell_faces_items(self) -> I32:
+        """(cell_faces_offsets[-1],) the face ids of each cell."""
     @property
-    def cell_face_flip(self) -> npt.NDArray[np.uint8]:
-        """(cell_offsets[-1],) 1 when the cell sees the face loop reversed."""
+    def cell_face_flip(self) -> U8:
+        """(cell_faces_offsets[-1],) aligned with cell_faces_items: 1 when the cell sees the face loop reversed."""
     @property
-    def cell_types(self) -> npt.NDArray[np.uint8]:
+    def cell_types(self) -> U8:
         """(nc,) 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron."""
     @property
-    def face_boundary(self) -> npt.NDArray[np.bool_]:
+    def face_boundary(self) -> Bool:
         """(nf,)"""
     @property
-    def edge_boundary(self) -> npt.NDArray[np.bool_]:
+    def edge_boundary(self) -> Bool:
         """(ne,)"""
     @property
-    def vertex_boundary(self) -> npt.NDArray[np.bool_]:
+    def vertex_boundary(self) -> Bool:
         """(nv,)"""
     @property
-    def vertex_non_manifold(self) -> npt.NDArray[np.bool_]:
+    def vertex_non_manifold(self) -> Bool:
         """(nv,)"""
     @property
-    def edge_valence(self) -> npt.NDArray[np.int32]:
+    def edge_valence(self) -> I32:
         """(ne,) cells around each edge; a new array each call."""
     def info(self) -> MeshInfo: ...
     def analyze(
@@ -119,13 +123,14 @@ class Mesh:
     @staticmethod
     def from_arrays(
         points: npt.ArrayLike,
-        face_offsets: npt.ArrayLike,
-        face_vertices: npt.ArrayLike,
-        cell_offsets: npt.ArrayLike,
-        cell_faces: npt.ArrayLike,
+        face_vertices_offsets: npt.ArrayLike,
+        face_vertices_items: npt.ArrayLike,
+        cell_faces_offsets: npt.ArrayLike,
+        cell_faces_items: npt.ArrayLike,
         cell_face_flip: npt.ArrayLike | None = None,
         source: str = "<arrays>",
-    ) -> Mesh: ...
+    ) -> Mesh:
+        """The mesh of these arrays, laid out as the properties of the same names (copied)."""
 
 def load(path: str | os.PathLike[str], format: Format | None = None) -> Mesh: ...
 
@@ -180,88 +185,119 @@ class WireframeCounts(TypedDict):
 class BlockSoup(TypedDict):
     positions: npt.NDArray[np.float32]  # (np, 3)
     point_vertex: I32  # (np,) mesh vertex of each point
-    face_sizes: I32  # (nf,)
-    face_vertices: I32  # (face_sizes.sum(),) point ids, loops outward
+    face_vertices_offsets: I32  # (nf + 1,)
+    face_vertices_items: I32  # (face_vertices_offsets[-1],) point ids, loops outward
     face_owner: I32  # (nf,) grouped by increasing owner
     face_source: I32  # (nf,) mesh face ids
     face_cell: I32  # (nf,) mesh cell on the owner's side (the face points out of it)
 
 class SingularityGraph:
-    """Views into an Analysis (SPEC section 1). Chains: a closed one does not repeat its first vertex."""
+    """Views into an Analysis (SPEC section 1); ne edges, ns singularities (chains). Chains: a closed
+    one does not repeat its first vertex."""
 
     @property
     def edge_class(self) -> U8:
         """(ne,) 0 regular, 1 singular, 2 pseudo-singular, 3 non-manifold."""
     @property
-    def edge_irregular(self) -> Bool: ...
+    def edge_irregular(self) -> Bool:
+        """(ne,) valence other than 4 inside / 2 on the boundary."""
     @property
     def edge_chain(self) -> I32:
         """(ne,) singularity of a singular edge, else -1."""
     @property
-    def chain_vertex_offsets(self) -> I32: ...
+    def chain_vertices_offsets(self) -> I32:
+        """(ns + 1,)"""
     @property
-    def chain_vertex_items(self) -> I32: ...
+    def chain_vertices_items(self) -> I32:
+        """(chain_vertices_offsets[-1],) ordered vertices of each singularity."""
     @property
-    def chain_edge_offsets(self) -> I32: ...
+    def chain_edges_offsets(self) -> I32:
+        """(ns + 1,)"""
     @property
-    def chain_edge_items(self) -> I32: ...
+    def chain_edges_items(self) -> I32:
+        """(chain_edges_offsets[-1],) ordered edges; edge i joins chain vertices i and i+1 (mod n)."""
     @property
-    def chain_valence(self) -> I32: ...
+    def chain_valence(self) -> I32:
+        """(ns,)"""
     @property
-    def chain_boundary(self) -> Bool: ...
+    def chain_boundary(self) -> Bool:
+        """(ns,) all its edges on the boundary."""
     @property
-    def chain_closed(self) -> Bool: ...
+    def chain_closed(self) -> Bool:
+        """(ns,)"""
     @property
-    def singular_vertices(self) -> I32: ...
+    def singular_vertices(self) -> I32:
+        """(k,) sorted singularity ends that are not pseudo-singular."""
     @property
-    def pseudo_singular_vertices(self) -> I32: ...
+    def pseudo_singular_vertices(self) -> I32:
+        """(k,) sorted ends of pseudo-singular and non-manifold edges."""
     @property
-    def pseudo_singular_edges(self) -> I32: ...
+    def pseudo_singular_edges(self) -> I32:
+        """(k,) sorted edges touching a non-hex cell."""
     @property
-    def non_manifold_edges(self) -> I32: ...
+    def non_manifold_edges(self) -> I32:
+        """(k,) sorted edges touching a non-manifold vertex."""
     @property
     def num_singularities(self) -> int: ...
 
 class BaseComplex:
-    """Views into an Analysis (SPEC section 2). A closed curve does not repeat its first vertex."""
+    """Views into an Analysis (SPEC section 2); ncomp components, npatch patches, ncurve curves. A
+    closed curve does not repeat its first vertex."""
 
     @property
-    def cell_component(self) -> I32: ...
+    def cell_component(self) -> I32:
+        """(nc,)"""
     @property
     def component_kind(self) -> U8:
         """(ncomp,) 0 cube, 1 ring, 2 other, 3 non-hex."""
     @property
-    def component_cell_offsets(self) -> I32: ...
+    def component_cells_offsets(self) -> I32:
+        """(ncomp + 1,)"""
     @property
-    def component_cell_items(self) -> I32: ...
+    def component_cells_items(self) -> I32:
+        """(component_cells_offsets[-1],) sorted cells of each component."""
     @property
-    def component_adjacency_offsets(self) -> I32: ...
+    def component_adjacency_offsets(self) -> I32:
+        """(ncomp + 1,)"""
     @property
-    def component_adjacency_items(self) -> I32: ...
+    def component_adjacency_items(self) -> I32:
+        """(component_adjacency_offsets[-1],) sorted components sharing a separation face."""
     @property
-    def face_separation(self) -> Bool: ...
+    def face_separation(self) -> Bool:
+        """(nf,)"""
     @property
-    def face_patch(self) -> I32: ...
+    def face_patch(self) -> I32:
+        """(nf,) patch of a separation face, else -1."""
     @property
-    def patch_face_offsets(self) -> I32: ...
+    def patch_faces_offsets(self) -> I32:
+        """(npatch + 1,)"""
     @property
-    def patch_face_items(self) -> I32: ...
+    def patch_faces_items(self) -> I32:
+        """(patch_faces_offsets[-1],) sorted mesh faces of each patch."""
     @property
-    def curve_vertex_offsets(self) -> I32: ...
+    def curve_vertices_offsets(self) -> I32:
+        """(ncurve + 1,)"""
     @property
-    def curve_vertex_items(self) -> I32: ...
+    def curve_vertices_items(self) -> I32:
+        """(curve_vertices_offsets[-1],) mesh vertex polyline of each curve."""
     @property
-    def curve_edge_offsets(self) -> I32: ...
+    def curve_edges_offsets(self) -> I32:
+        """(ncurve + 1,)"""
     @property
-    def curve_edge_items(self) -> I32: ...
+    def curve_edges_items(self) -> I32:
+        """(curve_edges_offsets[-1],) ordered mesh edges of each curve."""
     @property
-    def curve_closed(self) -> Bool: ...
+    def curve_closed(self) -> Bool:
+        """(ncurve,) no corner on it."""
     @property
-    def edge_curve(self) -> I32: ...
+    def edge_curve(self) -> I32:
+        """(ne,) curve of a complex edge, else -1."""
     @property
-    def corners(self) -> I32: ...
+    def corners(self) -> I32:
+        """(k,) sorted corner vertices."""
     @property
-    def self_adjacent_faces(self) -> I32: ...
+    def self_adjacent_faces(self) -> I32:
+        """(k,) interior separation faces with one component on both sides."""
     @property
     def num_components(self) -> int: ...
     @property
@@ -270,87 +306,114 @@ class BaseComplex:
     def num_curves(self) -> int: ...
 
 class Subsheets:
-    """The subsheets of one self-intersecting sheet; CSRs as <name>_offsets (count + 1,) and <name>_items."""
+    """The subsheets of one self-intersecting sheet, `count` rows; every CSR is
+    subsheet_<name>_offsets (count + 1,) with subsheet_<name>_items (subsheet_<name>_offsets[-1],)."""
 
     @property
     def sheet(self) -> int: ...
     @property
     def count(self) -> int: ...
     @property
-    def type(self) -> U8: ...
+    def subsheet_type(self) -> U8:
+        """(count,) 0 perfect, 1..3 type."""
     @property
-    def flags(self) -> Bool:
+    def subsheet_flags(self) -> Bool:
         """(count, 3) type-1, type-2, type-3 configurations present."""
     @property
-    def component_offsets(self) -> I32: ...
+    def subsheet_components_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def component_items(self) -> I32: ...
+    def subsheet_components_items(self) -> I32:
+        """(subsheet_components_offsets[-1],) sorted base-complex components of each subsheet."""
     @property
-    def cell_offsets(self) -> I32: ...
+    def subsheet_cells_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def cell_items(self) -> I32: ...
+    def subsheet_cells_items(self) -> I32:
+        """(subsheet_cells_offsets[-1],) sorted mesh hex cells of each subsheet."""
     @property
-    def curve_offsets(self) -> I32: ...
+    def subsheet_curves_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def curve_items(self) -> I32: ...
+    def subsheet_curves_items(self) -> I32:
+        """(subsheet_curves_offsets[-1],) sorted parallel curves (mesh edges at level 'mesh')."""
     @property
-    def unmatched_offsets(self) -> I32: ...
+    def subsheet_unmatched_vertices_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def unmatched_items(self) -> I32: ...
+    def subsheet_unmatched_vertices_items(self) -> I32:
+        """(subsheet_unmatched_vertices_offsets[-1],) mesh vertices left unmatched by a maximum matching."""
     @property
-    def shared_offsets(self) -> I32: ...
+    def subsheet_shared_vertices_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def shared_items(self) -> I32: ...
+    def subsheet_shared_vertices_items(self) -> I32:
+        """(subsheet_shared_vertices_offsets[-1],) mesh vertices shared by two parallel curves."""
     @property
-    def self_parallel_offsets(self) -> I32: ...
+    def subsheet_self_parallel_curves_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def self_parallel_items(self) -> I32: ...
+    def subsheet_self_parallel_curves_items(self) -> I32:
+        """(subsheet_self_parallel_curves_offsets[-1],) curves of self-parallel (type-2) pairs."""
     @property
-    def self_intersecting_offsets(self) -> I32: ...
+    def subsheet_self_intersecting_components_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def self_intersecting_items(self) -> I32: ...
+    def subsheet_self_intersecting_components_items(self) -> I32:
+        """(subsheet_self_intersecting_components_offsets[-1],) components holding two parallel curves sharing an end (type 3)."""
 
 class Wireframe:
-    """A VSG wireframe: polylines of mesh vertices (a closed VSG chain repeats its first vertex)."""
+    """A VSG wireframe, `count` polylines of mesh vertices (a closed VSG chain repeats its first
+    vertex); polylines and simplified_polylines are CSRs (<name>_offsets, <name>_items)."""
 
     @property
     def count(self) -> int: ...
     @property
-    def polyline_offsets(self) -> I32: ...
+    def polylines_offsets(self) -> I32:
+        """(count + 1,)"""
     @property
-    def polyline_items(self) -> I32: ...
+    def polylines_items(self) -> I32:
+        """(polylines_offsets[-1],) mesh vertices along each polyline."""
     @property
     def point_opacity(self) -> npt.NDArray[np.float32]:
-        """Aligned with polyline_items."""
+        """(polylines_offsets[-1],) aligned with polylines_items."""
     @property
     def kind(self) -> U8:
         """(count,) 0 chain of VSG (irregular) edges only, 1 other chain."""
     @property
-    def valence(self) -> I32: ...
+    def valence(self) -> I32:
+        """(count,)"""
     @property
-    def stop(self) -> U8: ...
+    def stop(self) -> U8:
+        """(count,) 0 closed chain, 1 singular, 2 boundary, 3 neither."""
     @property
-    def shown(self) -> Bool: ...
+    def shown(self) -> Bool:
+        """(count,) on the simplified wireframe."""
     @property
-    def non_important(self) -> U8: ...
+    def non_important(self) -> U8:
+        """(count,) 0 kept, 1 both ends redundant, 2 in a removable pair."""
     @property
-    def reactivated(self) -> Bool: ...
+    def reactivated(self) -> Bool:
+        """(count,)"""
     @property
-    def simplified_offsets(self) -> I32:
-        """(counts['wireframe_edges_simplified'] + 1,) row offsets of simplified_items."""
+    def simplified_polylines_offsets(self) -> I32:
+        """(counts['wireframe_edges_simplified'] + 1,)"""
     @property
-    def simplified_items(self) -> I32:
-        """Mesh vertices along each polyline of the simplified wireframe."""
+    def simplified_polylines_items(self) -> I32:
+        """(simplified_polylines_offsets[-1],) mesh vertices along each simplified polyline."""
     @property
-    def color(self) -> I32: ...
+    def color(self) -> I32:
+        """(count,) palette index."""
     @property
-    def color_class(self) -> I32: ...
+    def color_class(self) -> I32:
+        """(count,)"""
     @property
     def counts(self) -> WireframeCounts: ...
 
 class Analysis:
-    """Mesh.analyze()'s result. Per-sheet CSRs: sheet_<name>_offsets (num_sheets + 1,) and
-    sheet_<name>_items. Curve ids are base-complex curves at level 'complex', mesh edges at 'mesh'."""
+    """Mesh.analyze()'s result. Per-sheet CSRs: sheet_<name>_offsets (num_sheets + 1,) with
+    sheet_<name>_items (sheet_<name>_offsets[-1],). Curve ids are base-complex curves at level
+    'complex', mesh edges at 'mesh'."""
 
     @property
     def mesh(self) -> Mesh: ...
@@ -359,11 +422,14 @@ class Analysis:
     @property
     def rho(self) -> float: ...
     @property
-    def has_sheets(self) -> bool: ...
+    def has_sheets(self) -> bool:
+        """The sheet stage ran (else the per-sheet arrays are empty)."""
     @property
-    def has_subsheets(self) -> bool: ...
+    def has_subsheets(self) -> bool:
+        """The subsheet stage ran (else subsheets() raises ValueError)."""
     @property
-    def has_wireframe(self) -> bool: ...
+    def has_wireframe(self) -> bool:
+        """The whole-mesh wireframe stage ran (else wireframe() computes it on demand)."""
     @property
     def stats(self) -> AnalysisStats: ...
     @property
@@ -379,55 +445,77 @@ class Analysis:
     def sheet_flags(self) -> Bool:
         """(num_sheets, 3) type-1, type-2, type-3 configurations present."""
     @property
-    def sheet_component_offsets(self) -> I32: ...
+    def sheet_components_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_component_items(self) -> I32: ...
+    def sheet_components_items(self) -> I32:
+        """(sheet_components_offsets[-1],) sorted base-complex components of each sheet."""
     @property
-    def sheet_cell_offsets(self) -> I32: ...
+    def sheet_cells_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_cell_items(self) -> I32: ...
+    def sheet_cells_items(self) -> I32:
+        """(sheet_cells_offsets[-1],) sorted mesh hex cells of each sheet."""
     @property
-    def sheet_curve_offsets(self) -> I32: ...
+    def sheet_curves_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_curve_items(self) -> I32: ...
+    def sheet_curves_items(self) -> I32:
+        """(sheet_curves_offsets[-1],) sorted parallel curves E_P of each sheet."""
     @property
-    def sheet_edge_offsets(self) -> I32: ...
+    def sheet_edges_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_edge_items(self) -> I32: ...
+    def sheet_edges_items(self) -> I32:
+        """(sheet_edges_offsets[-1],) sorted mesh edges of each sheet's parallel curves."""
     @property
-    def sheet_non_hex_offsets(self) -> I32: ...
+    def sheet_non_hex_cells_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_non_hex_items(self) -> I32: ...
+    def sheet_non_hex_cells_items(self) -> I32:
+        """(sheet_non_hex_cells_offsets[-1],) sorted non-hex cells adjacent to each sheet."""
     @property
-    def sheet_unmatched_offsets(self) -> I32: ...
+    def sheet_unmatched_vertices_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_unmatched_items(self) -> I32: ...
+    def sheet_unmatched_vertices_items(self) -> I32:
+        """(sheet_unmatched_vertices_offsets[-1],) mesh vertices left unmatched by a maximum matching."""
     @property
-    def sheet_shared_offsets(self) -> I32: ...
+    def sheet_shared_vertices_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_shared_items(self) -> I32: ...
+    def sheet_shared_vertices_items(self) -> I32:
+        """(sheet_shared_vertices_offsets[-1],) mesh vertices shared by two parallel curves."""
     @property
-    def sheet_self_parallel_offsets(self) -> I32: ...
+    def sheet_self_parallel_curves_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_self_parallel_items(self) -> I32: ...
+    def sheet_self_parallel_curves_items(self) -> I32:
+        """(sheet_self_parallel_curves_offsets[-1],) curves of self-parallel (type-2) pairs."""
     @property
-    def sheet_self_intersecting_offsets(self) -> I32: ...
+    def sheet_self_intersecting_components_offsets(self) -> I32:
+        """(num_sheets + 1,)"""
     @property
-    def sheet_self_intersecting_items(self) -> I32: ...
+    def sheet_self_intersecting_components_items(self) -> I32:
+        """(sheet_self_intersecting_components_offsets[-1],) components holding two parallel curves sharing an end (type 3)."""
     @property
-    def largest_self_intersecting(self) -> int: ...
+    def largest_self_intersecting(self) -> int | None:
+        """The self-intersecting sheet with most cells; None without one (or without sheets)."""
     @property
-    def self_intersecting_sheets(self) -> I32: ...
+    def self_intersecting_sheets(self) -> I32:
+        """(k,) increasing: the sheets with a subsheet decomposition."""
     def subsheets(self, sheet: int) -> Subsheets: ...
     def wireframe(self, sheet: int | None = None, subsheet: int | None = None) -> Wireframe: ...
     def to_vtu(self, path: str, sheet: int | None = None, ascii: bool = False) -> str: ...
 
-def block_soup(mesh: Mesh, analysis: Analysis | None, what: SoupWhat, sheet: int = -1, shrink: float = 0.0) -> BlockSoup: ...
+def block_soup(mesh: Mesh, analysis: Analysis | None, what: SoupWhat, sheet: int | None = None, shrink: float = 0.0) -> BlockSoup:
+    """sheet: required for 'subsheets', 'sheet' and 'sheet_non_hex', ignored otherwise."""
 def kept_surface_soup(mesh: Mesh, kept: npt.ArrayLike, shrink: float = 0.0) -> BlockSoup:
     """Faces of kept cells (kept: (num_cells,) bool) whose other side is not kept; owner = cell."""
 def cell_centroids(mesh: Mesh) -> npt.NDArray[np.float64]:
     """(num_cells, 3) the mean of each cell's distinct vertices."""
-def polylines(mesh: Mesh, offsets: npt.ArrayLike, vertices: npt.ArrayLike) -> npt.NDArray[np.float32]: ...
+def polylines(mesh: Mesh, offsets: npt.ArrayLike, items: npt.ArrayLike) -> npt.NDArray[np.float32]:
+    """(len(items), 3) the positions of a CSR of mesh vertex ids (e.g. a Wireframe's polylines)."""
 
 class CellQuality(TypedDict):
     scaled_jacobian: npt.NDArray[np.float64]  # (num_cells,) Verdict's; < 0 for inverted cells

@@ -1,9 +1,11 @@
 """blender_scripts/render_figures.py end to end, in background mode, at a tiny size: every panel
-of twistcube_s.mesh (Cycles, 4 samples) and a comparison (Workbench). Run inside Blender by
-tests/blender/run_pytest_in_blender.py (the images are read back with bpy.data.images); the
-figure script itself runs in a child Blender, as a user runs it.
+of twistcube_s.mesh (Cycles, 4 samples) and of the demo's generated default (Workbench), and a
+comparison (Workbench). Run inside Blender by tests/blender/run_pytest_in_blender.py (the images
+are read back with bpy.data.images); the figure script itself runs in a child Blender, as a user
+runs it.
 
-Environment: HBC_ADDON_DIR (the built add-on), HBC_DATA_DIR (the shared meshes).
+Environment: HBC_ADDON_DIR (the built add-on), HBC_DATA_DIR (the shared meshes), HBC_CLI (the
+built hbc, which generates the demo's default).
 """
 
 import itertools
@@ -113,6 +115,43 @@ def test_contact_sheet_size(pipeline):
     label_h = max(14, round(H * 0.07))
     assert img.shape[:2][::-1] == C.sheet_size(spans, C.contact_columns(spans), W, H, label_h)
     assert C.pixel_std(img) > MIN_STD
+
+
+def demo_default(tmp_path):
+    """The first mesh scripts/demo.sh generates, generated here with the same arguments (read from
+    the script, so this follows it) by the built hbc ($HBC_CLI)."""
+    cli = os.environ.get("HBC_CLI")
+    if not cli or not os.path.isfile(cli):
+        pytest.fail(f"HBC_CLI={cli} is not the built hbc")
+    text = (ROOT / "scripts" / "demo.sh").read_text()
+    m = re.search(r'^\./build/bin/hbc generate (.+) -o "\$OUT/([\w.-]+)"$', text, re.M)
+    assert m, "scripts/demo.sh generates no mesh"
+    out = tmp_path / m.group(2)
+    p = subprocess.run([cli, "generate", *m.group(1).split(), "-o", str(out)], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    return out
+
+
+def test_demo_default_fills_every_panel(tmp_path):
+    """The demo's first default (without ../shared) has a self-intersecting sheet whose region holds
+    non-hex cells, so every panel a-g is drawn - none skipped - and the contact sheet holds all."""
+    mesh = demo_default(tmp_path)
+    name = mesh.stem
+    p = run([mesh, "--out", tmp_path, "--engine", "workbench", "--resolution", W, H])
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    assert "skipped" not in p.stdout, p.stdout[-3000:]
+    assert "self-intersecting" in p.stdout  # the sheet of panels d-g
+    names = [f"{name}_{plan.PANEL_LETTER[k]}_{k}.png" for k in plan.PANEL_KEYS] + [f"{name}_contact.png"]
+    assert [pathlib.Path(f).name for f in written(p)] == names
+    imgs = {k: load(tmp_path / n) for k, n in zip(plan.PANEL_KEYS, names)}
+    for k, img in imgs.items():
+        assert C.pixel_std(img) > MIN_STD, f"panel {k} is blank"
+    for a, b in itertools.combinations(plan.PANEL_KEYS, 2):
+        assert C.differs(imgs[a], imgs[b]), f"panels {a} and {b} are the same"
+    spans = [1] * 6 + [2]
+    label_h = max(14, round(H * 0.07))
+    sheet = load(tmp_path / names[-1])
+    assert sheet.shape[:2][::-1] == C.sheet_size(spans, C.contact_columns(spans), W, H, label_h)
 
 
 def test_denoised_where_available(tmp_path):

@@ -49,6 +49,32 @@ def test_pick_sheet_order_of_preference():
         plan.pick_sheet([0, 3], [1, 1], requested=2)
 
 
+def test_pick_sheet_prefers_a_sheet_with_a_vsg_wireframe():
+    asked = []
+
+    def shows(has):
+        def f(i):
+            asked.append(i)
+            return i in has
+        return f
+
+    # The largest self-intersecting sheet (0) has no VSG wireframe: the next largest that has one.
+    assert plan.pick_sheet([3, 3, 3, 1], [240, 239, 239, 500], shows_vsg=shows({2})) == 2
+    assert asked == [0, 1, 2]  # largest down, ties to the lower id, stops at the first that has one
+    asked.clear()
+    assert plan.pick_sheet([3, 0, 3], [10, 90, 20], shows_vsg=shows({0, 2})) == 2
+    assert asked == [2]  # the largest has one: nothing else asked
+    # None in the class has one: the largest of the class, never a sheet of a lower class.
+    assert plan.pick_sheet([3, 1, 3], [10, 90, 20], shows_vsg=shows({1})) == 2
+    # The class comes first: an imperfect sheet with a wireframe does not beat a self-intersecting one.
+    assert plan.pick_sheet([1, 3], [90, 10], shows_vsg=shows({0})) == 1
+    assert plan.pick_sheet([0, 2, 1], [9, 5, 7], shows_vsg=shows({1})) == 1
+    # A requested sheet is never second-guessed.
+    asked.clear()
+    assert plan.pick_sheet([3, 3], [5, 9], requested=0, shows_vsg=shows(set())) == 0
+    assert asked == []
+
+
 def test_pick_subsheets_largest_in_id_order():
     assert plan.pick_subsheets([5, 50, 1, 30, 30], 3) == [1, 3, 4]
     assert plan.pick_subsheets([2], 4) == [0]
