@@ -6,26 +6,7 @@
 
 namespace hbc {
 
-int corner_count(CellShape s) {
-  static constexpr int kCorners[5] = {0, 4, 5, 6, 8};
-  return kCorners[static_cast<int>(s)];
-}
-
 namespace detail {
-namespace {
-
-// Indexed by CellShape; loops are outward for elements of positive orientation in MEDIT's convention.
-const ShapeFaces kShapes[5] = {
-    {0, {}, {}},
-    {4, {3, 3, 3, 3}, {{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}}},
-    {5, {4, 3, 3, 3, 3}, {{{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}}},
-    {5, {3, 3, 4, 4, 4}, {{{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}}},
-    {6, {4, 4, 4, 4, 4, 4}, {{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}}},
-};
-
-}  // namespace
-
-const ShapeFaces& shape_faces(CellShape s) { return kShapes[static_cast<int>(s)]; }
 
 void CellAppender::end_cell(CellShape shape, int64_t loc) {
   in_.cells.offsets.push_back(static_cast<int32_t>(in_.cells.items.size()));

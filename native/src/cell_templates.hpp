@@ -23,7 +23,15 @@ struct ShapeFaces {
   std::array<int8_t, 6> size;
   std::array<std::array<int8_t, 4>, 6> corner;
 };
-const ShapeFaces& shape_faces(CellShape s);
+// Indexed by CellShape (inline: the builder reads it for every face of every element).
+inline constexpr ShapeFaces kShapeFaces[5] = {
+    {0, {}, {}},
+    {4, {3, 3, 3, 3}, {{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}}},
+    {5, {4, 3, 3, 3, 3}, {{{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}}},
+    {5, {3, 3, 4, 4, 4}, {{{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}}},
+    {6, {4, 4, 4, 4, 4, 4}, {{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}}},
+};
+inline const ShapeFaces& shape_faces(CellShape s) { return kShapeFaces[static_cast<int>(s)]; }
 
 // Appends cells to a MeshInput (and keeps its cell_shape filled). Reuse one appender for a whole
 // file: it keeps scratch buffers.

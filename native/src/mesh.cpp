@@ -55,7 +55,7 @@ Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   merge_faces(in, m, par);
   std::vector<EdgeFaceCount> counts = build_edges(m, par);
   CellCheck cells = check_cells(m, in, par);
-  orient_groups(m, cells.volume);
+  orient_groups(m, cells.volume, par);
   std::vector<double>().swap(cells.volume);
   mark_boundary(m);
   edge_fans(m, counts, cells, par);

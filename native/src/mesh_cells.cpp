@@ -237,7 +237,35 @@ CellCheck check_cells(Mesh& m, const MeshInput& in, const LoadOptions& par) {
   return out;
 }
 
-void orient_groups(Mesh& m, std::vector<double>& cell_vol) {
+namespace {
+
+// Whether every cell has a positive volume and every pair of neighbours sees their shared face in
+// opposite directions: then no cell or group needs turning (most files, written by meshers that
+// orient their cells). Checked in parallel, as the walk below cannot be.
+bool oriented_already(const Mesh& m, const std::vector<double>& cell_vol, const LoadOptions& par) {
+  const int nr = detail::range_count(m.num_cells(), par);
+  std::vector<uint8_t> ok(static_cast<size_t>(nr), 1);
+  detail::parallel_ranges(m.num_cells(), par, [&](size_t cb, size_t ce, int r) {
+    for (size_t c = cb; c < ce && ok[static_cast<size_t>(r)]; ++c) {
+      if (!(cell_vol[c] > 0)) ok[static_cast<size_t>(r)] = 0;
+      for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i) {
+        const int32_t f = m.cell_faces.items[static_cast<size_t>(i)];
+        const auto fc = m.face_cells[static_cast<size_t>(f)];
+        const int32_t d = fc[0] == static_cast<int32_t>(c) ? fc[1] : fc[0];
+        if (d < static_cast<int32_t>(c)) continue;  // each shared face once; none on the boundary
+        const auto df = m.cell_faces[static_cast<size_t>(d)];
+        const auto j = static_cast<size_t>(m.cell_faces.offsets[static_cast<size_t>(d)] + (std::find(df.begin(), df.end(), f) - df.begin()));
+        if (m.cell_face_flip[static_cast<size_t>(i)] == m.cell_face_flip[j]) ok[static_cast<size_t>(r)] = 0;
+      }
+    }
+  });
+  return std::find(ok.begin(), ok.end(), 0) == ok.end();
+}
+
+}  // namespace
+
+void orient_groups(Mesh& m, std::vector<double>& cell_vol, const LoadOptions& par) {
+  if (oriented_already(m, cell_vol, par)) return;
   const size_t nc = m.num_cells();
   auto flip_of = [&](size_t c, int32_t f) -> uint8_t& {
     auto faces = m.cell_faces[c];

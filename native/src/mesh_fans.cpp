@@ -1,6 +1,7 @@
 // The fan and vertex steps of build_mesh (see hbc/mesh_steps.hpp), and the incidences the Mesh
 // derives instead of storing: edge fans, the vertices and edges of a cell, the edges at a vertex.
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 
 #include "hbc/mesh_steps.hpp"
@@ -186,18 +187,36 @@ void edge_fans(Mesh& m, const std::vector<EdgeFaceCount>& counts, const CellChec
 
 namespace {
 
-// Union-find over half-edges (edge e at its end j is 2e + j) with path halving.
-struct HalfEdgeSets {
-  std::vector<int32_t> parent;
-  explicit HalfEdgeSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+// Union-find over half-edges (edge e at its end j is 2e + j), safe for threads uniting at once:
+// a root is linked to a lower one only by compare-and-swap while it is still a root, and path
+// halving only ever points an entry further up its own tree. The sets do not depend on the order
+// of the unions.
+class HalfEdgeSets {
+ public:
+  explicit HalfEdgeSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
   int32_t find(int32_t x) {
-    while (parent[static_cast<size_t>(x)] != x) x = parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
-    return x;
+    for (;;) {
+      int32_t p = at(x).load(std::memory_order_acquire);
+      if (p == x) return x;
+      const int32_t g = at(p).load(std::memory_order_acquire);
+      if (g == p) return p;
+      at(x).compare_exchange_weak(p, g, std::memory_order_acq_rel);  // x now points to its grandparent, if unchanged
+      x = g;
+    }
   }
   void unite(int32_t a, int32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+    for (;;) {
+      a = find(a), b = find(b);
+      if (a == b) return;
+      if (a < b) std::swap(a, b);
+      int32_t expected = a;
+      if (at(a).compare_exchange_strong(expected, b, std::memory_order_acq_rel)) return;
+    }
   }
+
+ private:
+  std::atomic_ref<int32_t> at(int32_t x) { return std::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
+  std::vector<int32_t> parent_;
 };
 
 // The exact test on a few vertices: the cells around v, joined across the faces at v.
@@ -245,28 +264,35 @@ void check_exactly(Mesh& m, const std::vector<uint8_t>& suspect) {
 // through its edges there unless the cell is pinched at v. Vertices of non-cyclic fans and of
 // pinched cells are tested cell by cell instead.
 void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& par) {
-  (void)par;
-  const size_t nv = m.num_vertices();
-  HalfEdgeSets sets(2 * m.num_edges());
+  const size_t nv = m.num_vertices(), ne = m.num_edges();
+  HalfEdgeSets sets(2 * ne);
   auto half = [&](int32_t e, int32_t v) { return 2 * e + (m.edge_verts[static_cast<size_t>(e)][1] == v ? 1 : 0); };
-  for (size_t f = 0; f < m.num_faces(); ++f) {
-    const auto loop = m.face_verts[f];
-    const auto fe = m.face_edges(f);
-    for (size_t i = 0; i < loop.size(); ++i) {
-      const int32_t in = fe[i == 0 ? loop.size() - 1 : i - 1];
-      sets.unite(half(in, loop[i]), half(fe[i], loop[i]));
+  detail::parallel_ranges(m.num_faces(), par, [&](size_t fb, size_t fe, int) {
+    for (size_t f = fb; f < fe; ++f) {
+      const auto loop = m.face_verts[f];
+      const auto edges = m.face_edges(f);
+      for (size_t i = 0; i < loop.size(); ++i)
+        sets.unite(half(edges[i == 0 ? loop.size() - 1 : i - 1], loop[i]), half(edges[i], loop[i]));
     }
-  }
+  });
+  // A vertex is split when its half-edges are not all in one set: each compared with the set of
+  // the first one found there.
   std::vector<int32_t> first(nv, -1);
   std::vector<uint8_t> split(nv, 0), suspect(nv, 0);
-  for (size_t e = 0; e < m.num_edges(); ++e)
-    for (int j = 0; j < 2; ++j) {
-      const auto v = static_cast<size_t>(m.edge_verts[e][static_cast<size_t>(j)]);
-      const int32_t r = sets.find(static_cast<int32_t>(2 * e) + j);
-      if (first[v] < 0) first[v] = r;
-      else if (sets.find(first[v]) != r) split[v] = 1;
-      if (!m.edge_fan_ok(e)) suspect[v] = 1;
-    }
+  auto each_end = [&](auto&& f) {
+    detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int) {
+      for (size_t e = eb; e < ee; ++e)
+        for (int j = 0; j < 2; ++j) f(static_cast<size_t>(m.edge_verts[e][static_cast<size_t>(j)]), sets.find(static_cast<int32_t>(2 * e) + j), e);
+    });
+  };
+  each_end([&](size_t v, int32_t r, size_t) {
+    int32_t none = -1;
+    std::atomic_ref<int32_t>(first[v]).compare_exchange_strong(none, r, std::memory_order_relaxed);
+  });
+  each_end([&](size_t v, int32_t r, size_t e) {
+    if (r != first[v]) std::atomic_ref<uint8_t>(split[v]).store(1, std::memory_order_relaxed);
+    if (!m.edge_fan_ok(e)) std::atomic_ref<uint8_t>(suspect[v]).store(1, std::memory_order_relaxed);
+  });
   for (int32_t v : cells.pinched) suspect[static_cast<size_t>(v)] = 1;
   for (size_t v = 0; v < nv; ++v)
     if (!suspect[v]) m.vert_non_manifold[v] |= split[v];

@@ -145,23 +145,28 @@ struct FaceItems {
   }
 };
 
-// A face's vertex set as a sortable key: its size, then its vertices in increasing order.
-struct SmallKey {
-  int32_t n;
-  std::array<int32_t, 4> v;
-  int32_t item;
-  bool operator<(const SmallKey& o) const {
-    if (n != o.n) return n < o.n;
-    if (v != o.v) return v < o.v;
-    return item < o.item;
-  }
-  bool same_set(const SmallKey& o) const { return n == o.n && v == o.v; }
-};
+// A triangle's or quadrangle's vertex set and its item as one sortable integer: the loop size, the
+// vertices after the lowest in increasing order (a triangle's third one above any id), the item.
+// Faces of one bucket share the lowest vertex, so equal keys up to the item mean the same set.
+__extension__ typedef unsigned __int128 FaceKey;
+constexpr int kItemBits = 31;
+
+FaceKey small_key(std::span<const int32_t> loop, int32_t item) {
+  std::array<uint32_t, 4> v{0x7fffffffu, 0x7fffffffu, 0x7fffffffu, 0x7fffffffu};
+  for (size_t i = 0; i < loop.size(); ++i) v[i] = static_cast<uint32_t>(loop[i]);
+  // A sorting network for four values.
+  auto order = [&](size_t i, size_t j) {
+    if (v[j] < v[i]) std::swap(v[i], v[j]);
+  };
+  order(0, 1), order(2, 3), order(0, 2), order(1, 3), order(1, 2);
+  return static_cast<FaceKey>(loop.size()) << (4 * kItemBits) | static_cast<FaceKey>(v[1]) << (3 * kItemBits) |
+         static_cast<FaceKey>(v[2]) << (2 * kItemBits) | static_cast<FaceKey>(v[3]) << kItemBits | static_cast<uint32_t>(item);
+}
 
 // rep[item] for the items of one bucket (all with the same lowest vertex): the lowest item with
 // the same vertex set.
 void group_bucket(const FaceItems& items, std::span<const int32_t> bucket, std::vector<int32_t>& rep,
-                  std::vector<SmallKey>& small, std::vector<std::vector<int32_t>>& big) {
+                  std::vector<FaceKey>& small, std::vector<std::vector<int32_t>>& big) {
   std::array<int32_t, 4> buf;
   bool all_small = true;
   small.clear();
@@ -171,15 +176,16 @@ void group_bucket(const FaceItems& items, std::span<const int32_t> bucket, std::
       all_small = false;
       break;
     }
-    SmallKey k{static_cast<int32_t>(loop.size()), {INT32_MAX, INT32_MAX, INT32_MAX, INT32_MAX}, it};
-    std::copy(loop.begin(), loop.end(), k.v.begin());
-    detail::sort_small(k.v.begin(), k.v.begin() + k.n);
-    small.push_back(k);
+    small.push_back(small_key(loop, it));
   }
   if (all_small) {
     detail::sort_small(small.begin(), small.end());  // buckets hold a handful of faces
-    for (size_t g = 0; g < small.size(); ++g)
-      rep[static_cast<size_t>(small[g].item)] = g > 0 && small[g].same_set(small[g - 1]) ? rep[static_cast<size_t>(small[g - 1].item)] : small[g].item;
+    constexpr uint32_t kItem = (1u << kItemBits) - 1;
+    for (size_t g = 0; g < small.size(); ++g) {
+      const bool same = g > 0 && (small[g] >> kItemBits) == (small[g - 1] >> kItemBits);
+      rep[static_cast<uint32_t>(small[g]) & kItem] = same ? rep[static_cast<uint32_t>(small[g - 1]) & kItem]
+                                                         : static_cast<int32_t>(static_cast<uint32_t>(small[g]) & kItem);
+    }
     return;
   }
   // Some polygon has more than 4 vertices: whole sorted vertex lists, then the item.
@@ -205,7 +211,7 @@ std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, con
   const Csr<int32_t> by_lowest = detail::group_by_key(n, nv, par, [&](size_t i) { return items.lowest[i]; });
   std::vector<int32_t> rep(n);
   detail::parallel_ranges(nv, par, [&](size_t vb, size_t ve, int) {
-    std::vector<SmallKey> small;
+    std::vector<FaceKey> small;
     std::vector<std::vector<int32_t>> big;
     for (size_t v = vb; v < ve; ++v) {
       const auto bucket = by_lowest[v];
@@ -370,48 +376,32 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   fill_face_cells(in, m);
 }
 
-namespace {
-
-// The vertex after each corner along its loop, found without a table of the corners' faces:
-// a flag marks the last corner of every loop, whose successor is the loop's first.
-class NextVertex {
- public:
-  explicit NextVertex(const Csr<int32_t>& loops) : loops_(loops), last_(loops.items.size(), false) {
-    for (size_t f = 0; f < loops.rows(); ++f) last_[static_cast<size_t>(loops.offsets[f + 1] - 1)] = true;
-  }
-  int32_t operator()(size_t k) const {
-    if (!last_[k]) return loops_.items[k + 1];
-    size_t first = k;
-    while (first > 0 && !last_[first - 1]) --first;
-    return loops_.items[first];
-  }
-
- private:
-  const Csr<int32_t>& loops_;
-  std::vector<bool> last_;
-};
-
-}  // namespace
-
 std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
   const size_t ns = m.face_verts.items.size(), nf = m.num_faces();
-  const NextVertex next(m.face_verts);
-  std::vector<int32_t>& rep = m.face_edge_ids;  // first the lowest corner with the same edge
+  const std::vector<int32_t>& loops = m.face_verts.items;
+  // rep first holds the vertex after each corner along its loop (so that a corner's edge is known
+  // without its face), then the lowest corner with the same edge.
+  std::vector<int32_t>& rep = m.face_edge_ids;
   rep.resize(ns);
+  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      const auto k0 = static_cast<size_t>(m.face_verts.offsets[f]), k1 = static_cast<size_t>(m.face_verts.offsets[f + 1]);
+      for (size_t k = k0; k + 1 < k1; ++k) rep[k] = loops[k + 1];
+      rep[k1 - 1] = loops[k0];
+    }
+  });
   {
-    const Csr<int32_t> by_lo = detail::group_by_key(ns, m.num_vertices(), par, [&](size_t k) {
-      return std::min(m.face_verts.items[k], next(k));
-    });
+    const Csr<int32_t> by_lo = detail::group_by_key(ns, m.num_vertices(), par, [&](size_t k) { return std::min(loops[k], rep[k]); });
     detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
       std::vector<uint64_t> hi_corner;  // other end << 32 | corner, sorted
       for (size_t v = vb; v < ve; ++v) {
         hi_corner.clear();
         for (int32_t k : by_lo[v]) {
           const auto kk = static_cast<size_t>(k);
-          const int32_t hi = std::max(m.face_verts.items[kk], next(kk));
-          hi_corner.push_back(static_cast<uint64_t>(hi) << 32 | static_cast<uint32_t>(k));
+          hi_corner.push_back(static_cast<uint64_t>(std::max(loops[kk], rep[kk])) << 32 | static_cast<uint32_t>(k));
         }
         detail::sort_small(hi_corner.begin(), hi_corner.end());  // a vertex starts a few edges, each in a few faces
+        // Every corner of this bucket was read above: rep can now take the representatives.
         for (size_t i = 0; i < hi_corner.size(); ++i) {
           const auto k = static_cast<size_t>(hi_corner[i] & 0xffffffffu);
           const bool same = i > 0 && (hi_corner[i - 1] >> 32) == (hi_corner[i] >> 32);
@@ -430,7 +420,7 @@ std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
     const bool boundary = m.face_cells[f][1] < 0;
     for (size_t k = static_cast<size_t>(m.face_verts.offsets[f]); k < static_cast<size_t>(m.face_verts.offsets[f + 1]); ++k) {
       if (rep[k] == static_cast<int32_t>(k)) {
-        const int32_t a = m.face_verts.items[k], b = next(k);
+        const int32_t a = loops[k], b = k + 1 < static_cast<size_t>(m.face_verts.offsets[f + 1]) ? loops[k + 1] : loops[static_cast<size_t>(m.face_verts.offsets[f])];
         rep[k] = static_cast<int32_t>(m.edge_verts.size());
         m.edge_verts.push_back({std::min(a, b), std::max(a, b)});
         m.fan_start.push_back(static_cast<int32_t>(f));

@@ -170,7 +170,7 @@ TEST(LoadSteps, OrientationKeepsATangledCellInverted) {
   // Scramble what the file said: the orientation steps must not depend on it.
   for (auto& f : m.cell_face_flip) f ^= 1;
   CellCheck cells = check_cells(m, in, kOne);
-  orient_groups(m, cells.volume);
+  orient_groups(m, cells.volume, kOne);
   EXPECT_DOUBLE_EQ(signed_volume(m, 0), 1.0);
   EXPECT_DOUBLE_EQ(signed_volume(m, 1), -0.5);
   // The shared face (1) is seen in opposite directions by the two cells.
@@ -185,7 +185,7 @@ TEST(LoadSteps, OrientationTurnsAnInsideOutGroup) {
   auto inward = cube(0);
   for (auto& l : inward) std::reverse(l.begin(), l.end());
   Built b = through_check(soup(p, {inward}));
-  orient_groups(b.m, b.cells.volume);
+  orient_groups(b.m, b.cells.volume, kOne);
   EXPECT_DOUBLE_EQ(signed_volume(b.m, 0), 1.0);
 }
 
@@ -193,7 +193,7 @@ TEST(LoadSteps, EdgeFansRunThroughTheCellsInOrder) {
   // Two stacked cubes: the edge 4-5 between them has faces (2: front of the lower cube,
   // 1: shared, 6+2: front of the upper) and the cells 0, 1 between them; a boundary path.
   Built b = through_check(stacked_cubes(2));
-  orient_groups(b.m, b.cells.volume);
+  orient_groups(b.m, b.cells.volume, kOne);
   mark_boundary(b.m);
   edge_fans(b.m, b.counts, b.cells, kOne);
   const int32_t e45 = test::edge_between(b.m, 4, 5);

@@ -21,7 +21,11 @@ const char* cell_type_name(CellType t);
 // pyramid 0-3 base, normal towards the apex 4; tet with 0-1-2 counter-clockwise seen from 3).
 // Element-list formats give corners, which spares the loader a face soup six times the size.
 enum class CellShape : uint8_t { Faces = 0, Tet = 1, Pyramid = 2, Prism = 3, Hex = 4 };
-int corner_count(CellShape s);  // 4, 5, 6, 8; 0 for Faces
+// 4, 5, 6, 8; 0 for Faces.
+inline int corner_count(CellShape s) {
+  constexpr int kCorners[5] = {0, 4, 5, 6, 8};
+  return kCorners[static_cast<int>(s)];
+}
 
 // What a reader produces: vertex positions, a polygon soup and cells referring to it (or giving
 // their corners, see CellShape). Faces may be listed twice (one copy per cell, as .HYBRID files

@@ -55,7 +55,7 @@ CellCheck check_cells(Mesh& m, const MeshInput& in, const LoadOptions& par);
 
 // Makes face-neighbouring cells see their shared face in opposite directions and turns each
 // face-connected group to a positive total volume, so that tangled cells keep a negative volume.
-void orient_groups(Mesh& m, std::vector<double>& cell_vol);
+void orient_groups(Mesh& m, std::vector<double>& cell_vol, const LoadOptions& par);
 
 // face_boundary, edge_boundary, vert_boundary.
 void mark_boundary(Mesh& m);
