@@ -34,7 +34,7 @@ void BM_LoadSteps(benchmark::State& state) {
     };
     hbc::MeshInput in = hbc::read_input(file, hbc::Format::Auto, par);
     lap("s0_read_parse");
-    validate_input(in);
+    validate_input(in, par);
     lap("s1_validate");
     hbc::Mesh m;
     m.points = std::move(in.points);

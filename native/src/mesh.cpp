@@ -46,7 +46,7 @@ LoadOptions resolved(const LoadOptions& options) {
 Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   using namespace mesh_steps;
   const LoadOptions par = resolved(options);
-  validate_input(in);
+  validate_input(in, par);
   std::vector<int64_t>().swap(in.vertex_loc);  // only validate_input names vertices
   Mesh m;
   m.source = in.source;

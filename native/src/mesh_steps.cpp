@@ -25,64 +25,58 @@ std::string loop_text(std::span<const int32_t> loop) {
 
 namespace {
 
-void validate_faces(const MeshInput& in, size_t nv) {
-  std::vector<int32_t> stamp(nv, -1);
-  for (size_t f = 0; f < in.faces.rows(); ++f) {
-    auto loop = in.faces[f];
-    if (loop.size() < 3)
+// Each check runs over ranges in parallel; a range stops at its first bad element and the lowest
+// range's error is the one thrown, so the message names the first bad element in file order.
+void validate_face(const MeshInput& in, size_t nv, size_t f, std::vector<int32_t>& stamp) {
+  auto loop = in.faces[f];
+  if (loop.size() < 3)
+    throw InputError(in.source, in.loc_of(in.face_loc, f),
+                     "a face with at least 3 vertices, face " + std::to_string(f) + " has " + std::to_string(loop.size()));
+  for (int32_t v : loop) {
+    if (v < 0 || static_cast<size_t>(v) >= nv)
       throw InputError(in.source, in.loc_of(in.face_loc, f),
-                       "a face with at least 3 vertices, face " + std::to_string(f) + " has " +
-                           std::to_string(loop.size()));
-    for (int32_t v : loop) {
-      if (v < 0 || static_cast<size_t>(v) >= nv)
-        throw InputError(in.source, in.loc_of(in.face_loc, f),
-                         "vertex index in [0, " + std::to_string(nv) + ") in face " + std::to_string(f) +
-                             ", found " + std::to_string(v));
-      if (stamp[v] == static_cast<int32_t>(f))
-        throw InputError(in.source, in.loc_of(in.face_loc, f),
-                         "distinct vertices in face " + std::to_string(f) + ", vertex " + std::to_string(v) +
-                             " repeats in " + loop_text(loop));
-      stamp[v] = static_cast<int32_t>(f);
-    }
+                       "vertex index in [0, " + std::to_string(nv) + ") in face " + std::to_string(f) + ", found " +
+                           std::to_string(v));
+    if (stamp[static_cast<size_t>(v)] == static_cast<int32_t>(f))
+      throw InputError(in.source, in.loc_of(in.face_loc, f),
+                       "distinct vertices in face " + std::to_string(f) + ", vertex " + std::to_string(v) + " repeats in " +
+                           loop_text(loop));
+    stamp[static_cast<size_t>(v)] = static_cast<int32_t>(f);
   }
 }
 
-void validate_cells(const MeshInput& in, size_t nv) {
-  const size_t nf = in.faces.rows();
-  if (!in.cell_shape.empty() && in.cell_shape.size() != in.cells.rows())
-    throw InputError(in.source, {}, "a shape for every cell");
-  for (size_t c = 0; c < in.cells.rows(); ++c) {
-    const auto row = in.cells[c];
-    const CellShape shape = in.shape(c);
-    if (shape != CellShape::Faces) {
-      const bool ok = row.size() == static_cast<size_t>(corner_count(shape)) &&
-                      std::ranges::all_of(row, [&](int32_t v) { return v >= 0 && static_cast<size_t>(v) < nv; });
-      bool distinct = ok;
-      for (size_t i = 1; i < row.size() && distinct; ++i)
-        for (size_t j = 0; j < i; ++j) distinct = distinct && row[i] != row[j];
-      if (!distinct)
-        throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                         std::to_string(corner_count(shape)) + " distinct vertex indices in [0, " +
-                             std::to_string(nv) + ") for cell " + std::to_string(c) + ", found " + loop_text(row));
-      continue;
+void validate_cell(const MeshInput& in, size_t nv, size_t c) {
+  const auto row = in.cells[c];
+  const CellShape shape = in.shape(c);
+  if (shape != CellShape::Faces) {
+    bool ok = row.size() == static_cast<size_t>(corner_count(shape));
+    for (size_t i = 0; i < row.size() && ok; ++i) {
+      ok = row[i] >= 0 && static_cast<size_t>(row[i]) < nv;
+      for (size_t j = 0; j < i; ++j) ok = ok && row[i] != row[j];
     }
-    if (row.size() < 2)
+    if (!ok)
       throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                       "a cell with at least 2 faces, cell " + std::to_string(c) + " has " + std::to_string(row.size()));
-    for (int32_t r : row) {
-      const int32_t f = r >> 1;
-      if (r < 0 || static_cast<size_t>(f) >= nf)
-        throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                         "face index in [0, " + std::to_string(nf) + ") in cell " + std::to_string(c) + ", found " +
-                             std::to_string(r < 0 ? r : f));
-    }
+                       std::to_string(corner_count(shape)) + " distinct vertex indices in [0, " + std::to_string(nv) +
+                           ") for cell " + std::to_string(c) + ", found " + loop_text(row));
+    return;
+  }
+  if (row.size() < 2)
+    throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                     "a cell with at least 2 faces, cell " + std::to_string(c) + " has " + std::to_string(row.size()));
+  const size_t nf = in.faces.rows();
+  for (int32_t r : row) {
+    const int32_t f = r >> 1;
+    if (r < 0 || static_cast<size_t>(f) >= nf)
+      throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                       "face index in [0, " + std::to_string(nf) + ") in cell " + std::to_string(c) + ", found " +
+                           std::to_string(r < 0 ? r : f));
   }
 }
 
 }  // namespace
 
 // Checks what a reader handed over: counts, index ranges, finite coordinates, proper polygons.
-void validate_input(const MeshInput& in) {
+void validate_input(const MeshInput& in, const LoadOptions& par) {
   const std::string& file = in.source;
   if (in.points.size() % 3 != 0) throw InputError(file, {}, "3 coordinates per vertex");
   const size_t nv = in.points.size() / 3;
@@ -90,11 +84,20 @@ void validate_input(const MeshInput& in) {
       in.faces.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
       in.cells.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
     throw InputError(file, {}, "fewer than 2^31 vertices, face corners and cell faces");
-  for (size_t i = 0; i < in.points.size(); ++i)
-    if (!std::isfinite(in.points[i]))
-      throw InputError(file, in.loc_of(in.vertex_loc, i / 3), "a finite coordinate for vertex " + std::to_string(i / 3));
-  validate_faces(in, nv);
-  validate_cells(in, nv);
+  detail::parallel_ranges(in.points.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t i = b; i < e; ++i)
+      if (!std::isfinite(in.points[i]))
+        throw InputError(file, in.loc_of(in.vertex_loc, i / 3), "a finite coordinate for vertex " + std::to_string(i / 3));
+  });
+  detail::parallel_ranges(in.faces.rows(), par, [&](size_t b, size_t e, int) {
+    std::vector<int32_t> stamp(e > b ? nv : 0, -1);  // the last face that named each vertex
+    for (size_t f = b; f < e; ++f) validate_face(in, nv, f, stamp);
+  });
+  if (!in.cell_shape.empty() && in.cell_shape.size() != in.cells.rows())
+    throw InputError(file, {}, "a shape for every cell");
+  detail::parallel_ranges(in.cells.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) validate_cell(in, nv, c);
+  });
 }
 
 namespace {
@@ -376,66 +379,127 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   fill_face_cells(in, m);
 }
 
-std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
-  const size_t ns = m.face_verts.items.size(), nf = m.num_faces();
+namespace {
+
+// rep[k] = the vertex after corner k along its loop, so that a corner's edge is known without its
+// face; boundary[k] = 1 when corner k's face is on the boundary.
+void prefill_next(const Mesh& m, std::vector<int32_t>& rep, std::vector<uint8_t>& boundary, const LoadOptions& par) {
   const std::vector<int32_t>& loops = m.face_verts.items;
-  // rep first holds the vertex after each corner along its loop (so that a corner's edge is known
-  // without its face), then the lowest corner with the same edge.
-  std::vector<int32_t>& rep = m.face_edge_ids;
-  rep.resize(ns);
-  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
+  rep.resize(loops.size());
+  boundary.resize(loops.size());
+  detail::parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f) {
       const auto k0 = static_cast<size_t>(m.face_verts.offsets[f]), k1 = static_cast<size_t>(m.face_verts.offsets[f + 1]);
       for (size_t k = k0; k + 1 < k1; ++k) rep[k] = loops[k + 1];
       rep[k1 - 1] = loops[k0];
+      std::fill(boundary.begin() + static_cast<std::ptrdiff_t>(k0), boundary.begin() + static_cast<std::ptrdiff_t>(k1),
+                m.face_cells[f][1] < 0 ? 1 : 0);
     }
   });
-  {
-    const Csr<int32_t> by_lo = detail::group_by_key(ns, m.num_vertices(), par, [&](size_t k) { return std::min(loops[k], rep[k]); });
-    detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
-      std::vector<uint64_t> hi_corner;  // other end << 32 | corner, sorted
-      for (size_t v = vb; v < ve; ++v) {
-        hi_corner.clear();
-        for (int32_t k : by_lo[v]) {
-          const auto kk = static_cast<size_t>(k);
-          hi_corner.push_back(static_cast<uint64_t>(std::max(loops[kk], rep[kk])) << 32 | static_cast<uint32_t>(k));
-        }
-        detail::sort_small(hi_corner.begin(), hi_corner.end());  // a vertex starts a few edges, each in a few faces
-        // Every corner of this bucket was read above: rep can now take the representatives.
-        for (size_t i = 0; i < hi_corner.size(); ++i) {
-          const auto k = static_cast<size_t>(hi_corner[i] & 0xffffffffu);
-          const bool same = i > 0 && (hi_corner[i - 1] >> 32) == (hi_corner[i] >> 32);
-          rep[k] = same ? rep[static_cast<size_t>(hi_corner[i - 1] & 0xffffffffu)] : static_cast<int32_t>(k);
-        }
+}
+
+// rep[k] = the lowest corner with the same edge, bucket by bucket of by_lo (corners by the lower
+// end of their edge); every corner of a bucket is read before any of them is overwritten.
+void edge_representatives(const Mesh& m, const Csr<int32_t>& by_lo, std::vector<int32_t>& rep, const LoadOptions& par) {
+  const std::vector<int32_t>& loops = m.face_verts.items;
+  detail::parallel_ranges(by_lo.rows(), par, [&](size_t vb, size_t ve, int) {
+    std::vector<uint64_t> hi_corner;  // other end << 32 | corner, sorted
+    for (size_t v = vb; v < ve; ++v) {
+      hi_corner.clear();
+      for (int32_t k : by_lo[v]) {
+        const auto kk = static_cast<size_t>(k);
+        hi_corner.push_back(static_cast<uint64_t>(std::max(loops[kk], rep[kk])) << 32 | static_cast<uint32_t>(k));
       }
-    });
-  }
-  // Numbering in corner order: a representative precedes the other corners of its edge, so by
-  // the time they are reached it already holds the edge id.
-  m.edge_verts.reserve(ns / 2);  // each edge of a closed cell is in two of its face corners
-  m.fan_start.reserve(ns / 2);
-  std::vector<EdgeFaceCount> count;
-  count.reserve(ns / 2);
-  for (size_t f = 0; f < nf; ++f) {
-    const bool boundary = m.face_cells[f][1] < 0;
-    for (size_t k = static_cast<size_t>(m.face_verts.offsets[f]); k < static_cast<size_t>(m.face_verts.offsets[f + 1]); ++k) {
-      if (rep[k] == static_cast<int32_t>(k)) {
-        const int32_t a = loops[k], b = k + 1 < static_cast<size_t>(m.face_verts.offsets[f + 1]) ? loops[k + 1] : loops[static_cast<size_t>(m.face_verts.offsets[f])];
-        rep[k] = static_cast<int32_t>(m.edge_verts.size());
-        m.edge_verts.push_back({std::min(a, b), std::max(a, b)});
-        m.fan_start.push_back(static_cast<int32_t>(f));
-        count.emplace_back();
-      } else {
-        rep[k] = rep[static_cast<size_t>(rep[k])];
+      detail::sort_small(hi_corner.begin(), hi_corner.end());  // a vertex starts a few edges, each in a few faces
+      for (size_t i = 0; i < hi_corner.size(); ++i) {
+        const auto k = static_cast<size_t>(hi_corner[i] & 0xffffffffu);
+        const bool same = i > 0 && (hi_corner[i - 1] >> 32) == (hi_corner[i] >> 32);
+        rep[k] = same ? rep[static_cast<size_t>(hi_corner[i - 1] & 0xffffffffu)] : static_cast<int32_t>(k);
       }
-      EdgeFaceCount& c = count[static_cast<size_t>(rep[k])];
-      ++c.faces;
-      if (boundary && c.boundary_faces++ == 0) m.fan_start[static_cast<size_t>(rep[k])] = static_cast<int32_t>(f);
     }
-  }
-  m.edge_verts.shrink_to_fit();
-  m.fan_start.shrink_to_fit();
+  });
+}
+
+// Edges numbered in corner order from rep (which becomes the edge of every corner), with
+// edge_verts and fan_start = the face of each edge's first corner. Ranges of faces count their
+// new edges first so that each numbers its own from the right place; an edge id is kept as
+// -1 - id until every corner has one (a representative is an earlier corner, maybe of another
+// range).
+void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
+  const size_t nf = m.num_faces();
+  const std::vector<int32_t>& loops = m.face_verts.items;
+  const int nr = detail::range_count(nf, par);
+  std::vector<int64_t> first(static_cast<size_t>(nr) + 1, 0);
+  auto corners = [&](size_t f) {
+    return std::pair{static_cast<size_t>(m.face_verts.offsets[f]), static_cast<size_t>(m.face_verts.offsets[f + 1])};
+  };
+  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
+    for (size_t f = b; f < e; ++f)
+      for (auto [k, k1] = corners(f); k < k1; ++k) first[static_cast<size_t>(r) + 1] += rep[k] == static_cast<int32_t>(k);
+  });
+  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) first[r + 1] += first[r];
+  m.edge_verts.resize(static_cast<size_t>(first.back()));
+  m.fan_start.resize(static_cast<size_t>(first.back()));
+  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
+    auto id = first[static_cast<size_t>(r)];
+    for (size_t f = b; f < e; ++f) {
+      const auto [k0, k1] = corners(f);
+      for (size_t k = k0; k < k1; ++k) {
+        if (rep[k] != static_cast<int32_t>(k)) continue;
+        const int32_t a = loops[k], c = loops[k + 1 < k1 ? k + 1 : k0];
+        m.edge_verts[static_cast<size_t>(id)] = {std::min(a, c), std::max(a, c)};
+        m.fan_start[static_cast<size_t>(id)] = static_cast<int32_t>(f);
+        rep[k] = static_cast<int32_t>(-1 - id++);
+      }
+    }
+  });
+  detail::parallel_ranges(rep.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k)
+      if (rep[k] >= 0) rep[k] = rep[static_cast<size_t>(rep[k])];
+  });
+  detail::parallel_ranges(rep.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k) rep[k] = -1 - rep[k];
+  });
+}
+
+// Faces and boundary faces at each edge, and fan_start moved to the lowest boundary face at the
+// edge where there is one. Each edge's corners are all in the bucket of its lower end, so a range
+// of buckets counts its edges alone.
+std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, const std::vector<uint8_t>& boundary,
+                                            const LoadOptions& par) {
+  std::vector<EdgeFaceCount> count(m.num_edges());
+  std::vector<int32_t> lowest_boundary_corner(m.num_edges(), INT32_MAX);
+  detail::parallel_ranges(by_lo.rows(), par, [&](size_t vb, size_t ve, int) {
+    for (size_t v = vb; v < ve; ++v)
+      for (int32_t k : by_lo[v]) {
+        const auto e = static_cast<size_t>(m.face_edge_ids[static_cast<size_t>(k)]);
+        ++count[e].faces;
+        if (!boundary[static_cast<size_t>(k)]) continue;
+        ++count[e].boundary_faces;
+        lowest_boundary_corner[e] = std::min(lowest_boundary_corner[e], k);
+      }
+  });
+  const auto& off = m.face_verts.offsets;
+  detail::parallel_ranges(m.num_edges(), par, [&](size_t b, size_t e, int) {
+    for (size_t i = b; i < e; ++i)
+      if (lowest_boundary_corner[i] != INT32_MAX)
+        m.fan_start[i] = static_cast<int32_t>(std::upper_bound(off.begin(), off.end(), lowest_boundary_corner[i]) - off.begin() - 1);
+  });
   return count;
+}
+
+}  // namespace
+
+std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
+  std::vector<int32_t>& rep = m.face_edge_ids;
+  std::vector<uint8_t> boundary;
+  prefill_next(m, rep, boundary, par);
+  const Csr<int32_t> by_lo = detail::group_by_key(rep.size(), m.num_vertices(), par, [&](size_t k) {
+    return std::min(m.face_verts.items[k], rep[k]);
+  });
+  edge_representatives(m, by_lo, rep, par);
+  number_edges(m, rep, par);
+  return count_edge_faces(m, by_lo, boundary, par);
 }
 
 }  // namespace hbc::mesh_steps

@@ -50,7 +50,7 @@ struct Built {
 };
 Built through_check(MeshInput in) {
   Built b{std::move(in), {}, {}, {}};
-  validate_input(b.in);
+  validate_input(b.in, kOne);
   b.m.points = b.in.points;
   merge_faces(b.in, b.m, kOne);
   b.counts = build_edges(b.m, kOne);
@@ -162,7 +162,7 @@ TEST(LoadSteps, OrientationKeepsATangledCellInverted) {
   // cube stays positive and the tangled one keeps its negative volume, instead of being turned
   // against its neighbour.
   MeshInput in = stacked_cubes(0.5);
-  validate_input(in);
+  validate_input(in, kOne);
   Mesh m;
   m.points = in.points;
   merge_faces(in, m, kOne);

@@ -24,7 +24,7 @@ namespace hbc::mesh_steps {
 std::string loop_text(std::span<const int32_t> loop);
 
 // Range, finiteness and polygon checks of what a reader produced.
-void validate_input(const MeshInput& in);
+void validate_input(const MeshInput& in, const LoadOptions& par);
 
 // face_verts, cell_faces, cell_face_flip, face_cells, dropped_faces (+ warning). Slots with the
 // same vertex set become one face, numbered in order of first use by a cell (slot order) and
