@@ -279,21 +279,20 @@ void component_incidences(const Mesh& m, BaseComplex& bc) {
     by_patch.begin();
     by_curve.begin();
     by_vertex.begin();
-    for (int32_t c : bc.component_cells[k]) {
+    // Every face around a curve edge separates, and so does every face at a corner: a cell's
+    // curves and corners lie on its separation faces, the only faces looked at.
+    for (int32_t c : bc.component_cells[k])
       for (int32_t f : m.cell_faces[c]) {
         if (!bc.face_separation[f]) continue;
         by_patch.add(bc.face_patch[f]);
         const auto fc = m.face_cells[f];
         const int32_t other = fc[0] == c ? fc[1] : fc[0];
         if (other >= 0 && bc.cell_component[other] != static_cast<int32_t>(k)) by_component.add(bc.cell_component[other]);
-      }
-      for (int32_t f : m.cell_faces[c]) {  // a cell's edges and vertices are those of its faces
         for (int32_t e : m.face_edges(static_cast<size_t>(f)))
           if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
         for (int32_t v : m.face_verts[static_cast<size_t>(f)])
           if (bc.vert_corner[v]) by_vertex.add(v);
       }
-    }
     by_component.end(bc.component_adjacency);
     by_patch.end(bc.component_patches);
     by_curve.end(bc.component_curves);

@@ -35,13 +35,21 @@ bool contains(std::span<const int32_t> sorted, int32_t x) {
 // The edge of hex cell c at the first vertex of face f that is not an edge of f: it points
 // across the face, in the cell's direction orthogonal to f.
 int32_t orthogonal_edge(const Mesh& m, int32_t c, int32_t f) {
-  const int32_t v = m.face_verts[static_cast<size_t>(f)][0];
-  const auto fe = m.face_edges(static_cast<size_t>(f));
-  for (int32_t g : m.cell_faces[static_cast<size_t>(c)])
-    for (int32_t e : m.face_edges(static_cast<size_t>(g))) {
-      if (m.edge_verts[static_cast<size_t>(e)][0] != v && m.edge_verts[static_cast<size_t>(e)][1] != v) continue;
-      if (std::find(fe.begin(), fe.end(), e) == fe.end()) return e;  // a hex has one such edge
-    }
+  // Another face g of the hex at v runs along f on one side of v and across it on the other:
+  // the edge of g at v whose far end is not in f.
+  const auto fl = m.face_verts[static_cast<size_t>(f)];
+  const int32_t v = fl[0];
+  auto in_f = [&](int32_t x) { return std::find(fl.begin(), fl.end(), x) != fl.end(); };
+  for (int32_t g : m.cell_faces[static_cast<size_t>(c)]) {
+    if (g == f) continue;
+    const auto gl = m.face_verts[static_cast<size_t>(g)];
+    const auto i = static_cast<size_t>(std::find(gl.begin(), gl.end(), v) - gl.begin());
+    if (i == gl.size()) continue;
+    const size_t n = gl.size(), next = (i + 1) % n, prev = (i + n - 1) % n;
+    const auto ge = m.face_edges(static_cast<size_t>(g));  // ge[i] joins gl[i] and gl[i + 1]
+    if (!in_f(gl[next])) return ge[i];
+    if (!in_f(gl[prev])) return ge[prev];
+  }
   return -1;
 }
 
