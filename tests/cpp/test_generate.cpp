@@ -146,19 +146,13 @@ TEST(Generate, GridNumberingAndSpacing) {
   EXPECT_NEAR(expect_positive(m), 12 * 0.125, 1e-12);
 }
 
-TEST(Generate, MillionCellGridIsFast) {
-  const auto t0 = std::chrono::steady_clock::now();
+TEST(Generate, MillionCellGrid) {
+  // Its speed is the load benchmark's business (scripts/bench.sh); here, the counts.
   const MeshInput in = generate_grid(100, 100, 100);
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(in.cells.rows(), 1000000u);
   EXPECT_EQ(in.points.size(), 3u * 101 * 101 * 101);
   // F = 3 * 101 * 100 * 100.
   EXPECT_EQ(in.faces.rows(), 3030000u);
-#if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)
-  GTEST_SKIP() << "timing checked in optimised builds only (took " << s << " s)";
-#else
-  EXPECT_LT(s, 1.0) << "generating 10^6 hexes took " << s << " s";
-#endif
 }
 
 TEST(Generate, SplitPyramidsKeepsNeighboursHex) {
