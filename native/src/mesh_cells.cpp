@@ -9,6 +9,7 @@
 #include <atomic>
 
 #include "hbc/mesh_steps.hpp"
+#include "huge_pages.hpp"
 #include "parallel.hpp"
 #include "small_table.hpp"
 
@@ -204,7 +205,7 @@ constexpr CellType kElementType[5] = {CellType::Polyhedron, CellType::Tet, CellT
 CellCheck check_cells(Mesh& m, const MeshInput& in, const LoadOptions& par) {
   const size_t nc = m.num_cells();
   CellCheck out;
-  out.volume.assign(nc, 0.0);
+  detail::assign_huge(out.volume, nc, 0.0);
   m.cell_type.assign(nc, CellType::Polyhedron);
   m.vert_non_manifold.assign(m.num_vertices(), 0);
   const int nr = detail::range_count(nc, par);

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "hbc/mesh_steps.hpp"
+#include "huge_pages.hpp"
 #include "parallel.hpp"
 
 namespace hbc {
@@ -193,7 +194,10 @@ namespace {
 // of the unions.
 class HalfEdgeSets {
  public:
-  explicit HalfEdgeSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  explicit HalfEdgeSets(size_t n) {
+    detail::resize_huge(parent_, n);
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
   int32_t find(int32_t x) {
     for (;;) {
       int32_t p = at(x).load(std::memory_order_acquire);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cell_templates.hpp"
+#include "huge_pages.hpp"
 #include "parallel.hpp"
 #include "small_table.hpp"
 
@@ -212,7 +213,8 @@ void group_bucket(const FaceItems& items, std::span<const int32_t> bucket, std::
 std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, const LoadOptions& par) {
   const size_t n = items.size();
   const Csr<int32_t> by_lowest = detail::group_by_key(n, nv, par, [&](size_t i) { return items.lowest[i]; });
-  std::vector<int32_t> rep(n);
+  std::vector<int32_t> rep;
+  detail::resize_huge(rep, n);
   detail::parallel_ranges(nv, par, [&](size_t vb, size_t ve, int) {
     std::vector<FaceKey> small;
     std::vector<std::vector<int32_t>> big;
@@ -234,7 +236,7 @@ bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
 
 // face_cells from cell_faces, in cell order, so that the first offending cell is reported.
 void fill_face_cells(const MeshInput& in, Mesh& m) {
-  m.face_cells.assign(m.face_verts.rows(), {-1, -1});
+  detail::assign_huge(m.face_cells, m.face_verts.rows(), {-1, -1});
   for (size_t c = 0; c < m.num_cells(); ++c) {
     const int32_t ci = static_cast<int32_t>(c);
     for (int32_t u : m.cell_faces[c]) {
@@ -275,14 +277,15 @@ FaceItems face_items(const MeshInput& in, const SlotLoops& loops, std::vector<in
       throw InputError(in.source, {}, "fewer than 2^31 cell faces and face corners");
     slot_offsets[c + 1] = static_cast<int32_t>(total);
   }
-  FaceItems items{in, loops, slot_offsets, std::vector<int32_t>(static_cast<size_t>(total)), {}, {}};
+  FaceItems items{in, loops, slot_offsets, {}, {}, {}};
+  detail::resize_huge(items.slot_cell, static_cast<size_t>(total));
   std::vector<uint8_t> used(in.faces.rows(), 0);
   for (size_t c = 0; c < nc; ++c)
     if (in.shape(c) == CellShape::Faces)
       for (int32_t r : in.cells[c]) used[static_cast<size_t>(r >> 1)] = 1;
   for (size_t f = 0; f < used.size(); ++f)
     if (!used[f]) items.unused.push_back(static_cast<int32_t>(f));
-  items.lowest.resize(items.size());
+  detail::resize_huge(items.lowest, items.size());
   detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int) {
     std::array<int32_t, 4> buf;
     for (size_t c = cb; c < ce; ++c)
@@ -319,8 +322,8 @@ void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, c
     first_face[r + 1] += first_face[r];
     first_corner[r + 1] += first_corner[r];
   }
-  m.face_verts.offsets.assign(static_cast<size_t>(first_face.back()) + 1, 0);
-  m.face_verts.items.resize(static_cast<size_t>(first_corner.back()));
+  detail::assign_huge(m.face_verts.offsets, static_cast<size_t>(first_face.back()) + 1, 0);
+  detail::resize_huge(m.face_verts.items, static_cast<size_t>(first_corner.back()));
   detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int r) {
     std::array<int32_t, 4> buf;
     auto face = first_face[static_cast<size_t>(r)];
@@ -362,7 +365,7 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   m.cell_faces.offsets = std::move(slot_offsets);
   // The cell sees the stored loop reversed when exactly one of (the file's flip, its loop running
   // against the stored one) holds.
-  m.cell_face_flip.resize(m.cell_faces.items.size());
+  detail::resize_huge(m.cell_face_flip, m.cell_faces.items.size());
   detail::parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
     std::array<int32_t, 4> buf;
     for (size_t c = b; c < e; ++c)
@@ -385,8 +388,8 @@ namespace {
 // face; boundary[k] = 1 when corner k's face is on the boundary.
 void prefill_next(const Mesh& m, std::vector<int32_t>& rep, std::vector<uint8_t>& boundary, const LoadOptions& par) {
   const std::vector<int32_t>& loops = m.face_verts.items;
-  rep.resize(loops.size());
-  boundary.resize(loops.size());
+  detail::resize_huge(rep, loops.size());
+  detail::resize_huge(boundary, loops.size());
   detail::parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f) {
       const auto k0 = static_cast<size_t>(m.face_verts.offsets[f]), k1 = static_cast<size_t>(m.face_verts.offsets[f + 1]);
@@ -438,8 +441,8 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
       for (auto [k, k1] = corners(f); k < k1; ++k) first[static_cast<size_t>(r) + 1] += rep[k] == static_cast<int32_t>(k);
   });
   for (size_t r = 0; r < static_cast<size_t>(nr); ++r) first[r + 1] += first[r];
-  m.edge_verts.resize(static_cast<size_t>(first.back()));
-  m.fan_start.resize(static_cast<size_t>(first.back()));
+  detail::resize_huge(m.edge_verts, static_cast<size_t>(first.back()));
+  detail::resize_huge(m.fan_start, static_cast<size_t>(first.back()));
   detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
     auto id = first[static_cast<size_t>(r)];
     for (size_t f = b; f < e; ++f) {

@@ -10,6 +10,7 @@
 
 #include "hbc/csr.hpp"
 #include "hbc/mesh.hpp"
+#include "huge_pages.hpp"
 
 namespace hbc::detail {
 
@@ -87,7 +88,7 @@ Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&
     for (size_t i = b; i < e; ++i) ++count[static_cast<size_t>(key_of(i))];
   });
   Csr<int32_t> g;
-  g.offsets.resize(nkeys + 1);
+  resize_huge(g.offsets, nkeys + 1);
   int32_t pos = 0;
   for (size_t k = 0; k < nkeys; ++k) {
     g.offsets[k] = pos;
@@ -98,7 +99,7 @@ Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&
     }
   }
   g.offsets[nkeys] = pos;
-  g.items.resize(n);
+  resize_huge(g.items, n);
   parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
     std::vector<int32_t>& at = next[static_cast<size_t>(r)];
     for (size_t i = b; i < e; ++i) g.items[static_cast<size_t>(at[static_cast<size_t>(key_of(i))]++)] = static_cast<int32_t>(i);

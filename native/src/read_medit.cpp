@@ -9,6 +9,7 @@
 #include "hbc/io.hpp"
 #include "cell_templates.hpp"
 #include "line_table.hpp"
+#include "huge_pages.hpp"
 #include "parallel.hpp"
 #include "text_scanner.hpp"
 
@@ -41,8 +42,8 @@ struct RawElements {
 };
 
 void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, const LoadOptions& par) {
-  in.points.reserve(static_cast<size_t>(3 * nv));
-  in.vertex_loc.reserve(static_cast<size_t>(nv));
+  detail::reserve_huge(in.points, static_cast<size_t>(3 * nv));
+  detail::reserve_huge(in.vertex_loc, static_cast<size_t>(nv));
   if (detail::fast_vertex_lines(s, nv, in.points, in.vertex_loc, par)) return;
   for (int64_t i = 0; i < nv; ++i) {
     const int64_t l = s.next_line();
@@ -55,8 +56,8 @@ void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, const Load
 void read_elements(detail::TextScanner& s, Element el, int64_t n, RawElements& raw, const LoadOptions& par) {
   const int nverts = detail::corner_count(el);
   raw.el.resize(raw.el.size() + static_cast<size_t>(n), el);
-  raw.line.reserve(raw.line.size() + static_cast<size_t>(n));
-  raw.ids.reserve(raw.ids.size() + static_cast<size_t>(n * nverts));
+  detail::reserve_huge(raw.line, raw.line.size() + static_cast<size_t>(n));
+  detail::reserve_huge(raw.ids, raw.ids.size() + static_cast<size_t>(n * nverts));
   if (detail::fast_element_lines(s, n, nverts, raw.ids, raw.line, par)) return;
   for (int64_t i = 0; i < n; ++i) {
     raw.line.push_back(s.next_line());
