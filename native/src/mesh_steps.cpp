@@ -466,27 +466,24 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
 }
 
 // Faces and boundary faces at each edge, and fan_start moved to the lowest boundary face at the
-// edge where there is one. Each edge's corners are all in the bucket of its lower end, so a range
-// of buckets counts its edges alone.
+// edge where there is one. Each edge's corners are all in the bucket of its lower end, in
+// increasing order, so a range of buckets counts its edges alone and meets each edge's lowest
+// boundary corner first.
 std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, const std::vector<uint8_t>& boundary,
                                             const LoadOptions& par) {
-  std::vector<EdgeFaceCount> count(m.num_edges());
-  std::vector<int32_t> lowest_boundary_corner(m.num_edges(), INT32_MAX);
+  std::vector<EdgeFaceCount> count;
+  detail::resize_huge(count, m.num_edges());
+  const auto& off = m.face_verts.offsets;
   detail::parallel_ranges(by_lo.rows(), par, [&](size_t vb, size_t ve, int) {
     for (size_t v = vb; v < ve; ++v)
       for (int32_t k : by_lo[v]) {
         const auto e = static_cast<size_t>(m.face_edge_ids[static_cast<size_t>(k)]);
         ++count[e].faces;
         if (!boundary[static_cast<size_t>(k)]) continue;
-        ++count[e].boundary_faces;
-        lowest_boundary_corner[e] = std::min(lowest_boundary_corner[e], k);
+        uint8_t& nb = count[e].boundary_faces;
+        if (nb == 0) m.fan_start[e] = static_cast<int32_t>(std::upper_bound(off.begin(), off.end(), k) - off.begin() - 1);
+        if (nb < 255) ++nb;
       }
-  });
-  const auto& off = m.face_verts.offsets;
-  detail::parallel_ranges(m.num_edges(), par, [&](size_t b, size_t e, int) {
-    for (size_t i = b; i < e; ++i)
-      if (lowest_boundary_corner[i] != INT32_MAX)
-        m.fan_start[i] = static_cast<int32_t>(std::upper_bound(off.begin(), off.end(), lowest_boundary_corner[i]) - off.begin() - 1);
   });
   return count;
 }

@@ -37,7 +37,7 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par);
 // lowest face at e. Returns how many faces, and boundary faces, each edge is in.
 struct EdgeFaceCount {
   int32_t faces = 0;
-  int32_t boundary_faces = 0;
+  uint8_t boundary_faces = 0;  // up to 255 counted; more make the fan odd anyway
 };
 std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par);
 
