@@ -215,7 +215,7 @@ std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, con
   const Csr<int32_t> by_lowest = detail::group_by_key(n, nv, par, [&](size_t i) { return items.lowest[i]; });
   std::vector<int32_t> rep;
   detail::resize_huge(rep, n);
-  detail::parallel_ranges(nv, par, [&](size_t vb, size_t ve, int) {
+  detail::parallel_rows(by_lowest, par, [&](size_t vb, size_t ve, int) {
     std::vector<FaceKey> small;
     std::vector<std::vector<int32_t>> big;
     for (size_t v = vb; v < ve; ++v) {
@@ -405,7 +405,7 @@ void prefill_next(const Mesh& m, std::vector<int32_t>& rep, std::vector<uint8_t>
 // end of their edge); every corner of a bucket is read before any of them is overwritten.
 void edge_representatives(const Mesh& m, const Csr<int32_t>& by_lo, std::vector<int32_t>& rep, const LoadOptions& par) {
   const std::vector<int32_t>& loops = m.face_verts.items;
-  detail::parallel_ranges(by_lo.rows(), par, [&](size_t vb, size_t ve, int) {
+  detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
     std::vector<uint64_t> hi_corner;  // other end << 32 | corner, sorted
     for (size_t v = vb; v < ve; ++v) {
       hi_corner.clear();
@@ -474,7 +474,7 @@ std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, 
   std::vector<EdgeFaceCount> count;
   detail::resize_huge(count, m.num_edges());
   const auto& off = m.face_verts.offsets;
-  detail::parallel_ranges(by_lo.rows(), par, [&](size_t vb, size_t ve, int) {
+  detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
     for (size_t v = vb; v < ve; ++v)
       for (int32_t k : by_lo[v]) {
         const auto e = static_cast<size_t>(m.face_edge_ids[static_cast<size_t>(k)]);

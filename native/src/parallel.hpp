@@ -107,4 +107,22 @@ Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&
   return g;
 }
 
+// Calls f(row_begin, row_end, r) over ranges of the rows of `rows` holding about as many items
+// each, so that rows of very different lengths (vertex buckets are longest at low ids when the
+// lowest vertex of random ids is taken) still split evenly. Results must not depend on the split.
+template <class F>
+void parallel_rows(const Csr<int32_t>& rows, const LoadOptions& par, F&& f) {
+  const size_t nrows = rows.rows(), nitems = rows.items.size();
+  const int nr = range_count(std::max(nrows, nitems), par);
+  std::vector<size_t> start(static_cast<size_t>(nr) + 1, nrows);
+  for (int r = 0; r < nr; ++r) {
+    const auto target = static_cast<int32_t>(nitems * static_cast<size_t>(r) / static_cast<size_t>(nr));
+    start[static_cast<size_t>(r)] = static_cast<size_t>(std::lower_bound(rows.offsets.begin(), rows.offsets.end() - 1, target) - rows.offsets.begin());
+  }
+  start[0] = 0;
+  parallel_ranges(static_cast<size_t>(nr), LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
+    for (size_t r = b; r < e; ++r) f(start[r], start[r + 1], static_cast<int>(r));
+  });
+}
+
 }  // namespace hbc::detail
