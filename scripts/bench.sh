@@ -1,17 +1,22 @@
 #!/usr/bin/env bash
-# Load and analysis benchmark, printed as a Markdown table. Per case (a real mesh, rockerarm
-# refined to 678,400 hexes, the 10^6-hex grid) and per variant (1 and 2 threads, and the baseline
-# when given), in one run:
+# Load and analysis benchmark, printed as a Markdown table: every figure of a row, and every ratio
+# between rows, comes from the same run. Per case and per variant (this build with 1 and with 2
+# threads, and the baseline when given):
 #   - hbc_bench_load (BM_LoadFile, one process per case and variant): the time to read the file
-#     into memory (read_file_bytes, the hardware's pace), read+parse (read_input) and topology
-#     (build_mesh) times, parse MB/s, load cells/s and the load / read ratio;
-#   - `hbc analyze --json` under /usr/bin/time: the stage times and the peak RSS of load + analysis
-#     (and bytes per cell).
+#     into memory (read_file_bytes: the hardware's pace), read+parse (read_input) and topology
+#     (build_mesh) wall times, from which parse MB/s, load cells/s and load / read;
+#   - `hbc analyze --json` under /usr/bin/time: the stage times, the stages' sum against the load,
+#     and the peak RSS of load + analysis (and bytes per cell).
+# With a baseline, the load speed-up and the peak-memory ratio against it, case by case.
+# Cases: armadillo (real, 26k cells); rockerarm refined to 678,400 hexes; three 10^6-cell meshes
+# from hbc generate: the grid, a hex-dominant cylinder with prism columns, and the all-singleton
+# worst case (the grid with 1 % of its cells split into 6 pyramids each).
 # Usage: scripts/bench.sh [build-dir]
 # Environment: HBC_BENCH_DIR keeps the generated meshes (default: a fresh temporary folder);
 # HBC_BENCH_BASELINE=DIR compares with the build folder DIR of an earlier commit whose source tree
 # is DIR/.. (its bench_load is compiled here from this tree's source against its library);
-# HBC_BENCH_LARGE=1 adds the 216^3 grid (10,077,696 hexes, about 3 minutes per variant).
+# HBC_BENCH_LARGE=1 adds the 10^7-cell cases: the 216^3 grid (10,077,696 hexes) and a
+# hex-dominant cylinder of about 10^7 cells (minutes per variant).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
@@ -24,16 +29,26 @@ if [[ -z "${HBC_BENCH_DIR:-}" ]]; then
 fi
 export HBC_BENCH_DIR
 D=$HBC_BENCH_DIR
-[[ -f "$D/grid_1000000.mesh" ]] || "$BUILD/bin/hbc" generate grid --size 100 100 100 -o "$D/grid_1000000.mesh" >/dev/null
+HBC=$BUILD/bin/hbc
+make_case() {  # FILE COMMAND...: generate FILE once
+  local f=$1
+  shift
+  [[ -f "$f" ]] || "$@" -o "$f" >/dev/null
+}
+make_case "$D/grid_1000000.mesh" "$HBC" generate grid --size 100 100 100
+make_case "$D/cylinder_988240.mesh" "$HBC" generate cylinder --radius-cells 50 --layers 110
+make_case "$D/split_1050000.mesh" "$HBC" generate split --size 100 100 100 --split pyramids --random 10000
 [[ -f "$D/rockerarm_x64.mesh" ]] ||
   /usr/bin/python3 scripts/refine_medit_hexes.py ../shared/data/cinolib/rockerarm.mesh "$D/rockerarm_x64.mesh" 4 >/dev/null
-cases=(../shared/data/hexalab-edge-cone-rectification/armadillo_out.mesh "$D/rockerarm_x64.mesh" "$D/grid_1000000.mesh")
+cases=(../shared/data/hexalab-edge-cone-rectification/armadillo_out.mesh "$D/rockerarm_x64.mesh" "$D/grid_1000000.mesh"
+       "$D/cylinder_988240.mesh" "$D/split_1050000.mesh")
 if [[ "${HBC_BENCH_LARGE:-0}" == 1 ]]; then
-  [[ -f "$D/grid_10077696.mesh" ]] || "$BUILD/bin/hbc" generate grid --size 216 216 216 -o "$D/grid_10077696.mesh" >/dev/null
-  cases+=("$D/grid_10077696.mesh")
+  make_case "$D/grid_10077696.mesh" "$HBC" generate grid --size 216 216 216
+  make_case "$D/cylinder_10m.mesh" "$HBC" generate cylinder --radius-cells 160 --layers 110
+  cases+=("$D/grid_10077696.mesh" "$D/cylinder_10m.mesh")
 fi
 
-variants=("new:1:$BUILD/bin/hbc_bench_load:$BUILD/bin/hbc" "new:2:$BUILD/bin/hbc_bench_load:$BUILD/bin/hbc")
+variants=("new:1:$BUILD/bin/hbc_bench_load:$HBC" "new:2:$BUILD/bin/hbc_bench_load:$HBC")
 if [[ -n "${HBC_BENCH_BASELINE:-}" ]]; then
   B=$HBC_BENCH_BASELINE
   g++ -std=c++20 -O2 -DNDEBUG -DHBC_DATA_DIR="\"$PWD/../shared/data\"" -I"$B/../native/include" \
@@ -48,34 +63,42 @@ for f in "${cases[@]}"; do
     tag="$D/$(basename "$f").$name.$threads"
     HBC_THREADS=$threads HBC_BENCH_FILE=$f "$bench" --benchmark_filter='^BM_LoadFile$' --benchmark_min_time=0.2 \
       --benchmark_format=json >"$tag.load.json"
-    HBC_THREADS=$threads /usr/bin/time -f '%M %U %S' -o "$tag.rss" "$cli" analyze "$f" --json >"$tag.analyze.json"
+    HBC_THREADS=$threads /usr/bin/time -f '%M %U %S %e' -o "$tag.rss" "$cli" analyze "$f" --json >"$tag.analyze.json"
     rows+=("$f|$name|$threads|$tag")
   done
 done
 
 /usr/bin/python3 - "${rows[@]}" <<'PY'
 import json, os, sys
-print("| mesh | cells | code | threads | read (ms) | read+parse wall / CPU (s) | parse MB/s | topology wall / CPU (s) | load cells/s | "
-      "load / read | base complex (s) | sheets (s) | VSG wireframe (s) | analyze wall / CPU (s) | peak RSS (MB) | bytes/cell |")
-print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+rows = []
 for row in sys.argv[1:]:
     path, name, threads, tag = row.split("|")
     b = json.load(open(tag + ".load.json"))["benchmarks"][0]
     a = json.load(open(tag + ".analyze.json"))
-    t = a["timings"]
-    rss_kb, user, sys_s = open(tag + ".rss").read().split()[-3:]
-    rss_kb = int(rss_kb)
-    mb = b["file_MB"] * 1024 * 1024 / 1e6
-    read = b["read_s"]  # the baseline's binary is this tree's bench source, so it has it too
-    load = b["parse_s"] + b["build_s"]
+    rss_kb, user, sys_s, wall = open(tag + ".rss").read().split()[-4:]
+    rows.append(dict(mesh=os.path.basename(path), code=name, threads=int(threads), b=b, t=a["timings"],
+                     rss=int(rss_kb) * 1024, cpu=float(user) + float(sys_s), wall=float(wall)))
+base = {r["mesh"]: r for r in rows if r["code"] == "baseline"}
+print("| mesh | cells | code | threads | read (ms) | parse MB/s | load (s) | load cells/s | load / read | load speed-up | "
+      "base complex (s) | sheets (s) | VSG wireframe (s) | stages / load | analyze wall / CPU (s) | peak RSS (MB) | RSS ratio | bytes/cell |")
+print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+for r in rows:
+    b, t = r["b"], r["t"]
     cells = int(b["cells"])
-    total = sum(v for v in t.values())
-    print(f"| {os.path.basename(path)} | {cells} | {name} | {threads} | {read * 1e3:.1f} | {b['parse_s']:.3f} / {b['parse_cpu_s']:.3f} | "
-          f"{mb / b['parse_s']:.0f} | {b['build_s']:.3f} / {b['build_cpu_s']:.3f} | {cells / load:.3g} | {load / read:.0f} | "
-          f"{t['base_complex']:.3f} | {t['sheets'] + t['subsheets']:.3f} | {t['vsg_wireframe']:.3f} | {total:.2f} / {float(user) + float(sys_s):.2f} | "
-          f"{rss_kb / 1024:.0f} | {rss_kb * 1024 / cells:.0f} |")
+    mb = b["file_MB"] * 1024 * 1024 / 1e6
+    load = b["parse_s"] + b["build_s"]
+    stages = t["base_complex"] + t["sheets"] + t["subsheets"] + t["vsg_wireframe"]
+    ref = base.get(r["mesh"])
+    speedup = f"{(ref['b']['parse_s'] + ref['b']['build_s']) / load:.2f}×" if ref and ref is not r else ""
+    rss_ratio = f"{r['rss'] / ref['rss']:.2f}" if ref and ref is not r else ""
+    print(f"| {r['mesh']} | {cells:,} | {r['code']} | {r['threads']} | {b['read_s'] * 1e3:.1f} | {mb / b['parse_s']:.0f} | "
+          f"{load:.3f} | {cells / load:.3g} | {load / b['read_s']:.0f} | {speedup} | {t['base_complex']:.3f} | "
+          f"{t['sheets'] + t['subsheets']:.3f} | {t['vsg_wireframe']:.3f} | {stages / t['load']:.2f} | "
+          f"{r['wall']:.2f} / {r['cpu']:.2f} | {r['rss'] / 2**20:.0f} | {rss_ratio} | {r['rss'] / cells:.0f} |")
 print()
 print(f"{os.cpu_count()} CPUs, load average {' '.join(open('/proc/loadavg').read().split()[:3])} at the end. Wall times come from one "
-      "process per row, and other processes on the machine inflate them; CPU = user + system time of every thread. read+parse includes reading the file; analyze = `hbc analyze --json` (its own load and "
-      "every stage), peak RSS of that process.")
+      "process per row, and other processes on the machine inflate them. load = read+parse + topology (BM_LoadFile, warm: the "
+      "process has loaded the file before); load speed-up and RSS ratio are against the baseline row of the same mesh; "
+      "stages / load = (base complex + sheets + subsheets + VSG wireframe) / the load time `hbc analyze` measured itself; "
+      "analyze = `hbc analyze --json` (its own load and every stage), peak RSS of that process.")
 PY

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Runs every test: the C++ suite under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/),
+# the parallel load under ThreadSanitizer (build-tsan/),
 # then the Release build's whole suite through ctest (GoogleTest, pytest, and the Blender-side
 # suites in every Blender of the matrix: Debian's 3.4 binary and the bpy wheels 4.2, 4.5, 5.0 and
 # 5.2 in virtual environments that scripts/blender_envs.sh makes once and reuses).
-#   HBC_SKIP_SANITIZED=1      skips the sanitized pass for a quicker local run
+#   HBC_SKIP_SANITIZED=1      skips the sanitized passes for a quicker local run
 #   HBC_BPY_VERSIONS="4.5"    restricts the bpy wheels of the matrix (default: all of them)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,6 +12,8 @@ bash scripts/deps.sh
 if [ "${HBC_SKIP_SANITIZED:-0}" != 1 ]; then
   echo "== C++ suite under ASan + UBSan"
   bash scripts/test_sanitized.sh
+  echo "== parallel parts under ThreadSanitizer"
+  bash scripts/test_tsan.sh
 fi
 echo "== Blender environments (bpy wheels)"
 # shellcheck disable=SC2086

@@ -65,7 +65,7 @@ void load_file(benchmark::State& state, const std::string& path, bool written_he
     parse_s += std::chrono::duration<double>(t1 - t0).count();
     build_s += std::chrono::duration<double>(t2 - t1).count();
     cells = m.num_cells();
-    benchmark::DoNotOptimize(m.edge_cells.items.data());
+    benchmark::DoNotOptimize(m.cell_faces.items.data());
   }
   const double n = static_cast<double>(state.iterations());
   state.counters["cells"] = static_cast<double>(cells);

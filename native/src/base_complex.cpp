@@ -21,34 +21,48 @@ size_t BaseComplex::num_non_hex_components() const {
   return static_cast<size_t>(std::count(component_kind.begin(), component_kind.end(), ComponentKind::NonHex));
 }
 
-int32_t fan_position(const Mesh& m, int32_t e, int32_t f) {
-  auto faces = m.edge_faces[e];
-  for (size_t i = 0; i < faces.size(); ++i)
-    if (faces[i] == f) return static_cast<int32_t>(i);
+namespace {
+
+// The face after f around edge e, walking into the cell on f's side `side`; `side` becomes the
+// side of that face the walk goes on through. -1 when there is no cell on that side.
+int32_t fan_step(const Mesh& m, int32_t e, int32_t f, int32_t& side) {
+  const int32_t c = m.face_cells[static_cast<size_t>(f)][static_cast<size_t>(side)];
+  if (c < 0) return -1;
+  for (int32_t g : m.cell_faces[static_cast<size_t>(c)]) {
+    if (g == f) continue;
+    const auto fe = m.face_edges(static_cast<size_t>(g));
+    if (std::find(fe.begin(), fe.end(), e) == fe.end()) continue;
+    side = m.face_cells[static_cast<size_t>(g)][0] == c ? 1 : 0;
+    return g;
+  }
   return -1;
 }
 
-int32_t straight_face(const Mesh& m, int32_t e, int32_t f) {
-  if (!m.edge_fan_ok[e]) return -1;
+}  // namespace
+
+int32_t straight_face(const Mesh& m, int32_t e, int32_t f, EdgeFan& scratch) {
+  if (!m.edge_fan_ok(static_cast<size_t>(e))) return -1;
   // Regular fans, by far the most common: the face two steps around an interior 4-fan, the
-  // other end of a boundary 3-fan.
-  const auto faces = m.edge_faces[e];
-  const size_t ncells = static_cast<size_t>(m.edge_cells.count(e));
-  if (faces.size() == 4 && ncells == 4) {
-    for (size_t i = 0; i < 4; ++i)
-      if (faces[i] == f) return faces[(i + 2) & 3];
-    return -1;
+  // other end of a boundary 3-fan (reached from a boundary face, whose one cell is on side 0).
+  const int32_t ncells = m.edge_valence(static_cast<size_t>(e));
+  const bool boundary = m.edge_boundary[static_cast<size_t>(e)] != 0;
+  if (ncells == 4 && !boundary) {
+    int32_t side = 0;
+    const int32_t g = fan_step(m, e, f, side);
+    return g < 0 ? -1 : fan_step(m, e, g, side);
   }
-  if (faces.size() == 3 && ncells == 2) {
-    if (faces[0] == f) return faces[2];
-    if (faces[2] == f) return faces[0];
-    return -1;
+  if (ncells == 2 && boundary) {
+    if (!m.face_boundary[static_cast<size_t>(f)]) return -1;
+    int32_t side = 0;
+    const int32_t g = fan_step(m, e, f, side);
+    return g < 0 ? -1 : fan_step(m, e, g, side);
   }
-  const auto fc = m.face_cells[f];
+  edge_fan(m, e, scratch);
+  const auto fc = m.face_cells[static_cast<size_t>(f)];
   int32_t found = -1;
-  for (int32_t g : m.edge_faces[e]) {
+  for (int32_t g : scratch.faces) {
     if (g == f) continue;
-    const auto gc = m.face_cells[g];
+    const auto gc = m.face_cells[static_cast<size_t>(g)];
     bool shares = false;
     for (int32_t a : fc)
       for (int32_t b : gc) shares = shares || (a >= 0 && a == b);
@@ -103,21 +117,22 @@ std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) 
   const size_t nf = m.num_faces();
   std::vector<uint8_t> sep(nf, 0);
   std::vector<int32_t> queue;
-  queue.reserve(nf);
-  for (size_t f = 0; f < nf; ++f) sep[f] = m.face_boundary[f];
-  for (size_t e = 0; e < m.num_edges(); ++e) {
-    if (!g.is_structural(static_cast<int32_t>(e))) continue;
-    for (int32_t f : m.edge_faces[e])
-      if (!sep[f]) {
-        sep[f] = 1;
-        queue.push_back(f);
-      }
+  // The faces around the graph's edges, and the boundary; the surfaces grow from the former.
+  for (size_t f = 0; f < nf; ++f) {
+    sep[f] = m.face_boundary[f];
+    if (sep[f]) continue;
+    const auto fe = m.face_edges(f);
+    if (std::any_of(fe.begin(), fe.end(), [&](int32_t e) { return g.is_structural(e); })) {
+      sep[f] = 1;
+      queue.push_back(static_cast<int32_t>(f));
+    }
   }
+  EdgeFan scratch;
   for (size_t q = 0; q < queue.size(); ++q) {
     const int32_t f = queue[q];
-    for (int32_t e : m.face_edges[f]) {
+    for (int32_t e : m.face_edges(static_cast<size_t>(f))) {
       if (g.is_structural(e) || m.edge_boundary[e]) continue;
-      const int32_t next = straight_face(m, e, f);
+      const int32_t next = straight_face(m, e, f, scratch);
       if (next >= 0 && !sep[next]) {
         sep[next] = 1;
         queue.push_back(next);
@@ -175,18 +190,21 @@ void find_components(const Mesh& m, BaseComplex& bc) {
 // whose every edge is a complex edge).
 void find_curves(const Mesh& m, BaseComplex& bc) {
   const size_t ne = m.num_edges(), nv = m.num_vertices();
-  bc.edge_complex.assign(ne, 0);
-  for (size_t e = 0; e < ne; ++e) {
-    bool all = true;
-    for (int32_t f : m.edge_faces[e]) all = all && bc.face_separation[f];
-    bc.edge_complex[e] = all;
-  }
-  bc.vert_corner.assign(nv, 0);
+  // Complex edges: every face around them separates; corners: every edge at them is complex.
+  bc.edge_complex.assign(ne, 1);
+  for (size_t f = 0; f < m.num_faces(); ++f)
+    if (!bc.face_separation[f])
+      for (int32_t e : m.face_edges(f)) bc.edge_complex[static_cast<size_t>(e)] = 0;
+  std::vector<uint8_t> has_edge(nv, 0);
+  bc.vert_corner.assign(nv, 1);
+  for (size_t e = 0; e < ne; ++e)
+    for (int32_t v : m.edge_verts[e]) {
+      has_edge[static_cast<size_t>(v)] = 1;
+      bc.vert_corner[static_cast<size_t>(v)] &= bc.edge_complex[e];
+    }
   for (size_t v = 0; v < nv; ++v) {
-    bool all = !m.vert_edges[v].empty();
-    for (int32_t e : m.vert_edges[v]) all = all && bc.edge_complex[e];
-    bc.vert_corner[v] = all;
-    if (all) bc.corners.push_back(static_cast<int32_t>(v));
+    bc.vert_corner[v] &= has_edge[v];
+    if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
   }
   const std::vector<int32_t> zero(ne, 0);
   chain_edges(m, bc.edge_complex, zero, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
@@ -202,10 +220,10 @@ void find_patches(const Mesh& m, BaseComplex& bc) {
   bc.patch_faces.items.reserve(static_cast<size_t>(std::count(sep.begin(), sep.end(), 1)));
   label_groups(
       m.num_faces(), [&](size_t f) { return sep[f] != 0; },
-      [&](int32_t f, auto reach) {
-        for (int32_t e : m.face_edges[f]) {
+      [&, scratch = EdgeFan{}](int32_t f, auto reach) mutable {
+        for (int32_t e : m.face_edges(static_cast<size_t>(f))) {
           if (bc.edge_complex[e]) continue;
-          const int32_t h = straight_face(m, e, f);
+          const int32_t h = straight_face(m, e, f, scratch);
           if (h >= 0 && sep[h]) reach(h);
         }
       },
@@ -229,7 +247,7 @@ void patch_incidences(const Mesh& m, BaseComplex& bc) {
     for (int32_t f : bc.patch_faces[p]) {
       for (int32_t v : m.face_verts[f])
         if (bc.vert_corner[v]) by_vertex.add(v);
-      for (int32_t e : m.face_edges[f])
+      for (int32_t e : m.face_edges(static_cast<size_t>(f)))
         if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
     }
     by_vertex.end(bc.patch_corners);
@@ -261,19 +279,20 @@ void component_incidences(const Mesh& m, BaseComplex& bc) {
     by_patch.begin();
     by_curve.begin();
     by_vertex.begin();
-    for (int32_t c : bc.component_cells[k]) {
+    // Every face around a curve edge separates, and so does every face at a corner: a cell's
+    // curves and corners lie on its separation faces, the only faces looked at.
+    for (int32_t c : bc.component_cells[k])
       for (int32_t f : m.cell_faces[c]) {
         if (!bc.face_separation[f]) continue;
         by_patch.add(bc.face_patch[f]);
         const auto fc = m.face_cells[f];
         const int32_t other = fc[0] == c ? fc[1] : fc[0];
         if (other >= 0 && bc.cell_component[other] != static_cast<int32_t>(k)) by_component.add(bc.cell_component[other]);
+        for (int32_t e : m.face_edges(static_cast<size_t>(f)))
+          if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
+        for (int32_t v : m.face_verts[static_cast<size_t>(f)])
+          if (bc.vert_corner[v]) by_vertex.add(v);
       }
-      for (int32_t e : m.cell_edges[c])
-        if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
-      for (int32_t v : m.cell_verts[c])
-        if (bc.vert_corner[v]) by_vertex.add(v);
-    }
     by_component.end(bc.component_adjacency);
     by_patch.end(bc.component_patches);
     by_curve.end(bc.component_curves);
@@ -294,7 +313,7 @@ int64_t boundary_euler(const Mesh& m, const BaseComplex& bc, int32_t k, std::vec
       const int32_t other = fc[0] == c ? fc[1] : fc[0];
       if (other >= 0 && bc.cell_component[other] == k) continue;  // a cut inside: not the boundary
       ++F;
-      for (int32_t e : m.face_edges[f])
+      for (int32_t e : m.face_edges(static_cast<size_t>(f)))
         if (edge_seen[e] != k) {
           edge_seen[e] = k;
           ++E;

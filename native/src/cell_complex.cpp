@@ -28,7 +28,7 @@ RegionBoundary region_boundary(const Mesh& m, const std::vector<uint8_t>& in_cel
     r.face_in[f] = n > 0;
     if (n != 1) continue;
     r.face_boundary[f] = 1;
-    for (int32_t e : m.face_edges[f]) r.edge_boundary[e] = 1;
+    for (int32_t e : m.face_edges(f)) r.edge_boundary[e] = 1;
     for (int32_t v : m.face_verts[f]) r.vert_boundary[v] = 1;
   }
   return r;
@@ -102,6 +102,7 @@ void fill_whole_mesh_adjacency(const Mesh& m, CellComplex& cx, const EdgeMeshEdg
   std::vector<uint8_t> all(m.num_cells(), 1);
   const RegionBoundary mb = region_boundary(m, all);
   std::vector<int32_t> fbuf, cbuf;
+  EdgeFan fan;
   const size_t ne = cx.num_edges();
   cx.edge_mesh_boundary.assign(ne, 0);
   cx.edge_all_non_hex.assign(ne, 0);
@@ -110,9 +111,10 @@ void fill_whole_mesh_adjacency(const Mesh& m, CellComplex& cx, const EdgeMeshEdg
     cbuf.clear();
     for (int32_t e : mesh_edges_of(i)) {
       cx.edge_mesh_boundary[i] = cx.edge_mesh_boundary[i] || mb.edge_boundary[e];
-      for (int32_t f : m.edge_faces[e])
+      edge_fan(m, e, fan);
+      for (int32_t f : fan.faces)
         if (face_id(f) >= 0) fbuf.push_back(face_id(f));
-      for (int32_t c : m.edge_cells[e]) {
+      for (int32_t c : fan.cells) {
         cbuf.push_back(cell_id(c));
         cx.edge_all_non_hex[i] = cx.edge_all_non_hex[i] || !m.is_hex(c);
       }
@@ -141,11 +143,14 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
 
   const std::vector<int32_t> cmap = compact(in_cell, cx.cell_source);
   const std::vector<int32_t> fmap = compact(rb.face_in, cx.face_source);
+  // Edges and vertices of the region's cells (those of their faces).
   std::vector<uint8_t> edge_in(ne, 0), vert_in(nv, 0);
-  for (size_t e = 0; e < ne; ++e) {
-    for (int32_t c : m.edge_cells[e]) edge_in[e] = edge_in[e] || in_cell[c];
+  for (size_t c = 0; c < m.num_cells(); ++c)
+    if (in_cell[c])
+      for (int32_t f : m.cell_faces[c])
+        for (int32_t e : m.face_edges(static_cast<size_t>(f))) edge_in[static_cast<size_t>(e)] = 1;
+  for (size_t e = 0; e < ne; ++e)
     if (edge_in[e]) vert_in[m.edge_verts[e][0]] = vert_in[m.edge_verts[e][1]] = 1;
-  }
   const std::vector<int32_t> emap = compact(edge_in, cx.edge_source);
   const std::vector<int32_t> vmap = compact(vert_in, cx.vert_mesh);
 
@@ -157,7 +162,7 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
   for (size_t i = 0; i < cx.num_faces(); ++i) {
     const int32_t f = cx.face_source[i];
     buf.clear();
-    for (int32_t e : m.face_edges[f]) buf.push_back(emap[e]);
+    for (int32_t e : m.face_edges(static_cast<size_t>(f))) buf.push_back(emap[e]);
     sort_unique_row(buf, cx.face_edges);
     cx.face_quad[i] = m.face_verts.count(f) == 4;
   }
@@ -170,6 +175,7 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
   cx.edge_non_hex.assign(nx, 0);
   cx.edge_all_quad.assign(nx, 1);
   cx.edge_points.items.reserve(2 * nx);
+  EdgeFan fan;
   for (size_t i = 0; i < nx; ++i) {
     const int32_t e = cx.edge_source[i];
     const auto [a, b] = m.edge_verts[e];
@@ -177,7 +183,8 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
     const int32_t pts[2] = {a, b};
     cx.edge_points.push_row(pts, pts + 2);
     buf.clear();
-    for (int32_t c : m.edge_cells[e]) {
+    edge_fan(m, e, fan);
+    for (int32_t c : fan.cells) {
       if (!in_cell[c]) continue;
       buf.push_back(cmap[c]);
       cx.edge_non_hex[i] = cx.edge_non_hex[i] || !m.is_hex(c);
@@ -186,7 +193,7 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
     cx.edge_valence[i] = cx.edge_cells.count(i);
     cx.edge_boundary[i] = rb.edge_boundary[e];
     buf.clear();
-    for (int32_t f : m.edge_faces[e]) {
+    for (int32_t f : fan.faces) {
       if (!rb.face_in[f]) continue;
       buf.push_back(fmap[f]);
       cx.edge_all_quad[i] = cx.edge_all_quad[i] && m.face_verts.count(f) == 4;
@@ -198,13 +205,16 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
   cx.vert_boundary.resize(nvx);
   cx.vert_cell_count.assign(nvx, 0);
   cx.vert_all_quad.assign(nvx, 1);
-  for (size_t i = 0; i < nvx; ++i) {
-    const int32_t v = cx.vert_mesh[i];
-    cx.vert_boundary[i] = rb.vert_boundary[v];
-    for (int32_t c : m.vert_cells[v]) cx.vert_cell_count[i] += in_cell[c];
-    for (int32_t f : m.vert_faces[v])
-      if (rb.face_in[f] && m.face_verts.count(f) != 4) cx.vert_all_quad[i] = 0;
+  for (size_t i = 0; i < nvx; ++i) cx.vert_boundary[i] = rb.vert_boundary[cx.vert_mesh[i]];
+  // Region cells and non-quad region faces at each vertex, from the cells' and faces' side.
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    if (!in_cell[c]) continue;
+    cell_vertices(m, c, buf);
+    for (int32_t v : buf) ++cx.vert_cell_count[static_cast<size_t>(vmap[v])];
   }
+  for (size_t f = 0; f < m.num_faces(); ++f)
+    if (rb.face_in[f] && m.face_verts.count(f) != 4)
+      for (int32_t v : m.face_verts[f]) cx.vert_all_quad[static_cast<size_t>(vmap[v])] = 0;
   if (cx.num_cells() < m.num_cells())
     fill_whole_mesh_adjacency(
         m, cx, [&](size_t i) { return std::span<const int32_t>(&cx.edge_source[i], 1); },
@@ -242,9 +252,12 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
   for (size_t p = 0; p < npatch; ++p)
     patch_quad[p] = bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
 
+  EdgeFan fan;
   std::vector<uint8_t> curve_in(ncurve, 0);
-  for (size_t k = 0; k < ncurve; ++k)
-    for (int32_t c : m.edge_cells[bc.curve_edges[k][0]]) curve_in[k] = curve_in[k] || in_cell[c];
+  for (size_t k = 0; k < ncurve; ++k) {
+    edge_fan(m, bc.curve_edges[k][0], fan);
+    for (int32_t c : fan.cells) curve_in[k] = curve_in[k] || in_cell[c];
+  }
   const std::vector<int32_t> emap = compact(curve_in, cx.edge_source);
   std::vector<uint8_t> corner_in(m.num_vertices(), 0);
   for (int32_t k : cx.edge_source) {
@@ -260,7 +273,7 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     const int32_t p = cx.face_source[i];
     buf.clear();
     for (int32_t f : bc.patch_faces[p])
-      for (int32_t e : m.face_edges[f])
+      for (int32_t e : m.face_edges(static_cast<size_t>(f)))
         if (bc.edge_curve[e] >= 0) buf.push_back(emap[bc.edge_curve[e]]);
     sort_unique_row(buf, cx.face_edges);
     cx.face_quad[i] = patch_quad[p];
@@ -289,16 +302,15 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     // The valence is that of the curve's first mesh edge: every face around a curve separates,
     // so each mesh cell there is a corner of a different coarse cell.
     const auto es = bc.curve_edges[k];
-    int32_t valence = 0;
-    for (int32_t c : m.edge_cells[es[0]]) valence += in_cell[c];
-    cx.edge_valence[i] = valence;
     buf.clear();
     fbuf.clear();
     for (int32_t e : es) {
       cx.edge_boundary[i] = cx.edge_boundary[i] || rb.edge_boundary[e];
-      for (int32_t c : m.edge_cells[e])
+      edge_fan(m, e, fan);
+      if (e == es[0]) cx.edge_valence[i] = static_cast<int32_t>(std::count_if(fan.cells.begin(), fan.cells.end(), [&](int32_t c) { return in_cell[c] != 0; }));
+      for (int32_t c : fan.cells)
         if (in_cell[c]) buf.push_back(kmap[bc.cell_component[c]]);
-      for (int32_t f : m.edge_faces[e])
+      for (int32_t f : fan.faces)
         if (rb.face_in[f] && bc.face_patch[f] >= 0) fbuf.push_back(pmap[bc.face_patch[f]]);
     }
     sort_unique_row(buf, cx.edge_cells);
@@ -309,19 +321,24 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
 
   const size_t nvx = cx.num_vertices();
   cx.vert_boundary.resize(nvx);
-  cx.vert_cell_count.resize(nvx);
+  cx.vert_cell_count.assign(nvx, 0);
   cx.vert_all_quad.assign(nvx, 1);
-  for (size_t i = 0; i < nvx; ++i) {
-    const int32_t v = cx.vert_mesh[i];
-    cx.vert_boundary[i] = rb.vert_boundary[v];
-    buf.clear();
-    for (int32_t c : m.vert_cells[v])
-      if (in_cell[c]) buf.push_back(bc.cell_component[c]);
-    std::sort(buf.begin(), buf.end());
-    cx.vert_cell_count[i] = static_cast<int32_t>(std::unique(buf.begin(), buf.end()) - buf.begin());
-    for (int32_t f : m.vert_faces[v])
-      if (rb.face_in[f] && bc.face_patch[f] >= 0 && !patch_quad[bc.face_patch[f]]) cx.vert_all_quad[i] = 0;
+  for (size_t i = 0; i < nvx; ++i) cx.vert_boundary[i] = rb.vert_boundary[cx.vert_mesh[i]];
+  // Components of the region's cells at each corner, and non-quad patches there, from the
+  // cells' and faces' side (a cell at a vertex has a face there).
+  std::vector<std::array<int32_t, 2>> corner_component;
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    if (!in_cell[c]) continue;
+    for (int32_t f : m.cell_faces[c])
+      for (int32_t v : m.face_verts[static_cast<size_t>(f)])
+        if (corner_in[static_cast<size_t>(v)]) corner_component.push_back({vmap[v], bc.cell_component[c]});
   }
+  sort_unique(corner_component);
+  for (const auto& vc : corner_component) ++cx.vert_cell_count[static_cast<size_t>(vc[0])];
+  for (size_t f = 0; f < m.num_faces(); ++f)
+    if (rb.face_in[f] && bc.face_patch[f] >= 0 && !patch_quad[bc.face_patch[f]])
+      for (int32_t v : m.face_verts[f])
+        if (corner_in[static_cast<size_t>(v)]) cx.vert_all_quad[static_cast<size_t>(vmap[v])] = 0;
   if (cx.num_cells() < bc.num_components())
     fill_whole_mesh_adjacency(
         m, cx, [&](size_t i) { return bc.curve_edges[cx.edge_source[i]]; },

@@ -126,8 +126,9 @@ double hex_centre_value(const Mesh& m, size_t c, std::span<const Corner> corners
   const Corner* f034 = find_corner(g, x[3]);
   const Corner* f041 = find_corner(g, x[4]);
   x[2] = f013->opp, x[7] = f034->opp, x[5] = f041->opp;
-  for (int32_t v : m.cell_verts[c])
-    if (std::find(x.begin(), x.end(), v) == x.end()) x[6] = v;
+  for (int32_t f : m.cell_faces[c])  // the one vertex of the cell not named yet
+    for (int32_t v : m.face_verts[static_cast<size_t>(f)])
+      if (std::find(x.begin(), x.end(), v) == x.end()) x[6] = v;
   if (x[6] < 0) return 0.0;
   const Vec X1 = add(add(diff(m, x[1], x[0]), diff(m, x[2], x[3])), add(diff(m, x[5], x[4]), diff(m, x[6], x[7])));
   const Vec X2 = add(add(diff(m, x[3], x[0]), diff(m, x[2], x[1])), add(diff(m, x[7], x[4]), diff(m, x[6], x[5])));
@@ -146,8 +147,9 @@ double pyramid_value(const Mesh& m, size_t c) {
     for (size_t k = 0; k < 4; ++k) b[k] = loop[flip ? k : (4 - k) % 4];
   }
   int32_t apex = -1;
-  for (int32_t v : m.cell_verts[c])
-    if (std::find(b.begin(), b.end(), v) == b.end()) apex = v;
+  for (int32_t f : m.cell_faces[c])
+    for (int32_t v : m.face_verts[static_cast<size_t>(f)])
+      if (std::find(b.begin(), b.end(), v) == b.end()) apex = v;
   const double q = std::sqrt(2.0) * std::min({tet_scaled_jacobian(m, b[0], b[1], b[2], apex),
                                               tet_scaled_jacobian(m, b[0], b[2], b[3], apex),
                                               tet_scaled_jacobian(m, b[0], b[1], b[3], apex),
@@ -171,12 +173,13 @@ double scaled_jacobian(const Mesh& m, size_t c, std::vector<Corner>& corners, st
 
 double edge_ratio(const Mesh& m, size_t c) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
-  for (int32_t e : m.cell_edges[c]) {
-    const auto [a, b] = m.edge_verts[static_cast<size_t>(e)];
-    const double l = length(diff(m, a, b));
-    lo = std::min(lo, l);
-    hi = std::max(hi, l);
-  }
+  for (int32_t f : m.cell_faces[c])  // every edge of the cell is an edge of its faces
+    for (int32_t e : m.face_edges(static_cast<size_t>(f))) {
+      const auto [a, b] = m.edge_verts[static_cast<size_t>(e)];
+      const double l = length(diff(m, a, b));
+      lo = std::min(lo, l);
+      hi = std::max(hi, l);
+    }
   return lo > 0 ? hi / lo : std::numeric_limits<double>::infinity();
 }
 

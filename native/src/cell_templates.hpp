@@ -2,7 +2,8 @@
 // The four standard volume elements as face templates over their corners, and the rule that turns
 // an element whose corners repeat (as At-Most-Hexa and converters write prisms, pyramids and tets
 // as hexahedra) into the polyhedron it stands for (SPEC §0). Shared by every reader of
-// element-list formats (MEDIT, Gmsh, VTK, VTU) so that all give the same cells.
+// element-list formats (MEDIT, Gmsh, VTK, VTU) so that all give the same cells, and by the
+// builder, which reads the faces of an element straight from its corners.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -11,19 +12,36 @@
 
 namespace hbc::detail {
 
-// Corner orders are MEDIT's, which Gmsh shares: hex 0-3 bottom and 4-7 top, with the bottom's
-// right-hand normal pointing into the cell; prism 0-2 bottom, 3-5 top, same rule; pyramid 0-3 base
-// (normal towards the apex 4); tet with 0-1-2 seen counter-clockwise from 3.
-enum class Element : uint8_t { Tet, Pyramid, Prism, Hex };
-int corner_count(Element e);
+// Corner orders are MEDIT's, which Gmsh shares (see hbc::CellShape).
+using Element = CellShape;
+using hbc::corner_count;
 
-// Appends cells to a MeshInput. Reuse one appender for a whole file: it keeps scratch buffers.
+// The faces of an element as loops of local corner numbers, outward for an element of positive
+// orientation in MEDIT's convention.
+struct ShapeFaces {
+  int nfaces;
+  std::array<int8_t, 6> size;
+  std::array<std::array<int8_t, 4>, 6> corner;
+};
+// Indexed by CellShape (inline: the builder reads it for every face of every element).
+inline constexpr ShapeFaces kShapeFaces[5] = {
+    {0, {}, {}},
+    {4, {3, 3, 3, 3}, {{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}}},
+    {5, {4, 3, 3, 3, 3}, {{{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}}},
+    {5, {3, 3, 4, 4, 4}, {{{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}}},
+    {6, {4, 4, 4, 4, 4, 4}, {{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}}},
+};
+inline const ShapeFaces& shape_faces(CellShape s) { return kShapeFaces[static_cast<int>(s)]; }
+
+// Appends cells to a MeshInput (and keeps its cell_shape filled). Reuse one appender for a whole
+// file: it keeps scratch buffers.
 class CellAppender {
  public:
   explicit CellAppender(MeshInput& in) : in_(in) {}
-  // `v` holds corner_count(e) 0-based vertex ids, already checked to be in range. Repeated ids
-  // collapse each template face (first occurrence kept); faces left with fewer than 3 distinct
-  // vertices vanish and a face repeated within the cell is kept once.
+  // `v` holds corner_count(e) 0-based vertex ids, already checked to be in range. Distinct ids
+  // make an element cell. Repeated ids collapse each template face (first occurrence kept); faces
+  // left with fewer than 3 distinct vertices vanish and a face repeated within the cell is kept
+  // once: the cell becomes a Faces cell over those loops.
   void element(Element e, const int32_t* v, int64_t loc);
   // A general polyhedron: `face_sizes[f]` vertices for face f taken in turn from `ids`. Loops are
   // taken as written; build_mesh checks that they close.
@@ -31,11 +49,11 @@ class CellAppender {
   // Vertex v is a higher-order (non-corner) node of an element.
   void midside(int32_t v);
   // Drops the vertices that are only higher-order nodes, so that a quadratic mesh gives the same
-  // mesh as its linear version; renumbers the faces. Call once after the last cell.
+  // mesh as its linear version; renumbers faces and corners. Call once after the last cell.
   void finish();
 
  private:
-  void end_cell(size_t first_face, int64_t loc);
+  void end_cell(CellShape shape, int64_t loc);
   MeshInput& in_;
   std::vector<int32_t> loop_;
   std::vector<std::array<int32_t, 8>> sets_;

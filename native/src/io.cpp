@@ -1,5 +1,10 @@
 #include "hbc/io.hpp"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -74,9 +79,53 @@ std::string read_file_bytes(const std::string& path) {
   return bytes;
 }
 
+namespace {
+
+// A file's bytes for parsing: a regular file is mapped read-only (no buffer to zero and copy
+// into, and the pages come in ahead of the parser), anything else (a pipe) is read.
+class FileBytes {
+ public:
+  explicit FileBytes(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    struct stat st {};
+    if (fd < 0 || ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size == 0) {
+      if (fd >= 0) ::close(fd);
+      copy_ = read_file_bytes(path);
+      view_ = copy_;
+      return;
+    }
+    size_ = static_cast<size_t>(st.st_size);
+    void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    ::close(fd);
+    if (p == MAP_FAILED) {
+      size_ = 0;
+      copy_ = read_file_bytes(path);
+      view_ = copy_;
+      return;
+    }
+    map_ = p;
+    view_ = std::string_view(static_cast<const char*>(p), size_);
+  }
+  ~FileBytes() {
+    if (map_) ::munmap(map_, size_);
+  }
+  FileBytes(const FileBytes&) = delete;
+  FileBytes& operator=(const FileBytes&) = delete;
+  std::string_view view() const { return view_; }
+
+ private:
+  void* map_ = nullptr;
+  size_t size_ = 0;
+  std::string copy_;
+  std::string_view view_;
+};
+
+}  // namespace
+
 MeshInput read_input(const std::string& path, Format format, const LoadOptions& options) {
   if (format == Format::Auto) format = format_from_path(path);
-  const std::string bytes = read_file_bytes(path);
+  const FileBytes file(path);
+  const std::string_view bytes = file.view();
   switch (format) {
     case Format::Ovm: return read_ovm(bytes, path);
     case Format::Ovmb: return read_ovmb(bytes, path);

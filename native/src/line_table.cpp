@@ -1,5 +1,6 @@
 #include "line_table.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -13,23 +14,36 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 // Where the section's lines start: position `begin` (just after the newline ending the count's
 // line) and every 1/nranges of the n lines; starts.back() is the end of the n-th line. False
-// when the text has fewer than n complete lines.
-bool split_lines(std::string_view text, size_t begin, int64_t n, int nranges, std::vector<size_t>& starts) {
-  starts.assign(1, begin);
-  size_t p = begin;
-  int r = 1;
-  for (int64_t i = 0; i < n; ++i) {
-    const void* nl = std::memchr(text.data() + p, '\n', text.size() - p);
-    if (!nl) return false;
-    p = static_cast<size_t>(static_cast<const char*>(nl) - text.data()) + 1;
-    if (r < nranges && i + 1 == n * r / nranges) {
-      starts.push_back(p);
-      ++r;
+// when the text has fewer than n complete lines. Threads count the newlines of equal slices of
+// the text ahead (a vectorised count), then the slices holding the wanted lines are searched.
+bool split_lines(std::string_view text, size_t begin, int64_t n, int nranges, const LoadOptions& par,
+                 std::vector<size_t>& starts) {
+  // The section is at least n bytes long; look at no more than the text holds.
+  const size_t rest = text.size() - begin;
+  const size_t nslices = static_cast<size_t>(std::max(1, par.threads)) * 8;
+  std::vector<int64_t> count(nslices, 0);
+  auto slice = [&](size_t i) { return begin + rest * i / nslices; };
+  parallel_ranges(nslices, LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
+    for (size_t i = b; i < e; ++i) count[i] = std::count(text.data() + slice(i), text.data() + slice(i + 1), '\n');
+  });
+  // The position just after newline number `k` (1-based) counted from `begin`.
+  auto after_newline = [&](int64_t k) -> size_t {
+    int64_t seen = 0;
+    size_t i = 0;
+    while (i < nslices && seen + count[i] < k) seen += count[i++];
+    if (i == nslices) return std::string_view::npos;
+    const char* p = text.data() + slice(i);
+    for (;;) {
+      p = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(text.data() + slice(i + 1) - p)));
+      if (++seen == k) return static_cast<size_t>(p - text.data()) + 1;
+      ++p;
     }
-  }
-  starts.push_back(p);
-  starts.resize(static_cast<size_t>(nranges) + 1, p);
-  starts.back() = p;
+  };
+  starts.assign(1, begin);
+  for (int r = 1; r < nranges; ++r) starts.push_back(after_newline(n * r / nranges));
+  const size_t end = after_newline(n);
+  if (end == std::string_view::npos) return false;
+  starts.push_back(end);
   return true;
 }
 
@@ -68,7 +82,7 @@ bool parse_lines(TextScanner& s, int64_t n, const LoadOptions& par, ParseLine&& 
   if (n <= 0 || !after_blank_rest(s, begin)) return false;
   const int nr = range_count(static_cast<size_t>(n), par);
   std::vector<size_t> starts;
-  if (!split_lines(s.text(), begin, n, nr, starts)) return false;
+  if (!split_lines(s.text(), begin, n, nr, par, starts)) return false;
   std::vector<uint8_t> ok(static_cast<size_t>(nr), 1);
   parallel_ranges(static_cast<size_t>(n), par, [&](size_t b, size_t e, int r) {
     const char* p = s.text().data() + starts[static_cast<size_t>(r)];

@@ -1,17 +1,12 @@
 #include "hbc/mesh.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <thread>
 
 #include "hbc/mesh_steps.hpp"
-
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <numeric>
-#include <sstream>
 
 namespace hbc {
 
@@ -30,65 +25,6 @@ size_t Mesh::num_hex_cells() const {
   return static_cast<size_t>(std::count(cell_type.begin(), cell_type.end(), CellType::Hex));
 }
 
-namespace mesh_steps {
-
-std::string loop_text(std::span<const int32_t> loop) {
-  std::ostringstream s;
-  s << "(";
-  for (size_t i = 0; i < loop.size(); ++i) s << (i ? " " : "") << loop[i];
-  s << ")";
-  return s.str();
-}
-
-// Checks what a reader handed over: counts, index ranges, finite coordinates, proper polygons.
-void validate_input(const MeshInput& in) {
-  const std::string& file = in.source;
-  if (in.points.size() % 3 != 0) throw InputError(file, {}, "3 coordinates per vertex");
-  const size_t nv = in.points.size() / 3;
-  if (nv > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
-      in.faces.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
-      in.cells.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
-    throw InputError(file, {}, "fewer than 2^31 vertices, face corners and cell faces");
-  for (size_t i = 0; i < in.points.size(); ++i)
-    if (!std::isfinite(in.points[i]))
-      throw InputError(file, in.loc_of(in.vertex_loc, i / 3),
-                       "a finite coordinate for vertex " + std::to_string(i / 3));
-  std::vector<int32_t> stamp(nv, -1);
-  for (size_t f = 0; f < in.faces.rows(); ++f) {
-    auto loop = in.faces[f];
-    if (loop.size() < 3)
-      throw InputError(file, in.loc_of(in.face_loc, f),
-                       "a face with at least 3 vertices, face " + std::to_string(f) + " has " +
-                           std::to_string(loop.size()));
-    for (int32_t v : loop) {
-      if (v < 0 || static_cast<size_t>(v) >= nv)
-        throw InputError(file, in.loc_of(in.face_loc, f),
-                         "vertex index in [0, " + std::to_string(nv) + ") in face " +
-                             std::to_string(f) + ", found " + std::to_string(v));
-      if (stamp[v] == static_cast<int32_t>(f))
-        throw InputError(file, in.loc_of(in.face_loc, f),
-                         "distinct vertices in face " + std::to_string(f) + ", vertex " +
-                             std::to_string(v) + " repeats in " + loop_text(loop));
-      stamp[v] = static_cast<int32_t>(f);
-    }
-  }
-  const size_t nf = in.faces.rows();
-  for (size_t c = 0; c < in.cells.rows(); ++c) {
-    if (in.cells.count(c) < 2)
-      throw InputError(file, in.loc_of(in.cell_loc, c),
-                       "a cell with at least 2 faces, cell " + std::to_string(c) + " has " +
-                           std::to_string(in.cells.count(c)));
-    for (int32_t r : in.cells[c]) {
-      int32_t f = r >> 1;
-      if (r < 0 || static_cast<size_t>(f) >= nf)
-        throw InputError(file, in.loc_of(in.cell_loc, c),
-                         "face index in [0, " + std::to_string(nf) + ") in cell " +
-                             std::to_string(c) + ", found " + std::to_string(r < 0 ? r : f));
-    }
-  }
-}
-
-}  // namespace mesh_steps
 
 int resolve_threads(const LoadOptions& options) {
   if (options.threads > 0) return options.threads;
@@ -110,25 +46,22 @@ LoadOptions resolved(const LoadOptions& options) {
 Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   using namespace mesh_steps;
   const LoadOptions par = resolved(options);
-  validate_input(in);
+  validate_input(in, par);
   std::vector<int64_t>().swap(in.vertex_loc);  // only validate_input names vertices
   Mesh m;
   m.source = in.source;
   m.points = std::move(in.points);
   m.warnings = std::move(in.warnings);  // what the reader skipped (lower-dimensional elements, ...)
   merge_faces(in, m, par);
-  {
-    // The slot tables are the largest temporaries: gone before the vertex incidences are built.
-    const std::vector<int32_t> slot_face = slot_faces(m, par);
-    build_edges(m, slot_face, par);
-    const std::vector<int32_t> partner = cell_incidences(m, in, par);
-    orient_cells(m, partner, slot_face, par);
-    mark_boundary(m);
-    edge_fans(m, partner, slot_face, par);
-  }
-  vertex_incidences(m, in, par);
-  cell_types(m, par);
-  non_manifold_vertices(m, par);
+  std::vector<EdgeFaceCount> counts = build_edges(m, par);
+  CellCheck cells = check_cells(m, in, par);
+  orient_groups(m, cells.volume, par);
+  std::vector<double>().swap(cells.volume);
+  mark_boundary(m);
+  edge_fans(m, counts, cells, par);
+  std::vector<EdgeFaceCount>().swap(counts);
+  non_manifold_vertices(m, cells, par);
+  drop_declared_edges(m, in);
   return m;
 }
 

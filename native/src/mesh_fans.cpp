@@ -1,12 +1,110 @@
-// Incidence, fan and classification steps of build_mesh (see hbc/mesh_steps.hpp).
+// The fan and vertex steps of build_mesh (see hbc/mesh_steps.hpp), and the incidences the Mesh
+// derives instead of storing: edge fans, the vertices and edges of a cell, the edges at a vertex.
 #include <algorithm>
 #include <atomic>
 #include <numeric>
 
 #include "hbc/mesh_steps.hpp"
+#include "huge_pages.hpp"
 #include "parallel.hpp"
 
-namespace hbc::mesh_steps {
+namespace hbc {
+namespace {
+
+bool has_edge(const Mesh& m, int32_t f, int32_t e) {
+  const auto fe = m.face_edges(static_cast<size_t>(f));
+  return std::find(fe.begin(), fe.end(), e) != fe.end();
+}
+
+// The face of cell c other than f that contains edge e (a closed cell has exactly two), or -1.
+int32_t other_face_at(const Mesh& m, int32_t c, int32_t e, int32_t f) {
+  for (int32_t g : m.cell_faces[static_cast<size_t>(c)])
+    if (g != f && has_edge(m, g, e)) return g;
+  return -1;
+}
+
+// Walks the fan of edge e from `start` into face_cells[start][0], through the cells, until it
+// comes back to `start` or reaches a face with no cell beyond. Stops early (returning false) after
+// more than `limit` faces or at a cell with no second face at e.
+bool walk(const Mesh& m, int32_t e, int32_t start, size_t limit, EdgeFan& out) {
+  out.faces.assign(1, start);
+  out.cells.clear();
+  int32_t f = start, side = 0;
+  for (;;) {
+    const int32_t c = m.face_cells[static_cast<size_t>(f)][static_cast<size_t>(side)];
+    if (c < 0) return true;  // reached the other boundary face
+    out.cells.push_back(c);
+    const int32_t g = other_face_at(m, c, e, f);
+    if (g < 0) return false;
+    side = m.face_cells[static_cast<size_t>(g)][0] == c ? 1 : 0;  // go on through g's far side
+    if (g == start) return true;
+    if (out.faces.size() == limit) return false;
+    out.faces.push_back(g);
+    f = g;
+  }
+}
+
+void odd_fan(const Mesh& m, int32_t e, EdgeFan& out) {
+  const auto faces = m.odd_fan_faces[static_cast<size_t>(-1 - m.fan_start[static_cast<size_t>(e)])];
+  out.faces.assign(faces.begin(), faces.end());
+  out.cells.clear();
+  for (int32_t f : faces)
+    for (int32_t c : m.face_cells[static_cast<size_t>(f)])
+      if (c >= 0) out.cells.push_back(c);
+  sort_unique(out.cells);
+}
+
+uint8_t small_count(size_t n) { return static_cast<uint8_t>(std::min<size_t>(n, 255)); }
+
+}  // namespace
+
+void edge_fan(const Mesh& m, int32_t e, EdgeFan& out) {
+  if (m.fan_start[static_cast<size_t>(e)] < 0) return odd_fan(m, e, out);
+  walk(m, e, m.fan_start[static_cast<size_t>(e)], SIZE_MAX, out);
+}
+
+int32_t Mesh::edge_valence(size_t e) const {
+  if (valence_small[e] < 255) return valence_small[e];
+  EdgeFan fan;
+  edge_fan(*this, static_cast<int32_t>(e), fan);
+  return static_cast<int32_t>(fan.cells.size());
+}
+
+void cell_vertices(const Mesh& m, size_t c, std::vector<int32_t>& out) {
+  out.clear();
+  for (int32_t f : m.cell_faces[c]) {
+    const auto loop = m.face_verts[static_cast<size_t>(f)];
+    out.insert(out.end(), loop.begin(), loop.end());
+  }
+  sort_unique(out);
+}
+
+void cell_edges(const Mesh& m, size_t c, std::vector<int32_t>& out) {
+  out.clear();
+  for (int32_t f : m.cell_faces[c]) {
+    const auto fe = m.face_edges(static_cast<size_t>(f));
+    out.insert(out.end(), fe.begin(), fe.end());
+  }
+  sort_unique(out);
+}
+
+Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep) {
+  const size_t ne = m.num_edges(), nv = m.num_vertices();
+  auto kept = [&](size_t e) { return keep.empty() || keep[e]; };
+  Csr<int32_t> ve;
+  ve.offsets.assign(nv + 1, 0);
+  for (size_t e = 0; e < ne; ++e)
+    if (kept(e)) ++ve.offsets[static_cast<size_t>(m.edge_verts[e][0]) + 1], ++ve.offsets[static_cast<size_t>(m.edge_verts[e][1]) + 1];
+  std::partial_sum(ve.offsets.begin(), ve.offsets.end(), ve.offsets.begin());
+  ve.items.resize(static_cast<size_t>(ve.offsets[nv]));
+  std::vector<int32_t> at(ve.offsets.begin(), ve.offsets.end() - 1);
+  for (size_t e = 0; e < ne; ++e)
+    if (kept(e))
+      for (int32_t v : m.edge_verts[e]) ve.items[static_cast<size_t>(at[static_cast<size_t>(v)]++)] = static_cast<int32_t>(e);
+  return ve;
+}
+
+namespace mesh_steps {
 
 void mark_boundary(Mesh& m) {
   m.face_boundary.assign(m.num_faces(), 0);
@@ -15,179 +113,207 @@ void mark_boundary(Mesh& m) {
   for (size_t f = 0; f < m.num_faces(); ++f) {
     if (m.face_cells[f][1] >= 0) continue;
     m.face_boundary[f] = 1;
-    for (int32_t e : m.face_edges[f]) m.edge_boundary[e] = 1;
-    for (int32_t v : m.face_verts[f]) m.vert_boundary[v] = 1;
+    for (int32_t e : m.face_edges(f)) m.edge_boundary[static_cast<size_t>(e)] = 1;
+    for (int32_t v : m.face_verts[f]) m.vert_boundary[static_cast<size_t>(v)] = 1;
   }
-}
-
-void vertex_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par) {
-  const size_t nv = m.num_vertices();
-  detail::parallel_invoke(
-      par,
-      [&] {
-        // Both ends of every edge as a CSR, row e = edge e.
-        Csr<int32_t> ev;
-        std::vector<int32_t> offsets(m.num_edges() + 1);
-        for (size_t e = 0; e < offsets.size(); ++e) offsets[e] = static_cast<int32_t>(2 * e);
-        ev.offsets = std::move(offsets);
-        ev.items.resize(2 * m.num_edges());
-        for (size_t e = 0; e < m.num_edges(); ++e) {
-          ev.items[2 * e] = m.edge_verts[e][0];
-          ev.items[2 * e + 1] = m.edge_verts[e][1];
-        }
-        m.vert_edges = transpose(ev, nv);
-      },
-      [&] { m.vert_faces = transpose(m.face_verts, nv); },
-      [&] { m.vert_cells = transpose(m.cell_verts, nv); });
-  for (auto [a, b] : in.declared_edges) {
-    const bool known = a >= 0 && b >= 0 && static_cast<size_t>(a) < nv && static_cast<size_t>(b) < nv &&
-                       std::ranges::any_of(m.vert_edges[a], [&](int32_t e) { return m.other_vertex(e, a) == b; });
-    m.dropped_edges += !known;
-  }
-  if (m.dropped_edges > 0)
-    m.warnings.push_back(std::to_string(m.dropped_edges) + " edge(s) used by no face dropped");
 }
 
 namespace {
 
-// Walks the fan of edge e (its face slots `slots`) in cyclic order through the cells, starting at
-// its lowest boundary face if it has one, so that a boundary fan is a path. False when the fan
-// has no such order (more than two boundary faces, a pinched or non-manifold fan).
-bool walk_fan(const Mesh& m, std::span<const int32_t> slots, const std::vector<int32_t>& partner,
-              const std::vector<int32_t>& slot_face, std::vector<int32_t>& fan_faces,
-              std::vector<int32_t>& fan_cells, std::vector<int32_t>& scratch) {
-  fan_faces.clear();
-  fan_cells.clear();
-  int32_t start = -1, nboundary = 0;
-  for (int32_t k : slots) {
-    if (m.face_boundary[slot_face[k]]) {
-      ++nboundary;
-      if (start < 0) start = k;
-    }
-  }
-  if (nboundary != 0 && nboundary != 2) return false;
-  if (start < 0) start = slots[0];
-  int32_t k = start, side = 0;
-  while (true) {
-    const int32_t f = slot_face[k];
-    fan_faces.push_back(f);
-    const int32_t c = m.face_cells[f][side];
-    if (c < 0) break;  // reached the other boundary face
-    fan_cells.push_back(c);
-    // partner entries are 2*slot + side, the side on which c lies of the next face; the walk
-    // continues on the far side of it.
-    const int32_t pk = partner[2 * k + side];
-    k = pk >> 1;
-    side = 1 - (pk & 1);
-    if (k == start) break;
-    if (fan_faces.size() > slots.size()) return false;
-  }
-  if (fan_faces.size() != slots.size()) return false;
-  // Each face once: the walk may have closed early in a pinched fan.
-  scratch = fan_faces;
-  std::sort(scratch.begin(), scratch.end());
-  return std::adjacent_find(scratch.begin(), scratch.end()) == scratch.end();
+// The faces of every edge without a cyclic fan, one row each, numbered in edge order; marks
+// those edges' fan_start as -1 - row.
+void collect_odd_fans(Mesh& m, const std::vector<uint8_t>& odd) {
+  std::vector<int32_t> row(m.num_edges(), -1);
+  int32_t rows = 0;
+  for (size_t e = 0; e < m.num_edges(); ++e)
+    if (odd[e]) row[e] = rows++;
+  m.odd_fan_faces.clear();
+  if (rows == 0) return;
+  std::vector<int32_t> row_of_item, face_of_item;
+  for (size_t f = 0; f < m.num_faces(); ++f)  // faces in increasing order: each row comes out sorted
+    for (int32_t e : m.face_edges(f))
+      if (row[static_cast<size_t>(e)] >= 0) {
+        row_of_item.push_back(row[static_cast<size_t>(e)]);
+        face_of_item.push_back(static_cast<int32_t>(f));
+      }
+  const Csr<int32_t> by_row = group_by(row_of_item, static_cast<size_t>(rows));
+  m.odd_fan_faces.offsets = by_row.offsets;
+  m.odd_fan_faces.items.resize(by_row.items.size());
+  for (size_t i = 0; i < by_row.items.size(); ++i) m.odd_fan_faces.items[i] = face_of_item[static_cast<size_t>(by_row.items[i])];
+  for (size_t e = 0; e < m.num_edges(); ++e)
+    if (row[e] >= 0) m.fan_start[e] = -1 - row[e];
+}
+
+// Whether the counts alone show the fan to be one cycle or one path. Around an edge the faces
+// and cells form paths, each between two boundary faces, and cycles; a cell has two faces there,
+// so a cycle has at least 3 faces, or 2 where two cells share two faces (`twice`). One path
+// (two boundary faces) leaves room for no cycle when the faces are too few to hold both, and
+// likewise for two cycles without boundary faces.
+bool cyclic_by_count(const EdgeFaceCount& c, bool twice) {
+  const int32_t min_cycle = twice ? 2 : 3;
+  if (c.boundary_faces == 2) return c.faces < 2 + min_cycle;
+  if (c.boundary_faces == 0) return c.faces < 2 * min_cycle;
+  return false;
 }
 
 }  // namespace
 
-void edge_fans(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face, const LoadOptions& par) {
+void edge_fans(Mesh& m, const std::vector<EdgeFaceCount>& counts, const CellCheck& cells, const LoadOptions& par) {
   const size_t ne = m.num_edges();
-  // The face slots carrying each edge; each row is then overwritten with the faces of the fan.
-  m.edge_faces = group_by(m.face_edges.items, ne);
-  m.edge_fan_ok.assign(ne, 0);
-  const int nr = detail::range_count(ne, par);
-  std::vector<Csr<int32_t>> cells(static_cast<size_t>(nr));
-  detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int r) {
-    std::vector<int32_t> slots, fan_faces, fan_cells, scratch;
-    Csr<int32_t>& rows = cells[static_cast<size_t>(r)];
-    rows.reserve(ee - eb, static_cast<size_t>(m.edge_faces.offsets[ee] - m.edge_faces.offsets[eb]));
+  std::vector<uint8_t> odd(ne, 0);
+  m.valence_small.assign(ne, 0);
+  detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int) {
+    EdgeFan fan;
     for (size_t e = eb; e < ee; ++e) {
-      auto row = m.edge_faces.row(e);
-      slots.assign(row.begin(), row.end());
-      if (walk_fan(m, slots, partner, slot_face, fan_faces, fan_cells, scratch)) {
-        m.edge_fan_ok[e] = 1;
-      } else {
-        // No cyclic order: faces and cells sorted, each once.
-        fan_faces.clear();
-        fan_cells.clear();
-        for (int32_t s : slots) {
-          const int32_t f = slot_face[s];
-          fan_faces.push_back(f);
-          for (int32_t c : m.face_cells[f])
-            if (c >= 0) fan_cells.push_back(c);
-        }
-        std::sort(fan_faces.begin(), fan_faces.end());
-        sort_unique(fan_cells);
+      const EdgeFaceCount& c = counts[e];
+      bool ok = cyclic_by_count(c, cells.faces_shared_twice);
+      if (!ok && (c.boundary_faces == 0 || c.boundary_faces == 2)) {
+        // Walk it: cyclic when the walk meets every face.
+        ok = walk(m, static_cast<int32_t>(e), m.fan_start[e], static_cast<size_t>(c.faces), fan) &&
+             fan.faces.size() == static_cast<size_t>(c.faces);
       }
-      std::copy(fan_faces.begin(), fan_faces.end(), row.begin());
-      rows.push_row(fan_cells.begin(), fan_cells.end());
+      odd[e] = ok ? 0 : 1;
+      // A path has one cell fewer than faces, a cycle as many.
+      if (ok) m.valence_small[e] = small_count(static_cast<size_t>(c.faces - c.boundary_faces / 2));
     }
   });
-  m.edge_cells = concat(std::move(cells));
+  collect_odd_fans(m, odd);
+  EdgeFan fan;
+  for (size_t e = 0; e < ne; ++e)
+    if (odd[e]) {
+      odd_fan(m, static_cast<int32_t>(e), fan);
+      m.valence_small[e] = small_count(fan.cells.size());
+    }
 }
 
-void cell_types(Mesh& m, const LoadOptions& par) {
-  const size_t nc = m.num_cells();
-  m.cell_type.assign(nc, CellType::Polyhedron);
-  m.vert_non_manifold.assign(m.num_vertices(), 0);
-  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int) {
-    std::vector<int32_t> vcount(m.num_vertices(), 0);  // faces of the cell at each vertex
-    for (size_t c = cb; c < ce; ++c) {
-      auto faces = m.cell_faces[c];
-      int tris = 0, quads = 0;
-      for (int32_t f : faces) {
-        const int32_t n = m.face_verts.count(f);
-        tris += n == 3;
-        quads += n == 4;
-        for (int32_t v : m.face_verts[f]) ++vcount[v];
+namespace {
+
+// Union-find over half-edges (edge e at its end j is 2e + j), safe for threads uniting at once:
+// a root is linked to a lower one only by compare-and-swap while it is still a root, and path
+// halving only ever points an entry further up its own tree. The sets do not depend on the order
+// of the unions.
+class HalfEdgeSets {
+ public:
+  explicit HalfEdgeSets(size_t n) {
+    detail::resize_huge(parent_, n);
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  int32_t find(int32_t x) {
+    for (;;) {
+      int32_t p = at(x).load(std::memory_order_acquire);
+      if (p == x) return x;
+      const int32_t g = at(p).load(std::memory_order_acquire);
+      if (g == p) return p;
+      at(x).compare_exchange_weak(p, g, std::memory_order_acq_rel);  // x now points to its grandparent, if unchanged
+      x = g;
+    }
+  }
+  void unite(int32_t a, int32_t b) {
+    for (;;) {
+      a = find(a), b = find(b);
+      if (a == b) return;
+      if (a < b) std::swap(a, b);
+      int32_t expected = a;
+      if (at(a).compare_exchange_strong(expected, b, std::memory_order_acq_rel)) return;
+    }
+  }
+
+ private:
+  std::atomic_ref<int32_t> at(int32_t x) { return std::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
+  std::vector<int32_t> parent_;
+};
+
+// The exact test on a few vertices: the cells around v, joined across the faces at v.
+void check_exactly(Mesh& m, const std::vector<uint8_t>& suspect) {
+  std::vector<std::array<int32_t, 2>> vc;  // (vertex, cell) for the suspect vertices
+  std::vector<int32_t> vs;
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    cell_vertices(m, c, vs);
+    for (int32_t v : vs)
+      if (suspect[static_cast<size_t>(v)]) vc.push_back({v, static_cast<int32_t>(c)});
+  }
+  std::sort(vc.begin(), vc.end());
+  std::vector<int32_t> cells, parent;
+  for (size_t i = 0; i < vc.size();) {
+    const int32_t v = vc[i][0];
+    cells.clear();
+    for (; i < vc.size() && vc[i][0] == v; ++i) cells.push_back(vc[i][1]);
+    if (cells.size() <= 1 || m.vert_non_manifold[static_cast<size_t>(v)]) continue;
+    parent.resize(cells.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto root = [&](int32_t x) {
+      while (parent[static_cast<size_t>(x)] != x) x = parent[static_cast<size_t>(x)];
+      return x;
+    };
+    size_t groups = cells.size();
+    for (size_t a = 0; a < cells.size(); ++a)
+      for (int32_t f : m.cell_faces[static_cast<size_t>(cells[a])]) {
+        const auto fc = m.face_cells[static_cast<size_t>(f)];
+        const int32_t d = fc[0] == cells[a] ? fc[1] : fc[0];
+        const auto loop = m.face_verts[static_cast<size_t>(f)];
+        if (d < cells[a] || std::find(loop.begin(), loop.end(), v) == loop.end()) continue;
+        const auto b = std::lower_bound(cells.begin(), cells.end(), d) - cells.begin();
+        const int32_t ra = root(static_cast<int32_t>(a)), rb = root(static_cast<int32_t>(b));
+        if (ra != rb) parent[static_cast<size_t>(std::max(ra, rb))] = std::min(ra, rb), --groups;
       }
-      const size_t nfc = faces.size(), nvc = m.cell_verts.count(c), nec = m.cell_edges.count(c);
-      bool three_each = true;
-      for (int32_t v : m.cell_verts[c]) three_each = three_each && vcount[v] == 3;
-      CellType t = CellType::Polyhedron;
-      if (nfc == 6 && quads == 6 && nvc == 8 && nec == 12 && three_each) t = CellType::Hex;
-      else if (nfc == 4 && tris == 4 && nvc == 4) t = CellType::Tet;
-      else if (nfc == 5 && tris == 2 && quads == 3 && nvc == 6 && three_each) t = CellType::Prism;
-      else if (nfc == 5 && tris == 4 && quads == 1 && nvc == 5) t = CellType::Pyramid;
-      m.cell_type[c] = t;
-      // A cell meeting a vertex in fewer than 3 of its faces is flat or folded there (SPEC §1).
-      // Cells of several ranges may mark the same vertex: the same value, stored atomically.
-      for (int32_t v : m.cell_verts[c]) {
-        if (vcount[v] < 3) std::atomic_ref<uint8_t>(m.vert_non_manifold[v]).store(1, std::memory_order_relaxed);
-        vcount[v] = 0;
-      }
+    if (groups != 1) m.vert_non_manifold[static_cast<size_t>(v)] = 1;
+  }
+}
+
+}  // namespace
+
+// The cells around v are one face-connected group exactly when the edges at v are one group,
+// joining the two edges of each face at v: a face at v joins its cells and its two edges there;
+// all cells of a cyclic fan are joined through its faces; a cell's faces at v form one cycle
+// through its edges there unless the cell is pinched at v. Vertices of non-cyclic fans and of
+// pinched cells are tested cell by cell instead.
+void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& par) {
+  const size_t nv = m.num_vertices(), ne = m.num_edges();
+  HalfEdgeSets sets(2 * ne);
+  auto half = [&](int32_t e, int32_t v) { return 2 * e + (m.edge_verts[static_cast<size_t>(e)][1] == v ? 1 : 0); };
+  detail::parallel_ranges(m.num_faces(), par, [&](size_t fb, size_t fe, int) {
+    for (size_t f = fb; f < fe; ++f) {
+      const auto loop = m.face_verts[f];
+      const auto edges = m.face_edges(f);
+      for (size_t i = 0; i < loop.size(); ++i)
+        sets.unite(half(edges[i == 0 ? loop.size() - 1 : i - 1], loop[i]), half(edges[i], loop[i]));
     }
   });
-}
-
-void non_manifold_vertices(Mesh& m, const LoadOptions& par) {
-  detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
-    std::vector<int32_t> parent;
-    for (size_t v = vb; v < ve; ++v) {
-      auto cells = m.vert_cells[v];
-      if (cells.size() <= 1 || m.vert_non_manifold[v]) continue;
-      parent.resize(cells.size());
-      std::iota(parent.begin(), parent.end(), 0);
-      auto local = [&](int32_t c) {
-        return static_cast<int32_t>(std::lower_bound(cells.begin(), cells.end(), c) - cells.begin());
-      };
-      auto root = [&](int32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-      };
-      size_t groups = cells.size();
-      for (int32_t f : m.vert_faces[v]) {
-        if (m.face_cells[f][1] < 0) continue;
-        const int32_t a = root(local(m.face_cells[f][0])), b = root(local(m.face_cells[f][1]));
-        if (a != b) {
-          parent[std::max(a, b)] = std::min(a, b);
-          --groups;
-        }
-      }
-      if (groups != 1) m.vert_non_manifold[v] = 1;
-    }
+  // A vertex is split when its half-edges are not all in one set: each compared with the set of
+  // the first one found there.
+  std::vector<int32_t> first(nv, -1);
+  std::vector<uint8_t> split(nv, 0), suspect(nv, 0);
+  auto each_end = [&](auto&& f) {
+    detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int) {
+      for (size_t e = eb; e < ee; ++e)
+        for (int j = 0; j < 2; ++j) f(static_cast<size_t>(m.edge_verts[e][static_cast<size_t>(j)]), sets.find(static_cast<int32_t>(2 * e) + j), e);
+    });
+  };
+  each_end([&](size_t v, int32_t r, size_t) {
+    int32_t none = -1;
+    std::atomic_ref<int32_t>(first[v]).compare_exchange_strong(none, r, std::memory_order_relaxed);
   });
+  each_end([&](size_t v, int32_t r, size_t e) {
+    if (r != first[v]) std::atomic_ref<uint8_t>(split[v]).store(1, std::memory_order_relaxed);
+    if (!m.edge_fan_ok(e)) std::atomic_ref<uint8_t>(suspect[v]).store(1, std::memory_order_relaxed);
+  });
+  for (int32_t v : cells.pinched) suspect[static_cast<size_t>(v)] = 1;
+  for (size_t v = 0; v < nv; ++v)
+    if (!suspect[v]) m.vert_non_manifold[v] |= split[v];
+  if (std::find(suspect.begin(), suspect.end(), 1) != suspect.end()) check_exactly(m, suspect);
 }
 
-}  // namespace hbc::mesh_steps
+void drop_declared_edges(Mesh& m, const MeshInput& in) {
+  if (in.declared_edges.empty()) return;
+  const Csr<int32_t> ve = vertex_edges(m);
+  const auto nv = static_cast<int32_t>(m.num_vertices());
+  for (auto [a, b] : in.declared_edges) {
+    const bool known = a >= 0 && b >= 0 && a < nv && b < nv &&
+                       std::ranges::any_of(ve[static_cast<size_t>(a)], [&](int32_t e) { return m.other_vertex(e, a) == b; });
+    m.dropped_edges += !known;
+  }
+  if (m.dropped_edges > 0) m.warnings.push_back(std::to_string(m.dropped_edges) + " edge(s) used by no face dropped");
+}
+
+}  // namespace mesh_steps
+}  // namespace hbc

@@ -1,17 +1,231 @@
-// The steps of build_mesh (see hbc/mesh_steps.hpp). Faces and edges are matched by sorting their
-// keys within buckets of a counting sort on their lowest vertex: no hash table, and the buckets
-// are small and independent, so threads split them by vertex range.
+// The face and edge steps of build_mesh (see hbc/mesh_steps.hpp). Faces and edges are matched by
+// a counting sort on their lowest vertex, then by sorting the few keys in each bucket: no hash
+// table, and the buckets are small and independent, so threads split them by vertex range.
 #include "hbc/mesh_steps.hpp"
 
 #include <algorithm>
-#include <atomic>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
+#include "cell_templates.hpp"
+#include "huge_pages.hpp"
 #include "parallel.hpp"
+#include "small_table.hpp"
 
 namespace hbc::mesh_steps {
+
+std::string loop_text(std::span<const int32_t> loop) {
+  std::ostringstream s;
+  s << "(";
+  for (size_t i = 0; i < loop.size(); ++i) s << (i ? " " : "") << loop[i];
+  s << ")";
+  return s.str();
+}
+
 namespace {
+
+// Each check runs over ranges in parallel; a range stops at its first bad element and the lowest
+// range's error is the one thrown, so the message names the first bad element in file order.
+void validate_face(const MeshInput& in, size_t nv, size_t f, std::vector<int32_t>& stamp) {
+  auto loop = in.faces[f];
+  if (loop.size() < 3)
+    throw InputError(in.source, in.loc_of(in.face_loc, f),
+                     "a face with at least 3 vertices, face " + std::to_string(f) + " has " + std::to_string(loop.size()));
+  for (int32_t v : loop) {
+    if (v < 0 || static_cast<size_t>(v) >= nv)
+      throw InputError(in.source, in.loc_of(in.face_loc, f),
+                       "vertex index in [0, " + std::to_string(nv) + ") in face " + std::to_string(f) + ", found " +
+                           std::to_string(v));
+    if (stamp[static_cast<size_t>(v)] == static_cast<int32_t>(f))
+      throw InputError(in.source, in.loc_of(in.face_loc, f),
+                       "distinct vertices in face " + std::to_string(f) + ", vertex " + std::to_string(v) + " repeats in " +
+                           loop_text(loop));
+    stamp[static_cast<size_t>(v)] = static_cast<int32_t>(f);
+  }
+}
+
+void validate_cell(const MeshInput& in, size_t nv, size_t c) {
+  const auto row = in.cells[c];
+  const CellShape shape = in.shape(c);
+  if (shape != CellShape::Faces) {
+    bool ok = row.size() == static_cast<size_t>(corner_count(shape));
+    for (size_t i = 0; i < row.size() && ok; ++i) {
+      ok = row[i] >= 0 && static_cast<size_t>(row[i]) < nv;
+      for (size_t j = 0; j < i; ++j) ok = ok && row[i] != row[j];
+    }
+    if (!ok)
+      throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                       std::to_string(corner_count(shape)) + " distinct vertex indices in [0, " + std::to_string(nv) +
+                           ") for cell " + std::to_string(c) + ", found " + loop_text(row));
+    return;
+  }
+  if (row.size() < 2)
+    throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                     "a cell with at least 2 faces, cell " + std::to_string(c) + " has " + std::to_string(row.size()));
+  const size_t nf = in.faces.rows();
+  for (int32_t r : row) {
+    const int32_t f = r >> 1;
+    if (r < 0 || static_cast<size_t>(f) >= nf)
+      throw InputError(in.source, in.loc_of(in.cell_loc, c),
+                       "face index in [0, " + std::to_string(nf) + ") in cell " + std::to_string(c) + ", found " +
+                           std::to_string(r < 0 ? r : f));
+  }
+}
+
+}  // namespace
+
+// Checks what a reader handed over: counts, index ranges, finite coordinates, proper polygons.
+void validate_input(const MeshInput& in, const LoadOptions& par) {
+  const std::string& file = in.source;
+  if (in.points.size() % 3 != 0) throw InputError(file, {}, "3 coordinates per vertex");
+  const size_t nv = in.points.size() / 3;
+  if (nv > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
+      in.faces.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()) ||
+      in.cells.items.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
+    throw InputError(file, {}, "fewer than 2^31 vertices, face corners and cell faces");
+  detail::parallel_ranges(in.points.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t i = b; i < e; ++i)
+      if (!std::isfinite(in.points[i]))
+        throw InputError(file, in.loc_of(in.vertex_loc, i / 3), "a finite coordinate for vertex " + std::to_string(i / 3));
+  });
+  detail::parallel_ranges(in.faces.rows(), par, [&](size_t b, size_t e, int) {
+    std::vector<int32_t> stamp(e > b ? nv : 0, -1);  // the last face that named each vertex
+    for (size_t f = b; f < e; ++f) validate_face(in, nv, f, stamp);
+  });
+  if (!in.cell_shape.empty() && in.cell_shape.size() != in.cells.rows())
+    throw InputError(file, {}, "a shape for every cell");
+  detail::parallel_ranges(in.cells.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) validate_cell(in, nv, c);
+  });
+}
+
+namespace {
+
+// The loops of the slots of a MeshInput's cells, as the cells give them.
+class SlotLoops {
+ public:
+  explicit SlotLoops(const MeshInput& in) : in_(in) {}
+  int count(size_t c) const {
+    const CellShape s = in_.shape(c);
+    return s == CellShape::Faces ? in_.cells.count(c) : detail::shape_faces(s).nfaces;
+  }
+  // Loop of face j of cell c; `buf` holds it for an element.
+  std::span<const int32_t> loop(size_t c, int j, std::array<int32_t, 4>& buf) const {
+    const auto row = in_.cells[c];
+    const CellShape s = in_.shape(c);
+    if (s == CellShape::Faces) return in_.faces[static_cast<size_t>(row[static_cast<size_t>(j)] >> 1)];
+    const detail::ShapeFaces& sf = detail::shape_faces(s);
+    const int n = sf.size[static_cast<size_t>(j)];
+    for (int i = 0; i < n; ++i) buf[static_cast<size_t>(i)] = row[static_cast<size_t>(sf.corner[static_cast<size_t>(j)][static_cast<size_t>(i)])];
+    return {buf.data(), static_cast<size_t>(n)};
+  }
+  // 1 when cell c sees loop j reversed, as the file says.
+  uint8_t flip(size_t c, int j) const {
+    return in_.shape(c) == CellShape::Faces ? static_cast<uint8_t>(in_.cells[c][static_cast<size_t>(j)] & 1) : 0;
+  }
+
+ private:
+  const MeshInput& in_;
+};
+
+// What face merging sorts: every slot, then every soup face no cell uses (so that those whose
+// vertex set no cell uses can be counted as dropped). item < nslots is a slot, else unused soup
+// face unused[item - nslots].
+struct FaceItems {
+  const MeshInput& in;
+  const SlotLoops& loops;
+  const std::vector<int32_t>& slot_offsets;  // per cell
+  std::vector<int32_t> slot_cell;            // the cell of every slot
+  std::vector<int32_t> unused;               // soup faces no cell uses
+  std::vector<int32_t> lowest;               // per item: the lowest vertex of its loop
+  size_t nslots() const { return slot_cell.size(); }
+  size_t size() const { return slot_cell.size() + unused.size(); }
+  std::span<const int32_t> loop(size_t item, std::array<int32_t, 4>& buf) const {
+    if (item >= nslots()) return in.faces[static_cast<size_t>(unused[item - nslots()])];
+    const size_t c = static_cast<size_t>(slot_cell[item]);
+    return loops.loop(c, static_cast<int>(item - static_cast<size_t>(slot_offsets[c])), buf);
+  }
+};
+
+// A triangle's or quadrangle's vertex set and its item as one sortable integer: the loop size, the
+// vertices after the lowest in increasing order (a triangle's third one above any id), the item.
+// Faces of one bucket share the lowest vertex, so equal keys up to the item mean the same set.
+__extension__ typedef unsigned __int128 FaceKey;
+constexpr int kItemBits = 31;
+
+FaceKey small_key(std::span<const int32_t> loop, int32_t item) {
+  std::array<uint32_t, 4> v{0x7fffffffu, 0x7fffffffu, 0x7fffffffu, 0x7fffffffu};
+  for (size_t i = 0; i < loop.size(); ++i) v[i] = static_cast<uint32_t>(loop[i]);
+  // A sorting network for four values.
+  auto order = [&](size_t i, size_t j) {
+    if (v[j] < v[i]) std::swap(v[i], v[j]);
+  };
+  order(0, 1), order(2, 3), order(0, 2), order(1, 3), order(1, 2);
+  return static_cast<FaceKey>(loop.size()) << (4 * kItemBits) | static_cast<FaceKey>(v[1]) << (3 * kItemBits) |
+         static_cast<FaceKey>(v[2]) << (2 * kItemBits) | static_cast<FaceKey>(v[3]) << kItemBits | static_cast<uint32_t>(item);
+}
+
+// rep[item] for the items of one bucket (all with the same lowest vertex): the lowest item with
+// the same vertex set.
+void group_bucket(const FaceItems& items, std::span<const int32_t> bucket, std::vector<int32_t>& rep,
+                  std::vector<FaceKey>& small, std::vector<std::vector<int32_t>>& big) {
+  std::array<int32_t, 4> buf;
+  bool all_small = true;
+  small.clear();
+  for (int32_t it : bucket) {
+    const auto loop = items.loop(static_cast<size_t>(it), buf);
+    if (loop.size() > 4) {
+      all_small = false;
+      break;
+    }
+    small.push_back(small_key(loop, it));
+  }
+  if (all_small) {
+    detail::sort_small(small.begin(), small.end());  // buckets hold a handful of faces
+    constexpr uint32_t kItem = (1u << kItemBits) - 1;
+    for (size_t g = 0; g < small.size(); ++g) {
+      const bool same = g > 0 && (small[g] >> kItemBits) == (small[g - 1] >> kItemBits);
+      rep[static_cast<uint32_t>(small[g]) & kItem] = same ? rep[static_cast<uint32_t>(small[g - 1]) & kItem]
+                                                         : static_cast<int32_t>(static_cast<uint32_t>(small[g]) & kItem);
+    }
+    return;
+  }
+  // Some polygon has more than 4 vertices: whole sorted vertex lists, then the item.
+  big.resize(bucket.size());
+  for (size_t i = 0; i < bucket.size(); ++i) {
+    const auto loop = items.loop(static_cast<size_t>(bucket[i]), buf);
+    big[i].assign(loop.begin(), loop.end());
+    std::sort(big[i].begin(), big[i].end());
+    big[i].insert(big[i].begin(), static_cast<int32_t>(loop.size()));
+    big[i].push_back(bucket[i]);
+  }
+  std::sort(big.begin(), big.end());
+  auto same_set = [](const std::vector<int32_t>& a, const std::vector<int32_t>& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end() - 1, b.begin());
+  };
+  for (size_t g = 0; g < big.size(); ++g)
+    rep[static_cast<size_t>(big[g].back())] = g > 0 && same_set(big[g], big[g - 1]) ? rep[static_cast<size_t>(big[g - 1].back())] : big[g].back();
+}
+
+// rep[item] = the lowest item with the same vertex set (see FaceItems).
+std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, const LoadOptions& par) {
+  const size_t n = items.size();
+  const Csr<int32_t> by_lowest = detail::group_by_key(n, nv, par, [&](size_t i) { return items.lowest[i]; });
+  std::vector<int32_t> rep;
+  detail::resize_huge(rep, n);
+  detail::parallel_rows(by_lowest, par, [&](size_t vb, size_t ve, int) {
+    std::vector<FaceKey> small;
+    std::vector<std::vector<int32_t>> big;
+    for (size_t v = vb; v < ve; ++v) {
+      const auto bucket = by_lowest[v];
+      if (bucket.size() == 1) rep[static_cast<size_t>(bucket[0])] = bucket[0];
+      else if (!bucket.empty()) group_bucket(items, bucket, rep, small, big);
+    }
+  });
+  return rep;
+}
 
 // Same direction of two loops over the same vertex set?
 bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
@@ -20,63 +234,9 @@ bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
   return a[(p + 1) % n] == b[1];
 }
 
-// rep[f] = the input face standing for all input faces with f's vertex set: the one a cell uses
-// first (lowest first_use), or -1 when no cell uses any of them.
-std::vector<int32_t> face_representatives(const Csr<int32_t>& faces, const std::vector<int32_t>& first_use,
-                                          size_t nv, const LoadOptions& par) {
-  const size_t nf = faces.rows();
-  std::vector<int32_t> lowest(nf);
-  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
-    for (size_t f = b; f < e; ++f) lowest[f] = *std::min_element(faces[f].begin(), faces[f].end());
-  });
-  const Csr<int32_t> by_lowest = group_by(lowest, nv);
-  std::vector<int32_t>().swap(lowest);
-  std::vector<int32_t> rep(nf, -1);
-  // An unused face sorts after the used ones of its group.
-  auto use_rank = [&](int32_t f) { return static_cast<uint32_t>(first_use[f]); };
-  detail::parallel_ranges(nv, par, [&](size_t vb, size_t ve, int) {
-    std::vector<int32_t> keys, order;
-    std::vector<int32_t> key_at;  // start of each bucket member's sorted key in keys
-    for (size_t v = vb; v < ve; ++v) {
-      auto ids = by_lowest[v];
-      if (ids.size() == 1) rep[ids[0]] = first_use[ids[0]] >= 0 ? ids[0] : -1;
-      if (ids.size() <= 1) continue;
-      keys.clear();
-      key_at.clear();
-      for (int32_t f : ids) {
-        key_at.push_back(static_cast<int32_t>(keys.size()));
-        keys.insert(keys.end(), faces[f].begin(), faces[f].end());
-        std::sort(keys.begin() + key_at.back(), keys.end());
-      }
-      key_at.push_back(static_cast<int32_t>(keys.size()));
-      auto key = [&](int32_t i) {
-        return std::span<const int32_t>(keys.data() + key_at[i], static_cast<size_t>(key_at[i + 1] - key_at[i]));
-      };
-      auto same_key = [&](int32_t i, int32_t j) { return std::ranges::equal(key(i), key(j)); };
-      order.resize(ids.size());
-      std::iota(order.begin(), order.end(), 0);
-      std::sort(order.begin(), order.end(), [&](int32_t i, int32_t j) {
-        auto a = key(i), b = key(j);
-        if (a.size() != b.size()) return a.size() < b.size();
-        const auto c = std::lexicographical_compare_three_way(a.begin(), a.end(), b.begin(), b.end());
-        return c != 0 ? c < 0 : use_rank(ids[i]) < use_rank(ids[j]);
-      });
-      for (size_t g = 0; g < order.size();) {
-        size_t h = g + 1;
-        while (h < order.size() && same_key(order[g], order[h])) ++h;
-        const int32_t first = ids[order[g]];
-        const int32_t r = first_use[first] >= 0 ? first : -1;
-        for (size_t i = g; i < h; ++i) rep[ids[order[i]]] = r;
-        g = h;
-      }
-    }
-  });
-  return rep;
-}
-
 // face_cells from cell_faces, in cell order, so that the first offending cell is reported.
 void fill_face_cells(const MeshInput& in, Mesh& m) {
-  m.face_cells.assign(m.face_verts.rows(), {-1, -1});
+  detail::assign_huge(m.face_cells, m.face_verts.rows(), {-1, -1});
   for (size_t c = 0; c < m.num_cells(); ++c) {
     const int32_t ci = static_cast<int32_t>(c);
     for (int32_t u : m.cell_faces[c]) {
@@ -91,172 +251,255 @@ void fill_face_cells(const MeshInput& in, Mesh& m) {
         fc[1] = ci;
       } else {
         throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                         "a face shared by at most 2 cells, face " + loop_text(m.face_verts[u]) +
-                             " is in cells " + std::to_string(fc[0]) + ", " + std::to_string(fc[1]) +
-                             " and " + std::to_string(c));
+                         "a face shared by at most 2 cells, face " + loop_text(m.face_verts[u]) + " is in cells " +
+                             std::to_string(fc[0]) + ", " + std::to_string(fc[1]) + " and " + std::to_string(c));
       }
     }
   }
+}
+
+// Slot offsets per cell, the cell of each slot, and the soup faces no cell uses.
+FaceItems face_items(const MeshInput& in, const SlotLoops& loops, std::vector<int32_t>& slot_offsets,
+                     const LoadOptions& par) {
+  const size_t nc = in.cells.rows();
+  slot_offsets.assign(nc + 1, 0);
+  int64_t total = 0, corners = 0;
+  for (size_t c = 0; c < nc; ++c) {
+    const CellShape shape = in.shape(c);
+    if (shape == CellShape::Faces) {
+      for (int32_t r : in.cells[c]) corners += in.faces.count(static_cast<size_t>(r >> 1));
+    } else {
+      const detail::ShapeFaces& sf = detail::shape_faces(shape);
+      for (int j = 0; j < sf.nfaces; ++j) corners += sf.size[static_cast<size_t>(j)];
+    }
+    total += loops.count(c);
+    if (total > std::numeric_limits<int32_t>::max() || corners > std::numeric_limits<int32_t>::max())
+      throw InputError(in.source, {}, "fewer than 2^31 cell faces and face corners");
+    slot_offsets[c + 1] = static_cast<int32_t>(total);
+  }
+  FaceItems items{in, loops, slot_offsets, {}, {}, {}};
+  detail::resize_huge(items.slot_cell, static_cast<size_t>(total));
+  std::vector<uint8_t> used(in.faces.rows(), 0);
+  for (size_t c = 0; c < nc; ++c)
+    if (in.shape(c) == CellShape::Faces)
+      for (int32_t r : in.cells[c]) used[static_cast<size_t>(r >> 1)] = 1;
+  for (size_t f = 0; f < used.size(); ++f)
+    if (!used[f]) items.unused.push_back(static_cast<int32_t>(f));
+  detail::resize_huge(items.lowest, items.size());
+  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int) {
+    std::array<int32_t, 4> buf;
+    for (size_t c = cb; c < ce; ++c)
+      for (int j = 0; j < loops.count(c); ++j) {
+        const auto s = static_cast<size_t>(slot_offsets[c] + j);
+        items.slot_cell[s] = static_cast<int32_t>(c);
+        const auto loop = loops.loop(c, j, buf);
+        items.lowest[s] = *std::min_element(loop.begin(), loop.end());
+      }
+  });
+  for (size_t i = items.nslots(); i < items.size(); ++i) {
+    const auto loop = in.faces[static_cast<size_t>(items.unused[i - items.nslots()])];
+    items.lowest[i] = *std::min_element(loop.begin(), loop.end());
+  }
+  return items;
+}
+
+// Faces numbered in slot order from rep (consumed: it becomes cell_faces.items). Ranges of slots
+// count their new faces first, so that each then numbers its own from the right place; a face id
+// is kept as -1 - id until every slot has one.
+void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, const LoadOptions& par) {
+  const size_t nslots = items.nslots();
+  const int nr = detail::range_count(nslots, par);
+  std::vector<int64_t> first_face(static_cast<size_t>(nr) + 1, 0), first_corner(static_cast<size_t>(nr) + 1, 0);
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int r) {
+    std::array<int32_t, 4> buf;
+    for (size_t s = b; s < e; ++s)
+      if (rep[s] == static_cast<int32_t>(s)) {
+        ++first_face[static_cast<size_t>(r) + 1];
+        first_corner[static_cast<size_t>(r) + 1] += static_cast<int64_t>(items.loop(s, buf).size());
+      }
+  });
+  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) {
+    first_face[r + 1] += first_face[r];
+    first_corner[r + 1] += first_corner[r];
+  }
+  detail::assign_huge(m.face_verts.offsets, static_cast<size_t>(first_face.back()) + 1, 0);
+  detail::resize_huge(m.face_verts.items, static_cast<size_t>(first_corner.back()));
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int r) {
+    std::array<int32_t, 4> buf;
+    auto face = first_face[static_cast<size_t>(r)];
+    auto at = first_corner[static_cast<size_t>(r)];
+    for (size_t s = b; s < e; ++s) {
+      if (rep[s] != static_cast<int32_t>(s)) continue;
+      const auto loop = items.loop(s, buf);
+      std::copy(loop.begin(), loop.end(), m.face_verts.items.begin() + at);
+      at += static_cast<int64_t>(loop.size());
+      m.face_verts.offsets[static_cast<size_t>(face) + 1] = static_cast<int32_t>(at);
+      rep[s] = static_cast<int32_t>(-1 - face++);
+    }
+  });
+  // Other slots copy their representative's id (an earlier slot, which the pass above numbered).
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
+    for (size_t s = b; s < e; ++s)
+      if (rep[s] >= 0) rep[s] = rep[static_cast<size_t>(rep[s])];
+  });
+  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
+    for (size_t s = b; s < e; ++s) rep[s] = -1 - rep[s];
+  });
+  rep.resize(nslots);
+  rep.shrink_to_fit();
+  m.cell_faces.items = std::move(rep);
 }
 
 }  // namespace
 
 void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
-  const size_t nf_in = in.faces.rows(), nslots = in.cells.items.size();
-  std::vector<int32_t> first_use(nf_in, -1);
-  for (size_t s = 0; s < nslots; ++s) {
-    const int32_t f = in.cells.items[s] >> 1;
-    if (first_use[f] < 0) first_use[f] = static_cast<int32_t>(s);
-  }
-  const std::vector<int32_t> rep = face_representatives(in.faces, first_use, m.num_vertices(), par);
-  for (size_t f = 0; f < nf_in; ++f) m.dropped_faces += rep[f] < 0;
-  if (m.dropped_faces > 0)
-    m.warnings.push_back(std::to_string(m.dropped_faces) + " face(s) used by no cell dropped");
-
-  std::vector<int32_t>& face_id = first_use;  // reused: id of each representative, -1 until met
-  std::fill(face_id.begin(), face_id.end(), -1);
-  m.cell_faces.offsets = std::move(in.cells.offsets);
-  m.cell_faces.items.resize(nslots);
-  // Exactly the room the merged loops need: growing would copy them again and again.
-  size_t kept = 0, corners = 0;
-  for (size_t f = 0; f < nf_in; ++f)
-    if (rep[f] == static_cast<int32_t>(f)) ++kept, corners += static_cast<size_t>(in.faces.count(f));
-  m.face_verts.reserve(kept, corners);
-  for (size_t s = 0; s < nslots; ++s) {
-    const int32_t r = rep[in.cells.items[s] >> 1];
-    if (face_id[r] < 0) {
-      face_id[r] = static_cast<int32_t>(m.face_verts.rows());
-      m.face_verts.push_row(in.faces[r]);
-    }
-    m.cell_faces.items[s] = face_id[r];
-  }
-  // The cell sees the stored loop reversed when exactly one of (input flip, loop copy reversed
+  const SlotLoops loops(in);
+  std::vector<int32_t> slot_offsets;
+  FaceItems items = face_items(in, loops, slot_offsets, par);
+  std::vector<int32_t> rep = face_representatives(items, m.num_vertices(), par);
+  std::vector<int32_t>().swap(items.lowest);
+  for (size_t i = items.nslots(); i < items.size(); ++i) m.dropped_faces += rep[i] >= static_cast<int32_t>(items.nslots());
+  if (m.dropped_faces > 0) m.warnings.push_back(std::to_string(m.dropped_faces) + " face(s) used by no cell dropped");
+  number_faces(items, std::move(rep), m, par);
+  std::vector<int32_t>().swap(items.slot_cell);
+  m.cell_faces.offsets = std::move(slot_offsets);
+  // The cell sees the stored loop reversed when exactly one of (the file's flip, its loop running
   // against the stored one) holds.
-  m.cell_face_flip.resize(nslots);
-  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
-    for (size_t s = b; s < e; ++s) {
-      const int32_t f = in.cells.items[s] >> 1;
-      const bool same = rep[f] == f || same_direction(m.face_verts[m.cell_faces.items[s]], in.faces[f]);
-      m.cell_face_flip[s] = static_cast<uint8_t>(((in.cells.items[s] & 1) != 0) == same);
-    }
+  detail::resize_huge(m.cell_face_flip, m.cell_faces.items.size());
+  detail::parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
+    std::array<int32_t, 4> buf;
+    for (size_t c = b; c < e; ++c)
+      for (int j = 0; j < loops.count(c); ++j) {
+        const size_t s = static_cast<size_t>(m.cell_faces.offsets[c] + j);
+        const bool same = same_direction(m.face_verts[static_cast<size_t>(m.cell_faces.items[s])], loops.loop(c, j, buf));
+        m.cell_face_flip[s] = static_cast<uint8_t>(loops.flip(c, j) ^ (same ? 0 : 1));
+      }
   });
-  // The polygon soup is not needed from here on; releasing it (clear() would keep the capacity)
-  // lowers the peak memory.
+  // The input is not needed from here on; releasing it (clear() would keep the capacity) lowers
+  // the peak memory.
   in.faces = Csr<int32_t>{};
   in.cells = Csr<int32_t>{};
   fill_face_cells(in, m);
 }
 
-std::vector<int32_t> slot_faces(const Mesh& m, const LoadOptions& par) {
-  std::vector<int32_t> slot_face(m.face_verts.items.size());
+namespace {
+
+// rep[k] = the vertex after corner k along its loop, so that a corner's edge is known without its
+// face; boundary[k] = 1 when corner k's face is on the boundary.
+void prefill_next(const Mesh& m, std::vector<int32_t>& rep, std::vector<uint8_t>& boundary, const LoadOptions& par) {
+  const std::vector<int32_t>& loops = m.face_verts.items;
+  detail::resize_huge(rep, loops.size());
+  detail::resize_huge(boundary, loops.size());
   detail::parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
-    for (size_t f = b; f < e; ++f)
-      std::fill(slot_face.begin() + m.face_verts.offsets[f], slot_face.begin() + m.face_verts.offsets[f + 1],
-                static_cast<int32_t>(f));
+    for (size_t f = b; f < e; ++f) {
+      const auto k0 = static_cast<size_t>(m.face_verts.offsets[f]), k1 = static_cast<size_t>(m.face_verts.offsets[f + 1]);
+      for (size_t k = k0; k + 1 < k1; ++k) rep[k] = loops[k + 1];
+      rep[k1 - 1] = loops[k0];
+      std::fill(boundary.begin() + static_cast<std::ptrdiff_t>(k0), boundary.begin() + static_cast<std::ptrdiff_t>(k1),
+                m.face_cells[f][1] < 0 ? 1 : 0);
+    }
   });
-  return slot_face;
 }
 
-namespace {
-// The vertex after slot k along its face loop.
-int32_t next_vertex(const Mesh& m, const std::vector<int32_t>& slot_face, size_t k) {
-  const int32_t f = slot_face[k];
-  return m.face_verts.items[static_cast<int32_t>(k) + 1 == m.face_verts.offsets[f + 1] ? m.face_verts.offsets[f] : k + 1];
+// rep[k] = the lowest corner with the same edge, bucket by bucket of by_lo (corners by the lower
+// end of their edge); every corner of a bucket is read before any of them is overwritten.
+void edge_representatives(const Mesh& m, const Csr<int32_t>& by_lo, std::vector<int32_t>& rep, const LoadOptions& par) {
+  const std::vector<int32_t>& loops = m.face_verts.items;
+  detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
+    std::vector<uint64_t> hi_corner;  // other end << 32 | corner, sorted
+    for (size_t v = vb; v < ve; ++v) {
+      hi_corner.clear();
+      for (int32_t k : by_lo[v]) {
+        const auto kk = static_cast<size_t>(k);
+        hi_corner.push_back(static_cast<uint64_t>(std::max(loops[kk], rep[kk])) << 32 | static_cast<uint32_t>(k));
+      }
+      detail::sort_small(hi_corner.begin(), hi_corner.end());  // a vertex starts a few edges, each in a few faces
+      for (size_t i = 0; i < hi_corner.size(); ++i) {
+        const auto k = static_cast<size_t>(hi_corner[i] & 0xffffffffu);
+        const bool same = i > 0 && (hi_corner[i - 1] >> 32) == (hi_corner[i] >> 32);
+        rep[k] = same ? rep[static_cast<size_t>(hi_corner[i - 1] & 0xffffffffu)] : static_cast<int32_t>(k);
+      }
+    }
+  });
 }
+
+// Edges numbered in corner order from rep (which becomes the edge of every corner), with
+// edge_verts and fan_start = the face of each edge's first corner. Ranges of faces count their
+// new edges first so that each numbers its own from the right place; an edge id is kept as
+// -1 - id until every corner has one (a representative is an earlier corner, maybe of another
+// range).
+void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
+  const size_t nf = m.num_faces();
+  const std::vector<int32_t>& loops = m.face_verts.items;
+  const int nr = detail::range_count(nf, par);
+  std::vector<int64_t> first(static_cast<size_t>(nr) + 1, 0);
+  auto corners = [&](size_t f) {
+    return std::pair{static_cast<size_t>(m.face_verts.offsets[f]), static_cast<size_t>(m.face_verts.offsets[f + 1])};
+  };
+  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
+    for (size_t f = b; f < e; ++f)
+      for (auto [k, k1] = corners(f); k < k1; ++k) first[static_cast<size_t>(r) + 1] += rep[k] == static_cast<int32_t>(k);
+  });
+  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) first[r + 1] += first[r];
+  detail::resize_huge(m.edge_verts, static_cast<size_t>(first.back()));
+  detail::resize_huge(m.fan_start, static_cast<size_t>(first.back()));
+  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
+    auto id = first[static_cast<size_t>(r)];
+    for (size_t f = b; f < e; ++f) {
+      const auto [k0, k1] = corners(f);
+      for (size_t k = k0; k < k1; ++k) {
+        if (rep[k] != static_cast<int32_t>(k)) continue;
+        const int32_t a = loops[k], c = loops[k + 1 < k1 ? k + 1 : k0];
+        m.edge_verts[static_cast<size_t>(id)] = {std::min(a, c), std::max(a, c)};
+        m.fan_start[static_cast<size_t>(id)] = static_cast<int32_t>(f);
+        rep[k] = static_cast<int32_t>(-1 - id++);
+      }
+    }
+  });
+  detail::parallel_ranges(rep.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k)
+      if (rep[k] >= 0) rep[k] = rep[static_cast<size_t>(rep[k])];
+  });
+  detail::parallel_ranges(rep.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k) rep[k] = -1 - rep[k];
+  });
+}
+
+// Faces and boundary faces at each edge, and fan_start moved to the lowest boundary face at the
+// edge where there is one. Each edge's corners are all in the bucket of its lower end, in
+// increasing order, so a range of buckets counts its edges alone and meets each edge's lowest
+// boundary corner first.
+std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, const std::vector<uint8_t>& boundary,
+                                            const LoadOptions& par) {
+  std::vector<EdgeFaceCount> count;
+  detail::resize_huge(count, m.num_edges());
+  const auto& off = m.face_verts.offsets;
+  detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
+    for (size_t v = vb; v < ve; ++v)
+      for (int32_t k : by_lo[v]) {
+        const auto e = static_cast<size_t>(m.face_edge_ids[static_cast<size_t>(k)]);
+        ++count[e].faces;
+        if (!boundary[static_cast<size_t>(k)]) continue;
+        uint8_t& nb = count[e].boundary_faces;
+        if (nb == 0) m.fan_start[e] = static_cast<int32_t>(std::upper_bound(off.begin(), off.end(), k) - off.begin() - 1);
+        if (nb < 255) ++nb;
+      }
+  });
+  return count;
+}
+
 }  // namespace
 
-void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, const LoadOptions& par) {
-  const size_t ns = m.face_verts.items.size();
-  std::vector<int32_t>& rep = m.face_edges.items;  // first the lowest slot with the same edge
-  rep.resize(ns);
-  {
-    std::vector<int32_t> lo(ns);
-    detail::parallel_ranges(ns, par, [&](size_t b, size_t e, int) {
-      for (size_t k = b; k < e; ++k) lo[k] = std::min(m.face_verts.items[k], next_vertex(m, slot_face, k));
-    });
-    const Csr<int32_t> by_lo = group_by(lo, m.num_vertices());
-    std::vector<int32_t>().swap(lo);
-    detail::parallel_ranges(m.num_vertices(), par, [&](size_t vb, size_t ve, int) {
-      std::vector<uint64_t> hi_slot;  // other end << 32 | slot, sorted
-      for (size_t v = vb; v < ve; ++v) {
-        hi_slot.clear();
-        for (int32_t k : by_lo[v]) {
-          const int32_t hi = std::max(m.face_verts.items[k], next_vertex(m, slot_face, k));
-          hi_slot.push_back(static_cast<uint64_t>(hi) << 32 | static_cast<uint32_t>(k));
-        }
-        std::sort(hi_slot.begin(), hi_slot.end());
-        for (size_t i = 0; i < hi_slot.size(); ++i) {
-          const auto k = static_cast<int32_t>(hi_slot[i] & 0xffffffffu);
-          const bool same = i > 0 && (hi_slot[i - 1] >> 32) == (hi_slot[i] >> 32);
-          rep[k] = same ? rep[static_cast<int32_t>(hi_slot[i - 1] & 0xffffffffu)] : k;
-        }
-      }
-    });
-  }
-  // Numbering in slot order: a representative precedes the other slots of its edge, so by the
-  // time they are reached it already holds the edge id.
-  m.edge_verts.reserve(ns / 2);  // each edge of a closed cell is in two of its face slots
-  for (size_t k = 0; k < ns; ++k) {
-    if (rep[k] == static_cast<int32_t>(k)) {
-      const int32_t a = m.face_verts.items[k], b = next_vertex(m, slot_face, k);
-      rep[k] = static_cast<int32_t>(m.edge_verts.size());
-      m.edge_verts.push_back({std::min(a, b), std::max(a, b)});
-    } else {
-      rep[k] = rep[rep[k]];
-    }
-  }
-  m.face_edges.offsets = m.face_verts.offsets;
-}
-
-std::vector<int32_t> cell_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par) {
-  const size_t nc = m.num_cells();
-  std::vector<int32_t> partner(2 * m.face_edges.items.size(), -1);
-  const int nr = detail::range_count(nc, par);
-  std::vector<Csr<int32_t>> verts(static_cast<size_t>(nr)), edges(static_cast<size_t>(nr));
-  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int r) {
-    std::vector<uint64_t> edge_slot;  // edge << 32 | (2*slot + side), per slot of the cell: sorts as one integer
-    std::vector<int32_t> cv, cedges;
-    Csr<int32_t>& vrows = verts[static_cast<size_t>(r)];
-    Csr<int32_t>& erows = edges[static_cast<size_t>(r)];
-    const size_t slots = static_cast<size_t>(m.cell_faces.offsets[ce] - m.cell_faces.offsets[cb]);
-    vrows.reserve(ce - cb, 2 * slots);  // a hex: 6 faces, 8 vertices, 12 edges
-    erows.reserve(ce - cb, 2 * slots);
-    for (size_t c = cb; c < ce; ++c) {
-      edge_slot.clear();
-      cv.clear();
-      cedges.clear();
-      for (int32_t f : m.cell_faces[c]) {
-        const int32_t side = m.face_cells[f][0] == static_cast<int32_t>(c) ? 0 : 1;
-        for (int32_t k = m.face_edges.offsets[f]; k < m.face_edges.offsets[f + 1]; ++k)
-          edge_slot.push_back(static_cast<uint64_t>(m.face_edges.items[k]) << 32 | static_cast<uint32_t>(2 * k + side));
-        cv.insert(cv.end(), m.face_verts[f].begin(), m.face_verts[f].end());
-      }
-      std::sort(edge_slot.begin(), edge_slot.end());
-      auto edge = [&](size_t i) { return static_cast<int32_t>(edge_slot[i] >> 32); };
-      auto slot = [&](size_t i) { return static_cast<int32_t>(edge_slot[i] & 0xffffffffu); };
-      for (size_t i = 0; i < edge_slot.size();) {
-        size_t j = i + 1;
-        while (j < edge_slot.size() && edge(j) == edge(i)) ++j;
-        if (j - i != 2) {
-          auto ev = m.edge_verts[edge(i)];
-          throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                           "a closed cell (each edge in exactly 2 of its faces), cell " + std::to_string(c) +
-                               " has edge (" + std::to_string(ev[0]) + " " + std::to_string(ev[1]) + ") in " +
-                               std::to_string(j - i));
-        }
-        partner[slot(i)] = slot(i + 1);
-        partner[slot(i + 1)] = slot(i);
-        cedges.push_back(edge(i));
-        i = j;
-      }
-      erows.push_row(cedges.begin(), cedges.end());
-      sort_unique(cv);
-      vrows.push_row(cv.begin(), cv.end());
-    }
+std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
+  std::vector<int32_t>& rep = m.face_edge_ids;
+  std::vector<uint8_t> boundary;
+  prefill_next(m, rep, boundary, par);
+  const Csr<int32_t> by_lo = detail::group_by_key(rep.size(), m.num_vertices(), par, [&](size_t k) {
+    return std::min(m.face_verts.items[k], rep[k]);
   });
-  m.cell_verts = concat(std::move(verts));
-  m.cell_edges = concat(std::move(edges));
-  return partner;
+  edge_representatives(m, by_lo, rep, par);
+  number_edges(m, rep, par);
+  return count_edge_faces(m, by_lo, boundary, par);
 }
 
 }  // namespace hbc::mesh_steps

@@ -8,7 +8,9 @@
 #include <thread>
 #include <vector>
 
+#include "hbc/csr.hpp"
 #include "hbc/mesh.hpp"
+#include "huge_pages.hpp"
 
 namespace hbc::detail {
 
@@ -70,6 +72,57 @@ void parallel_invoke(const LoadOptions& par, F&&... jobs) {
   for (auto& t : pool) t.join();
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+
+// Counting sort of the items 0..n-1 by key_of(i) in [0, nkeys): row k lists the items with key k
+// in increasing order. Each range of items counts into its own table (ranges x nkeys ints) and
+// fills its own share of every row, so the result does not depend on the number of threads.
+template <class KeyOf>
+Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&& key_of) {
+  const int nr = range_count(n, par);
+  std::vector<std::vector<int32_t>> next(static_cast<size_t>(nr));
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    std::vector<int32_t>& count = next[static_cast<size_t>(r)];
+    count.assign(nkeys, 0);
+    for (size_t i = b; i < e; ++i) ++count[static_cast<size_t>(key_of(i))];
+  });
+  Csr<int32_t> g;
+  resize_huge(g.offsets, nkeys + 1);
+  int32_t pos = 0;
+  for (size_t k = 0; k < nkeys; ++k) {
+    g.offsets[k] = pos;
+    for (auto& count : next) {
+      const int32_t c = count[k];
+      count[k] = pos;  // where range r writes its first item of key k
+      pos += c;
+    }
+  }
+  g.offsets[nkeys] = pos;
+  resize_huge(g.items, n);
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    std::vector<int32_t>& at = next[static_cast<size_t>(r)];
+    for (size_t i = b; i < e; ++i) g.items[static_cast<size_t>(at[static_cast<size_t>(key_of(i))]++)] = static_cast<int32_t>(i);
+  });
+  return g;
+}
+
+// Calls f(row_begin, row_end, r) over ranges of the rows of `rows` holding about as many items
+// each, so that rows of very different lengths (vertex buckets are longest at low ids when the
+// lowest vertex of random ids is taken) still split evenly. Results must not depend on the split.
+template <class F>
+void parallel_rows(const Csr<int32_t>& rows, const LoadOptions& par, F&& f) {
+  const size_t nrows = rows.rows(), nitems = rows.items.size();
+  const int nr = range_count(std::max(nrows, nitems), par);
+  std::vector<size_t> start(static_cast<size_t>(nr) + 1, nrows);
+  for (int r = 0; r < nr; ++r) {
+    const auto target = static_cast<int32_t>(nitems * static_cast<size_t>(r) / static_cast<size_t>(nr));
+    start[static_cast<size_t>(r)] = static_cast<size_t>(std::lower_bound(rows.offsets.begin(), rows.offsets.end() - 1, target) - rows.offsets.begin());
+  }
+  start[0] = 0;
+  parallel_ranges(static_cast<size_t>(nr), LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
+    for (size_t r = b; r < e; ++r) f(start[r], start[r + 1], static_cast<int>(r));
+  });
 }
 
 }  // namespace hbc::detail

@@ -9,6 +9,8 @@
 #include "hbc/io.hpp"
 #include "cell_templates.hpp"
 #include "line_table.hpp"
+#include "huge_pages.hpp"
+#include "parallel.hpp"
 #include "text_scanner.hpp"
 
 namespace hbc {
@@ -40,8 +42,8 @@ struct RawElements {
 };
 
 void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, const LoadOptions& par) {
-  in.points.reserve(static_cast<size_t>(3 * nv));
-  in.vertex_loc.reserve(static_cast<size_t>(nv));
+  detail::reserve_huge(in.points, static_cast<size_t>(3 * nv));
+  detail::reserve_huge(in.vertex_loc, static_cast<size_t>(nv));
   if (detail::fast_vertex_lines(s, nv, in.points, in.vertex_loc, par)) return;
   for (int64_t i = 0; i < nv; ++i) {
     const int64_t l = s.next_line();
@@ -54,8 +56,8 @@ void read_vertices(detail::TextScanner& s, int64_t nv, MeshInput& in, const Load
 void read_elements(detail::TextScanner& s, Element el, int64_t n, RawElements& raw, const LoadOptions& par) {
   const int nverts = detail::corner_count(el);
   raw.el.resize(raw.el.size() + static_cast<size_t>(n), el);
-  raw.line.reserve(raw.line.size() + static_cast<size_t>(n));
-  raw.ids.reserve(raw.ids.size() + static_cast<size_t>(n * nverts));
+  detail::reserve_huge(raw.line, raw.line.size() + static_cast<size_t>(n));
+  detail::reserve_huge(raw.ids, raw.ids.size() + static_cast<size_t>(n * nverts));
   if (detail::fast_element_lines(s, n, nverts, raw.ids, raw.line, par)) return;
   for (int64_t i = 0; i < n; ++i) {
     raw.line.push_back(s.next_line());
@@ -74,9 +76,9 @@ void read_elements(detail::TextScanner& s, Element el, int64_t n, RawElements& r
 
 // Cells from the elements read, once the vertex count nv is known, through the templates shared
 // with the other element-list readers (degenerate hexahedra included).
-void cells_from_elements(const RawElements& raw, int64_t nv, const detail::TextScanner& s, MeshInput& in) {
-  in.faces.reserve(raw.el.size() * 6, raw.ids.size() * 3);
-  in.cells.reserve(raw.el.size(), raw.el.size() * 6);
+void cells_through_templates(const RawElements& raw, int64_t nv, const detail::TextScanner& s, MeshInput& in) {
+  in.cells.reserve(raw.el.size(), raw.ids.size());
+  in.cell_shape.reserve(raw.el.size());
   in.cell_loc.reserve(raw.el.size());
   detail::CellAppender cells(in);
   size_t next_id = 0;
@@ -93,6 +95,38 @@ void cells_from_elements(const RawElements& raw, int64_t nv, const detail::TextS
     }
     cells.element(raw.el[e], v.data(), line);
   }
+}
+
+// The common case, in parallel and without copies: every element's corners in range and
+// distinct, so the ids (made 0-based) are the cells' rows as they stand. False, touching nothing,
+// when some element is out of range or degenerate (the template path then reads them in order).
+bool cells_as_read(RawElements& raw, int64_t nv, MeshInput& in, const LoadOptions& par) {
+  const size_t n = raw.el.size();
+  std::vector<int64_t> first(n + 1, 0);  // the first id of each element in raw.ids
+  for (size_t e = 0; e < n; ++e) first[e + 1] = first[e] + detail::corner_count(raw.el[e]);
+  const int nr = detail::range_count(n, par);
+  std::vector<uint8_t> plain(static_cast<size_t>(nr), 1);
+  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    for (size_t i = b; i < e && plain[static_cast<size_t>(r)]; ++i) {
+      const int32_t* v = raw.ids.data() + first[i];
+      const int k = detail::corner_count(raw.el[i]);
+      for (int a = 0; a < k; ++a) {
+        bool ok = v[a] >= 1 && v[a] <= nv;
+        for (int c = 0; c < a; ++c) ok = ok && v[c] != v[a];
+        if (!ok) plain[static_cast<size_t>(r)] = 0;
+      }
+    }
+  });
+  if (std::find(plain.begin(), plain.end(), 0) != plain.end()) return false;
+  detail::parallel_ranges(raw.ids.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t i = b; i < e; ++i) --raw.ids[i];
+  });
+  in.cells.offsets.resize(n + 1);
+  for (size_t e = 0; e <= n; ++e) in.cells.offsets[e] = static_cast<int32_t>(first[e]);
+  in.cells.items = std::move(raw.ids);
+  in.cell_shape = std::move(raw.el);
+  in.cell_loc = std::move(raw.line);
+  return true;
 }
 
 }  // namespace
@@ -135,7 +169,7 @@ MeshInput read_medit(std::string_view text, const std::string& source, const Loa
   if (!seen_version && text.size() > 0 && nv < 0) s.fail("a MEDIT file (MeshVersionFormatted, Vertices, ...)");
   if (nv < 0) s.fail("a Vertices section");
   if (raw.el.empty()) s.fail("at least one volume element (Tetrahedra, Pyramids, Prisms or Hexahedra)");
-  cells_from_elements(raw, nv, s, in);
+  if (!cells_as_read(raw, nv, in, par)) cells_through_templates(raw, nv, s, in);
   return in;
 }
 

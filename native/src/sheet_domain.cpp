@@ -118,24 +118,27 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
     for (size_t f = 0; f < nf; ++f) {
       const auto fc = m.face_cells[f];
       const bool hex_face = m.is_hex(fc[0]) || (fc[1] >= 0 && m.is_hex(fc[1]));
-      if (hex_face && m.face_verts.count(f) == 4) quads.push_row(m.face_edges[f]);
+      if (hex_face && m.face_verts.count(f) == 4) quads.push_row(m.face_edges(f));
     }
     d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges());
   }
 
   // Blocks holding each curve, and non-hex cells touching it.
   const size_t ncurves = d.curve_edges.rows();
+  EdgeFan fan;
+  std::vector<int32_t> non_hex;
   for (size_t k = 0; k < ncurves; ++k) {
     buf.clear();
-    for (int32_t e : d.curve_edges[k])
-      for (int32_t c : m.edge_cells[e])
+    non_hex.clear();
+    for (int32_t e : d.curve_edges[k]) {
+      edge_fan(m, e, fan);
+      for (int32_t c : fan.cells) {
         if (d.cell_block[c] >= 0) buf.push_back(d.cell_block[c]);
+        if (!m.is_hex(c)) non_hex.push_back(c);
+      }
+    }
     push_sorted_unique(buf, d.curve_blocks);
-    buf.clear();
-    for (int32_t e : d.curve_edges[k])
-      for (int32_t c : m.edge_cells[e])
-        if (!m.is_hex(c)) buf.push_back(c);
-    push_sorted_unique(buf, d.curve_non_hex_cells);
+    push_sorted_unique(non_hex, d.curve_non_hex_cells);
   }
   d.block_curves = transpose(d.curve_blocks, d.block_cells.rows());
   return d;

@@ -35,11 +35,20 @@ bool contains(std::span<const int32_t> sorted, int32_t x) {
 // The edge of hex cell c at the first vertex of face f that is not an edge of f: it points
 // across the face, in the cell's direction orthogonal to f.
 int32_t orthogonal_edge(const Mesh& m, int32_t c, int32_t f) {
-  const int32_t v = m.face_verts[f][0];
-  auto fe = m.face_edges[f];
-  for (int32_t e : m.cell_edges[c]) {
-    if (m.edge_verts[e][0] != v && m.edge_verts[e][1] != v) continue;
-    if (std::find(fe.begin(), fe.end(), e) == fe.end()) return e;
+  // Another face g of the hex at v runs along f on one side of v and across it on the other:
+  // the edge of g at v whose far end is not in f.
+  const auto fl = m.face_verts[static_cast<size_t>(f)];
+  const int32_t v = fl[0];
+  auto in_f = [&](int32_t x) { return std::find(fl.begin(), fl.end(), x) != fl.end(); };
+  for (int32_t g : m.cell_faces[static_cast<size_t>(c)]) {
+    if (g == f) continue;
+    const auto gl = m.face_verts[static_cast<size_t>(g)];
+    const auto i = static_cast<size_t>(std::find(gl.begin(), gl.end(), v) - gl.begin());
+    if (i == gl.size()) continue;
+    const size_t n = gl.size(), next = (i + 1) % n, prev = (i + n - 1) % n;
+    const auto ge = m.face_edges(static_cast<size_t>(g));  // ge[i] joins gl[i] and gl[i + 1]
+    if (!in_f(gl[next])) return ge[i];
+    if (!in_f(gl[prev])) return ge[prev];
   }
   return -1;
 }
@@ -249,7 +258,7 @@ UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
   for (size_t c = 0; c < m.num_cells(); ++c) {
     if (!m.is_hex(c)) continue;
     for (int32_t f : m.cell_faces[c]) {
-      auto fe = m.face_edges[f];
+      auto fe = m.face_edges(static_cast<size_t>(f));
       uf.unite(fe[0], fe[2]);
       uf.unite(fe[1], fe[3]);
     }
@@ -265,42 +274,87 @@ UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
 // The parallel classes with dense ids, and the blocks and curves of each.
 struct ParallelClasses {
   int32_t count = 0;
-  Csr<int32_t> blocks;   // count rows: blocks with a direction in the class (a block once per direction)
+  Csr<int32_t> blocks;  // count rows: blocks with a direction in the class, once, in order of their first such cell
   Csr<int32_t> curves;  // count rows: curves of the class, increasing
 };
 
+namespace {
+
+// The classes of edges once every root has a dense class id: the union-find's table then holds
+// for a root -1 - its class (or itself when no cell has that class) and for any other edge its
+// root, so no second per-edge table is needed.
+class EdgeClasses {
+ public:
+  explicit EdgeClasses(UnionFind&& uf) : parent_(std::move(uf.parent)) {}
+  // Class of edge x, numbering its root's class now if it has none yet.
+  int32_t number(int32_t x, int32_t& count) {
+    const int32_t r = root(x);
+    if (parent_[static_cast<size_t>(r)] == r) parent_[static_cast<size_t>(r)] = -1 - count++;
+    return -1 - parent_[static_cast<size_t>(r)];
+  }
+  // Class of edge x, or -1 when no cell has it.
+  int32_t of(int32_t x) const {
+    const int32_t r = root(x);
+    return parent_[static_cast<size_t>(r)] < 0 ? -1 - parent_[static_cast<size_t>(r)] : -1;
+  }
+
+ private:
+  int32_t root(int32_t x) const {
+    while (parent_[static_cast<size_t>(x)] >= 0 && parent_[static_cast<size_t>(x)] != x) x = parent_[static_cast<size_t>(x)];
+    return x;
+  }
+  std::vector<int32_t> parent_;
+};
+
+// The first cell of each block with a direction in each class, as (class, first cell, block):
+// a block has its three classes in every cell (neighbours in a block share them), so a handful
+// per block; more are kept too, in case.
+struct BlockClasses {
+  std::vector<std::array<int32_t, 3>> entries;  // (class, first cell, block)
+  std::vector<std::array<int32_t, 3>> seen;     // per block: its first three classes (-1 = none yet)
+  explicit BlockClasses(size_t nblocks) : seen(nblocks, {-1, -1, -1}) {}
+  void add(int32_t block, int32_t cls, int32_t cell) {
+    auto& s = seen[static_cast<size_t>(block)];
+    for (int32_t& k : s) {
+      if (k == cls) return;
+      if (k < 0) {
+        k = cls;
+        entries.push_back({cls, cell, block});
+        return;
+      }
+    }
+    for (const auto& e : entries)  // a fourth class: look it up the slow way
+      if (e[2] == block && e[0] == cls) return;
+    entries.push_back({cls, cell, block});
+  }
+};
+
+}  // namespace
+
 ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
-  UnionFind uf = join_parallel_edges(m, d);
+  EdgeClasses classes(join_parallel_edges(m, d));
   const size_t nc = m.num_cells();
+  ParallelClasses pc;
+  BlockClasses bc(d.block_cells.rows());
   // Dense class ids in order of first appearance over the cells; a hex cell's three directions
   // are the classes of its first face's two edge directions and of the edge across that face.
-  std::vector<int32_t> class_of_root(m.num_edges(), -1);
-  ParallelClasses pc;
-  std::vector<std::array<int32_t, 3>> dirs(nc, {-1, -1, -1});
   for (size_t c = 0; c < nc; ++c) {
     if (d.cell_block[c] < 0) continue;
     const int32_t f = m.cell_faces[c][0];
-    const int32_t reps[3] = {m.face_edges[f][0], m.face_edges[f][1], orthogonal_edge(m, static_cast<int32_t>(c), f)};
-    for (int k = 0; k < 3; ++k) {
-      const int32_t r = uf.find(reps[k]);
-      if (class_of_root[r] < 0) class_of_root[r] = pc.count++;
-      dirs[c][k] = class_of_root[r];
-    }
+    const int32_t reps[3] = {m.face_edges(static_cast<size_t>(f))[0], m.face_edges(static_cast<size_t>(f))[1],
+                             orthogonal_edge(m, static_cast<int32_t>(c), f)};
+    for (int32_t r : reps) bc.add(d.cell_block[c], classes.number(r, pc.count), static_cast<int32_t>(c));
   }
-  // Blocks of each class by counting sort (cells in increasing order).
-  pc.blocks.offsets.assign(static_cast<size_t>(pc.count) + 1, 0);
-  for (size_t c = 0; c < nc; ++c)
-    if (dirs[c][0] >= 0)
-      for (int32_t k : dirs[c]) ++pc.blocks.offsets[k + 1];
-  for (int32_t k = 0; k < pc.count; ++k) pc.blocks.offsets[k + 1] += pc.blocks.offsets[k];
-  pc.blocks.items.resize(pc.blocks.offsets.back());
-  std::vector<int32_t> fill(pc.blocks.offsets.begin(), pc.blocks.offsets.end() - 1);
-  for (size_t c = 0; c < nc; ++c)
-    if (dirs[c][0] >= 0)
-      for (int32_t k : dirs[c]) pc.blocks.items[fill[k]++] = d.cell_block[c];
+  // Each class's blocks in order of their first cell with it.
+  std::sort(bc.entries.begin(), bc.entries.end());
+  pc.blocks.reserve(static_cast<size_t>(pc.count), bc.entries.size());
+  for (size_t i = 0, k = 0; k < static_cast<size_t>(pc.count); ++k) {
+    for (; i < bc.entries.size() && bc.entries[i][0] == static_cast<int32_t>(k); ++i) pc.blocks.items.push_back(bc.entries[i][2]);
+    pc.blocks.offsets.push_back(static_cast<int32_t>(pc.blocks.items.size()));
+  }
   Csr<int32_t> curve_class;
   for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
-    const int32_t cls = class_of_root[uf.find(d.curve_edges[k][0])];
+    const int32_t cls = classes.of(d.curve_edges[k][0]);
     if (cls >= 0) curve_class.items.push_back(cls);
     curve_class.offsets.push_back(static_cast<int32_t>(curve_class.items.size()));
   }

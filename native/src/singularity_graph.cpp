@@ -7,7 +7,8 @@ namespace hbc {
 void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, const std::vector<int32_t>& value,
                  const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
                  std::vector<uint8_t>& closed) {
-  chain_edges(m.edge_verts, m.vert_edges, member, value, stop, verts, edges, closed);
+  // The walk only ever looks at member edges, so the vertex table needs only them.
+  chain_edges(m.edge_verts, vertex_edges(m, member), member, value, stop, verts, edges, closed);
 }
 
 void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
@@ -125,11 +126,16 @@ SingularityGraph singularity_graph(const Mesh& m) {
   g.edge_irregular.assign(ne, 0);
   std::vector<uint8_t> singular(ne, 0);
   std::vector<int32_t> valence(ne, 0);
+  // Edges of non-hex cells (the cells around an edge are those having it).
+  std::vector<uint8_t> non_hex_edge(ne, 0);
+  for (size_t c = 0; c < m.num_cells(); ++c)
+    if (!m.is_hex(c))
+      for (int32_t f : m.cell_faces[c])
+        for (int32_t e : m.face_edges(static_cast<size_t>(f))) non_hex_edge[static_cast<size_t>(e)] = 1;
   for (size_t e = 0; e < ne; ++e) {
     valence[e] = m.edge_valence(e);
     g.edge_irregular[e] = m.edge_boundary[e] ? valence[e] != 2 : valence[e] != 4;
-    bool non_hex = false;
-    for (int32_t c : m.edge_cells[e]) non_hex = non_hex || !m.is_hex(c);
+    const bool non_hex = non_hex_edge[e] != 0;
     const auto [a, b] = m.edge_verts[e];
     if (non_hex) g.edge_class[e] = EdgeClass::PseudoSingular;
     else if (g.edge_irregular[e]) g.edge_class[e] = EdgeClass::Singular;

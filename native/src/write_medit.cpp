@@ -85,18 +85,20 @@ class ElementBuilder {
   }
   // The neighbor of x along a cell edge whose other end is not among base[0..nb).
   int32_t up(size_t c, int32_t x, const int32_t* base, int nb) const {
-    for (int32_t e : m_.cell_edges[c]) {
-      const auto& ev = m_.edge_verts[e];
-      if (ev[0] != x && ev[1] != x) continue;
-      const int32_t y = ev[0] == x ? ev[1] : ev[0];
-      if (std::find(base, base + nb, y) == base + nb) return y;
-    }
+    for (int32_t f : m_.cell_faces[c])  // the edges of the cell's faces; the answer is unique
+      for (int32_t e : m_.face_edges(static_cast<size_t>(f))) {
+        const auto& ev = m_.edge_verts[static_cast<size_t>(e)];
+        if (ev[0] != x && ev[1] != x) continue;
+        const int32_t y = ev[0] == x ? ev[1] : ev[0];
+        if (std::find(base, base + nb, y) == base + nb) return y;
+      }
     throw std::logic_error("cell type does not match its edges");
   }
   // The one cell vertex not among base[0..nb).
   int32_t apex(size_t c, const int32_t* base, int nb) const {
-    for (int32_t v : m_.cell_verts[c])
-      if (std::find(base, base + nb, v) == base + nb) return v;
+    for (int32_t f : m_.cell_faces[c])
+      for (int32_t v : m_.face_verts[static_cast<size_t>(f)])
+        if (std::find(base, base + nb, v) == base + nb) return v;
     throw std::logic_error("cell type does not match its vertices");
   }
 

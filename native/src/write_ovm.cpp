@@ -42,7 +42,7 @@ std::string ovm_text(const Mesh& m) {
   out += '\n';
   for (size_t f = 0; f < m.num_faces(); ++f) {
     auto loop = m.face_verts[f];
-    auto edges = m.face_edges[f];
+    auto edges = m.face_edges(f);
     append_int(out, static_cast<int64_t>(loop.size()));
     // Edge i runs from loop[i] to loop[i+1]; the odd half-edge when that is against (lo, hi).
     for (size_t i = 0; i < loop.size(); ++i) {

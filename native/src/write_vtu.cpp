@@ -105,14 +105,18 @@ bool vtk_corners(const Mesh& m, size_t c, std::vector<int64_t>& conn, uint8_t& v
   if (t != CellType::Prism) std::reverse(base.begin(), base.end());
   conn.assign(base.begin(), base.end());
   if (t == CellType::Tet || t == CellType::Pyramid) {
-    for (int32_t v : m.cell_verts[c])
+    std::vector<int32_t> vs;
+    cell_vertices(m, c, vs);
+    for (int32_t v : vs)
       if (std::find(base.begin(), base.end(), v) == base.end()) conn.push_back(v);
     vtk_type = t == CellType::Tet ? 10 : 14;
     return conn.size() == base.size() + 1;
   }
   // Hex and prism: above each base corner the corner joined to it by an edge off the base.
+  std::vector<int32_t> es;
+  cell_edges(m, c, es);
   for (int32_t b : base)
-    for (int32_t e : m.cell_edges[c]) {
+    for (int32_t e : es) {
       const auto& ev = m.edge_verts[static_cast<size_t>(e)];
       if (ev[0] != b && ev[1] != b) continue;
       const int32_t u = m.other_vertex(e, b);
@@ -186,7 +190,7 @@ std::string vtu_cells_text(const Mesh& m, const Analysis& a, const VtuExportOpti
   const size_t nc = m.num_cells();
   std::vector<int64_t> conn, offsets, faces, faceoffsets, corners, loop64;
   std::vector<uint8_t> types(nc);
-  std::vector<int32_t> loop;
+  std::vector<int32_t> loop, scratch;
   // meshio (and other readers) cannot mix VTK_POLYHEDRON with other cell types: with any general
   // polyhedron every cell is written as one (cell_type still names what it is).
   const bool any_poly = std::find(m.cell_type.begin(), m.cell_type.end(), CellType::Polyhedron) != m.cell_type.end();
@@ -197,7 +201,8 @@ std::string vtu_cells_text(const Mesh& m, const Analysis& a, const VtuExportOpti
     } else {
       // Face stream: face count, then each outward loop with its length.
       types[c] = 42;
-      for (int32_t v : m.cell_verts[c]) conn.push_back(v);
+      cell_vertices(m, c, scratch);
+      conn.insert(conn.end(), scratch.begin(), scratch.end());
       const size_t nf = static_cast<size_t>(m.cell_faces.count(c));
       faces.push_back(static_cast<int64_t>(nf));
       for (size_t i = 0; i < nf; ++i) {

@@ -22,8 +22,9 @@ std::string formats_path(const std::string& rel) { return std::string(HBC_FORMAT
 std::string formats_file(const std::string& rel) { return read_file_bytes(formats_path(rel)); }
 
 // Signed volume of cell c of a reader's output, with each face loop as the cell sees it: positive
-// when the loops face out of the cell.
+// when the loops face out of the cell. `in` holds a face soup (see with_face_soup).
 double signed_volume(const MeshInput& in, size_t c) {
+  EXPECT_TRUE(in.cell_shape.empty()) << "element cells: take with_face_soup of the reader's output";
   double vol = 0;
   for (int32_t hf : in.cells[c]) {
     auto loop = in.faces[static_cast<size_t>(hf / 2)];
@@ -70,7 +71,7 @@ TEST(FormatsRealTools, EveryCellFacesOutAsRead) {
   for (const char* f : kRealFiles) {
     SCOPED_TRACE(f);
     const std::string path = formats_path(std::string("real/") + f);
-    const MeshInput in = read_input(path);
+    const MeshInput in = with_face_soup(read_input(path));
     ASSERT_EQ(in.cells.rows(), 110u);
     for (size_t c = 0; c < in.cells.rows(); ++c) ASSERT_GT(signed_volume(in, c), 0) << "cell " << c;
   }
@@ -90,9 +91,9 @@ TEST(FormatsRealTools, SurfaceElementsAreSkippedAndCounted) {
 
 TEST(FormatsCorners, APrismInEachFormatsOwnOrderFacesOutward) {
   // The prism over the unit right triangle, height 1: volume 1/2 when every loop faces out.
-  const MeshInput medit = read_medit(formats_file("prism.mesh"), "prism.mesh");
-  const MeshInput msh = read_msh(formats_file("prism_gmsh.msh"), "prism_gmsh.msh");
-  const MeshInput vtk = read_vtk(formats_file("prism_vtk.vtk"), "prism_vtk.vtk");
+  const MeshInput medit = with_face_soup(read_medit(formats_file("prism.mesh"), "prism.mesh"));
+  const MeshInput msh = with_face_soup(read_msh(formats_file("prism_gmsh.msh"), "prism_gmsh.msh"));
+  const MeshInput vtk = with_face_soup(read_vtk(formats_file("prism_vtk.vtk"), "prism_vtk.vtk"));
   EXPECT_DOUBLE_EQ(signed_volume(medit, 0), 0.5);
   EXPECT_DOUBLE_EQ(signed_volume(msh, 0), 0.5);
   EXPECT_DOUBLE_EQ(signed_volume(vtk, 0), 0.5);
@@ -100,7 +101,7 @@ TEST(FormatsCorners, APrismInEachFormatsOwnOrderFacesOutward) {
   // The Gmsh corner order under VTK's wedge type is the prism turned inside out.
   std::string wrong = formats_file("prism_vtk.vtk");
   wrong.replace(wrong.find("6 0 2 1 3 5 4"), 13, "6 0 1 2 3 4 5");
-  EXPECT_DOUBLE_EQ(signed_volume(read_vtk(wrong, "wrong.vtk"), 0), -0.5);
+  EXPECT_DOUBLE_EQ(signed_volume(with_face_soup(read_vtk(wrong, "wrong.vtk")), 0), -0.5);
 }
 
 TEST(FormatsCorners, AHexahedronWithRepeatedCornersIsMeditsPolyhedron) {
@@ -122,7 +123,7 @@ TEST(FormatsMsh, EntityBlocksTagGapsAndASecondOrderHexahedron) {
   ASSERT_EQ(m.num_cells(), 2u);
   EXPECT_EQ(m.num_hex_cells(), 2u);
   EXPECT_EQ(m.num_faces(), 11u);  // two cubes sharing one face
-  EXPECT_DOUBLE_EQ(signed_volume(in, 1), 1.0);
+  EXPECT_DOUBLE_EQ(signed_volume(with_face_soup(in), 1), 1.0);
   ASSERT_EQ(m.warnings.size(), 1u);
   EXPECT_NE(m.warnings[0].find("1 surface element(s)"), std::string::npos);
 }
@@ -130,8 +131,8 @@ TEST(FormatsMsh, EntityBlocksTagGapsAndASecondOrderHexahedron) {
 TEST(FormatsVtk, FieldDataPointAndCellDataAreReadPast) {
   const MeshInput in = read_vtk(formats_file("field_data.vtk"), "field_data.vtk");
   ASSERT_EQ(in.cells.rows(), 2u);  // the triangle is skipped
-  EXPECT_DOUBLE_EQ(signed_volume(in, 0), 1.0 / 6);
-  EXPECT_DOUBLE_EQ(signed_volume(in, 1), 1.0 / 6);
+  EXPECT_DOUBLE_EQ(signed_volume(with_face_soup(in), 0), 1.0 / 6);
+  EXPECT_DOUBLE_EQ(signed_volume(with_face_soup(in), 1), 1.0 / 6);
   const Mesh m = build_mesh(in);
   EXPECT_EQ(m.num_faces(), 7u);  // two tets sharing a face
   ASSERT_EQ(m.warnings.size(), 1u);
@@ -248,8 +249,8 @@ std::vector<VtuArray> poly_arrays() {
 TEST(FormatsVtu, EveryDataEncodingReadsAsTheAsciiFile) {
   const MeshInput ascii = read_vtu(formats_file("poly.vtu"), "poly.vtu");
   ASSERT_EQ(ascii.cells.rows(), 2u);
-  EXPECT_DOUBLE_EQ(signed_volume(ascii, 0), 1.0);
-  EXPECT_DOUBLE_EQ(signed_volume(ascii, 1), 1.0);  // the face list as written faces out
+  EXPECT_DOUBLE_EQ(signed_volume(with_face_soup(ascii), 0), 1.0);
+  EXPECT_DOUBLE_EQ(signed_volume(with_face_soup(ascii), 1), 1.0);  // the face list as written faces out
   const Mesh m = build_mesh(ascii);
   EXPECT_EQ(m.num_hex_cells(), 2u);  // the polyhedral cube is a hexahedron by its faces
   const std::vector<VtuMode> modes = {
@@ -272,7 +273,7 @@ void expect_export_round_trip(const Mesh& m, bool ascii) {
   const Analysis a = analyze(m);
   VtuExportOptions o;
   o.ascii = ascii;
-  const MeshInput back = read_vtu(vtu_cells_text(m, a, o), "export.vtu");
+  const MeshInput back = with_face_soup(read_vtu(vtu_cells_text(m, a, o), "export.vtu"));
   ASSERT_EQ(back.cells.rows(), m.num_cells());
   for (size_t c = 0; c < m.num_cells(); ++c) ASSERT_GT(signed_volume(back, c), 0) << "cell " << c;
   const Mesh mb = build_mesh(back);

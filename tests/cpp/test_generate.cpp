@@ -25,7 +25,7 @@ namespace {
 // Signed volume of a cell from its face loops as the cell sees them (fan triangles, origin at
 // the first vertex of the cell): positive when the loops point outward.
 double cell_volume(const Mesh& m, size_t c) {
-  const double* o = &m.points[3 * static_cast<size_t>(m.cell_verts[c][0])];
+  const double* o = &m.points[3 * static_cast<size_t>(test::cell_verts(m, c)[0])];
   double vol = 0;
   for (int32_t i = m.cell_faces.offsets[c]; i < m.cell_faces.offsets[c + 1]; ++i) {
     auto loop = m.face_verts[m.cell_faces.items[i]];
@@ -86,7 +86,7 @@ double expect_positive(const Mesh& m) {
 
 void expect_no_non_manifold(const Mesh& m) {
   for (size_t v = 0; v < m.num_vertices(); ++v) ASSERT_FALSE(m.vert_non_manifold[v]) << m.source << " vertex " << v;
-  for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok[e]) << m.source << " edge " << e;
+  for (size_t e = 0; e < m.num_edges(); ++e) ASSERT_TRUE(m.edge_fan_ok(e)) << m.source << " edge " << e;
 }
 
 // The centre cell (1,1,1) of a 3x3x3 grid split by `kind` (prisms along `axis`): the counts each
@@ -137,7 +137,7 @@ TEST(Generate, GridNumberingAndSpacing) {
   EXPECT_DOUBLE_EQ(in.points[3 * 21 + 2], 0.5);
   const Mesh m = build_mesh(in);
   // Cell (i,j,l) = i + 3(j + 2l): cell 10 = (1,1,1) spans vertices with x in {0.5,1}, y in {0.5,1}.
-  for (int32_t v : m.cell_verts[10]) {
+  for (int32_t v : test::cell_verts(m, 10)) {
     const double x = m.points[3 * v], y = m.points[3 * v + 1], z = m.points[3 * v + 2];
     EXPECT_TRUE(x == 0.5 || x == 1.0);
     EXPECT_TRUE(y == 0.5 || y == 1.0);
@@ -146,19 +146,13 @@ TEST(Generate, GridNumberingAndSpacing) {
   EXPECT_NEAR(expect_positive(m), 12 * 0.125, 1e-12);
 }
 
-TEST(Generate, MillionCellGridIsFast) {
-  const auto t0 = std::chrono::steady_clock::now();
+TEST(Generate, MillionCellGrid) {
+  // Its speed is the load benchmark's business (scripts/bench.sh); here, the counts.
   const MeshInput in = generate_grid(100, 100, 100);
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(in.cells.rows(), 1000000u);
   EXPECT_EQ(in.points.size(), 3u * 101 * 101 * 101);
   // F = 3 * 101 * 100 * 100.
   EXPECT_EQ(in.faces.rows(), 3030000u);
-#if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)
-  GTEST_SKIP() << "timing checked in optimised builds only (took " << s << " s)";
-#else
-  EXPECT_LT(s, 1.0) << "generating 10^6 hexes took " << s << " s";
-#endif
 }
 
 TEST(Generate, SplitPyramidsKeepsNeighboursHex) {
@@ -437,7 +431,7 @@ namespace {
 // diagonal of the section, of its circle).
 double cell_radius(const Mesh& m, size_t c) {
   double x = 0, y = 0;
-  const auto vs = m.cell_verts[c];
+  const std::vector<int32_t> vs = test::cell_verts(m, c);
   for (int32_t v : vs) x += m.points[3 * static_cast<size_t>(v)], y += m.points[3 * static_cast<size_t>(v) + 1];
   return std::hypot(x, y) / static_cast<double>(vs.size());
 }

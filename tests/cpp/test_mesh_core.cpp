@@ -21,8 +21,10 @@ TEST(MeshCore, TwoCubesTopology) {
   for (size_t f = 0; f < m.num_faces(); ++f) interior += !m.face_boundary[f];
   EXPECT_EQ(interior, 1);
   for (size_t e = 0; e < m.num_edges(); ++e) {
-    EXPECT_TRUE(m.edge_fan_ok[e]);
-    EXPECT_EQ(m.edge_faces.count(e), m.edge_cells.count(e) + 1) << "boundary fan is a path";
+    EXPECT_TRUE(m.edge_fan_ok(e));
+    const EdgeFan fan = test::fan_of(m, e);
+    EXPECT_EQ(fan.faces.size(), fan.cells.size() + 1) << "boundary fan is a path";
+    EXPECT_EQ(m.edge_valence(e), static_cast<int32_t>(fan.cells.size()));
   }
   for (size_t v = 0; v < m.num_vertices(); ++v) EXPECT_FALSE(m.vert_non_manifold[v]);
 }

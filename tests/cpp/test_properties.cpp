@@ -35,8 +35,9 @@ Case random_split(std::mt19937& rng) {
   return {name.str(), generate_split(n, m, k, kind, cells, axis)};
 }
 
-bool is_mesh_edge(const Mesh& m, int32_t a, int32_t b) {
-  for (int32_t e : m.vert_edges[a])
+// ve = vertex_edges(m).
+bool is_mesh_edge(const Mesh& m, const Csr<int32_t>& ve, int32_t a, int32_t b) {
+  for (int32_t e : ve[static_cast<size_t>(a)])
     if (m.other_vertex(e, a) == b) return true;
   return false;
 }
@@ -86,7 +87,7 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
   size_t singular = 0;
   for (size_t e = 0; e < m.num_edges(); ++e) {
     bool all_hex = true;
-    for (int32_t c : m.edge_cells[e]) all_hex = all_hex && m.is_hex(c);
+    for (int32_t c : test::fan_of(m, e).cells) all_hex = all_hex && m.is_hex(c);
     const EdgeClass k = g.edge_class[e];
     if (k == EdgeClass::Singular) {
       ++singular;
@@ -119,11 +120,12 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
   // Wireframe: polylines follow mesh edges, opacities in [floor, 1].
   ASSERT_TRUE(a.wireframe_stage.has_value());
   const VsgWireframe& w = a.wireframe_stage->wireframe;
+  const Csr<int32_t> ve = vertex_edges(m);
   for (size_t i = 0; i < w.size(); ++i) {
     const auto p = w.polylines[i];
     EXPECT_GE(p.size(), 2u) << "wire edge " << i;
     for (size_t j = 1; j < p.size(); ++j)
-      EXPECT_TRUE(is_mesh_edge(m, p[j - 1], p[j])) << "wire edge " << i << " step " << j;
+      EXPECT_TRUE(is_mesh_edge(m, ve, p[j - 1], p[j])) << "wire edge " << i << " step " << j;
   }
   ASSERT_EQ(w.style.point_opacity.size(), w.polylines.items.size());
   const float floor = static_cast<float>(opt.wireframe_options.opacity_floor);

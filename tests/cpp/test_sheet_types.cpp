@@ -52,11 +52,7 @@ std::vector<Loop> hex(const std::array<int32_t, 4>& a, const std::array<int32_t,
           {a[1], a[2], b[2], b[1]}, {a[2], a[3], b[3], b[2]}, {a[3], a[0], b[0], b[3]}};
 }
 
-int32_t edge_id(const Mesh& m, int32_t a, int32_t b) {
-  for (int32_t e : m.vert_edges[a])
-    if (m.other_vertex(e, a) == b) return e;
-  return -1;
-}
+int32_t edge_id(const Mesh& m, int32_t a, int32_t b) { return test::edge_between(m, a, b); }
 
 // A sheet (or subsheet) in numbering-free terms, mapped through vertex / cell maps.
 struct SheetView {

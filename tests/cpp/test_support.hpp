@@ -44,8 +44,59 @@ inline Renumbering random_renumbering(const Mesh& m, std::mt19937& rng) {
   return out;
 }
 
+// The derived incidences of a Mesh as values, for assertions.
+inline std::vector<int32_t> cell_verts(const Mesh& m, size_t c) {
+  std::vector<int32_t> v;
+  cell_vertices(m, c, v);
+  return v;
+}
+inline std::vector<int32_t> cell_edge_ids(const Mesh& m, size_t c) {
+  std::vector<int32_t> v;
+  cell_edges(m, c, v);
+  return v;
+}
+inline EdgeFan fan_of(const Mesh& m, size_t e) {
+  EdgeFan f;
+  edge_fan(m, static_cast<int32_t>(e), f);
+  return f;
+}
+// The edge joining vertices a and b, or -1.
+inline int32_t edge_between(const Mesh& m, int32_t a, int32_t b) {
+  for (size_t e = 0; e < m.num_edges(); ++e)
+    if (m.edge_verts[e] == std::array<int32_t, 2>{std::min(a, b), std::max(a, b)}) return static_cast<int32_t>(e);
+  return -1;
+}
+
+// Every array of two meshes is equal, numbering included, and so is every incidence derived from
+// them (edge fans in their order, the vertices and edges of each cell); with `counts`, also what
+// was dropped and the warnings.
+inline void expect_same_mesh(const Mesh& a, const Mesh& b, bool counts = true) {
+#define HBC_SAME(x) EXPECT_EQ(a.x, b.x) << #x
+  HBC_SAME(points); HBC_SAME(edge_verts);
+  HBC_SAME(face_verts.offsets); HBC_SAME(face_verts.items); HBC_SAME(face_edge_ids); HBC_SAME(face_cells);
+  HBC_SAME(cell_faces.offsets); HBC_SAME(cell_faces.items); HBC_SAME(cell_face_flip);
+  HBC_SAME(fan_start); HBC_SAME(odd_fan_faces.offsets); HBC_SAME(odd_fan_faces.items); HBC_SAME(valence_small);
+  HBC_SAME(vert_boundary); HBC_SAME(edge_boundary); HBC_SAME(face_boundary);
+  HBC_SAME(cell_type); HBC_SAME(vert_non_manifold);
+  if (counts) {
+    HBC_SAME(dropped_faces); HBC_SAME(dropped_edges); HBC_SAME(warnings);
+  }
+#undef HBC_SAME
+  if (a.num_edges() != b.num_edges() || a.num_cells() != b.num_cells()) return;
+  for (size_t e = 0; e < a.num_edges(); ++e) {
+    const EdgeFan fa = fan_of(a, e), fb = fan_of(b, e);
+    ASSERT_EQ(fa.faces, fb.faces) << "edge " << e;
+    ASSERT_EQ(fa.cells, fb.cells) << "edge " << e;
+  }
+  for (size_t c = 0; c < a.num_cells(); ++c) {
+    ASSERT_EQ(cell_verts(a, c), cell_verts(b, c)) << "cell " << c;
+    ASSERT_EQ(cell_edge_ids(a, c), cell_edge_ids(b, c)) << "cell " << c;
+  }
+}
+
 // The same points, faces and cells (numbering included) in two reader or generator outputs.
 inline void expect_same_cells(const MeshInput& a, const MeshInput& b) {
+  EXPECT_EQ(a.cell_shape, b.cell_shape);
   EXPECT_EQ(a.points, b.points);
   EXPECT_EQ(a.faces.offsets, b.faces.offsets);
   EXPECT_EQ(a.faces.items, b.faces.items);

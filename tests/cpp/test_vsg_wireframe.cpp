@@ -217,7 +217,7 @@ TEST(VsgWireframe, RegionCountsValenceInsideTheRegion) {
   const Mesh m = grid_mesh(4);
   std::vector<int32_t> cells;
   for (size_t c = 0; c < m.num_cells(); ++c)
-    if (m.points[3 * m.cell_verts[c][0] + 2] < 2) cells.push_back(static_cast<int32_t>(c));
+    if (m.points[3 * test::cell_verts(m, c)[0] + 2] < 2) cells.push_back(static_cast<int32_t>(c));
   const CellComplex cx = complex_from_mesh(m, cells);
   EXPECT_EQ(cx.num_cells(), 32u);
   const VsgWireframe w = vsg_wireframe(cx);
@@ -233,13 +233,14 @@ std::vector<int32_t> hop_distances(const Mesh& m) {
   const SingularityGraph g = singularity_graph(m);
   for (size_t e = 0; e < m.num_edges(); ++e) {
     bool src = g.edge_irregular[e];
-    for (int32_t c : m.edge_cells[e]) src = src || !m.is_hex(c);
+    for (int32_t c : test::fan_of(m, e).cells) src = src || !m.is_hex(c);
     if (!src) continue;
     for (int32_t v : m.edge_verts[e])
       if (d[v] < 0) d[v] = 0, queue.push_back(v);
   }
+  const Csr<int32_t> vert_edges = vertex_edges(m);
   for (size_t q = 0; q < queue.size(); ++q)
-    for (int32_t e : m.vert_edges[queue[q]]) {
+    for (int32_t e : vert_edges[queue[q]]) {
       const int32_t u = m.other_vertex(e, queue[q]);
       if (d[u] < 0) d[u] = d[queue[q]] + 1, queue.push_back(u);
     }

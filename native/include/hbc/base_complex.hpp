@@ -62,11 +62,9 @@ struct BaseComplex {
 
 BaseComplex base_complex(const Mesh& mesh, const SingularityGraph& graph);
 
-// Index of face f in the fan of edge e (mesh.edge_faces[e]), or -1.
-int32_t fan_position(const Mesh& mesh, int32_t e, int32_t f);
 // The straight continuation of face f across edge e: the face around e sharing no cell with f,
 // defined when e's fan is manifold, all-hex and regular (4 faces inside, 3 on the boundary).
-// Returns -1 otherwise.
-int32_t straight_face(const Mesh& mesh, int32_t e, int32_t f);
+// Returns -1 otherwise. `scratch` holds the fan where it has to be walked.
+int32_t straight_face(const Mesh& mesh, int32_t e, int32_t f, EdgeFan& scratch);
 
 }  // namespace hbc

@@ -3,6 +3,7 @@
 // what a reader found in a file (MeshInput) into it, checking that it is a conforming mesh.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -14,44 +15,68 @@ namespace hbc {
 enum class CellType : uint8_t { Hex = 0, Tet = 1, Prism = 2, Pyramid = 3, Polyhedron = 4 };
 const char* cell_type_name(CellType t);
 
-// What a reader produces: vertex positions, a polygon soup and cells referring to it. Faces may be
-// listed twice (one copy per cell, as .HYBRID files do) or not be used by any cell; the builder
-// merges faces with the same vertex set and drops unused ones.
+// How a MeshInput row describes a cell: as references to faces of the polygon soup, or as the
+// corners of one of the standard elements in MEDIT's corner order (hex 0-3 bottom, 4-7 top, the
+// bottom's right-hand normal pointing into the cell; prism 0-2 bottom, 3-5 top, same rule;
+// pyramid 0-3 base, normal towards the apex 4; tet with 0-1-2 counter-clockwise seen from 3).
+// Element-list formats give corners, which spares the loader a face soup six times the size.
+enum class CellShape : uint8_t { Faces = 0, Tet = 1, Pyramid = 2, Prism = 3, Hex = 4 };
+// 4, 5, 6, 8; 0 for Faces.
+inline int corner_count(CellShape s) {
+  constexpr int kCorners[5] = {0, 4, 5, 6, 8};
+  return kCorners[static_cast<int>(s)];
+}
+
+// What a reader produces: vertex positions, a polygon soup and cells referring to it (or giving
+// their corners, see CellShape). Faces may be listed twice (one copy per cell, as .HYBRID files
+// do) or not be used by any cell; the builder merges faces with the same vertex set and drops
+// unused ones.
 struct MeshInput {
   std::string source;               // file name, for messages
   bool binary = false;              // locations below are byte offsets instead of lines
   std::vector<double> points;       // 3 * nv, x y z per vertex
   Csr<int32_t> faces;               // nf rows: vertex loop of each face (0-based vertex ids)
-  Csr<int32_t> cells;               // nc rows: 2*face + flip, flip = 1 when the cell sees the loop reversed
+  // nc rows. A Faces cell lists 2*face + flip (flip = 1 when the cell sees the loop reversed);
+  // an element lists its corner_count(shape) distinct vertex ids.
+  Csr<int32_t> cells;
+  std::vector<CellShape> cell_shape;  // nc, or empty when every cell is a Faces cell
   std::vector<std::array<int32_t, 2>> declared_edges;  // edges a file lists explicitly (OVM), if any
   std::vector<int64_t> vertex_loc, face_loc, cell_loc;  // where each element is in the file (may be empty)
   std::vector<std::string> warnings;  // what the reader read past (e.g. surface elements); build_mesh keeps them
 
+  CellShape shape(size_t c) const { return cell_shape.empty() ? CellShape::Faces : cell_shape[c]; }
   SourceLoc loc_of(const std::vector<int64_t>& locs, size_t i) const {
     if (i >= locs.size()) return {};
     return binary ? SourceLoc::at_byte(locs[i]) : SourceLoc::at_line(locs[i]);
   }
 };
 
+// `in` with every element turned into Faces cells over new soup faces (the element's face
+// loops, outward in MEDIT's convention), numbered in cell order; Faces cells keep their faces.
+MeshInput with_face_soup(MeshInput in);
+
+// The conforming polyhedral volume mesh in flat index arrays (32-bit ids). Only incidences that
+// cannot be derived cheaply are stored; the others are functions below (edge fans, the vertices
+// and edges of a cell), so that a 10^6-cell mesh takes about 240 bytes a cell.
 struct Mesh {
   std::string source;
   std::vector<double> points;                       // 3 * nv
 
   std::vector<std::array<int32_t, 2>> edge_verts;   // ne, (lo, hi) with lo < hi
   Csr<int32_t> face_verts;                          // nf, vertex loop
-  Csr<int32_t> face_edges;                          // nf, edge i joins loop vertices i and i+1
+  std::vector<int32_t> face_edge_ids;               // aligned with face_verts.items: see face_edges()
   std::vector<std::array<int32_t, 2>> face_cells;   // nf, second = -1 on the boundary
   Csr<int32_t> cell_faces;                          // nc, face ids
   std::vector<uint8_t> cell_face_flip;              // aligned with cell_faces.items: 1 = loop seen reversed
-  Csr<int32_t> cell_verts;                          // nc, sorted vertex ids
-  Csr<int32_t> cell_edges;                          // nc, sorted edge ids
 
-  Csr<int32_t> vert_edges, vert_faces, vert_cells;  // sorted ids
-  // Faces and cells around each edge in cyclic order where the fan is manifold: f0 c0 f1 c1 ...,
-  // with c_i between f_i and f_{i+1}. On the boundary the fan starts at a boundary face and
-  // edge_cells has one entry fewer than edge_faces.
-  Csr<int32_t> edge_faces, edge_cells;
-  std::vector<uint8_t> edge_fan_ok;                 // 1 when the cyclic order above is well defined
+  // Edge fans, walked by edge_fan(). Where the faces and cells around edge e have a cyclic order
+  // (the fan is "ok": a cycle, or on the boundary a path between two boundary faces), fan_start[e]
+  // is the face the walk starts from: the lowest-numbered boundary face at e, else the
+  // lowest-numbered face at e. Otherwise fan_start[e] = -1 - r, and row r of odd_fan_faces lists
+  // the faces at e (sorted).
+  std::vector<int32_t> fan_start;                   // ne
+  Csr<int32_t> odd_fan_faces;                       // one row per edge without a cyclic fan
+  std::vector<uint8_t> valence_small;               // ne, cells around e; 255 = 255 or more (counted)
 
   std::vector<uint8_t> vert_boundary, edge_boundary, face_boundary;
   std::vector<CellType> cell_type;
@@ -66,14 +91,36 @@ struct Mesh {
   size_t num_faces() const { return face_verts.rows(); }
   size_t num_cells() const { return cell_faces.rows(); }
   bool is_hex(size_t c) const { return cell_type[c] == CellType::Hex; }
-  int32_t edge_valence(size_t e) const { return edge_cells.count(e); }
-  int32_t vert_valence(size_t v) const { return vert_cells.count(v); }
+  // Edge i of face f joins its loop vertices i and i+1.
+  std::span<const int32_t> face_edges(size_t f) const {
+    return {face_edge_ids.data() + face_verts.offsets[f], static_cast<size_t>(face_verts.count(f))};
+  }
+  bool edge_fan_ok(size_t e) const { return fan_start[e] >= 0; }
+  int32_t edge_valence(size_t e) const;  // cells around edge e
   size_t num_hex_cells() const;
   // The other endpoint of edge e.
   int32_t other_vertex(int32_t e, int32_t v) const {
     return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0];
   }
 };
+
+// The faces and cells around edge e. Where the fan is ok they come in cyclic order f0 c0 f1 c1 ...,
+// with c_i between f_i and f_{i+1}, starting at fan_start[e] and its first cell face_cells[f0][0];
+// on the boundary the fan is a path from one boundary face to the other and has one cell fewer
+// than faces. Otherwise both are sorted (each cell once). Reuse one EdgeFan for many edges: its
+// vectors keep their room.
+struct EdgeFan {
+  std::vector<int32_t> faces, cells;
+};
+void edge_fan(const Mesh& m, int32_t e, EdgeFan& out);
+
+// The vertices / edges of cell c, sorted, each once, written over `out`.
+void cell_vertices(const Mesh& m, size_t c, std::vector<int32_t>& out);
+void cell_edges(const Mesh& m, size_t c, std::vector<int32_t>& out);
+
+// Edges at each vertex (sorted ids): the transpose of edge_verts, built for the stages that walk
+// from vertex to vertex. `keep` (ne flags, or empty for every edge) restricts it to some edges.
+Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep = {});
 
 // How to load: threads = how many threads may split the work (results are identical for any
 // number); 0 means the environment variable HBC_THREADS when it holds a positive number, else

@@ -1,11 +1,16 @@
 #pragma once
 // The steps of build_mesh, in the order it runs them; exposed so that each can be tested on
 // hand-built cells. Each step fills the Mesh arrays named in its comment from the ones the
-// steps before it filled. `par` is resolved (see hbc::resolved); results do not depend on it. Errors name in.source
-// and the line of the offending cell (in.cell_loc).
+// steps before it filled. `par` is resolved (see hbc::resolved); results do not depend on it.
+// Errors name in.source and the line of the offending cell (in.cell_loc).
 //
-// A face slot k is a position in face_verts.items (= face_edges.items): the corner of face
-// slot_face[k] whose edge runs from face_verts.items[k] to the next vertex of the loop.
+// A slot is one face of one cell: cell c's slots are cell_faces.offsets[c] .. offsets[c+1]-1,
+// its soup faces in row order for a Faces cell, its template faces for an element. A corner k is
+// a position in face_verts.items (= face_edge_ids): vertex face_verts.items[k] of its face, and
+// the edge from it to the next vertex of the loop.
+//
+// No step keeps a table per slot or corner beyond the Mesh's own arrays: the pairing of a cell's
+// faces along its edges is worked out cell by cell, where it is needed, in a few dozen entries.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -19,48 +24,51 @@ namespace hbc::mesh_steps {
 std::string loop_text(std::span<const int32_t> loop);
 
 // Range, finiteness and polygon checks of what a reader produced.
-void validate_input(const MeshInput& in);
+void validate_input(const MeshInput& in, const LoadOptions& par);
 
-// face_verts, cell_faces, cell_face_flip, face_cells, dropped_faces (+ warning). Input faces with
-// the same vertex set become one face, numbered in order of first use by a cell and keeping the
-// loop of that first use. Throws for a cell listing a face twice or a face in 3+ cells.
-// Consumes in.faces and in.cells.
+// face_verts, cell_faces, cell_face_flip, face_cells, dropped_faces (+ warning). Slots with the
+// same vertex set become one face, numbered in order of first use by a cell (slot order) and
+// keeping the loop of that first use. Throws for a cell listing a face twice or a face in 3+
+// cells. Consumes in.faces and in.cells.
 void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par);
 
-// slot_face[k] = the face of slot k; size face_verts.items.size().
-std::vector<int32_t> slot_faces(const Mesh& m, const LoadOptions& par);
+// edge_verts, face_edge_ids: edges numbered in order of first appearance along the face loops
+// (corner order). fan_start[e] = the lowest boundary face at e where there is one, else the
+// lowest face at e. Returns how many faces, and boundary faces, each edge is in.
+struct EdgeFaceCount {
+  int32_t faces = 0;
+  uint8_t boundary_faces = 0;  // up to 255 counted; more make the fan odd anyway
+};
+std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par);
 
-// edge_verts, face_edges: edges numbered in order of first appearance along the face loops.
-void build_edges(Mesh& m, const std::vector<int32_t>& slot_face, const LoadOptions& par);
+// One pass over the cells. Checks that each is closed (each of its edges in exactly two of its
+// faces); makes its loops agree (neighbouring faces walk their shared edge in opposite
+// directions), keeping the direction the file gave its first face; sets cell_type; marks
+// vert_non_manifold where a cell meets a vertex in fewer than 3 of its faces. An element cell
+// (see CellShape) is all of that by construction and only gets its volume.
+struct CellCheck {
+  std::vector<double> volume;       // signed volume (x6) as now oriented; 0 where loops cannot agree
+  bool faces_shared_twice = false;  // some cell has two faces with the same cell beyond
+  std::vector<int32_t> pinched;     // vertices where one polyhedral cell's faces form several cycles
+};
+CellCheck check_cells(Mesh& m, const MeshInput& in, const LoadOptions& par);
 
-// cell_verts and cell_edges (sorted), after checking each cell is closed (each of its edges in
-// exactly two of its faces). Returns partner: partner[2k + side] = 2k' + side', where k' is the
-// slot of the other face of the same cell at the edge of slot k, and side (side') tells on which
-// side of face slot_face[k] (slot_face[k']) that cell lies (0: face_cells[f][0], 1: [1]).
-std::vector<int32_t> cell_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par);
-
-// cell_face_flip made consistent: within each cell (neighbouring faces walk their shared edge in
-// opposite directions), across cells (a shared face seen in opposite directions), and each
-// face-connected group turned to a positive total signed volume. Tangled cells thus keep a
-// negative volume; a cell that cannot be oriented keeps what the file said.
-void orient_cells(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face,
-                  const LoadOptions& par);
+// Makes face-neighbouring cells see their shared face in opposite directions and turns each
+// face-connected group to a positive total volume, so that tangled cells keep a negative volume.
+void orient_groups(Mesh& m, std::vector<double>& cell_vol, const LoadOptions& par);
 
 // face_boundary, edge_boundary, vert_boundary.
 void mark_boundary(Mesh& m);
 
-// edge_faces, edge_cells, edge_fan_ok (see Mesh).
-void edge_fans(Mesh& m, const std::vector<int32_t>& partner, const std::vector<int32_t>& slot_face,
-               const LoadOptions& par);
-
-// vert_edges, vert_faces, vert_cells; then dropped_edges (+ warning) for in.declared_edges
-// that no face uses.
-void vertex_incidences(Mesh& m, const MeshInput& in, const LoadOptions& par);
-
-// cell_type, and vert_non_manifold = 1 where a cell meets a vertex in fewer than 3 faces.
-void cell_types(Mesh& m, const LoadOptions& par);
+// odd_fan_faces and valence_small (see Mesh); fan_start of the edges without a cyclic fan.
+// Most fans are known to be cyclic from their counts alone (see mesh_fans.cpp); the others are
+// walked.
+void edge_fans(Mesh& m, const std::vector<EdgeFaceCount>& counts, const CellCheck& cells, const LoadOptions& par);
 
 // vert_non_manifold = 1 also where the cells around a vertex are not one face-connected group.
-void non_manifold_vertices(Mesh& m, const LoadOptions& par);
+void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& par);
+
+// dropped_edges (+ warning): in.declared_edges that no face uses.
+void drop_declared_edges(Mesh& m, const MeshInput& in);
 
 }  // namespace hbc::mesh_steps

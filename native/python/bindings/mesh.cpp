@@ -12,6 +12,12 @@ namespace hbc::python {
 
 namespace {
 
+// Rows sharing another CSR's offsets (def_csr reads .offsets and .items).
+struct RowsOf {
+  const std::vector<int32_t>& offsets;
+  const std::vector<int32_t>& items;
+};
+
 static_assert(sizeof(CellType) == 1, "cell_types is exposed as uint8");
 static_assert(sizeof(std::array<int32_t, 2>) == 2 * sizeof(int32_t), "pairs are exposed as (n, 2)");
 
@@ -113,7 +119,8 @@ void bind_mesh(py::module_& mod) {
 
   def_csr(cls, "face_vertices", [](const PyMesh& p) -> auto& { return p.mesh.face_verts; }, "nf",
           "the vertex loop of each face.");
-  def_csr(cls, "face_edges", [](const PyMesh& p) -> auto& { return p.mesh.face_edges; }, "nf",
+  // Stored as items aligned with face_vertices_items; the offsets are those of face_vertices.
+  def_csr(cls, "face_edges", [](const PyMesh& p) { return RowsOf{p.mesh.face_verts.offsets, p.mesh.face_edge_ids}; }, "nf",
           "aligned with face_vertices_items: entry i of a face is the edge joining its loop vertices i and i+1.");
   pair_view(cls, "face_cells", [](const Mesh& m) -> auto& { return m.face_cells; },
             "int32 (nf, 2): the cells on both sides of each face; column 1 is -1 on the boundary.");

@@ -1,0 +1,64 @@
+// The steps of build_mesh one by one (hbc/mesh_steps.hpp) on $HBC_BENCH_FILE, after reading it:
+// wall seconds per step as counters (mean over iterations), to see where a load spends its time
+// and how each step uses the threads (HBC_THREADS). Not for comparing with older builds: the steps
+// are this version's.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+#include "hbc/io.hpp"
+#include "hbc/mesh_steps.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void BM_LoadSteps(benchmark::State& state) {
+  const char* file = std::getenv("HBC_BENCH_FILE");
+  if (!file) {
+    state.SkipWithError("set HBC_BENCH_FILE");
+    return;
+  }
+  using namespace hbc::mesh_steps;
+  const hbc::LoadOptions par = hbc::resolved({});
+  std::map<std::string, double> total;
+  for (auto _ : state) {
+    auto t = Clock::now();
+    auto lap = [&](const char* step) {
+      const auto now = Clock::now();
+      total[step] += std::chrono::duration<double>(now - t).count();
+      t = now;
+    };
+    hbc::MeshInput in = hbc::read_input(file, hbc::Format::Auto, par);
+    lap("s0_read_parse");
+    validate_input(in, par);
+    lap("s1_validate");
+    hbc::Mesh m;
+    m.points = std::move(in.points);
+    merge_faces(in, m, par);
+    lap("s2_merge_faces");
+    std::vector<EdgeFaceCount> counts = build_edges(m, par);
+    lap("s3_build_edges");
+    CellCheck cells = check_cells(m, in, par);
+    lap("s4_check_cells");
+    orient_groups(m, cells.volume, par);
+    lap("s5_orient_groups");
+    mark_boundary(m);
+    lap("s6_mark_boundary");
+    edge_fans(m, counts, cells, par);
+    lap("s7_edge_fans");
+    non_manifold_vertices(m, cells, par);
+    lap("s8_non_manifold");
+    benchmark::DoNotOptimize(m.cell_faces.items.data());
+  }
+  for (const auto& [step, s] : total) state.counters[step] = s / static_cast<double>(state.iterations());
+  state.counters["threads"] = par.threads;
+}
+BENCHMARK(BM_LoadSteps)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
