@@ -278,12 +278,14 @@ bool redundant_vertex(const Region& r, const ChainIndex& ix, int32_t v) {
 
 // Candidate removable pairs of edges at v: a regular wireframe edge (or an all-quad corner edge)
 // with only quads around it, and its straight continuation (the only edge sharing no face with it,
-// else the only such all-quad edge) if that is a candidate too.
-std::vector<std::array<int32_t, 2>> candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v) {
-  std::vector<int32_t> cand;
+// else the only such all-quad edge) if that is a candidate too. `cand` is scratch room, reused
+// from vertex to vertex (a million vertices would otherwise mean a million allocations).
+void candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v, std::vector<int32_t>& cand,
+                     std::vector<std::array<int32_t, 2>>& pairs) {
+  cand.clear();
+  pairs.clear();
   for (int32_t e : r.cx.vert_edges[v])
     if ((ix.edge_chain[e] >= 0 && r.regular(e)) || r.quad_corner_edge(e)) cand.push_back(e);
-  std::vector<std::array<int32_t, 2>> pairs;
   for (int32_t e : cand) {
     if (!r.cx.edge_all_quad[e]) continue;
     int32_t next = -1, quad_next = -1, n = 0, nq = 0;
@@ -297,13 +299,13 @@ std::vector<std::array<int32_t, 2>> candidate_pairs(const Region& r, const Chain
     const std::array<int32_t, 2> p{std::min(e, pick), std::max(e, pick)};
     if (std::find(pairs.begin(), pairs.end(), p) == pairs.end()) pairs.push_back(p);
   }
-  return pairs;
 }
 
 // Pairs sharing an edge form a group; a group of one pair stays, a larger one keeps the one pair of
 // lowest valence gap, else of highest quad ratio, else none (the authors' tie-breaks).
 std::vector<std::array<int32_t, 2>> resolve_pairs(const Region& r, const std::vector<std::array<int32_t, 2>>& pairs) {
   const size_t n = pairs.size();
+  if (n <= 1) return pairs;  // no group of two or more: nothing to break ties in
   detail::UnionFind uf(n);
   for (size_t i = 0; i < n; ++i)
     for (size_t j = i + 1; j < n; ++j)
@@ -371,10 +373,11 @@ int32_t end_edge(const Chains& ch, int32_t c, int32_t v) {
 // along the boundary: boundary edges at v with the same cells as c's edge (sheet-parallel ones
 // dropped when that leaves several).
 void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
-                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, std::vector<int32_t>& out) {
+                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, std::vector<int32_t>& out,
+                 std::vector<int32_t>& found) {
   const CellComplex& cx = r.cx;
   const int32_t e = end_edge(ch, c, v);
-  std::vector<int32_t> found;
+  found.clear();
   for (int32_t f : cx.vert_edges[v])
     if (f != e && !r.share_face(e, f) && ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
   const auto& ps = pt.at[v];
@@ -399,6 +402,32 @@ void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const 
   out.insert(out.end(), found.begin(), found.end());
 }
 
+// Reactivation: every chain reached from a kept one (`stack`, the chains kept so far) through its
+// continuations stays. Continuations at v are chains with an edge at v, so the ends where no
+// non-important chain has an edge can only lead to chains kept already: they are not looked at.
+std::vector<uint8_t> reactivate(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
+                                const std::vector<uint8_t>& parallel, const std::vector<uint8_t>& non_important,
+                                std::vector<int32_t> stack) {
+  const CellComplex& cx = r.cx;
+  std::vector<uint8_t> open_to(cx.num_vertices(), 0);  // some non-important chain has an edge here
+  for (size_t v = 0; v < open_to.size(); ++v)
+    for (int32_t f : cx.vert_edges[v])
+      if (ix.edge_chain[f] >= 0 && non_important[ix.edge_chain[f]]) open_to[v] = 1;
+  std::vector<uint8_t> keep(ch.edges.rows(), 0);
+  std::vector<int32_t> found;
+  while (!stack.empty()) {
+    const int32_t c = stack.back();
+    stack.pop_back();
+    if (keep[c]) continue;
+    keep[c] = 1;
+    const auto vs = ch.verts[c];
+    if (vs.front() == vs.back()) continue;
+    for (int32_t v : {vs.front(), vs.back()})
+      if (open_to[v]) next_chains(r, ch, ix, pt, parallel, c, v, stack, found);
+  }
+  return keep;
+}
+
 Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& singular,
                       const std::vector<uint8_t>& parallel) {
   const CellComplex& cx = r.cx;
@@ -411,9 +440,12 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
   PairTable pt;
   pt.at.resize(nv);
   cl.non_important.assign(nc, 0);
+  std::vector<int32_t> cand;
+  std::vector<std::array<int32_t, 2>> pairs;
   for (size_t v = 0; v < nv; ++v) {
     if (!singular[v] || cl.redundant_vert[v]) continue;
-    for (const auto& p : resolve_pairs(r, candidate_pairs(r, ix, static_cast<int32_t>(v)))) {
+    candidate_pairs(r, ix, static_cast<int32_t>(v), cand, pairs);
+    for (const auto& p : resolve_pairs(r, pairs)) {
       const ChainPair cp = chain_pair(ix, p);
       if (cp[0] < 0) continue;
       pt.at[v].push_back(cp);
@@ -429,25 +461,14 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
     if (open && cl.redundant_vert[vs.front()] && cl.redundant_vert[vs.back()]) cl.non_important[c] = 1;
     else stack.push_back(static_cast<int32_t>(c));
   }
-  // Reactivation: everything reached from a kept chain through its continuations stays.
-  std::vector<uint8_t> keep(nc, 0);
-  while (!stack.empty()) {
-    const int32_t c = stack.back();
-    stack.pop_back();
-    if (keep[c]) continue;
-    keep[c] = 1;
-    const auto vs = ch.verts[c];
-    if (vs.front() == vs.back()) continue;
-    for (int32_t v : {vs.front(), vs.back()}) next_chains(r, ch, ix, pt, parallel, c, v, stack);
-  }
+  cl.kept = reactivate(r, ch, ix, pt, parallel, cl.non_important, std::move(stack));
   cl.reactivated.assign(nc, 0);
   for (size_t c = 0; c < nc; ++c) {
-    cl.reactivated[c] = keep[c] && cl.non_important[c];
+    cl.reactivated[c] = cl.kept[c] && cl.non_important[c];
     bool all_parallel = true;
     for (int32_t e : ch.edges[c]) all_parallel = all_parallel && parallel[e];
-    if (all_parallel) keep[c] = 0;
+    if (all_parallel) cl.kept[c] = 0;
   }
-  cl.kept = std::move(keep);
   return cl;
 }
 

@@ -119,27 +119,29 @@ void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWirefr
 void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
              WireframeStyle& st) {
   const size_t nw = wf.size();
-  // (w, w', e): complex edge e of wire w is parallel (Definition 1) to an edge of wire w'.
-  std::vector<std::array<int32_t, 3>> par;
-  for (size_t w = 0; w < nw; ++w)
+  // (w, w', |E_w|): how many complex edges of wire w are parallel (Definition 1) to an edge of
+  // wire w', in (w, w') order. The (w', e) incidences are gathered and counted one wire at a time,
+  // so only the counts are kept, never every incidence of the whole wireframe at once.
+  std::vector<std::array<int32_t, 3>> counts;
+  std::vector<std::array<int32_t, 2>> par;  // (w', e) for the current wire
+  for (size_t w = 0; w < nw; ++w) {
+    par.clear();
     for (int32_t e : wf.edges[w])
       for (int32_t f : cx.edge_faces[e]) {
         if (!cx.face_quad[f]) continue;
         for (int32_t g : cx.face_edges[f]) {
           const int32_t w2 = ix.edge_wire[g];
           if (g == e || w2 < 0 || w2 == static_cast<int32_t>(w) || share_vertex(cx, e, g)) continue;
-          par.push_back({static_cast<int32_t>(w), w2, e});
+          par.push_back({w2, e});
         }
       }
-  std::sort(par.begin(), par.end());
-  par.erase(std::unique(par.begin(), par.end()), par.end());
-  // Count per ordered pair, then look up the reverse pair.
-  std::vector<std::array<int32_t, 3>> counts;  // (w, w', |E_w|)
-  for (size_t i = 0; i < par.size();) {
-    size_t j = i;
-    while (j < par.size() && par[j][0] == par[i][0] && par[j][1] == par[i][1]) ++j;
-    counts.push_back({par[i][0], par[i][1], static_cast<int32_t>(j - i)});
-    i = j;
+    sort_unique(par);
+    for (size_t i = 0; i < par.size();) {
+      size_t j = i;
+      while (j < par.size() && par[j][0] == par[i][0]) ++j;
+      counts.push_back({static_cast<int32_t>(w), par[i][0], static_cast<int32_t>(j - i)});
+      i = j;
+    }
   }
   MinUnionFind uf(nw);
   for (const auto& c : counts) {
