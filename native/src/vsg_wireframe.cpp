@@ -10,9 +10,15 @@ namespace hbc {
 
 namespace {
 
-// Sorted-range intersection test.
+// Sorted-range intersection test. A much longer range (the fan of an edge in thousands of
+// cells) is searched for each item of the shorter one instead of walked.
 template <class A, class B>
 bool intersects(const A& a, const B& b) {
+  if (a.size() > 16 * b.size() || b.size() > 16 * a.size()) {
+    const auto& small = a.size() < b.size() ? a : b;
+    const auto& large = a.size() < b.size() ? b : a;
+    return std::any_of(small.begin(), small.end(), [&](int32_t x) { return std::binary_search(large.begin(), large.end(), x); });
+  }
   auto i = a.begin(), j = b.begin();
   while (i != a.end() && j != b.end()) {
     if (*i == *j) return true;
@@ -157,18 +163,27 @@ std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& st
   const CellComplex& cx = r.cx;
   const bool mesh_level = cx.level == Level::Mesh;
   std::vector<uint8_t> seen(cx.num_faces(), 0);
+  // Faces seen around each edge: an edge whose faces are all seen has nothing left to give, so a
+  // fan of thousands of faces is not walked again from each of them.
+  std::vector<int32_t> seen_at(cx.num_edges(), 0);
   std::vector<int32_t> stack;
+  auto see = [&](int32_t f) {
+    seen[f] = 1;
+    stack.push_back(f);
+    for (int32_t g : cx.face_edges[f]) ++seen_at[g];
+  };
   for (size_t e = 0; e < start.size(); ++e)
     if (start[e])
       for (int32_t f : cx.edge_faces[e])
-        if (!seen[f]) seen[f] = 1, stack.push_back(f);
+        if (!seen[f]) see(f);
   while (!stack.empty()) {
     const int32_t f = stack.back();
     stack.pop_back();
     for (int32_t g : cx.face_edges[f]) {
       if (r.mesh_boundary(g) || (mesh_level && r.mesh_singular(g))) continue;
+      if (seen_at[g] == cx.edge_faces.count(g)) continue;
       for (int32_t h : cx.edge_faces[g])
-        if (!seen[h] && !r.faces_share_cell(f, h)) seen[h] = 1, stack.push_back(h);
+        if (!seen[h] && !r.faces_share_cell(f, h)) see(h);
     }
   }
   return seen;
