@@ -1,14 +1,18 @@
 // Timings of the analysis stages (load excluded): hybrid singularity graph + base complex (T_GS +
-// T_GB), sheets (T_GSH), subsheets of every self-intersecting sheet (T_GSH*), on the paper's meshes
-// we hold and on generated hex-dominant meshes of 10^4..10^6 cells, so that growth with the cell
-// count is measured in one run.
+// T_GB), sheets (T_GSH), subsheets of every self-intersecting sheet (T_GSH*), the whole-mesh VSG
+// wireframe at the complex level (view + graph + style, T_VSGW), on the paper's meshes we hold and
+// on generated hex-dominant meshes of 10^4..10^6 cells, so that growth with the cell count is
+// measured in one run. HBC_BENCH_LARGE=1 adds the 10^7-cell cylinder and split grid (about 2.5 GB
+// each, loaded once).
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "hbc/analysis.hpp"
+#include "hbc/cell_complex.hpp"
 #include "hbc/cell_depth.hpp"
 #include "hbc/cell_quality.hpp"
 #include "hbc/generate.hpp"
@@ -80,6 +84,19 @@ void BM_Subsheets(benchmark::State& st, const std::string& name) {
   set_counters(st, m);
 }
 
+// The whole-mesh VSG wireframe as analyze() computes it: the base complex as a coarse mesh, then
+// the graph and its style.
+void BM_Wireframe(benchmark::State& st, const std::string& name) {
+  const Mesh& m = mesh_named(name);
+  const BaseComplex bc = base_complex(m, singularity_graph(m));
+  for (auto _ : st) {
+    const CellComplex cx = complex_from_base(m, bc);
+    VsgWireframe w = vsg_wireframe(cx);
+    benchmark::DoNotOptimize(w.polylines.items.data());
+  }
+  set_counters(st, m);
+}
+
 // Per-cell scaled Jacobian and edge ratio, then cell depth (the add-on's filter attributes).
 void BM_Quality(benchmark::State& st, const std::string& name) {
   const Mesh& m = mesh_named(name);
@@ -104,6 +121,15 @@ const char* kPaper[] = {"teapot.hedra", "twistcube_s.mesh", "cube_twist-comp.obj
 // and the worst case for the base complex: grids with 1% of the cells, at random, cut into
 // pyramids, whose separation planes then cut every cell into a component of its own.
 const char* kGenerated[] = {"cyl8_42", "cyl16_107", "cyl40_174", "split22", "split47", "split100"};
+// 10^7 cells: the cylinder of the issue (radius 160, 110 layers) and a 216^3 split grid.
+const char* kLarge[] = {"cyl160_110", "split216"};
+
+void register_generated(const char* n) {
+  benchmark::RegisterBenchmark((std::string("GraphAndComplex/") + n).c_str(), BM_GraphAndComplex, n)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark((std::string("Sheets/") + n).c_str(), BM_Sheets, n)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark((std::string("Subsheets/") + n).c_str(), BM_Subsheets, n)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark((std::string("Wireframe/") + n).c_str(), BM_Wireframe, n)->Unit(benchmark::kMillisecond);
+}
 
 int register_all() {
   for (const char* n : kPaper) {
@@ -111,10 +137,9 @@ int register_all() {
     benchmark::RegisterBenchmark((std::string("Sheets/") + n).c_str(), BM_Sheets, n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("Subsheets/") + n).c_str(), BM_Subsheets, n)->Unit(benchmark::kMillisecond);
   }
-  for (const char* n : kGenerated) {
-    benchmark::RegisterBenchmark((std::string("GraphAndComplex/") + n).c_str(), BM_GraphAndComplex, n)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark((std::string("Sheets/") + n).c_str(), BM_Sheets, n)->Unit(benchmark::kMillisecond);
-  }
+  for (const char* n : kGenerated) register_generated(n);
+  if (const char* large = std::getenv("HBC_BENCH_LARGE"); large && std::string(large) == "1")
+    for (const char* n : kLarge) register_generated(n);
   for (const char* n : {"teapot.hedra", "split100"}) {
     benchmark::RegisterBenchmark((std::string("Quality/") + n).c_str(), BM_Quality, n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("Depth/") + n).c_str(), BM_Depth, n)->Unit(benchmark::kMillisecond);

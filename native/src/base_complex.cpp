@@ -75,6 +75,64 @@ int32_t straight_face(const Mesh& m, int32_t e, int32_t f, EdgeFan& scratch) {
 
 namespace {
 
+// The other face of a hex cell at each edge of each of its faces, found once per cell (on first
+// use) instead of by scanning the cell's faces at every step around an edge: the straight
+// continuations of the separation surfaces and patches take two such steps per face and edge.
+// Row c packs, for face slot j (order of cell_faces[c]) and edge position i of that face's loop,
+// the slot of the cell's other face at that edge in 4 bits.
+class HexFaceTable {
+ public:
+  explicit HexFaceTable(size_t ncells) : other_(ncells), built_(ncells, 0) {}
+  // The face of hex cell c other than f at the edge at position i of f's loop.
+  int32_t other_face(const Mesh& m, int32_t c, int32_t f, size_t i) {
+    const auto faces = m.cell_faces[static_cast<size_t>(c)];
+    if (!built_[static_cast<size_t>(c)]) build(m, c);
+    const size_t j = static_cast<size_t>(std::find(faces.begin(), faces.end(), f) - faces.begin());
+    const size_t k = 4 * j + i;
+    return faces[(other_[static_cast<size_t>(c)][k / 2] >> (4 * (k % 2))) & 15];
+  }
+
+ private:
+  void build(const Mesh& m, int32_t c) {
+    const auto faces = m.cell_faces[static_cast<size_t>(c)];
+    std::array<int32_t, 24> edge{};
+    for (size_t j = 0; j < 6; ++j)
+      for (size_t i = 0; i < 4; ++i) edge[4 * j + i] = m.face_edges(static_cast<size_t>(faces[j]))[i];
+    auto& row = other_[static_cast<size_t>(c)];
+    row.fill(0);
+    // Each edge of a hex is on exactly two of its faces: match each entry with the later one.
+    uint32_t matched = 0;
+    for (size_t a = 0; a < 24; ++a) {
+      if (matched >> a & 1) continue;
+      for (size_t b = 4 * (a / 4 + 1); b < 24; ++b)
+        if (edge[b] == edge[a]) {
+          row[a / 2] |= static_cast<uint8_t>((b / 4) << (4 * (a % 2)));
+          row[b / 2] |= static_cast<uint8_t>((a / 4) << (4 * (b % 2)));
+          matched |= 1u << b;
+          break;
+        }
+    }
+    built_[static_cast<size_t>(c)] = 1;
+  }
+  std::vector<std::array<uint8_t, 12>> other_;
+  std::vector<uint8_t> built_;
+};
+
+// straight_face(m, e, f) for an edge e of the hybrid singularity graph's Regular class (all cells
+// hex, valence 4 inside or 2 on the boundary) at position i of f's loop: the same two steps
+// around the fan from f through face_cells[f][0], with the cells' other faces from `table`.
+int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, HexFaceTable& table) {
+  if (!m.edge_fan_ok(static_cast<size_t>(e))) return -1;
+  if (m.edge_boundary[static_cast<size_t>(e)] && !m.face_boundary[static_cast<size_t>(f)]) return -1;
+  const int32_t c0 = m.face_cells[static_cast<size_t>(f)][0];
+  const int32_t g = table.other_face(m, c0, f, i);
+  const auto gc = m.face_cells[static_cast<size_t>(g)];
+  const int32_t c1 = gc[0] == c0 ? gc[1] : gc[0];
+  if (c1 < 0) return -1;
+  const auto ge = m.face_edges(static_cast<size_t>(g));
+  return table.other_face(m, c1, g, static_cast<size_t>(std::find(ge.begin(), ge.end(), e) - ge.begin()));
+}
+
 // Sorted distinct values of `v`, appended to `out` as one row.
 // Distinct ids gathered row by row without sorting the duplicates: a stamp per id marks those
 // already taken for the current row; only the few distinct ids get sorted.
@@ -127,12 +185,15 @@ std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) 
       queue.push_back(static_cast<int32_t>(f));
     }
   }
-  EdgeFan scratch;
+  // Edges that are neither structural nor on the boundary are Regular and inside.
+  HexFaceTable table(m.num_cells());
   for (size_t q = 0; q < queue.size(); ++q) {
     const int32_t f = queue[q];
-    for (int32_t e : m.face_edges(static_cast<size_t>(f))) {
+    const auto fe = m.face_edges(static_cast<size_t>(f));
+    for (size_t i = 0; i < fe.size(); ++i) {
+      const int32_t e = fe[i];
       if (g.is_structural(e) || m.edge_boundary[e]) continue;
-      const int32_t next = straight_face(m, e, f, scratch);
+      const int32_t next = regular_straight_face(m, e, f, i, table);
       if (next >= 0 && !sep[next]) {
         sep[next] = 1;
         queue.push_back(next);
@@ -220,10 +281,13 @@ void find_patches(const Mesh& m, BaseComplex& bc) {
   bc.patch_faces.items.reserve(static_cast<size_t>(std::count(sep.begin(), sep.end(), 1)));
   label_groups(
       m.num_faces(), [&](size_t f) { return sep[f] != 0; },
-      [&, scratch = EdgeFan{}](int32_t f, auto reach) mutable {
-        for (int32_t e : m.face_edges(static_cast<size_t>(f))) {
-          if (bc.edge_complex[e]) continue;
-          const int32_t h = straight_face(m, e, f, scratch);
+      [&, table = HexFaceTable(m.num_cells())](int32_t f, auto reach) mutable {
+        // An edge that is not complex has a face that does not separate, so it is not structural
+        // (all faces around a structural edge separate): it is Regular.
+        const auto fe = m.face_edges(static_cast<size_t>(f));
+        for (size_t i = 0; i < fe.size(); ++i) {
+          if (bc.edge_complex[fe[i]]) continue;
+          const int32_t h = regular_straight_face(m, fe[i], f, i, table);
           if (h >= 0 && sep[h]) reach(h);
         }
       },

@@ -229,64 +229,68 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc) {
   return complex_from_base(m, bc, all);
 }
 
-CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
-                              std::span<const int32_t> region_components) {
-  CellComplex cx;
-  cx.level = Level::Complex;
-  const std::vector<uint8_t> in_comp = flags_of(region_components, bc.num_components(), "component");
-  std::vector<uint8_t> in_cell(m.num_cells());
-  for (size_t c = 0; c < in_cell.size(); ++c) in_cell[c] = in_comp[bc.cell_component[c]];
-  const RegionBoundary rb = region_boundary(m, in_cell);
-  const size_t npatch = bc.num_patches(), ncurve = bc.num_curves();
+namespace {
 
-  const std::vector<int32_t> kmap = compact(in_comp, cx.cell_source);
-  cx.cell_non_hex.resize(cx.num_cells());
-  for (size_t i = 0; i < cx.num_cells(); ++i)
-    cx.cell_non_hex[i] = bc.component_kind[cx.cell_source[i]] == ComponentKind::NonHex;
+// Rows of the curves in the view (compact ids, `curve_map`) listing the region owners of each
+// (compact ids, `owner_map`, monotonic), from `owner_curves` (owner -> its curves, sorted,
+// distinct): a transpose restricted to the region, so its rows come out sorted and distinct.
+Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vector<int32_t>& owner_map,
+                              const std::vector<int32_t>& curve_map, size_t ncurves_in_view) {
+  Csr<int32_t> rows;
+  rows.offsets.assign(ncurves_in_view + 1, 0);
+  auto each = [&](auto&& fn) {
+    for (size_t o = 0; o < owner_curves.rows(); ++o)
+      if (owner_map[o] >= 0)
+        for (int32_t k : owner_curves[o])
+          if (curve_map[static_cast<size_t>(k)] >= 0) fn(curve_map[static_cast<size_t>(k)], owner_map[o]);
+  };
+  each([&](int32_t i, int32_t) { ++rows.offsets[static_cast<size_t>(i) + 1]; });
+  for (size_t i = 0; i < ncurves_in_view; ++i) rows.offsets[i + 1] += rows.offsets[i];
+  rows.items.resize(static_cast<size_t>(rows.offsets.back()));
+  std::vector<int32_t> fill(rows.offsets.begin(), rows.offsets.end() - 1);
+  each([&](int32_t i, int32_t x) { rows.items[static_cast<size_t>(fill[static_cast<size_t>(i)]++)] = x; });
+  return rows;
+}
 
-  // A patch is in the region when its faces are; all its faces have the same two components.
-  std::vector<uint8_t> patch_in(npatch, 0);
-  for (size_t p = 0; p < npatch; ++p) patch_in[p] = rb.face_in[bc.patch_faces[p][0]];
-  const std::vector<int32_t> pmap = compact(patch_in, cx.face_source);
-  std::vector<uint8_t> patch_quad(npatch);
-  for (size_t p = 0; p < npatch; ++p)
-    patch_quad[p] = bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
+// Per corner in the view (vmap >= 0): the region components with a cell there. A cell at a
+// vertex has a face there; components are visited one by one, so a stamp per vertex (the last
+// component that counted it) counts each component once without sorting (vertex, component) pairs.
+void count_corner_components(const Mesh& m, const BaseComplex& bc, const std::vector<int32_t>& components,
+                             const std::vector<int32_t>& vmap, std::vector<int32_t>& count) {
+  std::vector<int32_t> stamp(m.num_vertices(), -1);
+  for (int32_t k : components)
+    for (int32_t c : bc.component_cells[static_cast<size_t>(k)])
+      for (int32_t f : m.cell_faces[static_cast<size_t>(c)])
+        for (int32_t v : m.face_verts[static_cast<size_t>(f)]) {
+          const int32_t x = vmap[static_cast<size_t>(v)];
+          if (x < 0 || stamp[static_cast<size_t>(v)] == k) continue;
+          stamp[static_cast<size_t>(v)] = k;
+          ++count[static_cast<size_t>(x)];
+        }
+}
 
-  EdgeFan fan;
-  std::vector<uint8_t> curve_in(ncurve, 0);
-  for (size_t k = 0; k < ncurve; ++k) {
-    edge_fan(m, bc.curve_edges[k][0], fan);
-    for (int32_t c : fan.cells) curve_in[k] = curve_in[k] || in_cell[c];
-  }
-  const std::vector<int32_t> emap = compact(curve_in, cx.edge_source);
-  std::vector<uint8_t> corner_in(m.num_vertices(), 0);
-  for (int32_t k : cx.edge_source) {
-    if (bc.curve_closed[k]) continue;
-    const auto vs = bc.curve_verts[k];
-    corner_in[vs.front()] = corner_in[vs.back()] = 1;
-  }
-  const std::vector<int32_t> vmap = compact(corner_in, cx.vert_mesh);
-
-  std::vector<int32_t> buf;
-  cx.face_quad.resize(cx.num_faces());
-  for (size_t i = 0; i < cx.num_faces(); ++i) {
-    const int32_t p = cx.face_source[i];
-    buf.clear();
-    for (int32_t f : bc.patch_faces[p])
-      for (int32_t e : m.face_edges(static_cast<size_t>(f)))
-        if (bc.edge_curve[e] >= 0) buf.push_back(emap[bc.edge_curve[e]]);
-    sort_unique_row(buf, cx.face_edges);
-    cx.face_quad[i] = patch_quad[p];
-  }
-  cx.face_cells = region_face_cells(cx.face_source, bc.patch_components, kmap);
-
+// The view's edges (curves): end vertices, mesh polylines, valence, boundary flag, cells and
+// faces around, non-hex and all-quad flags. `whole`: the region is every component, so a curve's
+// valence is its first mesh edge's valence in the mesh (no fan walk).
+void curve_edges_of_view(const Mesh& m, const BaseComplex& bc, const std::vector<uint8_t>& in_cell,
+                         const RegionBoundary& rb, const std::vector<int32_t>& kmap, const std::vector<int32_t>& pmap,
+                         const std::vector<int32_t>& emap, const std::vector<int32_t>& vmap, bool whole,
+                         CellComplex& cx) {
   const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
   cx.edge_verts.resize(nx);
   cx.edge_valence.resize(nx);
   cx.edge_boundary.assign(nx, 0);
   cx.edge_non_hex.assign(nx, 0);
   cx.edge_all_quad.assign(nx, 1);
-  std::vector<int32_t> fbuf;
+  // Components and patches around a curve: a cell at a curve's mesh edge has its two faces there
+  // among the separation faces (every face at a complex edge separates), so the curve is one of
+  // its component's curves, and conversely; likewise a patch holds the curve exactly when one of
+  // its faces lies at it. Hence the transposes of component_curves / patch_curves, filtered to
+  // the region, hold what the fans around the curve's mesh edges hold, sorted and distinct.
+  cx.edge_cells = curve_owner_rows(bc.component_curves, kmap, emap, nx);
+  cx.edge_faces = curve_owner_rows(bc.patch_curves, pmap, emap, nx);
+  cx.edge_points.reserve(nx, bc.curve_verts.items.size() + nx);
+  EdgeFan fan;
   for (size_t i = 0; i < nx; ++i) {
     const int32_t k = cx.edge_source[i];
     const auto vs = bc.curve_verts[k];
@@ -302,44 +306,89 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     // The valence is that of the curve's first mesh edge: every face around a curve separates,
     // so each mesh cell there is a corner of a different coarse cell.
     const auto es = bc.curve_edges[k];
-    buf.clear();
-    fbuf.clear();
-    for (int32_t e : es) {
-      cx.edge_boundary[i] = cx.edge_boundary[i] || rb.edge_boundary[e];
-      edge_fan(m, e, fan);
-      if (e == es[0]) cx.edge_valence[i] = static_cast<int32_t>(std::count_if(fan.cells.begin(), fan.cells.end(), [&](int32_t c) { return in_cell[c] != 0; }));
-      for (int32_t c : fan.cells)
-        if (in_cell[c]) buf.push_back(kmap[bc.cell_component[c]]);
-      for (int32_t f : fan.faces)
-        if (rb.face_in[f] && bc.face_patch[f] >= 0) fbuf.push_back(pmap[bc.face_patch[f]]);
+    if (whole) {
+      cx.edge_valence[i] = m.edge_valence(static_cast<size_t>(es[0]));
+    } else {
+      edge_fan(m, es[0], fan);
+      cx.edge_valence[i] = static_cast<int32_t>(std::count_if(fan.cells.begin(), fan.cells.end(), [&](int32_t c) { return in_cell[c] != 0; }));
     }
-    sort_unique_row(buf, cx.edge_cells);
+    for (int32_t e : es) cx.edge_boundary[i] = cx.edge_boundary[i] || rb.edge_boundary[e];
     for (int32_t x : cx.edge_cells[i]) cx.edge_non_hex[i] = cx.edge_non_hex[i] || cx.cell_non_hex[x];
-    sort_unique_row(fbuf, cx.edge_faces);
     for (int32_t f : cx.edge_faces[i]) cx.edge_all_quad[i] = cx.edge_all_quad[i] && cx.face_quad[f];
   }
+}
+
+}  // namespace
+
+CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
+                              std::span<const int32_t> region_components) {
+  CellComplex cx;
+  cx.level = Level::Complex;
+  const std::vector<uint8_t> in_comp = flags_of(region_components, bc.num_components(), "component");
+  std::vector<uint8_t> in_cell(m.num_cells());
+  for (size_t c = 0; c < in_cell.size(); ++c) in_cell[c] = in_comp[bc.cell_component[c]];
+  const RegionBoundary rb = region_boundary(m, in_cell);
+  const size_t npatch = bc.num_patches(), ncurve = bc.num_curves();
+
+  const std::vector<int32_t> kmap = compact(in_comp, cx.cell_source);
+  const bool whole = cx.num_cells() == bc.num_components();
+  cx.cell_non_hex.resize(cx.num_cells());
+  for (size_t i = 0; i < cx.num_cells(); ++i)
+    cx.cell_non_hex[i] = bc.component_kind[cx.cell_source[i]] == ComponentKind::NonHex;
+
+  // A patch is in the region when its faces are; all its faces have the same two components.
+  std::vector<uint8_t> patch_in(npatch, 0);
+  for (size_t p = 0; p < npatch; ++p) patch_in[p] = rb.face_in[bc.patch_faces[p][0]];
+  const std::vector<int32_t> pmap = compact(patch_in, cx.face_source);
+  std::vector<uint8_t> patch_quad(npatch);
+  for (size_t p = 0; p < npatch; ++p)
+    patch_quad[p] = bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
+
+  // A curve is in the view when a region cell lies at its first mesh edge (every mesh edge has a
+  // cell, so with the whole region every curve is).
+  std::vector<uint8_t> curve_in(ncurve, whole ? 1 : 0);
+  if (!whole) {
+    EdgeFan fan;
+    for (size_t k = 0; k < ncurve; ++k) {
+      edge_fan(m, bc.curve_edges[k][0], fan);
+      for (int32_t c : fan.cells) curve_in[k] = curve_in[k] || in_cell[c];
+    }
+  }
+  const std::vector<int32_t> emap = compact(curve_in, cx.edge_source);
+  std::vector<uint8_t> corner_in(m.num_vertices(), 0);
+  for (int32_t k : cx.edge_source) {
+    if (bc.curve_closed[k]) continue;
+    const auto vs = bc.curve_verts[k];
+    corner_in[vs.front()] = corner_in[vs.back()] = 1;
+  }
+  const std::vector<int32_t> vmap = compact(corner_in, cx.vert_mesh);
+
+  // A patch's edges are the curves on it (patch_curves), those off the view as -1.
+  std::vector<int32_t> buf;
+  cx.face_quad.resize(cx.num_faces());
+  cx.face_edges.reserve(cx.num_faces(), 4 * cx.num_faces());
+  for (size_t i = 0; i < cx.num_faces(); ++i) {
+    const int32_t p = cx.face_source[i];
+    buf.clear();
+    for (int32_t k : bc.patch_curves[p]) buf.push_back(emap[k]);
+    sort_unique_row(buf, cx.face_edges);
+    cx.face_quad[i] = patch_quad[p];
+  }
+  cx.face_cells = region_face_cells(cx.face_source, bc.patch_components, kmap);
+  curve_edges_of_view(m, bc, in_cell, rb, kmap, pmap, emap, vmap, whole, cx);
 
   const size_t nvx = cx.num_vertices();
   cx.vert_boundary.resize(nvx);
   cx.vert_cell_count.assign(nvx, 0);
   cx.vert_all_quad.assign(nvx, 1);
   for (size_t i = 0; i < nvx; ++i) cx.vert_boundary[i] = rb.vert_boundary[cx.vert_mesh[i]];
-  // Components of the region's cells at each corner, and non-quad patches there, from the
-  // cells' and faces' side (a cell at a vertex has a face there).
-  std::vector<std::array<int32_t, 2>> corner_component;
-  for (size_t c = 0; c < m.num_cells(); ++c) {
-    if (!in_cell[c]) continue;
-    for (int32_t f : m.cell_faces[c])
-      for (int32_t v : m.face_verts[static_cast<size_t>(f)])
-        if (corner_in[static_cast<size_t>(v)]) corner_component.push_back({vmap[v], bc.cell_component[c]});
-  }
-  sort_unique(corner_component);
-  for (const auto& vc : corner_component) ++cx.vert_cell_count[static_cast<size_t>(vc[0])];
+  count_corner_components(m, bc, cx.cell_source, vmap, cx.vert_cell_count);
+  // Non-quad patches at each corner, from the faces' side.
   for (size_t f = 0; f < m.num_faces(); ++f)
     if (rb.face_in[f] && bc.face_patch[f] >= 0 && !patch_quad[bc.face_patch[f]])
       for (int32_t v : m.face_verts[f])
         if (corner_in[static_cast<size_t>(v)]) cx.vert_all_quad[static_cast<size_t>(vmap[v])] = 0;
-  if (cx.num_cells() < bc.num_components())
+  if (!whole)
     fill_whole_mesh_adjacency(
         m, cx, [&](size_t i) { return bc.curve_edges[cx.edge_source[i]]; },
         [&](int32_t f) { return bc.face_patch[f]; }, [&](int32_t c) { return bc.cell_component[c]; },

@@ -54,6 +54,24 @@ Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<s
   return packed;
 }
 
+// Row per curve listing map[o] for each owner o whose row of `owner_curves` (sorted, distinct)
+// holds the curve, skipping map[o] < 0: a transpose through a monotonic map, so rows come out
+// sorted and distinct.
+Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vector<int32_t>& map, size_t ncurves) {
+  Csr<int32_t> rows;
+  rows.offsets.assign(ncurves + 1, 0);
+  for (size_t o = 0; o < owner_curves.rows(); ++o)
+    if (map[o] >= 0)
+      for (int32_t k : owner_curves[o]) ++rows.offsets[static_cast<size_t>(k) + 1];
+  for (size_t k = 0; k < ncurves; ++k) rows.offsets[k + 1] += rows.offsets[k];
+  rows.items.resize(static_cast<size_t>(rows.offsets.back()));
+  std::vector<int32_t> fill(rows.offsets.begin(), rows.offsets.end() - 1);
+  for (size_t o = 0; o < owner_curves.rows(); ++o)
+    if (map[o] >= 0)
+      for (int32_t k : owner_curves[o]) rows.items[static_cast<size_t>(fill[static_cast<size_t>(k)]++)] = map[o];
+  return rows;
+}
+
 }  // namespace
 
 SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
@@ -90,6 +108,15 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
       d.face_joins[f] = !bc.face_separation[f] && fc[1] >= 0 && m.is_hex(fc[0]) && m.is_hex(fc[1]);
     }
     d.curve_parallels = parallels_from_quads(bc.patch_curves, d.curve_ends, d.curve_edges.rows());
+    // Blocks and non-hex cells at each curve, without walking the fans of its edges: a cell at a
+    // curve edge has both its faces there among the separation faces, so the curve is one of its
+    // component's curves, and conversely. A non-hex cell is a component of its own, and
+    // components are numbered by their lowest cell, so both maps below keep the order.
+    std::vector<int32_t> non_hex_cell(bc.num_components(), -1);
+    for (size_t k = 0; k < bc.num_components(); ++k)
+      if (bc.component_kind[k] == ComponentKind::NonHex) non_hex_cell[k] = bc.component_cells[k][0];
+    d.curve_blocks = curve_owner_rows(bc.component_curves, comp_block, d.curve_edges.rows());
+    d.curve_non_hex_cells = curve_owner_rows(bc.component_curves, non_hex_cell, d.curve_edges.rows());
   } else {
     for (size_t c = 0; c < nc; ++c) {
       if (!m.is_hex(c)) continue;
@@ -123,8 +150,8 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
     d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges());
   }
 
-  // Blocks holding each curve, and non-hex cells touching it.
-  const size_t ncurves = d.curve_edges.rows();
+  // Mesh level: blocks holding each curve, and non-hex cells touching it, from the edge fans.
+  const size_t ncurves = level == Level::Complex ? 0 : d.curve_edges.rows();
   EdgeFan fan;
   std::vector<int32_t> non_hex;
   for (size_t k = 0; k < ncurves; ++k) {

@@ -10,9 +10,15 @@ namespace hbc {
 
 namespace {
 
-// Sorted-range intersection test.
+// Sorted-range intersection test. A much longer range (the fan of an edge in thousands of
+// cells) is searched for each item of the shorter one instead of walked.
 template <class A, class B>
 bool intersects(const A& a, const B& b) {
+  if (a.size() > 16 * b.size() || b.size() > 16 * a.size()) {
+    const auto& small = a.size() < b.size() ? a : b;
+    const auto& large = a.size() < b.size() ? b : a;
+    return std::any_of(small.begin(), small.end(), [&](int32_t x) { return std::binary_search(large.begin(), large.end(), x); });
+  }
   auto i = a.begin(), j = b.begin();
   while (i != a.end() && j != b.end()) {
     if (*i == *j) return true;
@@ -157,18 +163,27 @@ std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& st
   const CellComplex& cx = r.cx;
   const bool mesh_level = cx.level == Level::Mesh;
   std::vector<uint8_t> seen(cx.num_faces(), 0);
+  // Faces seen around each edge: an edge whose faces are all seen has nothing left to give, so a
+  // fan of thousands of faces is not walked again from each of them.
+  std::vector<int32_t> seen_at(cx.num_edges(), 0);
   std::vector<int32_t> stack;
+  auto see = [&](int32_t f) {
+    seen[f] = 1;
+    stack.push_back(f);
+    for (int32_t g : cx.face_edges[f]) ++seen_at[g];
+  };
   for (size_t e = 0; e < start.size(); ++e)
     if (start[e])
       for (int32_t f : cx.edge_faces[e])
-        if (!seen[f]) seen[f] = 1, stack.push_back(f);
+        if (!seen[f]) see(f);
   while (!stack.empty()) {
     const int32_t f = stack.back();
     stack.pop_back();
     for (int32_t g : cx.face_edges[f]) {
       if (r.mesh_boundary(g) || (mesh_level && r.mesh_singular(g))) continue;
+      if (seen_at[g] == cx.edge_faces.count(g)) continue;
       for (int32_t h : cx.edge_faces[g])
-        if (!seen[h] && !r.faces_share_cell(f, h)) seen[h] = 1, stack.push_back(h);
+        if (!seen[h] && !r.faces_share_cell(f, h)) see(h);
     }
   }
   return seen;
@@ -278,12 +293,14 @@ bool redundant_vertex(const Region& r, const ChainIndex& ix, int32_t v) {
 
 // Candidate removable pairs of edges at v: a regular wireframe edge (or an all-quad corner edge)
 // with only quads around it, and its straight continuation (the only edge sharing no face with it,
-// else the only such all-quad edge) if that is a candidate too.
-std::vector<std::array<int32_t, 2>> candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v) {
-  std::vector<int32_t> cand;
+// else the only such all-quad edge) if that is a candidate too. `cand` is scratch room, reused
+// from vertex to vertex (a million vertices would otherwise mean a million allocations).
+void candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v, std::vector<int32_t>& cand,
+                     std::vector<std::array<int32_t, 2>>& pairs) {
+  cand.clear();
+  pairs.clear();
   for (int32_t e : r.cx.vert_edges[v])
     if ((ix.edge_chain[e] >= 0 && r.regular(e)) || r.quad_corner_edge(e)) cand.push_back(e);
-  std::vector<std::array<int32_t, 2>> pairs;
   for (int32_t e : cand) {
     if (!r.cx.edge_all_quad[e]) continue;
     int32_t next = -1, quad_next = -1, n = 0, nq = 0;
@@ -297,13 +314,13 @@ std::vector<std::array<int32_t, 2>> candidate_pairs(const Region& r, const Chain
     const std::array<int32_t, 2> p{std::min(e, pick), std::max(e, pick)};
     if (std::find(pairs.begin(), pairs.end(), p) == pairs.end()) pairs.push_back(p);
   }
-  return pairs;
 }
 
 // Pairs sharing an edge form a group; a group of one pair stays, a larger one keeps the one pair of
 // lowest valence gap, else of highest quad ratio, else none (the authors' tie-breaks).
 std::vector<std::array<int32_t, 2>> resolve_pairs(const Region& r, const std::vector<std::array<int32_t, 2>>& pairs) {
   const size_t n = pairs.size();
+  if (n <= 1) return pairs;  // no group of two or more: nothing to break ties in
   detail::UnionFind uf(n);
   for (size_t i = 0; i < n; ++i)
     for (size_t j = i + 1; j < n; ++j)
@@ -371,10 +388,11 @@ int32_t end_edge(const Chains& ch, int32_t c, int32_t v) {
 // along the boundary: boundary edges at v with the same cells as c's edge (sheet-parallel ones
 // dropped when that leaves several).
 void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
-                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, std::vector<int32_t>& out) {
+                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, std::vector<int32_t>& out,
+                 std::vector<int32_t>& found) {
   const CellComplex& cx = r.cx;
   const int32_t e = end_edge(ch, c, v);
-  std::vector<int32_t> found;
+  found.clear();
   for (int32_t f : cx.vert_edges[v])
     if (f != e && !r.share_face(e, f) && ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
   const auto& ps = pt.at[v];
@@ -399,6 +417,32 @@ void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const 
   out.insert(out.end(), found.begin(), found.end());
 }
 
+// Reactivation: every chain reached from a kept one (`stack`, the chains kept so far) through its
+// continuations stays. Continuations at v are chains with an edge at v, so the ends where no
+// non-important chain has an edge can only lead to chains kept already: they are not looked at.
+std::vector<uint8_t> reactivate(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
+                                const std::vector<uint8_t>& parallel, const std::vector<uint8_t>& non_important,
+                                std::vector<int32_t> stack) {
+  const CellComplex& cx = r.cx;
+  std::vector<uint8_t> open_to(cx.num_vertices(), 0);  // some non-important chain has an edge here
+  for (size_t v = 0; v < open_to.size(); ++v)
+    for (int32_t f : cx.vert_edges[v])
+      if (ix.edge_chain[f] >= 0 && non_important[ix.edge_chain[f]]) open_to[v] = 1;
+  std::vector<uint8_t> keep(ch.edges.rows(), 0);
+  std::vector<int32_t> found;
+  while (!stack.empty()) {
+    const int32_t c = stack.back();
+    stack.pop_back();
+    if (keep[c]) continue;
+    keep[c] = 1;
+    const auto vs = ch.verts[c];
+    if (vs.front() == vs.back()) continue;
+    for (int32_t v : {vs.front(), vs.back()})
+      if (open_to[v]) next_chains(r, ch, ix, pt, parallel, c, v, stack, found);
+  }
+  return keep;
+}
+
 Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& singular,
                       const std::vector<uint8_t>& parallel) {
   const CellComplex& cx = r.cx;
@@ -411,9 +455,12 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
   PairTable pt;
   pt.at.resize(nv);
   cl.non_important.assign(nc, 0);
+  std::vector<int32_t> cand;
+  std::vector<std::array<int32_t, 2>> pairs;
   for (size_t v = 0; v < nv; ++v) {
     if (!singular[v] || cl.redundant_vert[v]) continue;
-    for (const auto& p : resolve_pairs(r, candidate_pairs(r, ix, static_cast<int32_t>(v)))) {
+    candidate_pairs(r, ix, static_cast<int32_t>(v), cand, pairs);
+    for (const auto& p : resolve_pairs(r, pairs)) {
       const ChainPair cp = chain_pair(ix, p);
       if (cp[0] < 0) continue;
       pt.at[v].push_back(cp);
@@ -429,25 +476,14 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
     if (open && cl.redundant_vert[vs.front()] && cl.redundant_vert[vs.back()]) cl.non_important[c] = 1;
     else stack.push_back(static_cast<int32_t>(c));
   }
-  // Reactivation: everything reached from a kept chain through its continuations stays.
-  std::vector<uint8_t> keep(nc, 0);
-  while (!stack.empty()) {
-    const int32_t c = stack.back();
-    stack.pop_back();
-    if (keep[c]) continue;
-    keep[c] = 1;
-    const auto vs = ch.verts[c];
-    if (vs.front() == vs.back()) continue;
-    for (int32_t v : {vs.front(), vs.back()}) next_chains(r, ch, ix, pt, parallel, c, v, stack);
-  }
+  cl.kept = reactivate(r, ch, ix, pt, parallel, cl.non_important, std::move(stack));
   cl.reactivated.assign(nc, 0);
   for (size_t c = 0; c < nc; ++c) {
-    cl.reactivated[c] = keep[c] && cl.non_important[c];
+    cl.reactivated[c] = cl.kept[c] && cl.non_important[c];
     bool all_parallel = true;
     for (int32_t e : ch.edges[c]) all_parallel = all_parallel && parallel[e];
-    if (all_parallel) keep[c] = 0;
+    if (all_parallel) cl.kept[c] = 0;
   }
-  cl.kept = std::move(keep);
   return cl;
 }
 

@@ -116,30 +116,68 @@ void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWirefr
   }
 }
 
+// A point where more wires meet than this is crowded (see colours()).
+constexpr size_t kCrowded = 64;
+
+// The distinct points of each class's wires, and the crowded ones among them (numbered densely,
+// crowded_point[q] being crowded point q), each row sorted.
+struct ClassPoints {
+  Csr<int32_t> points, crowded;
+  std::vector<int32_t> crowded_point;
+  size_t crowded_points = 0;
+};
+
+ClassPoints class_points(const Csr<int32_t>& class_wires, const Index& ix) {
+  ClassPoints cp;
+  const size_t np = ix.point_wires.rows();
+  std::vector<int32_t> crowded_id(np, -1);
+  for (size_t p = 0; p < np; ++p)
+    if (ix.point_wires[p].size() > kCrowded) {
+      crowded_id[p] = static_cast<int32_t>(cp.crowded_point.size());
+      cp.crowded_point.push_back(static_cast<int32_t>(p));
+    }
+  cp.crowded_points = cp.crowded_point.size();
+  std::vector<int32_t> buf, heavy;
+  for (size_t c = 0; c < class_wires.rows(); ++c) {
+    buf.clear();
+    heavy.clear();
+    for (int32_t w : class_wires[c])
+      for (int32_t p : ix.wire_points[w]) buf.push_back(p);
+    sort_unique(buf);
+    for (int32_t p : buf)
+      if (crowded_id[static_cast<size_t>(p)] >= 0) heavy.push_back(crowded_id[static_cast<size_t>(p)]);
+    cp.points.push_row(buf.begin(), buf.end());
+    cp.crowded.push_row(heavy.begin(), heavy.end());
+  }
+  return cp;
+}
+
 void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
              WireframeStyle& st) {
   const size_t nw = wf.size();
-  // (w, w', e): complex edge e of wire w is parallel (Definition 1) to an edge of wire w'.
-  std::vector<std::array<int32_t, 3>> par;
-  for (size_t w = 0; w < nw; ++w)
+  // (w, w', |E_w|): how many complex edges of wire w are parallel (Definition 1) to an edge of
+  // wire w', in (w, w') order. The (w', e) incidences are gathered and counted one wire at a time,
+  // so only the counts are kept, never every incidence of the whole wireframe at once.
+  std::vector<std::array<int32_t, 3>> counts;
+  std::vector<std::array<int32_t, 2>> par;  // (w', e) for the current wire
+  for (size_t w = 0; w < nw; ++w) {
+    par.clear();
     for (int32_t e : wf.edges[w])
       for (int32_t f : cx.edge_faces[e]) {
         if (!cx.face_quad[f]) continue;
         for (int32_t g : cx.face_edges[f]) {
           const int32_t w2 = ix.edge_wire[g];
           if (g == e || w2 < 0 || w2 == static_cast<int32_t>(w) || share_vertex(cx, e, g)) continue;
-          par.push_back({static_cast<int32_t>(w), w2, e});
+          par.push_back({w2, e});
         }
       }
-  std::sort(par.begin(), par.end());
-  par.erase(std::unique(par.begin(), par.end()), par.end());
-  // Count per ordered pair, then look up the reverse pair.
-  std::vector<std::array<int32_t, 3>> counts;  // (w, w', |E_w|)
-  for (size_t i = 0; i < par.size();) {
-    size_t j = i;
-    while (j < par.size() && par[j][0] == par[i][0] && par[j][1] == par[i][1]) ++j;
-    counts.push_back({par[i][0], par[i][1], static_cast<int32_t>(j - i)});
-    i = j;
+    sort_unique(par);
+    for (size_t i = 0; i < par.size();) {
+      size_t j = i;
+      while (j < par.size() && par[j][0] == par[i][0]) ++j;
+      counts.push_back({static_cast<int32_t>(w), par[i][0], static_cast<int32_t>(j - i)});
+      i = j;
+    }
   }
   MinUnionFind uf(nw);
   for (const auto& c : counts) {
@@ -152,29 +190,41 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
   }
   st.color_class.resize(nw);
   for (size_t w = 0; w < nw; ++w) st.color_class[w] = uf.find(static_cast<int32_t>(w));
-  // Class graph: classes of wire edges sharing a point. Each class's neighbours are visited on
-  // the fly (a stamp per class counts each once) instead of listed as pairs: the classes at one
-  // point form a clique, and a point where thousands of wires meet (a fan of cells around an
-  // edge) would make the pair list quadratic in memory.
+  // Class graph: classes of wire edges sharing a point; each class takes the first colour none of
+  // its coloured neighbours holds, else the one fewest of them hold. Neighbours are visited on the
+  // fly (a stamp per class counts each once) instead of listed as pairs, which a point where
+  // thousands of wires meet (a fan of cells around an edge) would make quadratic in memory. Such
+  // a crowded point keeps a count of its coloured classes per colour instead of being visited
+  // by each of its classes, which would make the colouring quadratic in time.
   Csr<int32_t> wire_class;
   for (size_t w = 0; w < nw; ++w) wire_class.push_row(&st.color_class[w], &st.color_class[w] + 1);
   const Csr<int32_t> class_wires = transpose(wire_class, nw);
+  const ClassPoints cp = class_points(class_wires, ix);
   const int32_t palette = std::max(opt.palette_size, 1);
   std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette)), stamp(nw, -1);
+  std::vector<int32_t> crowded_count(cp.crowded_points * static_cast<size_t>(palette), 0);
   for (size_t c = 0; c < nw; ++c) {
     if (st.color_class[c] != static_cast<int32_t>(c)) continue;
     std::fill(used.begin(), used.end(), 0);
+    const auto crowded = cp.crowded[c];
+    const bool by_count = crowded.size() == 1;  // more crowded points: visited, to count each class once
+    if (by_count)
+      for (int32_t k = 0; k < palette; ++k) used[static_cast<size_t>(k)] = crowded_count[static_cast<size_t>(crowded[0] * palette + k)];
     stamp[c] = static_cast<int32_t>(c);
-    for (int32_t w : class_wires[c])
-      for (int32_t p : ix.wire_points[w])
-        for (int32_t w2 : ix.point_wires[p]) {
-          const int32_t b = st.color_class[w2];
-          if (stamp[b] == static_cast<int32_t>(c)) continue;
-          stamp[b] = static_cast<int32_t>(c);
-          if (class_color[b] >= 0) ++used[class_color[b]];
-        }
+    for (int32_t p : cp.points[c]) {
+      if (by_count && p == cp.crowded_point[static_cast<size_t>(crowded[0])]) continue;
+      for (int32_t w2 : ix.point_wires[p]) {
+        const int32_t b = st.color_class[w2];
+        if (stamp[b] == static_cast<int32_t>(c)) continue;
+        stamp[b] = static_cast<int32_t>(c);
+        // A class at the crowded point is in its count already.
+        if (by_count && std::binary_search(cp.crowded[b].begin(), cp.crowded[b].end(), crowded[0])) continue;
+        if (class_color[b] >= 0) ++used[class_color[b]];
+      }
+    }
     // The first free colour; with none free, the one fewest neighbours hold.
     class_color[c] = static_cast<int32_t>(std::min_element(used.begin(), used.end()) - used.begin());
+    for (int32_t q : crowded) ++crowded_count[static_cast<size_t>(q * palette + class_color[c])];
   }
   st.color.resize(nw);
   for (size_t w = 0; w < nw; ++w) st.color[w] = class_color[st.color_class[w]];
