@@ -85,6 +85,21 @@ MeshInput stacked_cubes(double top) {
   return soup(p, {cube(0), upper});
 }
 
+// Cube 0 at the origin and cube 1 (vertices 8-15) moved by (x, y, z), some of cube 1's vertices
+// glued onto cube 0's ((from, to) pairs), built single-threaded.
+Mesh two_cubes(double x, double y, double z, const std::vector<std::pair<int32_t, int32_t>>& glue) {
+  std::vector<double> p;
+  add_square(p, 0, 0, 0);
+  add_square(p, 0, 0, 1);
+  add_square(p, x, y, z);
+  add_square(p, x, y, z + 1);
+  MeshInput in = soup(p, {cube(0), cube(8)});
+  for (auto& v : in.faces.items)
+    for (auto [from, to] : glue)
+      if (v == from) v = to;
+  return build_mesh(std::move(in), kOne);
+}
+
 TEST(LoadSteps, MergeFacesJoinsCopiesInOrderOfFirstUse) {
   // 2 cubes x 6 face copies; the shared square is listed by both: 11 faces, numbered as the cells
   // name them, the second copy seen reversed against the first (stored) loop.
@@ -212,14 +227,7 @@ TEST(LoadSteps, TwoCubesOnOneEdgeHaveNoCyclicFan) {
   // Cubes 0 and 1 meet along the edge 2-6 only (the second one diagonally above the first's
   // corner): four boundary faces around it, two paths, so no cyclic order, and the ends of that
   // edge are non-manifold (their cells touch across no face).
-  std::vector<double> p;
-  add_square(p, 0, 0, 0);
-  add_square(p, 0, 0, 1);
-  add_square(p, 1, 1, 0);
-  add_square(p, 1, 1, 1);
-  MeshInput in = soup(p, {cube(0), cube(8)});
-  for (auto& v : in.faces.items) v = v == 8 ? 2 : v == 12 ? 6 : v;  // glue (1,1,0) and (1,1,1)
-  const Mesh m = build_mesh(std::move(in), kOne);
+  const Mesh m = two_cubes(1, 1, 0, {{8, 2}, {12, 6}});  // glue (1,1,0) and (1,1,1)
   const int32_t e = test::edge_between(m, 2, 6);
   ASSERT_GE(e, 0);
   EXPECT_FALSE(m.edge_fan_ok(e));
@@ -277,16 +285,8 @@ TEST(LoadSteps, CellTypesFromFacesAndVertices) {
 TEST(LoadSteps, APinchedVertexIsNonManifold) {
   // Two cubes meeting at vertex 6 of the first only (the second cube's vertex 0 there): the
   // cells around it are not face connected.
-  std::vector<double> p;
-  add_square(p, 0, 0, 0);
-  add_square(p, 0, 0, 1);
-  add_square(p, 1, 1, 1);
-  add_square(p, 1, 1, 2);
-  MeshInput in = soup(p, {cube(0), cube(8)});
-  // Glue vertex 8 (the corner (1,1,1) of the second cube) onto vertex 6.
-  for (auto& v : in.faces.items)
-    if (v == 8) v = 6;
-  Mesh m = build_mesh(std::move(in), kOne);
+  // Vertex 8 (the corner (1,1,1) of the second cube) glued onto vertex 6.
+  const Mesh m = two_cubes(1, 1, 1, {{8, 6}});
   for (size_t v = 0; v < m.num_vertices(); ++v)
     EXPECT_EQ(m.vert_non_manifold[v] != 0, v == 6) << "vertex " << v;
 }
