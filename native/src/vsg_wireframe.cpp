@@ -31,6 +31,10 @@ bool intersects(const A& a, const B& b) {
 // faces only).
 struct Region {
   const CellComplex& cx;
+  // Aligned with cx.vert_edges.items: bit j of slot i is set when the row's edges i and j share a
+  // face (share_face), for rows of at most 32 edges; empty until face_masks fills it. Chains ask
+  // this of the edges at one vertex again and again, each time from far away in memory.
+  std::vector<uint32_t> face_mask;
   int32_t valence(int32_t e) const { return cx.edge_cells.count(e); }
   bool regular(int32_t e) const { return valence(e) == (cx.edge_boundary[e] ? 2 : 4); }
   // Two edges in one region face (the authors' "opposite" test for a vertex's two patch edges).
@@ -55,6 +59,22 @@ struct Region {
     if (cx.whole()) return !regular(e) || cx.edge_non_hex[e];
     return cx.edge_all_cells.count(e) != (mesh_boundary(e) ? 2 : 4) || cx.edge_all_non_hex[e];
   }
+  // Calls fn(f) for each edge f at v, in row order, that is not e and shares no face with e.
+  template <class F>
+  void each_straight(int32_t v, int32_t e, const F& fn) const {
+    const auto row = cx.vert_edges[v];
+    if (!face_mask.empty() && row.size() <= 32) {
+      const size_t i = static_cast<size_t>(std::find(row.begin(), row.end(), e) - row.begin());
+      if (i < row.size()) {
+        const uint32_t m = face_mask[static_cast<size_t>(cx.vert_edges.offsets[v]) + i] | (uint32_t{1} << i);
+        for (size_t j = 0; j < row.size(); ++j)
+          if (!(m >> j & 1u)) fn(row[j]);
+        return;
+      }
+    }
+    for (int32_t f : row)
+      if (f != e && !share_face(e, f)) fn(f);
+  }
   double quad_ratio(int32_t e) const {
     const auto fs = cx.edge_faces[e];
     int32_t q = 0;
@@ -69,6 +89,20 @@ struct Region {
     return std::abs(n - 4);
   }
 };
+
+std::vector<uint32_t> face_masks(const Region& r) {
+  const CellComplex& cx = r.cx;
+  std::vector<uint32_t> mask(cx.vert_edges.items.size(), 0);
+  for (size_t v = 0; v < cx.num_vertices(); ++v) {
+    const auto row = cx.vert_edges[v];
+    if (row.size() > 32) continue;
+    uint32_t* m = mask.data() + cx.vert_edges.offsets[v];
+    for (size_t i = 0; i < row.size(); ++i)
+      for (size_t j = i + 1; j < row.size(); ++j)
+        if (r.share_face(row[i], row[j])) m[i] |= uint32_t{1} << j, m[j] |= uint32_t{1} << i;
+  }
+  return mask;
+}
 
 // Chains of edges. A chain continues through vertex v from edge e along next(v, e) (an edge id or
 // -1) unless v is a stop vertex; each edge joins at most one chain (the first that reaches it).
@@ -124,12 +158,13 @@ Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, con
 template <class Allow>
 int32_t straight_next(const Region& r, int32_t v, int32_t e, const Allow& allow) {
   int32_t found = -1;
-  for (int32_t f : r.cx.vert_edges[v]) {
-    if (f == e || r.cx.closed(f) || r.share_face(e, f) || !allow(f)) continue;
-    if (found >= 0) return -1;
+  bool several = false;
+  r.each_straight(v, e, [&](int32_t f) {
+    if (several || r.cx.closed(f) || !allow(f)) return;
+    if (found >= 0) several = true;
     found = f;
-  }
-  return found;
+  });
+  return several ? -1 : found;
 }
 
 // Chains of the VSG rule: the unique straight continuation, when it has the same valence.
@@ -159,33 +194,49 @@ std::vector<uint8_t> edge_flags(const CellComplex& cx, const Csr<int32_t>& rows)
 // the faces at the crossed edge sharing no cell with the current face. The authors' mesh marks an
 // edge singular (a stop) when irregular, at a non-hex cell (mesh level); their base-complex mesh
 // marks none, so there only the boundary stops.
+// Crossing is symmetric (it depends on the edge and on the two faces alone), so the reachable
+// faces are the classes, under "crossed into each other", of the start faces: classes are joined
+// edge by edge in id order, which reads the complex in memory order instead of hopping from face
+// to face.
 std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& start) {
   const CellComplex& cx = r.cx;
   const bool mesh_level = cx.level == Level::Mesh;
-  std::vector<uint8_t> seen(cx.num_faces(), 0);
-  // Faces seen around each edge: an edge whose faces are all seen has nothing left to give, so a
-  // fan of thousands of faces is not walked again from each of them.
-  std::vector<int32_t> seen_at(cx.num_edges(), 0);
-  std::vector<int32_t> stack;
-  auto see = [&](int32_t f) {
-    seen[f] = 1;
-    stack.push_back(f);
-    for (int32_t g : cx.face_edges[f]) ++seen_at[g];
-  };
-  for (size_t e = 0; e < start.size(); ++e)
-    if (start[e])
-      for (int32_t f : cx.edge_faces[e])
-        if (!seen[f]) see(f);
-  while (!stack.empty()) {
-    const int32_t f = stack.back();
-    stack.pop_back();
-    for (int32_t g : cx.face_edges[f]) {
-      if (r.mesh_boundary(g) || (mesh_level && r.mesh_singular(g))) continue;
-      if (seen_at[g] == cx.edge_faces.count(g)) continue;
-      for (int32_t h : cx.edge_faces[g])
-        if (!seen[h] && !r.faces_share_cell(f, h)) see(h);
+  detail::UnionFind uf(cx.num_faces());
+  std::vector<int32_t> rest, next, queue;
+  for (size_t g = 0; g < cx.num_edges(); ++g) {
+    const int32_t e = static_cast<int32_t>(g);
+    if (cx.edge_faces.count(g) < 2 || r.mesh_boundary(e) || (mesh_level && r.mesh_singular(e))) continue;
+    // Classes of the faces around g under "share no cell": a search in the complement of the
+    // share-a-cell relation, each test either settling a face or charged to a sharing pair, so a
+    // fan of thousands of faces costs about as many tests as it has faces.
+    const auto fs = cx.edge_faces[g];
+    rest.assign(fs.begin() + 1, fs.end());
+    queue.assign(1, fs[0]);
+    for (size_t q = 0;; ++q) {
+      if (q == queue.size()) {
+        if (rest.empty()) break;
+        queue.push_back(rest.back());
+        rest.pop_back();
+      }
+      const int32_t f = queue[q];
+      next.clear();
+      for (int32_t h : rest) {
+        if (r.faces_share_cell(f, h)) {
+          next.push_back(h);
+        } else {
+          uf.unite(f, h);
+          queue.push_back(h);
+        }
+      }
+      rest.swap(next);
     }
   }
+  std::vector<uint8_t> root_seen(cx.num_faces(), 0);
+  for (size_t e = 0; e < start.size(); ++e)
+    if (start[e])
+      for (int32_t f : cx.edge_faces[e]) root_seen[static_cast<size_t>(uf.find(f))] = 1;
+  std::vector<uint8_t> seen(cx.num_faces(), 0);
+  for (size_t f = 0; f < seen.size(); ++f) seen[f] = root_seen[static_cast<size_t>(uf.find(static_cast<int32_t>(f)))];
   return seen;
 }
 
@@ -304,11 +355,10 @@ void candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v, std::vect
   for (int32_t e : cand) {
     if (!r.cx.edge_all_quad[e]) continue;
     int32_t next = -1, quad_next = -1, n = 0, nq = 0;
-    for (int32_t f : r.cx.vert_edges[v]) {
-      if (f == e || r.share_face(e, f)) continue;
+    r.each_straight(v, e, [&](int32_t f) {
       next = f, ++n;
       if (r.cx.edge_all_quad[f]) quad_next = f, ++nq;
-    }
+    });
     const int32_t pick = n == 1 ? next : nq == 1 ? quad_next : -1;
     if (pick < 0 || std::find(cand.begin(), cand.end(), pick) == cand.end()) continue;
     const std::array<int32_t, 2> p{std::min(e, pick), std::max(e, pick)};
@@ -387,25 +437,33 @@ int32_t end_edge(const Chains& ch, int32_t c, int32_t v) {
 // edge there; at a vertex with pairs, c's partners if any, else the chains in no pair. With none,
 // along the boundary: boundary edges at v with the same cells as c's edge (sheet-parallel ones
 // dropped when that leaves several).
+// Scratch rows of next_chains, reused from call to call (millions of calls otherwise allocate).
+struct NextScratch {
+  std::vector<int32_t> found, partners, free, side;
+};
+
 void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
-                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, std::vector<int32_t>& out,
-                 std::vector<int32_t>& found) {
+                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, NextScratch& s) {
   const CellComplex& cx = r.cx;
   const int32_t e = end_edge(ch, c, v);
+  std::vector<int32_t>& found = s.found;
   found.clear();
-  for (int32_t f : cx.vert_edges[v])
-    if (f != e && !r.share_face(e, f) && ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
+  r.each_straight(v, e, [&](int32_t f) {
+    if (ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
+  });
   const auto& ps = pt.at[v];
   if (!ps.empty()) {
-    std::vector<int32_t> partners, free;
-    for (int32_t s : found) {
-      if (std::find(ps.begin(), ps.end(), make_pair_of(c, s)) != ps.end()) partners.push_back(s);
-      if (!in_pair(ps, s)) free.push_back(s);
+    s.partners.clear();
+    s.free.clear();
+    for (int32_t x : found) {
+      if (std::find(ps.begin(), ps.end(), make_pair_of(c, x)) != ps.end()) s.partners.push_back(x);
+      if (!in_pair(ps, x)) s.free.push_back(x);
     }
-    found = partners.empty() ? free : partners;
+    found.swap(s.partners.empty() ? s.free : s.partners);
   }
   if (found.empty() && cx.vert_boundary[v] && cx.edge_boundary[ch.edges[c][0]]) {
-    std::vector<int32_t> side;
+    std::vector<int32_t>& side = s.side;
+    side.clear();
     for (int32_t f : cx.vert_edges[v]) {
       const auto a = cx.edge_cells[e], b = cx.edge_cells[f];
       if (f != e && cx.edge_boundary[f] && std::equal(a.begin(), a.end(), b.begin(), b.end())) side.push_back(f);
@@ -414,7 +472,6 @@ void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const 
     for (int32_t f : side)
       if (ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
   }
-  out.insert(out.end(), found.begin(), found.end());
 }
 
 // Reactivation: every chain reached from a kept one (`stack`, the chains kept so far) through its
@@ -428,17 +485,22 @@ std::vector<uint8_t> reactivate(const Region& r, const Chains& ch, const ChainIn
   for (size_t v = 0; v < open_to.size(); ++v)
     for (int32_t f : cx.vert_edges[v])
       if (ix.edge_chain[f] >= 0 && non_important[ix.edge_chain[f]]) open_to[v] = 1;
+  // The kept set is everything reachable, whatever the visiting order: a chain is marked when
+  // first pushed, so the stack holds each chain once.
   std::vector<uint8_t> keep(ch.edges.rows(), 0);
-  std::vector<int32_t> found;
+  for (int32_t c : stack) keep[c] = 1;
+  NextScratch scratch;
   while (!stack.empty()) {
     const int32_t c = stack.back();
     stack.pop_back();
-    if (keep[c]) continue;
-    keep[c] = 1;
     const auto vs = ch.verts[c];
     if (vs.front() == vs.back()) continue;
-    for (int32_t v : {vs.front(), vs.back()})
-      if (open_to[v]) next_chains(r, ch, ix, pt, parallel, c, v, stack, found);
+    for (int32_t v : {vs.front(), vs.back()}) {
+      if (!open_to[v]) continue;
+      next_chains(r, ch, ix, pt, parallel, c, v, scratch);
+      for (int32_t x : scratch.found)
+        if (!keep[x]) keep[x] = 1, stack.push_back(x);
+    }
   }
   return keep;
 }
@@ -562,7 +624,8 @@ int64_t components(const CellComplex& cx, const Csr<int32_t>& chains) {
 }  // namespace
 
 VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& opt) {
-  const Region r{cx};
+  Region r{cx, {}};
+  r.face_mask = face_masks(r);
   VsgWireframe w;
   const size_t ne = cx.num_edges(), nv = cx.num_vertices();
   w.edge_vsg.assign(ne, 0);
@@ -581,8 +644,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_vsg[v])
       for (int32_t e : cx.vert_edges[v]) start[e] = 1;
-  w.vert_singular = patch_singular_vertices(r, flood_faces(r, start));
-  for (size_t v = 0; v < nv; ++v)
+  auto fl_ = flood_faces(r, start);  w.vert_singular = patch_singular_vertices(r, fl_);  for (size_t v = 0; v < nv; ++v)
     if (w.vert_singular[v]) w.singular_vertices.push_back(static_cast<int32_t>(v));
   std::vector<uint8_t> seeds(ne, 0);
   for (int32_t v : w.singular_vertices)

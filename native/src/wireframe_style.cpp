@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <queue>
 #include <utility>
 
 #include "union_find.hpp"
@@ -35,18 +34,18 @@ Index index_points(const CellComplex& cx, const VsgWireframe& w) {
     for (int32_t e : w.edges[c]) ix.edge_wire[e] = static_cast<int32_t>(c);
   int32_t max_id = -1;
   for (int32_t p : w.polylines.items) max_id = std::max(max_id, p);
+  // Points numbered in increasing mesh id: flags over the id range, no sort of every point.
   std::vector<int32_t> point_of_mesh(static_cast<size_t>(max_id + 1), -1);
-  std::vector<int32_t> sorted(w.polylines.items);
-  std::sort(sorted.begin(), sorted.end());
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  for (int32_t p : w.polylines.items) point_of_mesh[static_cast<size_t>(p)] = 0;
   int32_t n = 0;
-  for (int32_t p : sorted) point_of_mesh[p] = n++;
+  for (int32_t& id : point_of_mesh)
+    if (id == 0) id = n++;
   std::vector<int32_t> buf;
+  ix.wire_points.reserve(w.size(), w.polylines.items.size());
   for (size_t c = 0; c < w.size(); ++c) {
     buf.clear();
     for (int32_t p : w.polylines[c]) buf.push_back(point_of_mesh[p]);
-    std::sort(buf.begin(), buf.end());
-    buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
+    if (buf.size() > 2 || (buf.size() == 2 && buf[1] <= buf[0])) sort_unique(buf);
     ix.wire_points.push_row(buf.begin(), buf.end());
   }
   ix.point_wires = transpose(ix.wire_points, static_cast<size_t>(n));
@@ -58,31 +57,35 @@ void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWirefr
   constexpr int32_t kInf = std::numeric_limits<int32_t>::max() / 4;
   std::vector<uint8_t> source(ne, 0);
   std::vector<int32_t> dv(nv, kInf);
-  using Item = std::pair<int32_t, int32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
+  // Distances beyond opacity_hops all give the floor, so the search stops there; below it they
+  // are small integers, so a queue of one bucket per distance replaces a heap (shortest
+  // distances do not depend on the order vertices are settled in).
+  const int32_t horizon = std::max(opt.opacity_hops, 1);
+  std::vector<std::vector<int32_t>> bucket(static_cast<size_t>(horizon) + 1);
   for (size_t e = 0; e < ne; ++e) {
     source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
     if (!source[e] || cx.closed(e)) continue;
     for (int32_t v : cx.edge_verts[e])
       if (dv[v] != 0) {
         dv[v] = 0;
-        pq.push({0, v});
+        bucket[0].push_back(v);
       }
   }
-  // Distances beyond opacity_hops all give the floor, so the search stops there.
-  const int32_t horizon = std::max(opt.opacity_hops, 1);
-  while (!pq.empty()) {
-    const auto [d, v] = pq.top();
-    pq.pop();
-    if (d != dv[v]) continue;
-    for (int32_t e : cx.vert_edges[v]) {
-      const int32_t u = cx.other_vertex(e, v);
-      const int32_t nd = d + cx.edge_points.count(e) - 1;
-      if (nd < dv[u] && nd <= horizon) {
-        dv[u] = nd;
-        pq.push({nd, u});
+  for (int32_t d = 0; d <= horizon; ++d) {
+    // Buckets above d only grow while bucket d is read: index, not iterators.
+    for (size_t i = 0; i < bucket[static_cast<size_t>(d)].size(); ++i) {
+      const int32_t v = bucket[static_cast<size_t>(d)][i];
+      if (d != dv[v]) continue;
+      for (int32_t e : cx.vert_edges[v]) {
+        const int32_t u = cx.other_vertex(e, v);
+        const int32_t nd = d + cx.edge_points.count(e) - 1;
+        if (nd < dv[u] && nd <= horizon) {
+          dv[u] = nd;
+          bucket[static_cast<size_t>(nd)].push_back(u);
+        }
       }
     }
+    std::vector<int32_t>().swap(bucket[static_cast<size_t>(d)]);
   }
   const double floor = std::clamp(opt.opacity_floor, 0.0, 1.0);
   auto value = [&](int32_t d) {
@@ -158,7 +161,10 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
   // (w, w', |E_w|): how many complex edges of wire w are parallel (Definition 1) to an edge of
   // wire w', in (w, w') order. The (w', e) incidences are gathered and counted one wire at a time,
   // so only the counts are kept, never every incidence of the whole wireframe at once.
-  std::vector<std::array<int32_t, 3>> counts;
+  // Row w of `counts` holds (w', |E_w|) by increasing w', so the reverse count of a pair is
+  // looked up in the short row of w', not searched for among all counts.
+  Csr<std::array<int32_t, 2>> counts;
+  counts.offsets.reserve(nw + 1);
   std::vector<std::array<int32_t, 2>> par;  // (w', e) for the current wire
   for (size_t w = 0; w < nw; ++w) {
     par.clear();
@@ -175,19 +181,22 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
     for (size_t i = 0; i < par.size();) {
       size_t j = i;
       while (j < par.size() && par[j][0] == par[i][0]) ++j;
-      counts.push_back({static_cast<int32_t>(w), par[i][0], static_cast<int32_t>(j - i)});
+      counts.items.push_back({par[i][0], static_cast<int32_t>(j - i)});
       i = j;
     }
+    counts.offsets.push_back(static_cast<int32_t>(counts.items.size()));
   }
   MinUnionFind uf(nw);
-  for (const auto& c : counts) {
-    if (c[0] > c[1]) continue;
-    auto it = std::lower_bound(counts.begin(), counts.end(), std::array<int32_t, 3>{c[1], c[0], 0});
-    if (it == counts.end() || (*it)[0] != c[1] || (*it)[1] != c[0]) continue;
-    const double fa = double(c[2]) / double(wf.edges.count(c[0]));
-    const double fb = double((*it)[2]) / double(wf.edges.count(c[1]));
-    if (std::min(fa, fb) >= opt.rho) uf.unite(c[0], c[1]);
-  }
+  for (size_t a = 0; a < nw; ++a)
+    for (const auto& [b, na] : counts[a]) {
+      if (static_cast<int32_t>(a) > b) continue;
+      const auto back = counts[static_cast<size_t>(b)];
+      auto it = std::lower_bound(back.begin(), back.end(), std::array<int32_t, 2>{static_cast<int32_t>(a), 0});
+      if (it == back.end() || (*it)[0] != static_cast<int32_t>(a)) continue;
+      const double fa = double(na) / double(wf.edges.count(a));
+      const double fb = double((*it)[1]) / double(wf.edges.count(b));
+      if (std::min(fa, fb) >= opt.rho) uf.unite(static_cast<int32_t>(a), b);
+    }
   st.color_class.resize(nw);
   for (size_t w = 0; w < nw; ++w) st.color_class[w] = uf.find(static_cast<int32_t>(w));
   // Class graph: classes of wire edges sharing a point; each class takes the first colour none of
