@@ -58,7 +58,8 @@ std::vector<int32_t> compact(const std::vector<uint8_t>& keep, std::vector<int32
 }
 
 void sort_unique_row(std::vector<int32_t>& buf, Csr<int32_t>& out) {
-  std::sort(buf.begin(), buf.end());
+  // Rows mapped through monotonic id maps mostly come sorted already: checking is cheaper.
+  if (!std::is_sorted(buf.begin(), buf.end())) std::sort(buf.begin(), buf.end());
   buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
   out.push_row(buf.begin(), buf.end());
 }

@@ -59,21 +59,23 @@ struct Region {
     if (cx.whole()) return !regular(e) || cx.edge_non_hex[e];
     return cx.edge_all_cells.count(e) != (mesh_boundary(e) ? 2 : 4) || cx.edge_all_non_hex[e];
   }
-  // Calls fn(f) for each edge f at v, in row order, that is not e and shares no face with e.
+  // Calls fn(f, slot) for each edge f at v, in row order, that is not e and shares no face with
+  // e; slot is f's position in cx.vert_edges.items.
   template <class F>
   void each_straight(int32_t v, int32_t e, const F& fn) const {
     const auto row = cx.vert_edges[v];
+    const size_t off = static_cast<size_t>(cx.vert_edges.offsets[v]);
     if (!face_mask.empty() && row.size() <= 32) {
       const size_t i = static_cast<size_t>(std::find(row.begin(), row.end(), e) - row.begin());
       if (i < row.size()) {
-        const uint32_t m = face_mask[static_cast<size_t>(cx.vert_edges.offsets[v]) + i] | (uint32_t{1} << i);
+        const uint32_t m = face_mask[off + i] | (uint32_t{1} << i);
         for (size_t j = 0; j < row.size(); ++j)
-          if (!(m >> j & 1u)) fn(row[j]);
+          if (!(m >> j & 1u)) fn(row[j], off + j);
         return;
       }
     }
-    for (int32_t f : row)
-      if (f != e && !share_face(e, f)) fn(f);
+    for (size_t j = 0; j < row.size(); ++j)
+      if (row[j] != e && !share_face(e, row[j])) fn(row[j], off + j);
   }
   double quad_ratio(int32_t e) const {
     const auto fs = cx.edge_faces[e];
@@ -159,7 +161,7 @@ template <class Allow>
 int32_t straight_next(const Region& r, int32_t v, int32_t e, const Allow& allow) {
   int32_t found = -1;
   bool several = false;
-  r.each_straight(v, e, [&](int32_t f) {
+  r.each_straight(v, e, [&](int32_t f, size_t) {
     if (several || r.cx.closed(f) || !allow(f)) return;
     if (found >= 0) several = true;
     found = f;
@@ -264,17 +266,25 @@ std::vector<uint8_t> patch_singular_vertices(const Region& r, const std::vector<
   return out;
 }
 
-void append_points(const CellComplex& cx, int32_t e, int32_t from, std::vector<int32_t>& poly) {
+// Appends the mesh vertices of edge e walked from its end `from`, its first one only when the row
+// is still empty (otherwise it is the previous edge's last).
+void append_points(const CellComplex& cx, int32_t e, int32_t from, bool first, std::vector<int32_t>& items) {
   const auto pts = cx.edge_points[e];
   const bool forward = cx.edge_verts[e][0] == from;
   const size_t n = pts.size();
-  for (size_t k = poly.empty() ? 0 : 1; k < n; ++k) poly.push_back(forward ? pts[k] : pts[n - 1 - k]);
+  for (size_t k = first ? 0 : 1; k < n; ++k) items.push_back(forward ? pts[k] : pts[n - 1 - k]);
 }
 
+// Written straight into `out` (no row buffer per chain: millions of chains).
 void push_polyline(const CellComplex& cx, std::span<const int32_t> es, std::span<const int32_t> vs, Csr<int32_t>& out) {
-  std::vector<int32_t> poly;
-  for (size_t i = 0; i < es.size(); ++i) append_points(cx, es[i], vs[i], poly);
-  out.push_row(poly.begin(), poly.end());
+  for (size_t i = 0; i < es.size(); ++i) append_points(cx, es[i], vs[i], i == 0, out.items);
+  out.offsets.push_back(static_cast<int32_t>(out.items.size()));
+}
+
+// Room for the polylines of chains over distinct edges: at most every edge's points, less the
+// point each edge shares with the previous one, plus one per chain.
+void reserve_polylines(const CellComplex& cx, size_t chains, Csr<int32_t>& out) {
+  out.reserve(chains, cx.edge_points.items.size() - cx.num_edges() + chains);
 }
 
 // Closed complex edges (curves without corners) are chains by themselves when seeded.
@@ -355,7 +365,7 @@ void candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v, std::vect
   for (int32_t e : cand) {
     if (!r.cx.edge_all_quad[e]) continue;
     int32_t next = -1, quad_next = -1, n = 0, nq = 0;
-    r.each_straight(v, e, [&](int32_t f) {
+    r.each_straight(v, e, [&](int32_t f, size_t) {
       next = f, ++n;
       if (r.cx.edge_all_quad[f]) quad_next = f, ++nq;
     });
@@ -442,17 +452,20 @@ struct NextScratch {
   std::vector<int32_t> found, partners, free, side;
 };
 
+// `slot_chain`: ix.edge_chain of each cx.vert_edges item, read along the row; `paired`: pt.at[v]
+// is not empty.
 void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
-                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, NextScratch& s) {
+                 const std::vector<int32_t>& slot_chain, bool paired, const std::vector<uint8_t>& parallel,
+                 int32_t c, int32_t v, NextScratch& s) {
   const CellComplex& cx = r.cx;
   const int32_t e = end_edge(ch, c, v);
   std::vector<int32_t>& found = s.found;
   found.clear();
-  r.each_straight(v, e, [&](int32_t f) {
-    if (ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
+  r.each_straight(v, e, [&](int32_t, size_t slot) {
+    if (slot_chain[slot] >= 0) found.push_back(slot_chain[slot]);
   });
-  const auto& ps = pt.at[v];
-  if (!ps.empty()) {
+  if (paired) {
+    const auto& ps = pt.at[v];
     s.partners.clear();
     s.free.clear();
     for (int32_t x : found) {
@@ -481,26 +494,37 @@ std::vector<uint8_t> reactivate(const Region& r, const Chains& ch, const ChainIn
                                 const std::vector<uint8_t>& parallel, const std::vector<uint8_t>& non_important,
                                 std::vector<int32_t> stack) {
   const CellComplex& cx = r.cx;
-  std::vector<uint8_t> open_to(cx.num_vertices(), 0);  // some non-important chain has an edge here
-  for (size_t v = 0; v < open_to.size(); ++v)
-    for (int32_t f : cx.vert_edges[v])
-      if (ix.edge_chain[f] >= 0 && non_important[ix.edge_chain[f]]) open_to[v] = 1;
+  // Per vertex: 1 when some non-important chain has an edge here, 2 when it has chain pairs.
+  std::vector<uint8_t> open_to(cx.num_vertices(), 0);
+  std::vector<int32_t> slot_chain(cx.vert_edges.items.size());
+  for (size_t v = 0; v < open_to.size(); ++v) {
+    for (size_t j = static_cast<size_t>(cx.vert_edges.offsets[v]); j < static_cast<size_t>(cx.vert_edges.offsets[v + 1]); ++j) {
+      const int32_t x = slot_chain[j] = ix.edge_chain[cx.vert_edges.items[j]];
+      if (x >= 0 && non_important[x]) open_to[v] |= 1;
+    }
+    if (!pt.at[v].empty()) open_to[v] |= 2;
+  }
   // The kept set is everything reachable, whatever the visiting order: a chain is marked when
-  // first pushed, so the stack holds each chain once.
+  // first reached, and the chains are visited in rounds, each in increasing id order (ids follow
+  // the complex's memory order; a depth-first order would jump across it at every step).
   std::vector<uint8_t> keep(ch.edges.rows(), 0);
   for (int32_t c : stack) keep[c] = 1;
   NextScratch scratch;
+  std::vector<int32_t> reached;
   while (!stack.empty()) {
-    const int32_t c = stack.back();
-    stack.pop_back();
-    const auto vs = ch.verts[c];
-    if (vs.front() == vs.back()) continue;
-    for (int32_t v : {vs.front(), vs.back()}) {
-      if (!open_to[v]) continue;
-      next_chains(r, ch, ix, pt, parallel, c, v, scratch);
-      for (int32_t x : scratch.found)
-        if (!keep[x]) keep[x] = 1, stack.push_back(x);
+    std::sort(stack.begin(), stack.end());
+    reached.clear();
+    for (int32_t c : stack) {
+      const auto vs = ch.verts[c];
+      if (vs.front() == vs.back()) continue;
+      for (int32_t v : {vs.front(), vs.back()}) {
+        if (!(open_to[v] & 1)) continue;
+        next_chains(r, ch, ix, pt, slot_chain, (open_to[v] & 2) != 0, parallel, c, v, scratch);
+        for (int32_t x : scratch.found)
+          if (!keep[x]) keep[x] = 1, reached.push_back(x);
+      }
     }
+    stack.swap(reached);
   }
   return keep;
 }
@@ -586,9 +610,15 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
 
 void fill_complete(const Region& r, const Chains& ch, VsgWireframe& w) {
   const CellComplex& cx = r.cx;
-  for (size_t c = 0; c < ch.edges.rows(); ++c) {
+  const size_t n = ch.edges.rows();
+  w.edges = ch.edges;
+  reserve_polylines(cx, n, w.polylines);
+  w.ends.reserve(n);
+  w.kind.reserve(n);
+  w.valence.reserve(n);
+  w.stop.reserve(n);
+  for (size_t c = 0; c < n; ++c) {
     const auto es = ch.edges[c], vs = ch.verts[c];
-    push_row_span(w.edges, es);
     if (vs[0] < 0) push_row_span(w.polylines, cx.edge_points[es[0]]);
     else push_polyline(cx, es, vs, w.polylines);
     const bool closed = vs.front() == vs.back();
@@ -663,6 +693,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   w.reactivated = cl.reactivated;
   const Chains simple = final_chains(r, complete, cl.kept);
   w.simplified_edges = simple.edges;
+  reserve_polylines(cx, simple.edges.rows(), w.simplified_polylines);
   for (size_t c = 0; c < simple.edges.rows(); ++c)
     push_polyline(cx, simple.edges[c], simple.verts[c], w.simplified_polylines);
   const std::vector<uint8_t> on = edge_flags(cx, simple.edges);

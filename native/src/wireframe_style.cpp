@@ -144,9 +144,10 @@ ClassPoints class_points(const Csr<int32_t>& class_wires, const Index& ix) {
   for (size_t c = 0; c < class_wires.rows(); ++c) {
     buf.clear();
     heavy.clear();
-    for (int32_t w : class_wires[c])
+    const auto ws = class_wires[c];
+    for (int32_t w : ws)
       for (int32_t p : ix.wire_points[w]) buf.push_back(p);
-    sort_unique(buf);
+    if (ws.size() > 1) sort_unique(buf);  // one wire's points are sorted and distinct already
     for (int32_t p : buf)
       if (crowded_id[static_cast<size_t>(p)] >= 0) heavy.push_back(crowded_id[static_cast<size_t>(p)]);
     cp.points.push_row(buf.begin(), buf.end());
