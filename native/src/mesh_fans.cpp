@@ -194,7 +194,9 @@ namespace {
 // of the unions.
 class HalfEdgeSets {
  public:
-  explicit HalfEdgeSets(size_t n) {
+  // shared = false when one thread does every union and find: plain stores then, as a locked
+  // compare-and-swap per union costs more than the rest of the step.
+  HalfEdgeSets(size_t n, bool shared) : shared_(shared) {
     detail::resize_huge(parent_, n);
     std::iota(parent_.begin(), parent_.end(), 0);
   }
@@ -204,7 +206,8 @@ class HalfEdgeSets {
       if (p == x) return x;
       const int32_t g = at(p).load(std::memory_order_acquire);
       if (g == p) return p;
-      at(x).compare_exchange_weak(p, g, std::memory_order_acq_rel);  // x now points to its grandparent, if unchanged
+      if (shared_) at(x).compare_exchange_weak(p, g, std::memory_order_acq_rel);  // x now points to its grandparent, if unchanged
+      else parent_[static_cast<size_t>(x)] = g;
       x = g;
     }
   }
@@ -213,6 +216,10 @@ class HalfEdgeSets {
       a = find(a), b = find(b);
       if (a == b) return;
       if (a < b) std::swap(a, b);
+      if (!shared_) {
+        parent_[static_cast<size_t>(a)] = b;
+        return;
+      }
       int32_t expected = a;
       if (at(a).compare_exchange_strong(expected, b, std::memory_order_acq_rel)) return;
     }
@@ -221,6 +228,7 @@ class HalfEdgeSets {
  private:
   std::atomic_ref<int32_t> at(int32_t x) { return std::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
   std::vector<int32_t> parent_;
+  bool shared_;
 };
 
 // The exact test on a few vertices: the cells around v, joined across the faces at v.
@@ -269,7 +277,7 @@ void check_exactly(Mesh& m, const std::vector<uint8_t>& suspect) {
 // pinched cells are tested cell by cell instead.
 void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& par) {
   const size_t nv = m.num_vertices(), ne = m.num_edges();
-  HalfEdgeSets sets(2 * ne);
+  HalfEdgeSets sets(2 * ne, par.threads > 1);
   auto half = [&](int32_t e, int32_t v) { return 2 * e + (m.edge_verts[static_cast<size_t>(e)][1] == v ? 1 : 0); };
   detail::parallel_ranges(m.num_faces(), par, [&](size_t fb, size_t fe, int) {
     for (size_t f = fb; f < fe; ++f) {
@@ -290,8 +298,10 @@ void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& p
     });
   };
   each_end([&](size_t v, int32_t r, size_t) {
+    // Most ends meet a vertex already set: a plain load spares them the locked operation.
+    std::atomic_ref<int32_t> at(first[v]);
     int32_t none = -1;
-    std::atomic_ref<int32_t>(first[v]).compare_exchange_strong(none, r, std::memory_order_relaxed);
+    if (at.load(std::memory_order_relaxed) < 0) at.compare_exchange_strong(none, r, std::memory_order_relaxed);
   });
   each_end([&](size_t v, int32_t r, size_t e) {
     if (r != first[v]) std::atomic_ref<uint8_t>(split[v]).store(1, std::memory_order_relaxed);

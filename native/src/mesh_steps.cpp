@@ -402,18 +402,32 @@ void prefill_next(const Mesh& m, std::vector<int32_t>& rep, std::vector<uint8_t>
 }
 
 // rep[k] = the lowest corner with the same edge, bucket by bucket of by_lo (corners by the lower
-// end of their edge); every corner of a bucket is read before any of them is overwritten.
+// end of their edge, in increasing order, so the first corner met of each edge is its lowest).
+// A vertex starts a few edges: a short list of (other end, first corner) finds them faster than
+// sorting the bucket, whose order is random to the branch predictor; long buckets are sorted.
 void edge_representatives(const Mesh& m, const Csr<int32_t>& by_lo, std::vector<int32_t>& rep, const LoadOptions& par) {
   const std::vector<int32_t>& loops = m.face_verts.items;
+  constexpr size_t kListed = 64;  // longer buckets: sorted, as the list would grow quadratic
   detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
-    std::vector<uint64_t> hi_corner;  // other end << 32 | corner, sorted
+    std::vector<uint64_t> hi_corner;  // other end << 32 | corner
     for (size_t v = vb; v < ve; ++v) {
+      const auto bucket = by_lo[v];
       hi_corner.clear();
-      for (int32_t k : by_lo[v]) {
+      if (bucket.size() <= kListed) {
+        for (int32_t k : bucket) {
+          const auto kk = static_cast<size_t>(k);
+          const auto hi = static_cast<uint64_t>(std::max(loops[kk], rep[kk]));
+          auto it = std::find_if(hi_corner.begin(), hi_corner.end(), [&](uint64_t x) { return x >> 32 == hi; });
+          if (it == hi_corner.end()) it = hi_corner.insert(it, hi << 32 | static_cast<uint32_t>(k));
+          rep[kk] = static_cast<int32_t>(*it & 0xffffffffu);
+        }
+        continue;
+      }
+      for (int32_t k : bucket) {
         const auto kk = static_cast<size_t>(k);
         hi_corner.push_back(static_cast<uint64_t>(std::max(loops[kk], rep[kk])) << 32 | static_cast<uint32_t>(k));
       }
-      detail::sort_small(hi_corner.begin(), hi_corner.end());  // a vertex starts a few edges, each in a few faces
+      std::sort(hi_corner.begin(), hi_corner.end());
       for (size_t i = 0; i < hi_corner.size(); ++i) {
         const auto k = static_cast<size_t>(hi_corner[i] & 0xffffffffu);
         const bool same = i > 0 && (hi_corner[i - 1] >> 32) == (hi_corner[i] >> 32);
