@@ -87,9 +87,15 @@ class HexFaceTable {
   int32_t other_face(const Mesh& m, int32_t c, int32_t f, size_t i) {
     const auto faces = m.cell_faces[static_cast<size_t>(c)];
     if (!built_[static_cast<size_t>(c)]) build(m, c);
-    const size_t j = static_cast<size_t>(std::find(faces.begin(), faces.end(), f) - faces.begin());
-    const size_t k = 4 * j + i;
+    const size_t k = 4 * slot_of(faces.data(), 6, f) + i;
     return faces[(other_[static_cast<size_t>(c)][k / 2] >> (4 * (k % 2))) & 15];
+  }
+  // Position of x among the n ids at p (it is there): a branch-free scan, as the position is
+  // unpredictable and a mispredicted early exit costs more than the few compares.
+  static size_t slot_of(const int32_t* p, size_t n, int32_t x) {
+    size_t j = 0;
+    for (size_t k = 1; k < n; ++k) j += (p[k] == x) * k;
+    return j;
   }
 
  private:
@@ -129,8 +135,7 @@ int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, Hex
   const auto gc = m.face_cells[static_cast<size_t>(g)];
   const int32_t c1 = gc[0] == c0 ? gc[1] : gc[0];
   if (c1 < 0) return -1;
-  const auto ge = m.face_edges(static_cast<size_t>(g));
-  return table.other_face(m, c1, g, static_cast<size_t>(std::find(ge.begin(), ge.end(), e) - ge.begin()));
+  return table.other_face(m, c1, g, HexFaceTable::slot_of(m.face_edges(static_cast<size_t>(g)).data(), 4, e));
 }
 
 // Sorted distinct values of `v`, appended to `out` as one row.
@@ -169,38 +174,69 @@ void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
   out.push_row(v.begin(), v.end());
 }
 
+// State of a face while the separation surfaces grow: separates, waits to be grown from, and in
+// the bits from 2 up the position + 1 of the edge it was reached across (0 for a seed); straight
+// continuation is symmetric, so that edge leads back to a separation face and is skipped.
+constexpr uint8_t kSep = 1, kPending = 2;
+
+// Grows the surfaces from pending face f across its Regular inside edges: marks every face reached
+// pending and calls reached(next) for it.
+template <class Reached>
+void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uint8_t>& state, HexFaceTable& table,
+            Reached reached) {
+  const size_t from = static_cast<size_t>(state[static_cast<size_t>(f)] >> 2);
+  state[static_cast<size_t>(f)] = kSep;
+  const auto fe = m.face_edges(static_cast<size_t>(f));
+  for (size_t i = 0; i < fe.size(); ++i) {
+    const int32_t e = fe[i];
+    if (i + 1 == from || g.is_structural(e) || m.edge_boundary[e]) continue;
+    const int32_t next = regular_straight_face(m, e, f, i, table);
+    if (next < 0 || state[static_cast<size_t>(next)]) continue;
+    const auto ne = m.face_edges(static_cast<size_t>(next));
+    const size_t at = ne.size() == 4 ? HexFaceTable::slot_of(ne.data(), 4, e) + 1 : 0;
+    state[static_cast<size_t>(next)] = static_cast<uint8_t>(kSep | kPending | at << 2);
+    reached(next);
+  }
+}
+
 // Separation faces: boundary faces, and the surfaces traced straight from every face around an
 // edge of the hybrid singularity graph until they reach another such edge or the boundary.
+// The result is a closure, so the order of growth is free: sweeps over the faces in increasing,
+// then decreasing id (a face reached ahead of the sweep is grown in the same sweep) keep the
+// memory accesses in order, where a breadth-first queue scatters them over the whole mesh. A few
+// sweeps settle meshes numbered layer by layer; after those, a stack finishes whatever is left.
 std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) {
   const size_t nf = m.num_faces();
-  std::vector<uint8_t> sep(nf, 0);
-  std::vector<int32_t> queue;
-  // The faces around the graph's edges, and the boundary; the surfaces grow from the former.
+  std::vector<uint8_t> state(nf, 0);
   for (size_t f = 0; f < nf; ++f) {
-    sep[f] = m.face_boundary[f];
-    if (sep[f]) continue;
+    if (m.face_boundary[f]) {
+      state[f] = kSep;  // the boundary separates but grows no surface
+      continue;
+    }
     const auto fe = m.face_edges(f);
-    if (std::any_of(fe.begin(), fe.end(), [&](int32_t e) { return g.is_structural(e); })) {
-      sep[f] = 1;
-      queue.push_back(static_cast<int32_t>(f));
-    }
+    if (std::any_of(fe.begin(), fe.end(), [&](int32_t e) { return g.is_structural(e); })) state[f] = kSep | kPending;
   }
-  // Edges that are neither structural nor on the boundary are Regular and inside.
   HexFaceTable table(m.num_cells());
-  for (size_t q = 0; q < queue.size(); ++q) {
-    const int32_t f = queue[q];
-    const auto fe = m.face_edges(static_cast<size_t>(f));
-    for (size_t i = 0; i < fe.size(); ++i) {
-      const int32_t e = fe[i];
-      if (g.is_structural(e) || m.edge_boundary[e]) continue;
-      const int32_t next = regular_straight_face(m, e, f, i, table);
-      if (next >= 0 && !sep[next]) {
-        sep[next] = 1;
-        queue.push_back(next);
-      }
+  bool behind = true;
+  for (int sweep = 0; sweep < 6 && behind; ++sweep) {
+    behind = false;
+    const bool up = sweep % 2 == 0;
+    for (size_t k = 0; k < nf; ++k) {
+      const int32_t f = static_cast<int32_t>(up ? k : nf - 1 - k);
+      if (state[static_cast<size_t>(f)] & kPending)
+        spread(m, g, f, state, table, [&](int32_t next) { behind = behind || (up ? next < f : next > f); });
     }
   }
-  return sep;
+  std::vector<int32_t> stack;
+  for (size_t f = 0; behind && f < nf; ++f)
+    if (state[f] & kPending) stack.push_back(static_cast<int32_t>(f));
+  while (!stack.empty()) {
+    const int32_t f = stack.back();
+    stack.pop_back();
+    spread(m, g, f, state, table, [&](int32_t next) { stack.push_back(next); });
+  }
+  for (uint8_t& x : state) x &= kSep;
+  return state;
 }
 
 // Groups the elements 0..n-1 that `take` accepts into connected groups: each unlabelled accepted

@@ -345,13 +345,12 @@ ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
                              orthogonal_edge(m, static_cast<int32_t>(c), f)};
     for (int32_t r : reps) bc.add(d.cell_block[c], classes.number(r, pc.count), static_cast<int32_t>(c));
   }
-  // Each class's blocks in order of their first cell with it.
-  std::sort(bc.entries.begin(), bc.entries.end());
-  pc.blocks.reserve(static_cast<size_t>(pc.count), bc.entries.size());
-  for (size_t i = 0, k = 0; k < static_cast<size_t>(pc.count); ++k) {
-    for (; i < bc.entries.size() && bc.entries[i][0] == static_cast<int32_t>(k); ++i) pc.blocks.items.push_back(bc.entries[i][2]);
-    pc.blocks.offsets.push_back(static_cast<int32_t>(pc.blocks.items.size()));
-  }
+  // Each class's blocks in order of their first cell with it: the entries come in cell order and
+  // name each (class, block) once, so grouping them by class (stable) sorts them by (class, cell).
+  std::vector<int32_t> entry_class(bc.entries.size());
+  for (size_t i = 0; i < bc.entries.size(); ++i) entry_class[i] = bc.entries[i][0];
+  pc.blocks = group_by(entry_class, static_cast<size_t>(pc.count));
+  for (int32_t& i : pc.blocks.items) i = bc.entries[static_cast<size_t>(i)][2];
   Csr<int32_t> curve_class;
   for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
     const int32_t cls = classes.of(d.curve_edges[k][0]);

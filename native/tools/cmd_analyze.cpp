@@ -25,9 +25,10 @@ void run_analyze(const AnalyzeArgs& args) {
   opt.sheet_level = opt.wireframe_level = level_from_name(args.level);
   double t_load = 0;
   const Mesh m = load_for_cli(args.input, &t_load);
-  Analysis a = analyze(m, opt);
-  a.timings.load = t_load;
-  const Stats s = compute_stats(m, a);
+  // Only counts are printed: analyze_stats drops each stage once counted (10^7 cells fit in 4 GB).
+  StatsRun run = analyze_stats(m, opt);
+  run.stats.timings.load = t_load;
+  const Stats& s = run.stats;
   const std::string& file = args.input.file;
   if (args.json) {
     Json j = {{"file", file}};
@@ -37,10 +38,9 @@ void run_analyze(const AnalyzeArgs& args) {
     std::printf("%s\n%s\n", stats_csv_header().c_str(), stats_csv_row(file, s).c_str());
   } else {
     std::printf("%s", stats_table(file, s).c_str());
-    if (a.sheet_stage && a.sheet_stage->subsheets)
-      for (const Subsheets& x : *a.sheet_stage->subsheets)
-        std::printf("  self-intersecting sheet %d (%d blocks): %zu subsheets\n", x.sheet,
-                    a.sheet_stage->sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)), x.size());
+    for (const SubsheetCount& x : run.subsheet_counts)
+      std::printf("  self-intersecting sheet %d (%d blocks): %lld subsheets\n", x.sheet, x.blocks,
+                  static_cast<long long>(x.subsheets));
   }
 }
 

@@ -1,5 +1,6 @@
 // The paper's Table 1, on the three of its meshes we hold: our figures must come out exactly.
 #include "hbc/analysis.hpp"
+#include "hbc/generate.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -70,6 +71,44 @@ TEST(Table1, TeapotSubsheets) {
   EXPECT_EQ(blocks_to_subsheets[0], std::make_pair(int32_t{224}, size_t{3}));
   EXPECT_EQ(blocks_to_subsheets[1], std::make_pair(int32_t{352}, size_t{6}));
   EXPECT_EQ(a.sheet_stage->sheets.sheet_blocks.count(static_cast<size_t>(a.sheet_stage->largest_self_intersecting.value())), 352);
+}
+
+// The CLI's stage-by-stage analysis (each stage dropped once counted, the wireframe before the
+// sheets) gives the same statistics and subsheet counts as the whole analysis, at both levels and
+// with stages skipped.
+TEST(Table1, AnalyzeStatsMatchesAnalyze) {
+  const Mesh meshes[] = {build_mesh(generate_twisted_pair(4, 12)), build_mesh(generate_cylinder(4, 3))};
+  for (const Mesh& m : meshes)
+    for (int variant = 0; variant < 4; ++variant) {
+      AnalysisOptions opt;
+      if (variant == 1) opt.sheet_level = opt.wireframe_level = Level::Mesh;
+      opt.wireframe = variant != 2;
+      opt.sheets = variant != 3;
+      const Analysis a = analyze(m, opt);
+      const Stats s = compute_stats(m, a);
+      const StatsRun run = analyze_stats(m, opt);
+      const Stats& t = run.stats;
+      EXPECT_EQ(std::make_tuple(t.cells, t.hex_cells, t.singular_edges, t.singularities, t.pseudo_singular_edges,
+                                t.non_manifold_edges, t.singular_vertices),
+                std::make_tuple(s.cells, s.hex_cells, s.singular_edges, s.singularities, s.pseudo_singular_edges,
+                                s.non_manifold_edges, s.singular_vertices));
+      EXPECT_EQ(std::make_tuple(t.components, t.hex_components, t.patches, t.curves, t.corners, t.self_adjacent_faces),
+                std::make_tuple(s.components, s.hex_components, s.patches, s.curves, s.corners, s.self_adjacent_faces));
+      EXPECT_EQ(std::make_tuple(t.sheets, t.sheets_perfect, t.sheets_type1, t.sheets_type2, t.sheets_type3,
+                                t.subsheets_of_largest_self_intersecting),
+                std::make_tuple(s.sheets, s.sheets_perfect, s.sheets_type1, s.sheets_type2, s.sheets_type3,
+                                s.subsheets_of_largest_self_intersecting));
+      EXPECT_EQ(std::make_tuple(t.vsg_edges, t.wireframe_edges, t.wireframe_edges_simplified),
+                std::make_tuple(s.vsg_edges, s.wireframe_edges, s.wireframe_edges_simplified));
+      std::vector<std::tuple<int32_t, int32_t, int64_t>> want, got;
+      if (a.sheet_stage && a.sheet_stage->subsheets)
+        for (const Subsheets& x : *a.sheet_stage->subsheets)
+          want.push_back({x.sheet, a.sheet_stage->sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)),
+                          static_cast<int64_t>(x.size())});
+      for (const SubsheetCount& x : run.subsheet_counts) got.push_back({x.sheet, x.blocks, x.subsheets});
+      EXPECT_EQ(got, want);
+      if (variant == 0 && &m == &meshes[0]) EXPECT_FALSE(want.empty());
+    }
 }
 
 }  // namespace
