@@ -674,7 +674,8 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_vsg[v])
       for (int32_t e : cx.vert_edges[v]) start[e] = 1;
-  auto fl_ = flood_faces(r, start);  w.vert_singular = patch_singular_vertices(r, fl_);  for (size_t v = 0; v < nv; ++v)
+  w.vert_singular = patch_singular_vertices(r, flood_faces(r, start));
+  for (size_t v = 0; v < nv; ++v)
     if (w.vert_singular[v]) w.singular_vertices.push_back(static_cast<int32_t>(v));
   std::vector<uint8_t> seeds(ne, 0);
   for (int32_t v : w.singular_vertices)

@@ -25,7 +25,7 @@ void run_analyze(const AnalyzeArgs& args) {
   opt.sheet_level = opt.wireframe_level = level_from_name(args.level);
   double t_load = 0;
   const Mesh m = load_for_cli(args.input, &t_load);
-  // Only counts are printed: analyze_stats drops each stage once counted (10^7 cells fit in 4 GB).
+  // Only counts are printed: analyze_stats drops each stage once counted, a lower peak at 10^7 cells.
   StatsRun run = analyze_stats(m, opt);
   run.stats.timings.load = t_load;
   const Stats& s = run.stats;
