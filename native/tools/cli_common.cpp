@@ -36,7 +36,7 @@ void add_format(CLI::App& cmd, std::string& format) {
 void add_input(CLI::App& cmd, InputArgs& in) {
   cmd.add_option("FILE", in.file, "mesh file (.ovm, .ovmb, .mesh, .HYBRID, .hedra, .msh, .vtk, .vtu)")->required();
   add_format(cmd, in.format);
-  cmd.add_option("--threads", in.threads, "threads for reading the mesh (default: HBC_THREADS, else every core)")
+  cmd.add_option("--threads", in.threads, "threads for reading and analysing the mesh (default: HBC_THREADS, else every core)")
       ->check(CLI::Range(1, 1024));
 }
 

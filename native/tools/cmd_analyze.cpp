@@ -19,6 +19,7 @@ struct AnalyzeArgs {
 
 void run_analyze(const AnalyzeArgs& args) {
   AnalysisOptions opt;
+  opt.threads = args.input.threads;
   opt.sheets = !args.no_sheets;
   opt.wireframe = !args.no_wireframe;
   opt.wireframe_options.rho = args.rho;

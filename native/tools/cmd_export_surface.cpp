@@ -24,6 +24,7 @@ struct ExportSurfaceArgs {
 FaceSelection selection(const Mesh& mesh, const ExportSurfaceArgs& args) {
   if (args.what == "boundary") return boundary_selection(mesh);
   AnalysisOptions opt;
+  opt.threads = args.input.threads;
   opt.sheets = args.what == "sheets";
   opt.subsheets = false;
   opt.wireframe = false;

@@ -27,6 +27,7 @@ void run_export_vtu(const ExportVtuArgs& args) {
   vo.ascii = args.ascii;
   vo.sheet = args.sheet;
   AnalysisOptions opt;
+  opt.threads = args.input.threads;
   opt.wireframe = false;
   opt.sheet_level = level_from_name(args.level);
   const Mesh mesh = load_for_cli(args.input);

@@ -75,6 +75,7 @@ void print_sheets_table(const std::string& file, const SheetStage& st) {
 
 void run_sheets(const SheetsArgs& args) {
   AnalysisOptions opt;
+  opt.threads = args.input.threads;
   opt.wireframe = false;
   opt.sheet_level = level_from_name(args.level);
   const Mesh m = load_for_cli(args.input);

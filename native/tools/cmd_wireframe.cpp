@@ -120,6 +120,7 @@ void run_wireframe(const WireframeArgs& args) {
   const Mesh m = load_for_cli(args.input);
   // --sheet picks a complex-level sheet at either level (the paper's sheets).
   AnalysisOptions analysis_opt;
+  analysis_opt.threads = args.input.threads;
   analysis_opt.sheets = args.sheet.has_value();
   analysis_opt.subsheets = false;
   analysis_opt.wireframe = false;

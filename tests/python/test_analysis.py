@@ -379,3 +379,31 @@ def test_analyze_releases_the_gil(shared_data_dir, longest_stall):
     stall, elapsed = longest_stall(m.analyze)
     assert elapsed > 0.1, "the analyses were too quick to tell"
     assert stall < 0.5 * elapsed / 3, (stall, elapsed)
+
+
+def analysis_arrays(a):
+    """Every ndarray an Analysis exposes, by name (properties read once)."""
+    out = {}
+    for n in dir(a):
+        if n.startswith("_"):
+            continue
+        v = getattr(a, n)
+        if isinstance(v, np.ndarray):
+            out[n] = v
+    return out
+
+
+def test_threads_keyword_changes_no_array(shared_data_dir):
+    # The stages may split their work over threads; one thread and two must give the same arrays
+    # and statistics (a mesh with sheets, subsheets and a wireframe of every kind).
+    m = hbc.load(shared_data_dir / "hybrid-base-complex" / "twistcube_s.mesh")
+    one, two = m.analyze(threads=1), m.analyze(threads=2)
+    a1, a2 = analysis_arrays(one), analysis_arrays(two)
+    assert len(a1) >= 20 and a1.keys() == a2.keys()
+    for n in a1:
+        np.testing.assert_array_equal(a1[n], a2[n], err_msg=n)
+    s1, s2 = dict(one.stats), dict(two.stats)
+    s1.pop("timings", None), s2.pop("timings", None)
+    assert s1 == s2
+    with pytest.raises(ValueError):
+        m.analyze(threads=0)

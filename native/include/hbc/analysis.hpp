@@ -21,6 +21,9 @@ struct AnalysisOptions {
   bool wireframe = true;  // whole-mesh VSG wireframe
   Level wireframe_level = Level::Complex;
   WireframeOptions wireframe_options;
+  // Threads the stages may split their work over (results are identical for any number); 0: as
+  // LoadOptions::threads = 0 (HBC_THREADS, else every core).
+  int threads = 0;
 };
 
 // Wall-clock seconds per stage; `load` is filled by whoever loaded the mesh.

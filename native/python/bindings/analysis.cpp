@@ -93,8 +93,10 @@ void class_arrays(py::class_<H, Opts...>& cls, const std::string& row, const std
 }
 
 PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool sheets, bool subsheets,
-                      bool wireframe) {
+                      bool wireframe, const py::object& threads) {
   if (!(rho >= 0.0 && rho <= 1.0)) throw std::invalid_argument("rho must be in [0, 1], not " + std::to_string(rho));
+  const int nthreads = threads.is_none() ? 0 : threads.cast<int>();
+  if (nthreads < 0 || (!threads.is_none() && nthreads == 0)) throw py::value_error("threads must be a positive number or None");
   auto out = std::make_shared<PyAnalysis>();
   out->mesh = std::move(mesh);
   AnalysisOptions& o = out->options;
@@ -105,6 +107,7 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
   o.sheets = sheets;
   o.subsheets = sheets && subsheets;
   o.wireframe = wireframe;
+  o.threads = nthreads;
   {
     py::gil_scoped_release unlocked;  // the analysis touches no Python object
     PyAnalysis& p = *out;
@@ -333,8 +336,10 @@ void bind_analysis(py::module_& m) {
 
   auto mesh_cls = py::reinterpret_borrow<py::class_<PyMesh, PyMeshPtr>>(m.attr("Mesh"));
   mesh_cls.def("analyze", &analyze, py::arg("rho") = 0.8, py::arg("level") = "complex", py::arg("sheets") = true,
-               py::arg("subsheets") = true, py::arg("wireframe") = true,
-               "Runs the structure analysis (GIL released). level: 'complex' (the paper's) or 'mesh'.");
+               py::arg("subsheets") = true, py::arg("wireframe") = true, py::arg("threads") = py::none(),
+               "Runs the structure analysis (GIL released). level: 'complex' (the paper's) or 'mesh'. "
+               "threads: how many threads the stages may use (results are the same for any number; "
+               "None: HBC_THREADS, else every core).");
 }
 
 }  // namespace hbc::python

@@ -118,8 +118,10 @@ class Mesh:
         sheets: bool = True,
         subsheets: bool = True,
         wireframe: bool = True,
+        threads: int | None = None,
     ) -> Analysis:
-        """The structure analysis (GIL released); rho in [0, 1] for the wireframe's colour classes."""
+        """The structure analysis (GIL released); rho in [0, 1] for the wireframe's colour classes;
+        threads for the stages (None: HBC_THREADS, else every core; results do not depend on it)."""
     @staticmethod
     def from_arrays(
         points: npt.ArrayLike,
