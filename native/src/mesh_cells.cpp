@@ -109,7 +109,7 @@ double signed_volume(const Mesh& m, size_t c, const Flips& state) {
     auto loop = m.face_verts[static_cast<size_t>(faces[i])];
     const size_t L = loop.size();
     auto pt = [&](size_t idx, double* out) {
-      const size_t v = static_cast<size_t>(loop[state[i] ? (L - idx) % L : idx]);
+      const size_t v = static_cast<size_t>(loop[state[i] && idx > 0 ? L - idx : idx]);  // no modulo: a division
       for (int a = 0; a < 3; ++a) out[a] = m.points[3 * v + a] - o[a];
     };
     double p0[3], p1[3], p2[3];
@@ -205,7 +205,7 @@ constexpr CellType kElementType[5] = {CellType::Polyhedron, CellType::Tet, CellT
 CellCheck check_cells(Mesh& m, const MeshInput& in, const LoadOptions& par) {
   const size_t nc = m.num_cells();
   CellCheck out;
-  detail::assign_huge(out.volume, nc, 0.0);
+  detail::assign_touched(out.volume, nc, 0.0, par);
   m.cell_type.assign(nc, CellType::Polyhedron);
   m.vert_non_manifold.assign(m.num_vertices(), 0);
   const int nr = detail::range_count(nc, par);

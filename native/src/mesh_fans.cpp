@@ -123,12 +123,12 @@ namespace {
 // The faces of every edge without a cyclic fan, one row each, numbered in edge order; marks
 // those edges' fan_start as -1 - row.
 void collect_odd_fans(Mesh& m, const std::vector<uint8_t>& odd) {
+  m.odd_fan_faces.clear();
+  if (std::find(odd.begin(), odd.end(), 1) == odd.end()) return;  // most meshes: no row table
   std::vector<int32_t> row(m.num_edges(), -1);
   int32_t rows = 0;
   for (size_t e = 0; e < m.num_edges(); ++e)
     if (odd[e]) row[e] = rows++;
-  m.odd_fan_faces.clear();
-  if (rows == 0) return;
   std::vector<int32_t> row_of_item, face_of_item;
   for (size_t f = 0; f < m.num_faces(); ++f)  // faces in increasing order: each row comes out sorted
     for (int32_t e : m.face_edges(f))
@@ -194,11 +194,11 @@ namespace {
 // of the unions.
 class HalfEdgeSets {
  public:
-  // shared = false when one thread does every union and find: plain stores then, as a locked
-  // compare-and-swap per union costs more than the rest of the step.
-  HalfEdgeSets(size_t n, bool shared) : shared_(shared) {
-    detail::resize_huge(parent_, n);
-    std::iota(parent_.begin(), parent_.end(), 0);
+  // With one thread doing every union and find, plain stores: a locked compare-and-swap per
+  // union costs more than the rest of the step.
+  HalfEdgeSets(size_t n, const LoadOptions& par) : shared_(par.threads > 1) {
+    detail::resize_touched(parent_, n, par);
+    detail::parallel_ranges(n, par, [&](size_t b, size_t e, int) { std::iota(parent_.begin() + b, parent_.begin() + e, static_cast<int32_t>(b)); });
   }
   int32_t find(int32_t x) {
     for (;;) {
@@ -277,7 +277,7 @@ void check_exactly(Mesh& m, const std::vector<uint8_t>& suspect) {
 // pinched cells are tested cell by cell instead.
 void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& par) {
   const size_t nv = m.num_vertices(), ne = m.num_edges();
-  HalfEdgeSets sets(2 * ne, par.threads > 1);
+  HalfEdgeSets sets(2 * ne, par);
   auto half = [&](int32_t e, int32_t v) { return 2 * e + (m.edge_verts[static_cast<size_t>(e)][1] == v ? 1 : 0); };
   detail::parallel_ranges(m.num_faces(), par, [&](size_t fb, size_t fe, int) {
     for (size_t f = fb; f < fe; ++f) {
@@ -288,24 +288,21 @@ void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& p
     }
   });
   // A vertex is split when its half-edges are not all in one set: each compared with the set of
-  // the first one found there.
+  // whichever end got there first (which one does not matter: all equal or not).
   std::vector<int32_t> first(nv, -1);
   std::vector<uint8_t> split(nv, 0), suspect(nv, 0);
-  auto each_end = [&](auto&& f) {
-    detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int) {
-      for (size_t e = eb; e < ee; ++e)
-        for (int j = 0; j < 2; ++j) f(static_cast<size_t>(m.edge_verts[e][static_cast<size_t>(j)]), sets.find(static_cast<int32_t>(2 * e) + j), e);
-    });
-  };
-  each_end([&](size_t v, int32_t r, size_t) {
-    // Most ends meet a vertex already set: a plain load spares them the locked operation.
-    std::atomic_ref<int32_t> at(first[v]);
-    int32_t none = -1;
-    if (at.load(std::memory_order_relaxed) < 0) at.compare_exchange_strong(none, r, std::memory_order_relaxed);
-  });
-  each_end([&](size_t v, int32_t r, size_t e) {
-    if (r != first[v]) std::atomic_ref<uint8_t>(split[v]).store(1, std::memory_order_relaxed);
-    if (!m.edge_fan_ok(e)) std::atomic_ref<uint8_t>(suspect[v]).store(1, std::memory_order_relaxed);
+  detail::parallel_ranges(ne, par, [&](size_t eb, size_t ee, int) {
+    for (size_t e = eb; e < ee; ++e)
+      for (int j = 0; j < 2; ++j) {
+        const auto v = static_cast<size_t>(m.edge_verts[e][static_cast<size_t>(j)]);
+        const int32_t r = sets.find(static_cast<int32_t>(2 * e) + j);
+        // Most ends meet a vertex already set: a plain load spares them the locked operation.
+        std::atomic_ref<int32_t> at(first[v]);
+        int32_t seen = at.load(std::memory_order_relaxed);
+        if (seen < 0 && at.compare_exchange_strong(seen, r, std::memory_order_relaxed)) seen = r;
+        if (r != seen) std::atomic_ref<uint8_t>(split[v]).store(1, std::memory_order_relaxed);
+        if (!m.edge_fan_ok(e)) std::atomic_ref<uint8_t>(suspect[v]).store(1, std::memory_order_relaxed);
+      }
   });
   for (int32_t v : cells.pinched) suspect[static_cast<size_t>(v)] = 1;
   for (size_t v = 0; v < nv; ++v)

@@ -121,13 +121,88 @@ class SlotLoops {
     for (int i = 0; i < n; ++i) buf[static_cast<size_t>(i)] = row[static_cast<size_t>(sf.corner[static_cast<size_t>(j)][static_cast<size_t>(i)])];
     return {buf.data(), static_cast<size_t>(n)};
   }
+  // emit(lowest vertex) for each loop of cell c in order: what face merging sorts by, found
+  // twice per slot, so each element shape gets its own unrolled loops.
+  template <class Emit>
+  void each_lowest(size_t c, Emit&& emit) const {
+    switch (in_.shape(c)) {
+      case CellShape::Hex: return element_lowest<CellShape::Hex>(c, emit);
+      case CellShape::Prism: return element_lowest<CellShape::Prism>(c, emit);
+      case CellShape::Pyramid: return element_lowest<CellShape::Pyramid>(c, emit);
+      case CellShape::Tet: return element_lowest<CellShape::Tet>(c, emit);
+      case CellShape::Faces: break;
+    }
+    for (int32_t r : in_.cells[c]) {
+      const auto loop = in_.faces[static_cast<size_t>(r >> 1)];
+      emit(*std::min_element(loop.begin(), loop.end()));
+    }
+  }
+  // The length of loop j of cell c.
+  int size(size_t c, int j) const {
+    const CellShape s = in_.shape(c);
+    if (s == CellShape::Faces) return in_.faces.count(static_cast<size_t>(in_.cells[c][static_cast<size_t>(j)] >> 1));
+    return detail::shape_faces(s).size[static_cast<size_t>(j)];
+  }
   // 1 when cell c sees loop j reversed, as the file says.
   uint8_t flip(size_t c, int j) const {
     return in_.shape(c) == CellShape::Faces ? static_cast<uint8_t>(in_.cells[c][static_cast<size_t>(j)] & 1) : 0;
   }
 
  private:
+  template <CellShape S, class Emit>
+  void element_lowest(size_t c, Emit&& emit) const {
+    constexpr detail::ShapeFaces sf = detail::kShapeFaces[static_cast<int>(S)];
+    const int32_t* row = in_.cells.items.data() + in_.cells.offsets[c];
+#pragma GCC unroll 6
+    for (size_t j = 0; j < static_cast<size_t>(sf.nfaces); ++j) {
+      const auto& k = sf.corner[j];
+      const int32_t lo = std::min({row[k[0]], row[k[1]], row[k[2]], sf.size[j] == 4 ? row[k[3]] : row[k[0]]});
+      emit(lo);
+    }
+  }
   const MeshInput& in_;
+};
+
+// The cell of each slot. Cells come in runs with the same number of slots (a file's sections of
+// one element), which locate a slot's cell without an array as large as the slots; where the
+// runs are many (polyhedra of varying face counts) the array is kept.
+class SlotCells {
+ public:
+  explicit SlotCells(const std::vector<int32_t>& slot_offsets) {
+    const size_t nc = slot_offsets.size() - 1;
+    for (size_t c = 0; c < nc && runs_.size() <= kMaxRuns; ++c) {
+      const int32_t per = slot_offsets[c + 1] - slot_offsets[c];
+      if (runs_.empty() || runs_.back().per_cell != per) runs_.push_back({slot_offsets[c], static_cast<int32_t>(c), per});
+    }
+    if (runs_.size() <= kMaxRuns) return;
+    runs_.clear();
+    detail::resize_huge(cell_, static_cast<size_t>(slot_offsets.back()));
+    for (size_t c = 0; c < nc; ++c)
+      std::fill(cell_.begin() + slot_offsets[c], cell_.begin() + slot_offsets[c + 1], static_cast<int32_t>(c));
+  }
+  size_t operator()(size_t s) const {
+    if (!cell_.empty()) return static_cast<size_t>(cell_[s]);
+    auto run = runs_.end() - 1;
+    while (static_cast<size_t>(run->first_slot) > s) --run;
+    const auto d = static_cast<uint32_t>(s - static_cast<size_t>(run->first_slot));
+    // Constant divisors for the elements' face counts: a multiply instead of a division.
+    uint32_t k = 0;
+    switch (run->per_cell) {
+      case 4: k = d / 4; break;
+      case 5: k = d / 5; break;
+      case 6: k = d / 6; break;
+      default: k = d / static_cast<uint32_t>(run->per_cell);
+    }
+    return static_cast<size_t>(run->first_cell) + k;
+  }
+
+ private:
+  static constexpr size_t kMaxRuns = 16;
+  struct Run {
+    int32_t first_slot, first_cell, per_cell;
+  };
+  std::vector<Run> runs_;
+  std::vector<int32_t> cell_;
 };
 
 // What face merging sorts: every slot, then every soup face no cell uses (so that those whose
@@ -137,14 +212,13 @@ struct FaceItems {
   const MeshInput& in;
   const SlotLoops& loops;
   const std::vector<int32_t>& slot_offsets;  // per cell
-  std::vector<int32_t> slot_cell;            // the cell of every slot
+  SlotCells slot_cell;
   std::vector<int32_t> unused;               // soup faces no cell uses
-  std::vector<int32_t> lowest;               // per item: the lowest vertex of its loop
-  size_t nslots() const { return slot_cell.size(); }
-  size_t size() const { return slot_cell.size() + unused.size(); }
+  size_t nslots() const { return static_cast<size_t>(slot_offsets.back()); }
+  size_t size() const { return nslots() + unused.size(); }
   std::span<const int32_t> loop(size_t item, std::array<int32_t, 4>& buf) const {
     if (item >= nslots()) return in.faces[static_cast<size_t>(unused[item - nslots()])];
-    const size_t c = static_cast<size_t>(slot_cell[item]);
+    const size_t c = slot_cell(item);
     return loops.loop(c, static_cast<int>(item - static_cast<size_t>(slot_offsets[c])), buf);
   }
 };
@@ -212,9 +286,18 @@ void group_bucket(const FaceItems& items, std::span<const int32_t> bucket, std::
 // rep[item] = the lowest item with the same vertex set (see FaceItems).
 std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, const LoadOptions& par) {
   const size_t n = items.size();
-  const Csr<int32_t> by_lowest = detail::group_by_key(n, nv, par, [&](size_t i) { return items.lowest[i]; });
+  // Units: the cells (their slots), then the unused soup faces.
+  const size_t nc = items.slot_offsets.size() - 1;
+  const Csr<int32_t> by_lowest = detail::group_units_by_key(
+      nc + items.unused.size(), nv, par,
+      [&](size_t u) { return u <= nc ? static_cast<size_t>(items.slot_offsets[u]) : items.nslots() + (u - nc); },
+      [&](size_t u, auto&& emit) {
+        if (u < nc) return items.loops.each_lowest(u, [&](int32_t lo) { emit(lo); });
+        const auto loop = items.in.faces[static_cast<size_t>(items.unused[u - nc])];
+        emit(*std::min_element(loop.begin(), loop.end()));
+      });
   std::vector<int32_t> rep;
-  detail::resize_huge(rep, n);
+  detail::resize_touched(rep, n, par);
   detail::parallel_rows(by_lowest, par, [&](size_t vb, size_t ve, int) {
     std::vector<FaceKey> small;
     std::vector<std::vector<int32_t>> big;
@@ -231,12 +314,12 @@ std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, con
 bool same_direction(std::span<const int32_t> a, std::span<const int32_t> b) {
   const size_t n = a.size();
   const size_t p = static_cast<size_t>(std::find(a.begin(), a.end(), b[0]) - a.begin());
-  return a[(p + 1) % n] == b[1];
+  return a[p + 1 < n ? p + 1 : 0] == b[1];
 }
 
 // face_cells from cell_faces, in cell order, so that the first offending cell is reported.
-void fill_face_cells(const MeshInput& in, Mesh& m) {
-  detail::assign_huge(m.face_cells, m.face_verts.rows(), {-1, -1});
+void fill_face_cells(const MeshInput& in, Mesh& m, const LoadOptions& par) {
+  detail::assign_touched(m.face_cells, m.face_verts.rows(), {-1, -1}, par);
   for (size_t c = 0; c < m.num_cells(); ++c) {
     const int32_t ci = static_cast<int32_t>(c);
     for (int32_t u : m.cell_faces[c]) {
@@ -258,11 +341,12 @@ void fill_face_cells(const MeshInput& in, Mesh& m) {
   }
 }
 
-// Slot offsets per cell, the cell of each slot, and the soup faces no cell uses.
+// Slot offsets per cell and the soup faces no cell uses.
 FaceItems face_items(const MeshInput& in, const SlotLoops& loops, std::vector<int32_t>& slot_offsets,
                      const LoadOptions& par) {
   const size_t nc = in.cells.rows();
-  slot_offsets.assign(nc + 1, 0);
+  detail::resize_touched(slot_offsets, nc + 1, par);
+  slot_offsets[0] = 0;
   int64_t total = 0, corners = 0;
   for (size_t c = 0; c < nc; ++c) {
     const CellShape shape = in.shape(c);
@@ -277,29 +361,13 @@ FaceItems face_items(const MeshInput& in, const SlotLoops& loops, std::vector<in
       throw InputError(in.source, {}, "fewer than 2^31 cell faces and face corners");
     slot_offsets[c + 1] = static_cast<int32_t>(total);
   }
-  FaceItems items{in, loops, slot_offsets, {}, {}, {}};
-  detail::resize_huge(items.slot_cell, static_cast<size_t>(total));
+  FaceItems items{in, loops, slot_offsets, SlotCells(slot_offsets), {}};
   std::vector<uint8_t> used(in.faces.rows(), 0);
   for (size_t c = 0; c < nc; ++c)
     if (in.shape(c) == CellShape::Faces)
       for (int32_t r : in.cells[c]) used[static_cast<size_t>(r >> 1)] = 1;
   for (size_t f = 0; f < used.size(); ++f)
     if (!used[f]) items.unused.push_back(static_cast<int32_t>(f));
-  detail::resize_huge(items.lowest, items.size());
-  detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int) {
-    std::array<int32_t, 4> buf;
-    for (size_t c = cb; c < ce; ++c)
-      for (int j = 0; j < loops.count(c); ++j) {
-        const auto s = static_cast<size_t>(slot_offsets[c] + j);
-        items.slot_cell[s] = static_cast<int32_t>(c);
-        const auto loop = loops.loop(c, j, buf);
-        items.lowest[s] = *std::min_element(loop.begin(), loop.end());
-      }
-  });
-  for (size_t i = items.nslots(); i < items.size(); ++i) {
-    const auto loop = in.faces[static_cast<size_t>(items.unused[i - items.nslots()])];
-    items.lowest[i] = *std::min_element(loop.begin(), loop.end());
-  }
   return items;
 }
 
@@ -307,35 +375,40 @@ FaceItems face_items(const MeshInput& in, const SlotLoops& loops, std::vector<in
 // count their new faces first, so that each then numbers its own from the right place; a face id
 // is kept as -1 - id until every slot has one.
 void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, const LoadOptions& par) {
-  const size_t nslots = items.nslots();
-  const int nr = detail::range_count(nslots, par);
+  const size_t nslots = items.nslots(), nc = items.slot_offsets.size() - 1;
+  const int nr = detail::range_count(nc, par);
   std::vector<int64_t> first_face(static_cast<size_t>(nr) + 1, 0), first_corner(static_cast<size_t>(nr) + 1, 0);
-  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int r) {
-    std::array<int32_t, 4> buf;
-    for (size_t s = b; s < e; ++s)
-      if (rep[s] == static_cast<int32_t>(s)) {
-        ++first_face[static_cast<size_t>(r) + 1];
-        first_corner[static_cast<size_t>(r) + 1] += static_cast<int64_t>(items.loop(s, buf).size());
+  // Ranges of cells (their slots in order), which know their slots' loops without a lookup.
+  auto each_new_face = [&](size_t cb, size_t ce, auto&& f) {
+    for (size_t c = cb; c < ce; ++c)
+      for (int j = 0; j < items.loops.count(c); ++j) {
+        const auto s = static_cast<size_t>(items.slot_offsets[c] + j);
+        if (rep[s] == static_cast<int32_t>(s)) f(s, c, j);
       }
+  };
+  detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int r) {
+    each_new_face(b, e, [&](size_t, size_t c, int j) {
+      ++first_face[static_cast<size_t>(r) + 1];
+      first_corner[static_cast<size_t>(r) + 1] += items.loops.size(c, j);
+    });
   });
   for (size_t r = 0; r < static_cast<size_t>(nr); ++r) {
     first_face[r + 1] += first_face[r];
     first_corner[r + 1] += first_corner[r];
   }
-  detail::assign_huge(m.face_verts.offsets, static_cast<size_t>(first_face.back()) + 1, 0);
-  detail::resize_huge(m.face_verts.items, static_cast<size_t>(first_corner.back()));
-  detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int r) {
-    std::array<int32_t, 4> buf;
+  detail::assign_touched(m.face_verts.offsets, static_cast<size_t>(first_face.back()) + 1, 0, par);
+  detail::resize_touched(m.face_verts.items, static_cast<size_t>(first_corner.back()), par);
+  detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int r) {
     auto face = first_face[static_cast<size_t>(r)];
     auto at = first_corner[static_cast<size_t>(r)];
-    for (size_t s = b; s < e; ++s) {
-      if (rep[s] != static_cast<int32_t>(s)) continue;
-      const auto loop = items.loop(s, buf);
+    std::array<int32_t, 4> buf;
+    each_new_face(b, e, [&](size_t s, size_t c, int j) {
+      const auto loop = items.loops.loop(c, j, buf);
       std::copy(loop.begin(), loop.end(), m.face_verts.items.begin() + at);
       at += static_cast<int64_t>(loop.size());
       m.face_verts.offsets[static_cast<size_t>(face) + 1] = static_cast<int32_t>(at);
       rep[s] = static_cast<int32_t>(-1 - face++);
-    }
+    });
   });
   // Other slots copy their representative's id (an earlier slot, which the pass above numbered).
   detail::parallel_ranges(nslots, par, [&](size_t b, size_t e, int) {
@@ -357,15 +430,13 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   std::vector<int32_t> slot_offsets;
   FaceItems items = face_items(in, loops, slot_offsets, par);
   std::vector<int32_t> rep = face_representatives(items, m.num_vertices(), par);
-  std::vector<int32_t>().swap(items.lowest);
   for (size_t i = items.nslots(); i < items.size(); ++i) m.dropped_faces += rep[i] >= static_cast<int32_t>(items.nslots());
   if (m.dropped_faces > 0) m.warnings.push_back(std::to_string(m.dropped_faces) + " face(s) used by no cell dropped");
   number_faces(items, std::move(rep), m, par);
-  std::vector<int32_t>().swap(items.slot_cell);
   m.cell_faces.offsets = std::move(slot_offsets);
   // The cell sees the stored loop reversed when exactly one of (the file's flip, its loop running
   // against the stored one) holds.
-  detail::resize_huge(m.cell_face_flip, m.cell_faces.items.size());
+  detail::resize_touched(m.cell_face_flip, m.cell_faces.items.size(), par);
   detail::parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
     std::array<int32_t, 4> buf;
     for (size_t c = b; c < e; ++c)
@@ -379,26 +450,37 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   // the peak memory.
   in.faces = Csr<int32_t>{};
   in.cells = Csr<int32_t>{};
-  fill_face_cells(in, m);
+  fill_face_cells(in, m, par);
 }
 
 namespace {
 
 // rep[k] = the vertex after corner k along its loop, so that a corner's edge is known without its
-// face; boundary[k] = 1 when corner k's face is on the boundary.
-void prefill_next(const Mesh& m, std::vector<int32_t>& rep, std::vector<uint8_t>& boundary, const LoadOptions& par) {
+// face.
+void prefill_next(const Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
   const std::vector<int32_t>& loops = m.face_verts.items;
-  detail::resize_huge(rep, loops.size());
-  detail::resize_huge(boundary, loops.size());
+  detail::resize_touched(rep, loops.size(), par);
   detail::parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f) {
       const auto k0 = static_cast<size_t>(m.face_verts.offsets[f]), k1 = static_cast<size_t>(m.face_verts.offsets[f + 1]);
       for (size_t k = k0; k + 1 < k1; ++k) rep[k] = loops[k + 1];
       rep[k1 - 1] = loops[k0];
-      std::fill(boundary.begin() + static_cast<std::ptrdiff_t>(k0), boundary.begin() + static_cast<std::ptrdiff_t>(k1),
-                m.face_cells[f][1] < 0 ? 1 : 0);
     }
   });
+}
+
+// Corners by the lower end of their edge, a corner of a boundary face tagged with kBoundary.
+constexpr uint32_t kBoundary = 1u << 31, kCorner = kBoundary - 1;
+Csr<int32_t> corners_by_lower_end(const Mesh& m, const LoadOptions& par) {
+  const auto& off = m.face_verts.offsets;
+  const auto& loops = m.face_verts.items;
+  return detail::group_units_by_key(
+      m.num_faces(), m.num_vertices(), par, [&](size_t f) { return static_cast<size_t>(off[f]); },
+      [&](size_t f, auto&& emit) {
+        const uint32_t tag = m.face_cells[f][1] < 0 ? kBoundary : 0;
+        const auto k0 = static_cast<size_t>(off[f]), k1 = static_cast<size_t>(off[f + 1]);
+        for (size_t k = k0; k < k1; ++k) emit(std::min(loops[k], loops[k + 1 < k1 ? k + 1 : k0]), tag);
+      });
 }
 
 // rep[k] = the lowest corner with the same edge, bucket by bucket of by_lo (corners by the lower
@@ -414,18 +496,18 @@ void edge_representatives(const Mesh& m, const Csr<int32_t>& by_lo, std::vector<
       const auto bucket = by_lo[v];
       hi_corner.clear();
       if (bucket.size() <= kListed) {
-        for (int32_t k : bucket) {
-          const auto kk = static_cast<size_t>(k);
+        for (int32_t item : bucket) {
+          const auto kk = static_cast<size_t>(static_cast<uint32_t>(item) & kCorner);
           const auto hi = static_cast<uint64_t>(std::max(loops[kk], rep[kk]));
           auto it = std::find_if(hi_corner.begin(), hi_corner.end(), [&](uint64_t x) { return x >> 32 == hi; });
-          if (it == hi_corner.end()) it = hi_corner.insert(it, hi << 32 | static_cast<uint32_t>(k));
+          if (it == hi_corner.end()) it = hi_corner.insert(it, hi << 32 | kk);
           rep[kk] = static_cast<int32_t>(*it & 0xffffffffu);
         }
         continue;
       }
-      for (int32_t k : bucket) {
-        const auto kk = static_cast<size_t>(k);
-        hi_corner.push_back(static_cast<uint64_t>(std::max(loops[kk], rep[kk])) << 32 | static_cast<uint32_t>(k));
+      for (int32_t item : bucket) {
+        const auto kk = static_cast<size_t>(static_cast<uint32_t>(item) & kCorner);
+        hi_corner.push_back(static_cast<uint64_t>(std::max(loops[kk], rep[kk])) << 32 | kk);
       }
       std::sort(hi_corner.begin(), hi_corner.end());
       for (size_t i = 0; i < hi_corner.size(); ++i) {
@@ -455,8 +537,8 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
       for (auto [k, k1] = corners(f); k < k1; ++k) first[static_cast<size_t>(r) + 1] += rep[k] == static_cast<int32_t>(k);
   });
   for (size_t r = 0; r < static_cast<size_t>(nr); ++r) first[r + 1] += first[r];
-  detail::resize_huge(m.edge_verts, static_cast<size_t>(first.back()));
-  detail::resize_huge(m.fan_start, static_cast<size_t>(first.back()));
+  detail::resize_touched(m.edge_verts, static_cast<size_t>(first.back()), par);
+  detail::resize_touched(m.fan_start, static_cast<size_t>(first.back()), par);
   detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
     auto id = first[static_cast<size_t>(r)];
     for (size_t f = b; f < e; ++f) {
@@ -483,19 +565,19 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
 // edge where there is one. Each edge's corners are all in the bucket of its lower end, in
 // increasing order, so a range of buckets counts its edges alone and meets each edge's lowest
 // boundary corner first.
-std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, const std::vector<uint8_t>& boundary,
-                                            const LoadOptions& par) {
+std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, const LoadOptions& par) {
   std::vector<EdgeFaceCount> count;
-  detail::resize_huge(count, m.num_edges());
+  detail::resize_touched(count, m.num_edges(), par);
   const auto& off = m.face_verts.offsets;
   detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
     for (size_t v = vb; v < ve; ++v)
-      for (int32_t k : by_lo[v]) {
-        const auto e = static_cast<size_t>(m.face_edge_ids[static_cast<size_t>(k)]);
+      for (int32_t item : by_lo[v]) {
+        const uint32_t k = static_cast<uint32_t>(item) & kCorner;
+        const auto e = static_cast<size_t>(m.face_edge_ids[k]);
         ++count[e].faces;
-        if (!boundary[static_cast<size_t>(k)]) continue;
+        if (!(static_cast<uint32_t>(item) & kBoundary)) continue;
         uint8_t& nb = count[e].boundary_faces;
-        if (nb == 0) m.fan_start[e] = static_cast<int32_t>(std::upper_bound(off.begin(), off.end(), k) - off.begin() - 1);
+        if (nb == 0) m.fan_start[e] = static_cast<int32_t>(std::upper_bound(off.begin(), off.end(), static_cast<int32_t>(k)) - off.begin() - 1);
         if (nb < 255) ++nb;
       }
   });
@@ -506,14 +588,11 @@ std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, 
 
 std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
   std::vector<int32_t>& rep = m.face_edge_ids;
-  std::vector<uint8_t> boundary;
-  prefill_next(m, rep, boundary, par);
-  const Csr<int32_t> by_lo = detail::group_by_key(rep.size(), m.num_vertices(), par, [&](size_t k) {
-    return std::min(m.face_verts.items[k], rep[k]);
-  });
+  prefill_next(m, rep, par);
+  const Csr<int32_t> by_lo = corners_by_lower_end(m, par);
   edge_representatives(m, by_lo, rep, par);
   number_edges(m, rep, par);
-  return count_edge_faces(m, by_lo, boundary, par);
+  return count_edge_faces(m, by_lo, par);
 }
 
 }  // namespace hbc::mesh_steps

@@ -75,6 +75,34 @@ void parallel_invoke(const LoadOptions& par, F&&... jobs) {
 }
 
 
+// Faults in the fresh pages of [p, p + bytes) from every thread at once. A first touch costs
+// more than the write itself (the kernel zeroes the page, 0.6-0.8 s per GB here), and
+// vector::resize would have it all happen on the calling thread.
+inline void touch_pages(void* p, size_t bytes, const LoadOptions& par) {
+  constexpr size_t kPage = 4096;
+  const size_t npages = bytes / kPage;
+  if (par.threads <= 1 || npages < 1024) return;  // under 4 MB: not worth a thread
+  auto* b = static_cast<volatile char*>(p);
+  parallel_ranges(npages, LoadOptions{par.threads, 256}, [&](size_t pb, size_t pe, int) {
+    for (size_t i = pb; i < pe; ++i) b[i * kPage] = 0;
+  });
+}
+
+// resize_huge / assign_huge with the pages faulted in by every thread (see touch_pages).
+template <class T>
+void resize_touched(std::vector<T>& v, size_t n, const LoadOptions& par, const T& value = T()) {
+  reserve_huge(v, n);
+  if (n > v.size()) touch_pages(v.data() + v.size(), (n - v.size()) * sizeof(T), par);
+  v.resize(n, value);
+}
+template <class T>
+void assign_touched(std::vector<T>& v, size_t n, const T& value, const LoadOptions& par) {
+  if (n > v.capacity()) std::vector<T>().swap(v);
+  reserve_huge(v, n);
+  touch_pages(v.data(), n * sizeof(T), par);
+  v.assign(n, value);
+}
+
 // Counting sort of the items 0..n-1 by key_of(i) in [0, nkeys): row k lists the items with key k
 // in increasing order. Each range of items counts into its own table (ranges x nkeys ints) and
 // fills its own share of every row, so the result does not depend on the number of threads.
@@ -88,7 +116,7 @@ Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&
     for (size_t i = b; i < e; ++i) ++count[static_cast<size_t>(key_of(i))];
   });
   Csr<int32_t> g;
-  resize_huge(g.offsets, nkeys + 1);
+  resize_touched(g.offsets, nkeys + 1, par);
   int32_t pos = 0;
   for (size_t k = 0; k < nkeys; ++k) {
     g.offsets[k] = pos;
@@ -99,10 +127,49 @@ Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&
     }
   }
   g.offsets[nkeys] = pos;
-  resize_huge(g.items, n);
+  resize_touched(g.items, n, par);
   parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
     std::vector<int32_t>& at = next[static_cast<size_t>(r)];
     for (size_t i = b; i < e; ++i) g.items[static_cast<size_t>(at[static_cast<size_t>(key_of(i))]++)] = static_cast<int32_t>(i);
+  });
+  return g;
+}
+
+// group_by_key over items that come in units (a cell's slots): unit u holds the items
+// first(u) .. first(u+1)-1 (first(nunits) = every item), and each_key(u, emit) calls emit(key)
+// for them in order. Ranges split the units, so the keys are found twice instead of being kept
+// in an array as large as the items; the result is group_by_key's. emit(key, tag) with a tag
+// (a bit above 31-bit item ids, say) stores item | tag instead.
+template <class First, class EachKey>
+Csr<int32_t> group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, First&& first, EachKey&& each_key) {
+  const int nr = range_count(nunits, par);
+  std::vector<std::vector<int32_t>> next(static_cast<size_t>(nr));
+  parallel_ranges(nunits, par, [&](size_t b, size_t e, int r) {
+    std::vector<int32_t>& count = next[static_cast<size_t>(r)];
+    count.assign(nkeys, 0);
+    for (size_t u = b; u < e; ++u) each_key(u, [&](int32_t key, uint32_t = 0) { ++count[static_cast<size_t>(key)]; });
+  });
+  Csr<int32_t> g;
+  resize_touched(g.offsets, nkeys + 1, par);
+  int32_t pos = 0;
+  for (size_t k = 0; k < nkeys; ++k) {
+    g.offsets[k] = pos;
+    for (auto& count : next) {
+      const int32_t c = count[k];
+      count[k] = pos;
+      pos += c;
+    }
+  }
+  g.offsets[nkeys] = pos;
+  resize_touched(g.items, static_cast<size_t>(first(nunits)), par);
+  parallel_ranges(nunits, par, [&](size_t b, size_t e, int r) {
+    std::vector<int32_t>& at = next[static_cast<size_t>(r)];
+    for (size_t u = b; u < e; ++u) {
+      auto item = static_cast<int32_t>(first(u));
+      each_key(u, [&](int32_t key, uint32_t tag = 0) {
+        g.items[static_cast<size_t>(at[static_cast<size_t>(key)]++)] = static_cast<int32_t>(static_cast<uint32_t>(item++) | tag);
+      });
+    }
   });
   return g;
 }

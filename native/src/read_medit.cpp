@@ -102,7 +102,11 @@ void cells_through_templates(const RawElements& raw, int64_t nv, const detail::T
 // when some element is out of range or degenerate (the template path then reads them in order).
 bool cells_as_read(RawElements& raw, int64_t nv, MeshInput& in, const LoadOptions& par) {
   const size_t n = raw.el.size();
-  std::vector<int64_t> first(n + 1, 0);  // the first id of each element in raw.ids
+  if (raw.ids.size() > static_cast<size_t>(INT32_MAX)) return false;  // validate_input names the limit
+  // The first id of each element in raw.ids: the cells' offsets if all is well.
+  std::vector<int32_t> first;
+  detail::resize_touched(first, n + 1, par);
+  first[0] = 0;
   for (size_t e = 0; e < n; ++e) first[e + 1] = first[e] + detail::corner_count(raw.el[e]);
   const int nr = detail::range_count(n, par);
   std::vector<uint8_t> plain(static_cast<size_t>(nr), 1);
@@ -121,8 +125,7 @@ bool cells_as_read(RawElements& raw, int64_t nv, MeshInput& in, const LoadOption
   detail::parallel_ranges(raw.ids.size(), par, [&](size_t b, size_t e, int) {
     for (size_t i = b; i < e; ++i) --raw.ids[i];
   });
-  in.cells.offsets.resize(n + 1);
-  for (size_t e = 0; e <= n; ++e) in.cells.offsets[e] = static_cast<int32_t>(first[e]);
+  in.cells.offsets = std::move(first);
   in.cells.items = std::move(raw.ids);
   in.cell_shape = std::move(raw.el);
   in.cell_loc = std::move(raw.line);
