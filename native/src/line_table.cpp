@@ -4,6 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <type_traits>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "parallel.hpp"
 
@@ -11,6 +16,24 @@ namespace hbc::detail {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// The newlines in [p, e). std::count widens every byte's match to a 64-bit sum (several
+// shuffles per 16 bytes); with SSE2 the matches add up in byte lanes, summed every 255 blocks.
+int64_t count_newlines(const char* p, const char* e) {
+  int64_t n = 0;
+#ifdef __SSE2__
+  const __m128i nl = _mm_set1_epi8('\n');
+  while (e - p >= 16) {
+    __m128i acc = _mm_setzero_si128();
+    const int64_t blocks = std::min<int64_t>((e - p) / 16, 255);
+    for (int64_t i = 0; i < blocks; ++i, p += 16)
+      acc = _mm_sub_epi8(acc, _mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), nl));
+    const __m128i sums = _mm_sad_epu8(acc, _mm_setzero_si128());
+    n += _mm_cvtsi128_si64(sums) + _mm_cvtsi128_si64(_mm_unpackhi_epi64(sums, sums));
+  }
+#endif
+  return n + std::count(p, e, '\n');
+}
 
 // Where the section's lines start: position `begin` (just after the newline ending the count's
 // line) and every 1/nranges of the n lines; starts.back() is the end of the n-th line. False
@@ -24,7 +47,7 @@ bool split_lines(std::string_view text, size_t begin, int64_t n, int nranges, co
   std::vector<int64_t> count(nslices, 0);
   auto slice = [&](size_t i) { return begin + rest * i / nslices; };
   parallel_ranges(nslices, LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
-    for (size_t i = b; i < e; ++i) count[i] = std::count(text.data() + slice(i), text.data() + slice(i + 1), '\n');
+    for (size_t i = b; i < e; ++i) count[i] = count_newlines(text.data() + slice(i), text.data() + slice(i + 1));
   });
   // The position just after newline number `k` (1-based) counted from `begin`.
   auto after_newline = [&](int64_t k) -> size_t {
@@ -61,6 +84,23 @@ bool after_blank_rest(const TextScanner& s, size_t& begin) {
 template <class T>
 bool number(const char*& p, const char* end, T& v) {
   while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  if constexpr (std::is_integral_v<T>) {
+    // Up to 9 digits cannot overflow: summed here, a third of from_chars' work; longer ones (and
+    // anything else) take from_chars, which rejects what it rejects. Every range of lines ends
+    // with a newline, which stops the digits without a bound check.
+    const bool neg = *p == '-';
+    const char* d = p + neg;
+    const char* q = d;
+    uint32_t x = 0;
+    for (unsigned digit; (digit = static_cast<unsigned char>(*q) - unsigned{'0'}) < 10; ++q) x = 10 * x + digit;
+    if (q > d && q - d < 10 && (is_blank(*q) || *q == '\n')) {
+      const int64_t value = neg ? -static_cast<int64_t>(x) : static_cast<int64_t>(x);
+      if (value < std::numeric_limits<T>::min() || value > std::numeric_limits<T>::max()) return false;
+      v = static_cast<T>(value);
+      p = q;
+      return true;
+    }
+  }
   auto r = std::from_chars(p, end, v);
   if (r.ec != std::errc() || r.ptr == p) return false;
   p = r.ptr;
@@ -104,8 +144,8 @@ bool parse_lines(TextScanner& s, int64_t n, const LoadOptions& par, ParseLine&& 
 bool fast_vertex_lines(TextScanner& s, int64_t n, std::vector<double>& points, std::vector<int64_t>& lines,
                        const LoadOptions& par) {
   const size_t p0 = points.size(), l0 = lines.size();
-  points.resize(p0 + 3 * static_cast<size_t>(n));
-  lines.resize(l0 + static_cast<size_t>(n));
+  resize_touched(points, p0 + 3 * static_cast<size_t>(n), par);
+  resize_touched(lines, l0 + static_cast<size_t>(n), par);
   const int64_t first_line = s.line() + 1;
   const bool ok = parse_lines(s, n, par, [&](size_t i, const char*& p, const char* end) {
     double* x = &points[p0 + 3 * i];
@@ -122,8 +162,8 @@ bool fast_vertex_lines(TextScanner& s, int64_t n, std::vector<double>& points, s
 bool fast_element_lines(TextScanner& s, int64_t n, int k, std::vector<int32_t>& ids, std::vector<int64_t>& lines,
                         const LoadOptions& par) {
   const size_t i0 = ids.size(), l0 = lines.size();
-  ids.resize(i0 + static_cast<size_t>(k) * static_cast<size_t>(n));
-  lines.resize(l0 + static_cast<size_t>(n));
+  resize_touched(ids, i0 + static_cast<size_t>(k) * static_cast<size_t>(n), par);
+  resize_touched(lines, l0 + static_cast<size_t>(n), par);
   const int64_t first_line = s.line() + 1;
   const bool ok = parse_lines(s, n, par, [&](size_t i, const char*& p, const char* end) {
     int32_t* out = &ids[i0 + static_cast<size_t>(k) * i];

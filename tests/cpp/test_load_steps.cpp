@@ -356,6 +356,30 @@ TEST(LoadParse, FastSectionsEqualTheTokenScanner) {
   }
 }
 
+TEST(LoadParse, IntegersOfEveryWidthReadAsTheTokenScannerReadsThem) {
+  // The fast path sums up to 9 digits itself and hands longer numbers (leading zeros here) to
+  // from_chars; negative reference numbers and 10-digit ids must come out as the scanner reads them.
+  std::string text = grid_text(4);
+  const size_t hex = text.find("Hexahedra\n");
+  size_t at = text.find('\n', text.find('\n', hex) + 1) + 1;
+  for (int line = 0; at < text.size() && text[at] != 'E'; ++line) {
+    if (line % 2 == 0) text.insert(at, "000000000");  // the first id gets 10 or more digits
+    const size_t ref = text.rfind(' ', text.find('\n', at));
+    if (line % 3 == 0) text.replace(ref + 1, text.find('\n', at) - ref - 1, "-123456789012");
+    at = text.find('\n', at) + 1;
+  }
+  std::string slow = text;
+  const size_t count_end = slow.find('\n', slow.find("Hexahedra\n") + std::strlen("Hexahedra\n"));
+  slow.insert(count_end, " # slow path");
+  for (int threads : {1, 2}) {
+    SCOPED_TRACE(threads);
+    const LoadOptions par{threads, 16};
+    expect_same_input(read_medit(text, "fast.mesh", par), read_medit(slow, "slow.mesh", par));
+  }
+  test::expect_same_mesh(build_mesh(read_medit(text, "fast.mesh", kOne), kOne),
+                         build_mesh(read_medit(grid_text(4), "plain.mesh", kOne), kOne));
+}
+
 TEST(LoadParse, FastPathReportsTheLineOfABadIndex) {
   // Vertex id 9999 on the second hexahedron line of a 2x2x2 grid: 27 vertices on lines 5-31,
   // "Hexahedra" on 32, the count on 33, the second hexahedron on line 35.
