@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "parallel.hpp"
+#include "row_collector.hpp"
+
 namespace hbc {
 
 const char* component_kind_name(ComponentKind k) {
@@ -22,6 +25,11 @@ size_t BaseComplex::num_non_hex_components() const {
 }
 
 namespace {
+
+using detail::append_rows;
+using detail::parallel_rows;
+using detail::range_count;
+using detail::RowCollector;
 
 // The face after f around edge e, walking into the cell on f's side `side`; `side` becomes the
 // side of that face the walk goes on through. -1 when there is no cell on that side.
@@ -137,36 +145,6 @@ int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, Hex
   if (c1 < 0) return -1;
   return table.other_face(m, c1, g, HexFaceTable::slot_of(m.face_edges(static_cast<size_t>(g)).data(), 4, e));
 }
-
-// Sorted distinct values of `v`, appended to `out` as one row.
-// Distinct ids gathered row by row without sorting the duplicates: a stamp per id marks those
-// already taken for the current row; only the few distinct ids get sorted.
-class RowCollector {
- public:
-  explicit RowCollector(size_t n) : stamp_(n, -1) {}
-  void begin() {
-    ++current_;
-    row_.clear();
-  }
-  void add(int32_t id) {
-    if (stamp_[id] == current_) return;
-    stamp_[id] = current_;
-    row_.push_back(id);
-  }
-  void end(Csr<int32_t>& out) {
-    if (row_.size() <= 16) {  // the usual case: a handful of ids
-      for (size_t i = 1; i < row_.size(); ++i)
-        for (size_t j = i; j > 0 && row_[j - 1] > row_[j]; --j) std::swap(row_[j - 1], row_[j]);
-    } else {
-      std::sort(row_.begin(), row_.end());
-    }
-    out.push_row(row_.begin(), row_.end());
-  }
-
- private:
-  std::vector<int32_t> stamp_, row_;
-  int32_t current_ = -1;
-};
 
 void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
   if (v.size() > 1) std::sort(v.begin(), v.end());
@@ -334,14 +312,14 @@ void find_patches(const Mesh& m, BaseComplex& bc) {
   }
 }
 
-// The corners and curves on each patch.
-void patch_incidences(const Mesh& m, BaseComplex& bc) {
-  const size_t npatch = bc.patch_faces.rows();
+// The corners and curves of patches first..last-1, appended to `corners` and `curves`.
+void patch_rows(const Mesh& m, const BaseComplex& bc, size_t first, size_t last, Csr<int32_t>& corners,
+                Csr<int32_t>& curves) {
   RowCollector by_vertex(m.num_vertices()), by_curve(bc.curve_edges.rows());
   // Quads dominate: room for 4 corners and curves per patch.
-  bc.patch_corners.reserve(npatch, 4 * npatch);
-  bc.patch_curves.reserve(npatch, 4 * npatch);
-  for (size_t p = 0; p < npatch; ++p) {
+  corners.reserve(last - first, 4 * (last - first));
+  curves.reserve(last - first, 4 * (last - first));
+  for (size_t p = first; p < last; ++p) {
     by_vertex.begin();
     by_curve.begin();
     for (int32_t f : bc.patch_faces[p]) {
@@ -350,8 +328,22 @@ void patch_incidences(const Mesh& m, BaseComplex& bc) {
       for (int32_t e : m.face_edges(static_cast<size_t>(f)))
         if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
     }
-    by_vertex.end(bc.patch_corners);
-    by_curve.end(bc.patch_curves);
+    by_vertex.end(corners);
+    by_curve.end(curves);
+  }
+}
+
+// The corners and curves on each patch, in ranges of patches holding about as many faces each.
+void patch_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
+  std::vector<std::array<Csr<int32_t>, 2>> parts(
+      static_cast<size_t>(range_count(std::max(bc.patch_faces.rows(), bc.patch_faces.items.size()), par)));
+  parallel_rows(bc.patch_faces, par, [&](size_t first, size_t last, int r) {
+    if (r == 0) patch_rows(m, bc, first, last, bc.patch_corners, bc.patch_curves);
+    else patch_rows(m, bc, first, last, parts[static_cast<size_t>(r)][0], parts[static_cast<size_t>(r)][1]);
+  });
+  for (size_t r = 1; r < parts.size(); ++r) {
+    append_rows(bc.patch_corners, parts[r][0]);
+    append_rows(bc.patch_curves, parts[r][1]);
   }
 }
 
@@ -364,17 +356,18 @@ void find_self_adjacent_faces(const Mesh& m, BaseComplex& bc) {
   }
 }
 
-// Per component: the adjacent components, and its patches, curves and corners.
-void component_incidences(const Mesh& m, BaseComplex& bc) {
-  const size_t ncomp = bc.component_cells.rows();
-  RowCollector by_vertex(m.num_vertices()), by_curve(bc.curve_edges.rows()), by_patch(bc.patch_faces.rows()),
-      by_component(ncomp);
-  // Cubes dominate: room for 8 corners, 12 curves, 6 patches and 6 neighbours per component.
-  bc.component_corners.reserve(ncomp, 8 * ncomp);
-  bc.component_curves.reserve(ncomp, 12 * ncomp);
-  bc.component_patches.reserve(ncomp, 6 * ncomp);
-  bc.component_adjacency.reserve(ncomp, 6 * ncomp);
-  for (size_t k = 0; k < ncomp; ++k) {
+// The incidence rows of components first..last-1: adjacent components, patches, curves, corners.
+void component_rows(const Mesh& m, const BaseComplex& bc, size_t first, size_t last,
+                    std::array<Csr<int32_t>*, 4> out) {
+  RowCollector by_component(bc.component_cells.rows()), by_patch(bc.patch_faces.rows()),
+      by_curve(bc.curve_edges.rows()), by_vertex(m.num_vertices());
+  // Cubes dominate: room for 6 neighbours, 6 patches, 12 curves and 8 corners per component.
+  const size_t n = last - first;
+  out[0]->reserve(n, 6 * n);
+  out[1]->reserve(n, 6 * n);
+  out[2]->reserve(n, 12 * n);
+  out[3]->reserve(n, 8 * n);
+  for (size_t k = first; k < last; ++k) {
     by_component.begin();
     by_patch.begin();
     by_curve.begin();
@@ -393,11 +386,26 @@ void component_incidences(const Mesh& m, BaseComplex& bc) {
         for (int32_t v : m.face_verts[static_cast<size_t>(f)])
           if (bc.vert_corner[v]) by_vertex.add(v);
       }
-    by_component.end(bc.component_adjacency);
-    by_patch.end(bc.component_patches);
-    by_curve.end(bc.component_curves);
-    by_vertex.end(bc.component_corners);
+    by_component.end(*out[0]);
+    by_patch.end(*out[1]);
+    by_curve.end(*out[2]);
+    by_vertex.end(*out[3]);
   }
+}
+
+// Per component: the adjacent components, and its patches, curves and corners, in ranges of
+// components holding about as many cells each; range 0 writes straight into bc.
+void component_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
+  const size_t nr = static_cast<size_t>(range_count(std::max(bc.component_cells.rows(), bc.component_cells.items.size()), par));
+  std::vector<std::array<Csr<int32_t>, 4>> parts(nr);
+  const std::array<Csr<int32_t>*, 4> mine = {&bc.component_adjacency, &bc.component_patches, &bc.component_curves,
+                                             &bc.component_corners};
+  parallel_rows(bc.component_cells, par, [&](size_t first, size_t last, int r) {
+    auto& p = parts[static_cast<size_t>(r)];
+    component_rows(m, bc, first, last, r == 0 ? mine : std::array<Csr<int32_t>*, 4>{&p[0], &p[1], &p[2], &p[3]});
+  });
+  for (size_t r = 1; r < nr; ++r)
+    for (size_t i = 0; i < 4; ++i) append_rows(*mine[i], parts[r][i]);
 }
 
 // Euler characteristic V - E + F of the boundary surface of component k (faces counted once per
@@ -453,15 +461,16 @@ void classify_components(const Mesh& m, BaseComplex& bc) {
 
 }  // namespace
 
-BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
+BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOptions& options) {
+  const LoadOptions par = resolved(options);
   BaseComplex bc;
   bc.face_separation = separation_faces(m, g);
   find_components(m, bc);
   find_curves(m, bc);
   find_patches(m, bc);
-  patch_incidences(m, bc);
+  patch_incidences(m, bc, par);
   find_self_adjacent_faces(m, bc);
-  component_incidences(m, bc);
+  component_incidences(m, bc, par);
   classify_components(m, bc);
   return bc;
 }

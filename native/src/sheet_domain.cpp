@@ -74,7 +74,9 @@ Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vecto
 
 }  // namespace
 
-SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
+SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level, const LoadOptions& options) {
+  const LoadOptions par = resolved(options);
+  (void)par;
   SheetDomain d;
   d.level = level;
   const size_t nc = m.num_cells(), nf = m.num_faces();

@@ -459,7 +459,9 @@ Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups) {
 
 }  // namespace
 
-Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
+Sheets extract_sheets(const Mesh& m, const SheetDomain& d, const LoadOptions& options) {
+  const LoadOptions par = resolved(options);
+  (void)par;
   const ParallelClasses pc = parallel_classes(m, d);
   std::vector<size_t> first;
   std::vector<Group> groups = block_groups(d, pc, first);
