@@ -1,6 +1,7 @@
 #include "hbc/base_complex.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 #include "parallel.hpp"
 #include "row_collector.hpp"
@@ -27,6 +28,8 @@ size_t BaseComplex::num_non_hex_components() const {
 namespace {
 
 using detail::append_rows;
+using detail::parallel_ranges;
+using detail::resize_huge;
 using detail::parallel_rows;
 using detail::range_count;
 using detail::RowCollector;
@@ -83,18 +86,23 @@ int32_t straight_face(const Mesh& m, int32_t e, int32_t f, EdgeFan& scratch) {
 
 namespace {
 
-// The other face of a hex cell at each edge of each of its faces, found once per cell (on first
-// use) instead of by scanning the cell's faces at every step around an edge: the straight
-// continuations of the separation surfaces and patches take two such steps per face and edge.
-// Row c packs, for face slot j (order of cell_faces[c]) and edge position i of that face's loop,
-// the slot of the cell's other face at that edge in 4 bits.
+// The other face of a hex cell at each edge of each of its faces, found once per hex cell (in
+// parallel ranges of cells) instead of by scanning the cell's faces at every step around an edge:
+// the straight continuations of the separation surfaces and patches take two such steps per face
+// and edge. Row c packs, for face slot j (order of cell_faces[c]) and edge position i of that
+// face's loop, the slot of the cell's other face at that edge in 4 bits.
 class HexFaceTable {
  public:
-  explicit HexFaceTable(size_t ncells) : other_(ncells), built_(ncells, 0) {}
+  HexFaceTable(const Mesh& m, const LoadOptions& par) {
+    resize_huge(other_, m.num_cells());
+    parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
+      for (size_t c = b; c < e; ++c)
+        if (m.is_hex(c)) build(m, c);
+    });
+  }
   // The face of hex cell c other than f at the edge at position i of f's loop.
-  int32_t other_face(const Mesh& m, int32_t c, int32_t f, size_t i) {
+  int32_t other_face(const Mesh& m, int32_t c, int32_t f, size_t i) const {
     const auto faces = m.cell_faces[static_cast<size_t>(c)];
-    if (!built_[static_cast<size_t>(c)]) build(m, c);
     const size_t k = 4 * slot_of(faces.data(), 6, f) + i;
     return faces[(other_[static_cast<size_t>(c)][k / 2] >> (4 * (k % 2))) & 15];
   }
@@ -107,12 +115,12 @@ class HexFaceTable {
   }
 
  private:
-  void build(const Mesh& m, int32_t c) {
-    const auto faces = m.cell_faces[static_cast<size_t>(c)];
+  void build(const Mesh& m, size_t c) {
+    const auto faces = m.cell_faces[c];
     std::array<int32_t, 24> edge{};
     for (size_t j = 0; j < 6; ++j)
       for (size_t i = 0; i < 4; ++i) edge[4 * j + i] = m.face_edges(static_cast<size_t>(faces[j]))[i];
-    auto& row = other_[static_cast<size_t>(c)];
+    auto& row = other_[c];
     row.fill(0);
     // Each edge of a hex is on exactly two of its faces: match each entry with the later one.
     uint32_t matched = 0;
@@ -126,16 +134,14 @@ class HexFaceTable {
           break;
         }
     }
-    built_[static_cast<size_t>(c)] = 1;
   }
   std::vector<std::array<uint8_t, 12>> other_;
-  std::vector<uint8_t> built_;
 };
 
 // straight_face(m, e, f) for an edge e of the hybrid singularity graph's Regular class (all cells
 // hex, valence 4 inside or 2 on the boundary) at position i of f's loop: the same two steps
 // around the fan from f through face_cells[f][0], with the cells' other faces from `table`.
-int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, HexFaceTable& table) {
+int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, const HexFaceTable& table) {
   if (!m.edge_fan_ok(static_cast<size_t>(e))) return -1;
   if (m.edge_boundary[static_cast<size_t>(e)] && !m.face_boundary[static_cast<size_t>(f)]) return -1;
   const int32_t c0 = m.face_cells[static_cast<size_t>(f)][0];
@@ -155,55 +161,81 @@ void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
 // State of a face while the separation surfaces grow: separates, waits to be grown from, and in
 // the bits from 2 up the position + 1 of the edge it was reached across (0 for a seed); straight
 // continuation is symmetric, so that edge leads back to a separation face and is skipped.
+// Threads share the states: a face is claimed by one compare-exchange from 0 (the first thread
+// to reach it), and only the thread whose range holds a face grows from it. Which thread claims
+// a face only changes the skipped edge, which leads to a separation face either way.
 constexpr uint8_t kSep = 1, kPending = 2;
+
+uint8_t load(const std::vector<uint8_t>& state, int32_t f) {
+  return std::atomic_ref<const uint8_t>(state[static_cast<size_t>(f)]).load(std::memory_order_relaxed);
+}
 
 // Grows the surfaces from pending face f across its Regular inside edges: marks every face reached
 // pending and calls reached(next) for it.
 template <class Reached>
-void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uint8_t>& state, HexFaceTable& table,
+void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uint8_t>& state, const HexFaceTable& table,
             Reached reached) {
-  const size_t from = static_cast<size_t>(state[static_cast<size_t>(f)] >> 2);
-  state[static_cast<size_t>(f)] = kSep;
+  std::atomic_ref<uint8_t> own(state[static_cast<size_t>(f)]);
+  const size_t from = static_cast<size_t>(own.load(std::memory_order_relaxed) >> 2);
+  own.store(kSep, std::memory_order_relaxed);
   const auto fe = m.face_edges(static_cast<size_t>(f));
   for (size_t i = 0; i < fe.size(); ++i) {
     const int32_t e = fe[i];
     if (i + 1 == from || g.is_structural(e) || m.edge_boundary[e]) continue;
     const int32_t next = regular_straight_face(m, e, f, i, table);
-    if (next < 0 || state[static_cast<size_t>(next)]) continue;
+    if (next < 0 || load(state, next)) continue;
     const auto ne = m.face_edges(static_cast<size_t>(next));
     const size_t at = ne.size() == 4 ? HexFaceTable::slot_of(ne.data(), 4, e) + 1 : 0;
-    state[static_cast<size_t>(next)] = static_cast<uint8_t>(kSep | kPending | at << 2);
-    reached(next);
+    uint8_t expected = 0;
+    if (std::atomic_ref<uint8_t>(state[static_cast<size_t>(next)])
+            .compare_exchange_strong(expected, static_cast<uint8_t>(kSep | kPending | at << 2), std::memory_order_relaxed))
+      reached(next);
   }
+}
+
+// The seeds: boundary faces separate but grow no surface; faces at a structural edge grow one.
+std::vector<uint8_t> separation_seeds(const Mesh& m, const SingularityGraph& g, const LoadOptions& par) {
+  std::vector<uint8_t> state;
+  resize_huge(state, m.num_faces());
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      const auto fe = m.face_edges(f);
+      state[f] = m.face_boundary[f] ? kSep
+                 : std::any_of(fe.begin(), fe.end(), [&](int32_t x) { return g.is_structural(x); }) ? kSep | kPending
+                                                                                                   : 0;
+    }
+  });
+  return state;
 }
 
 // Separation faces: boundary faces, and the surfaces traced straight from every face around an
 // edge of the hybrid singularity graph until they reach another such edge or the boundary.
-// The result is a closure, so the order of growth is free: sweeps over the faces in increasing,
-// then decreasing id (a face reached ahead of the sweep is grown in the same sweep) keep the
-// memory accesses in order, where a breadth-first queue scatters them over the whole mesh. A few
-// sweeps settle meshes numbered layer by layer; after those, a stack finishes whatever is left.
-std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) {
+// The result is a closure, so the order of growth is free: sweeps over each thread's range of
+// faces in increasing, then decreasing id (a face reached ahead of the sweep in the same range is
+// grown in the same sweep) keep the memory accesses in order, where a breadth-first queue
+// scatters them over the whole mesh. A few sweeps settle meshes numbered layer by layer; after
+// those, a stack finishes whatever is left.
+std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g, const HexFaceTable& table,
+                                      const LoadOptions& par) {
   const size_t nf = m.num_faces();
-  std::vector<uint8_t> state(nf, 0);
-  for (size_t f = 0; f < nf; ++f) {
-    if (m.face_boundary[f]) {
-      state[f] = kSep;  // the boundary separates but grows no surface
-      continue;
-    }
-    const auto fe = m.face_edges(f);
-    if (std::any_of(fe.begin(), fe.end(), [&](int32_t e) { return g.is_structural(e); })) state[f] = kSep | kPending;
-  }
-  HexFaceTable table(m.num_cells());
+  std::vector<uint8_t> state = separation_seeds(m, g, par);
   bool behind = true;
   for (int sweep = 0; sweep < 6 && behind; ++sweep) {
-    behind = false;
     const bool up = sweep % 2 == 0;
-    for (size_t k = 0; k < nf; ++k) {
-      const int32_t f = static_cast<int32_t>(up ? k : nf - 1 - k);
-      if (state[static_cast<size_t>(f)] & kPending)
-        spread(m, g, f, state, table, [&](int32_t next) { behind = behind || (up ? next < f : next > f); });
-    }
+    std::vector<uint8_t> late(static_cast<size_t>(range_count(nf, par)), 0);
+    parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
+      bool left = false;  // a face was reached that this sweep will not visit again
+      for (size_t k = b; k < e; ++k) {
+        const int32_t f = static_cast<int32_t>(up ? k : b + e - 1 - k);
+        if (load(state, f) & kPending)
+          spread(m, g, f, state, table, [&](int32_t next) {
+            const auto n = static_cast<size_t>(next);
+            left = left || n < b || n >= e || (up ? next < f : next > f);
+          });
+      }
+      late[static_cast<size_t>(r)] = left;
+    });
+    behind = std::find(late.begin(), late.end(), 1) != late.end();
   }
   std::vector<int32_t> stack;
   for (size_t f = 0; behind && f < nf; ++f)
@@ -213,7 +245,9 @@ std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) 
     stack.pop_back();
     spread(m, g, f, state, table, [&](int32_t next) { stack.push_back(next); });
   }
-  for (uint8_t& x : state) x &= kSep;
+  parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) state[f] &= kSep;
+  });
   return state;
 }
 
@@ -290,12 +324,12 @@ void find_curves(const Mesh& m, BaseComplex& bc) {
 
 // Patches: separation faces joined straight across edges that are not curves; the components on
 // the two sides of each patch are those of its lowest face.
-void find_patches(const Mesh& m, BaseComplex& bc) {
+void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table) {
   const auto& sep = bc.face_separation;
   bc.patch_faces.items.reserve(static_cast<size_t>(std::count(sep.begin(), sep.end(), 1)));
   label_groups(
       m.num_faces(), [&](size_t f) { return sep[f] != 0; },
-      [&, table = HexFaceTable(m.num_cells())](int32_t f, auto reach) mutable {
+      [&](int32_t f, auto reach) {
         // An edge that is not complex has a face that does not separate, so it is not structural
         // (all faces around a structural edge separate): it is Regular.
         const auto fe = m.face_edges(static_cast<size_t>(f));
@@ -464,10 +498,11 @@ void classify_components(const Mesh& m, BaseComplex& bc) {
 BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOptions& options) {
   const LoadOptions par = resolved(options);
   BaseComplex bc;
-  bc.face_separation = separation_faces(m, g);
+  const HexFaceTable table(m, par);
+  bc.face_separation = separation_faces(m, g, table, par);
   find_components(m, bc);
   find_curves(m, bc);
-  find_patches(m, bc);
+  find_patches(m, bc, table);
   patch_incidences(m, bc, par);
   find_self_adjacent_faces(m, bc);
   component_incidences(m, bc, par);
