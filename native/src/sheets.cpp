@@ -263,14 +263,15 @@ namespace {
 // Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
 // orthogonal directions of two hex cells across a joining face.
 UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
+  // Each face of a hex cell once, in face order: the classes (their lowest edges as roots) do not
+  // depend on the order of the unions.
   UnionFind uf(m.num_edges());
-  for (size_t c = 0; c < m.num_cells(); ++c) {
-    if (!m.is_hex(c)) continue;
-    for (int32_t f : m.cell_faces[c]) {
-      auto fe = m.face_edges(static_cast<size_t>(f));
-      uf.unite(fe[0], fe[2]);
-      uf.unite(fe[1], fe[3]);
-    }
+  for (size_t f = 0; f < m.num_faces(); ++f) {
+    const auto fc = m.face_cells[f];
+    if (!m.is_hex(static_cast<size_t>(fc[0])) && (fc[1] < 0 || !m.is_hex(static_cast<size_t>(fc[1])))) continue;
+    const auto fe = m.face_edges(f);
+    uf.unite(fe[0], fe[2]);
+    uf.unite(fe[1], fe[3]);
   }
   for (size_t f = 0; f < m.num_faces(); ++f) {
     if (!d.face_joins[f]) continue;
