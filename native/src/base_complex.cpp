@@ -297,22 +297,30 @@ void find_components(const Mesh& m, BaseComplex& bc) {
 
 // Curves: chains of complex edges (every face around them separates) between corners (vertices
 // whose every edge is a complex edge).
-void find_curves(const Mesh& m, BaseComplex& bc) {
+void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   const size_t ne = m.num_edges(), nv = m.num_vertices();
   // Complex edges: every face around them separates; corners: every edge at them is complex.
-  bc.edge_complex.assign(ne, 1);
-  for (size_t f = 0; f < m.num_faces(); ++f)
-    if (!bc.face_separation[f])
-      for (int32_t e : m.face_edges(f)) bc.edge_complex[static_cast<size_t>(e)] = 0;
-  std::vector<uint8_t> has_edge(nv, 0);
+  // Threads only ever write the same value into a shared flag, through relaxed atomic stores.
+  auto clear = [](std::vector<uint8_t>& v, int32_t i) {
+    std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(0, std::memory_order_relaxed);
+  };
+  resize_huge(bc.edge_complex, ne, uint8_t{1});
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f)
+      if (!bc.face_separation[f])
+        for (int32_t x : m.face_edges(f)) clear(bc.edge_complex, x);
+  });
+  std::vector<uint8_t> no_edge(nv, 1);
   bc.vert_corner.assign(nv, 1);
-  for (size_t e = 0; e < ne; ++e)
-    for (int32_t v : m.edge_verts[e]) {
-      has_edge[static_cast<size_t>(v)] = 1;
-      bc.vert_corner[static_cast<size_t>(v)] &= bc.edge_complex[e];
-    }
+  parallel_ranges(ne, par, [&](size_t b, size_t e, int) {
+    for (size_t x = b; x < e; ++x)
+      for (int32_t v : m.edge_verts[x]) {
+        clear(no_edge, v);
+        if (!bc.edge_complex[x]) clear(bc.vert_corner, v);
+      }
+  });
   for (size_t v = 0; v < nv; ++v) {
-    bc.vert_corner[v] &= has_edge[v];
+    bc.vert_corner[v] &= !no_edge[v];
     if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
   }
   const std::vector<int32_t> zero(ne, 0);
@@ -501,7 +509,7 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOpt
   const HexFaceTable table(m, par);
   bc.face_separation = separation_faces(m, g, table, par);
   find_components(m, bc);
-  find_curves(m, bc);
+  find_curves(m, bc, par);
   find_patches(m, bc, table);
   patch_incidences(m, bc, par);
   find_self_adjacent_faces(m, bc);
