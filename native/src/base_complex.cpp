@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 
+#include "concurrent_union_find.hpp"
 #include "parallel.hpp"
 #include "row_collector.hpp"
 
@@ -28,6 +29,8 @@ size_t BaseComplex::num_non_hex_components() const {
 namespace {
 
 using detail::append_rows;
+using detail::ConcurrentUnionFind;
+using detail::number_classes;
 using detail::parallel_ranges;
 using detail::resize_huge;
 using detail::parallel_rows;
@@ -152,12 +155,6 @@ int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, con
   return table.other_face(m, c1, g, HexFaceTable::slot_of(m.face_edges(static_cast<size_t>(g)).data(), 4, e));
 }
 
-void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
-  if (v.size() > 1) std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  out.push_row(v.begin(), v.end());
-}
-
 // State of a face while the separation surfaces grow: separates, waits to be grown from, and in
 // the bits from 2 up the position + 1 of the edge it was reached across (0 for a seed); straight
 // continuation is symmetric, so that edge leads back to a separation face and is skipped.
@@ -251,48 +248,15 @@ std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g, 
   return state;
 }
 
-// Groups the elements 0..n-1 that `take` accepts into connected groups: each unlabelled accepted
-// element, in increasing order, seeds a group that grows through neighbours(x, reach) (which
-// calls reach(y) for every neighbour y of x that joins x's group). label[x] = group (or -1 when
-// not taken); groups gets one sorted row per group, numbered by its lowest element.
-template <class Take, class Neighbours>
-void label_groups(size_t n, Take take, Neighbours neighbours, std::vector<int32_t>& label, Csr<int32_t>& groups) {
-  label.assign(n, -1);
-  std::vector<int32_t> stack, members;
-  for (size_t s = 0; s < n; ++s) {
-    if (label[s] >= 0 || !take(s)) continue;
-    const int32_t id = static_cast<int32_t>(groups.rows());
-    members.clear();
-    stack.assign(1, static_cast<int32_t>(s));
-    label[s] = id;
-    while (!stack.empty()) {
-      const int32_t x = stack.back();
-      stack.pop_back();
-      members.push_back(x);
-      neighbours(x, [&](int32_t y) {
-        if (label[y] >= 0) return;
-        label[y] = id;
-        stack.push_back(y);
-      });
-    }
-    push_unique_row(members, groups);
-  }
-}
-
 // Components: cells joined across faces that do not separate, numbered by their lowest cell.
-void find_components(const Mesh& m, BaseComplex& bc) {
+void find_components(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   const auto& sep = bc.face_separation;
-  bc.component_cells.items.reserve(m.num_cells());
-  label_groups(
-      m.num_cells(), [](size_t) { return true; },
-      [&](int32_t c, auto reach) {
-        for (int32_t f : m.cell_faces[c]) {
-          if (sep[f]) continue;
-          const int32_t d = m.face_cells[f][0] == c ? m.face_cells[f][1] : m.face_cells[f][0];
-          if (d >= 0) reach(d);
-        }
-      },
-      bc.cell_component, bc.component_cells);
+  ConcurrentUnionFind uf(m.num_cells(), par);
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f)
+      if (!sep[f] && m.face_cells[f][1] >= 0) uf.unite(m.face_cells[f][0], m.face_cells[f][1]);
+  });
+  number_classes(uf, m.num_cells(), par, [](size_t) { return true; }, bc.cell_component, bc.component_cells);
 }
 
 // Curves: chains of complex edges (every face around them separates) between corners (vertices
@@ -332,26 +296,30 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
 
 // Patches: separation faces joined straight across edges that are not curves; the components on
 // the two sides of each patch are those of its lowest face.
-void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table) {
+void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table, const LoadOptions& par) {
   const auto& sep = bc.face_separation;
-  bc.patch_faces.items.reserve(static_cast<size_t>(std::count(sep.begin(), sep.end(), 1)));
-  label_groups(
-      m.num_faces(), [&](size_t f) { return sep[f] != 0; },
-      [&](int32_t f, auto reach) {
-        // An edge that is not complex has a face that does not separate, so it is not structural
-        // (all faces around a structural edge separate): it is Regular.
-        const auto fe = m.face_edges(static_cast<size_t>(f));
-        for (size_t i = 0; i < fe.size(); ++i) {
-          if (bc.edge_complex[fe[i]]) continue;
-          const int32_t h = regular_straight_face(m, fe[i], f, i, table);
-          if (h >= 0 && sep[h]) reach(h);
-        }
-      },
-      bc.face_patch, bc.patch_faces);
-  for (size_t p = 0; p < bc.patch_faces.rows(); ++p) {
-    const auto fc = m.face_cells[bc.patch_faces[p][0]];
-    bc.patch_components.push_back({bc.cell_component[fc[0]], fc[1] >= 0 ? bc.cell_component[fc[1]] : -1});
-  }
+  ConcurrentUnionFind uf(m.num_faces(), par);
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      if (!sep[f]) continue;
+      // An edge that is not complex has a face that does not separate, so it is not structural
+      // (all faces around a structural edge separate): it is Regular.
+      const auto fe = m.face_edges(f);
+      for (size_t i = 0; i < fe.size(); ++i) {
+        if (bc.edge_complex[fe[i]]) continue;
+        const int32_t h = regular_straight_face(m, fe[i], static_cast<int32_t>(f), i, table);
+        if (h >= 0 && sep[h]) uf.unite(static_cast<int32_t>(f), h);
+      }
+    }
+  });
+  number_classes(uf, m.num_faces(), par, [&](size_t f) { return sep[f] != 0; }, bc.face_patch, bc.patch_faces);
+  bc.patch_components.resize(bc.patch_faces.rows());
+  parallel_ranges(bc.patch_faces.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t p = b; p < e; ++p) {
+      const auto fc = m.face_cells[bc.patch_faces[p][0]];
+      bc.patch_components[p] = {bc.cell_component[fc[0]], fc[1] >= 0 ? bc.cell_component[fc[1]] : -1};
+    }
+  });
 }
 
 // The corners and curves of patches first..last-1, appended to `corners` and `curves`.
@@ -508,9 +476,9 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOpt
   BaseComplex bc;
   const HexFaceTable table(m, par);
   bc.face_separation = separation_faces(m, g, table, par);
-  find_components(m, bc);
+  find_components(m, bc, par);
   find_curves(m, bc, par);
-  find_patches(m, bc, table);
+  find_patches(m, bc, table, par);
   patch_incidences(m, bc, par);
   find_self_adjacent_faces(m, bc);
   component_incidences(m, bc, par);

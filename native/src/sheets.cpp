@@ -9,9 +9,9 @@
 #include <new>
 #include <numeric>
 
+#include "concurrent_union_find.hpp"
 #include "parallel.hpp"
 #include "row_collector.hpp"
-#include "union_find.hpp"
 
 namespace hbc {
 
@@ -35,7 +35,6 @@ namespace {
 using detail::parallel_ranges;
 using detail::parallel_rows;
 using detail::range_count;
-using detail::UnionFind;
 
 bool contains(std::span<const int32_t> sorted, int32_t x) {
   return std::binary_search(sorted.begin(), sorted.end(), x);
@@ -261,24 +260,23 @@ SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curv
 namespace {
 
 // Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
-// orthogonal directions of two hex cells across a joining face.
-UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
-  // Each face of a hex cell once, in face order: the classes (their lowest edges as roots) do not
-  // depend on the order of the unions.
-  UnionFind uf(m.num_edges());
-  for (size_t f = 0; f < m.num_faces(); ++f) {
-    const auto fc = m.face_cells[f];
-    if (!m.is_hex(static_cast<size_t>(fc[0])) && (fc[1] < 0 || !m.is_hex(static_cast<size_t>(fc[1])))) continue;
-    const auto fe = m.face_edges(f);
-    uf.unite(fe[0], fe[2]);
-    uf.unite(fe[1], fe[3]);
-  }
-  for (size_t f = 0; f < m.num_faces(); ++f) {
-    if (!d.face_joins[f]) continue;
-    const auto fc = m.face_cells[f];
-    uf.unite(orthogonal_edge(m, fc[0], static_cast<int32_t>(f)), orthogonal_edge(m, fc[1], static_cast<int32_t>(f)));
-  }
-  return uf;
+// orthogonal directions of two hex cells across a joining face. Each face of a hex cell once, in
+// parallel ranges of faces: the classes (their lowest edges as roots) do not depend on the order
+// of the unions.
+std::vector<int32_t> join_parallel_edges(const Mesh& m, const SheetDomain& d, const LoadOptions& par) {
+  detail::ConcurrentUnionFind uf(m.num_edges(), par);
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      const auto fc = m.face_cells[f];
+      if (!m.is_hex(static_cast<size_t>(fc[0])) && (fc[1] < 0 || !m.is_hex(static_cast<size_t>(fc[1])))) continue;
+      const auto fe = m.face_edges(f);
+      uf.unite(fe[0], fe[2]);
+      uf.unite(fe[1], fe[3]);
+      if (d.face_joins[f])
+        uf.unite(orthogonal_edge(m, fc[0], static_cast<int32_t>(f)), orthogonal_edge(m, fc[1], static_cast<int32_t>(f)));
+    }
+  });
+  return std::move(uf.parents());
 }
 
 // The parallel classes with dense ids, and the blocks and curves of each.
@@ -295,7 +293,7 @@ namespace {
 // root, so no second per-edge table is needed.
 class EdgeClasses {
  public:
-  explicit EdgeClasses(UnionFind&& uf) : parent_(std::move(uf.parent)) {}
+  explicit EdgeClasses(std::vector<int32_t>&& parents) : parent_(std::move(parents)) {}
   // Class of edge x, numbering its root's class now if it has none yet.
   int32_t number(int32_t x, int32_t& count) {
     const int32_t r = root(x);
@@ -341,8 +339,8 @@ struct BlockClasses {
 
 }  // namespace
 
-ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
-  EdgeClasses classes(join_parallel_edges(m, d));
+ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d, const LoadOptions& par) {
+  EdgeClasses classes(join_parallel_edges(m, d, par));
   const size_t nc = m.num_cells();
   ParallelClasses pc;
   BlockClasses bc(d.block_cells.rows());
@@ -519,7 +517,7 @@ Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups, const Load
 
 Sheets extract_sheets(const Mesh& m, const SheetDomain& d, const LoadOptions& options) {
   const LoadOptions par = resolved(options);
-  const ParallelClasses pc = parallel_classes(m, d);
+  const ParallelClasses pc = parallel_classes(m, d, par);
   std::vector<Group> groups = block_groups(d, pc, par);
   return write_sheets(d, groups, par);
 }
