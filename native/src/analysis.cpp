@@ -20,8 +20,8 @@ double since(std::chrono::steady_clock::time_point t0) {
 SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt, Timings& timings) {
   auto t = std::chrono::steady_clock::now();
   SheetStage st;
-  st.domain = sheet_domain(mesh, complex, opt.sheet_level);
-  st.sheets = extract_sheets(mesh, st.domain);
+  st.domain = sheet_domain(mesh, complex, opt.sheet_level, LoadOptions{opt.threads});
+  st.sheets = extract_sheets(mesh, st.domain, LoadOptions{opt.threads});
   st.largest_self_intersecting = largest_self_intersecting(st.sheets);
   timings.sheets = since(t);
   if (opt.subsheets) {
@@ -50,7 +50,7 @@ Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
   a.timings.singularity_graph = since(t);
 
   t = std::chrono::steady_clock::now();
-  a.complex = base_complex(mesh, a.graph);
+  a.complex = base_complex(mesh, a.graph, LoadOptions{opt.threads});
   a.timings.base_complex = since(t);
 
   if (opt.sheets) a.sheet_stage = sheet_stage(mesh, a.complex, opt, a.timings);
@@ -147,7 +147,7 @@ StatsRun analyze_stats(const Mesh& mesh, const AnalysisOptions& opt) {
     s.timings.singularity_graph = since(t);
     graph_stats(mesh, graph, s);
     t = std::chrono::steady_clock::now();
-    bc = base_complex(mesh, graph);
+    bc = base_complex(mesh, graph, LoadOptions{opt.threads});
     s.timings.base_complex = since(t);
     complex_stats(bc, s);
   }

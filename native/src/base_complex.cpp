@@ -1,6 +1,11 @@
 #include "hbc/base_complex.hpp"
 
 #include <algorithm>
+#include <atomic>
+
+#include "concurrent_union_find.hpp"
+#include "parallel.hpp"
+#include "row_collector.hpp"
 
 namespace hbc {
 
@@ -22,6 +27,15 @@ size_t BaseComplex::num_non_hex_components() const {
 }
 
 namespace {
+
+using detail::append_rows;
+using detail::ConcurrentUnionFind;
+using detail::number_classes;
+using detail::parallel_ranges;
+using detail::resize_huge;
+using detail::parallel_rows;
+using detail::range_count;
+using detail::RowCollector;
 
 // The face after f around edge e, walking into the cell on f's side `side`; `side` becomes the
 // side of that face the walk goes on through. -1 when there is no cell on that side.
@@ -75,18 +89,23 @@ int32_t straight_face(const Mesh& m, int32_t e, int32_t f, EdgeFan& scratch) {
 
 namespace {
 
-// The other face of a hex cell at each edge of each of its faces, found once per cell (on first
-// use) instead of by scanning the cell's faces at every step around an edge: the straight
-// continuations of the separation surfaces and patches take two such steps per face and edge.
-// Row c packs, for face slot j (order of cell_faces[c]) and edge position i of that face's loop,
-// the slot of the cell's other face at that edge in 4 bits.
+// The other face of a hex cell at each edge of each of its faces, found once per hex cell (in
+// parallel ranges of cells) instead of by scanning the cell's faces at every step around an edge:
+// the straight continuations of the separation surfaces and patches take two such steps per face
+// and edge. Row c packs, for face slot j (order of cell_faces[c]) and edge position i of that
+// face's loop, the slot of the cell's other face at that edge in 4 bits.
 class HexFaceTable {
  public:
-  explicit HexFaceTable(size_t ncells) : other_(ncells), built_(ncells, 0) {}
+  HexFaceTable(const Mesh& m, const LoadOptions& par) {
+    resize_huge(other_, m.num_cells());
+    parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
+      for (size_t c = b; c < e; ++c)
+        if (m.is_hex(c)) build(m, c);
+    });
+  }
   // The face of hex cell c other than f at the edge at position i of f's loop.
-  int32_t other_face(const Mesh& m, int32_t c, int32_t f, size_t i) {
+  int32_t other_face(const Mesh& m, int32_t c, int32_t f, size_t i) const {
     const auto faces = m.cell_faces[static_cast<size_t>(c)];
-    if (!built_[static_cast<size_t>(c)]) build(m, c);
     const size_t k = 4 * slot_of(faces.data(), 6, f) + i;
     return faces[(other_[static_cast<size_t>(c)][k / 2] >> (4 * (k % 2))) & 15];
   }
@@ -99,12 +118,12 @@ class HexFaceTable {
   }
 
  private:
-  void build(const Mesh& m, int32_t c) {
-    const auto faces = m.cell_faces[static_cast<size_t>(c)];
+  void build(const Mesh& m, size_t c) {
+    const auto faces = m.cell_faces[c];
     std::array<int32_t, 24> edge{};
     for (size_t j = 0; j < 6; ++j)
       for (size_t i = 0; i < 4; ++i) edge[4 * j + i] = m.face_edges(static_cast<size_t>(faces[j]))[i];
-    auto& row = other_[static_cast<size_t>(c)];
+    auto& row = other_[c];
     row.fill(0);
     // Each edge of a hex is on exactly two of its faces: match each entry with the later one.
     uint32_t matched = 0;
@@ -118,16 +137,14 @@ class HexFaceTable {
           break;
         }
     }
-    built_[static_cast<size_t>(c)] = 1;
   }
   std::vector<std::array<uint8_t, 12>> other_;
-  std::vector<uint8_t> built_;
 };
 
 // straight_face(m, e, f) for an edge e of the hybrid singularity graph's Regular class (all cells
 // hex, valence 4 inside or 2 on the boundary) at position i of f's loop: the same two steps
 // around the fan from f through face_cells[f][0], with the cells' other faces from `table`.
-int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, HexFaceTable& table) {
+int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, const HexFaceTable& table) {
   if (!m.edge_fan_ok(static_cast<size_t>(e))) return -1;
   if (m.edge_boundary[static_cast<size_t>(e)] && !m.face_boundary[static_cast<size_t>(f)]) return -1;
   const int32_t c0 = m.face_cells[static_cast<size_t>(f)][0];
@@ -138,94 +155,84 @@ int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, Hex
   return table.other_face(m, c1, g, HexFaceTable::slot_of(m.face_edges(static_cast<size_t>(g)).data(), 4, e));
 }
 
-// Sorted distinct values of `v`, appended to `out` as one row.
-// Distinct ids gathered row by row without sorting the duplicates: a stamp per id marks those
-// already taken for the current row; only the few distinct ids get sorted.
-class RowCollector {
- public:
-  explicit RowCollector(size_t n) : stamp_(n, -1) {}
-  void begin() {
-    ++current_;
-    row_.clear();
-  }
-  void add(int32_t id) {
-    if (stamp_[id] == current_) return;
-    stamp_[id] = current_;
-    row_.push_back(id);
-  }
-  void end(Csr<int32_t>& out) {
-    if (row_.size() <= 16) {  // the usual case: a handful of ids
-      for (size_t i = 1; i < row_.size(); ++i)
-        for (size_t j = i; j > 0 && row_[j - 1] > row_[j]; --j) std::swap(row_[j - 1], row_[j]);
-    } else {
-      std::sort(row_.begin(), row_.end());
-    }
-    out.push_row(row_.begin(), row_.end());
-  }
-
- private:
-  std::vector<int32_t> stamp_, row_;
-  int32_t current_ = -1;
-};
-
-void push_unique_row(std::vector<int32_t>& v, Csr<int32_t>& out) {
-  if (v.size() > 1) std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  out.push_row(v.begin(), v.end());
-}
-
 // State of a face while the separation surfaces grow: separates, waits to be grown from, and in
 // the bits from 2 up the position + 1 of the edge it was reached across (0 for a seed); straight
 // continuation is symmetric, so that edge leads back to a separation face and is skipped.
+// Threads share the states: a face is claimed by one compare-exchange from 0 (the first thread
+// to reach it), and only the thread whose range holds a face grows from it. Which thread claims
+// a face only changes the skipped edge, which leads to a separation face either way.
 constexpr uint8_t kSep = 1, kPending = 2;
+
+uint8_t load(const std::vector<uint8_t>& state, int32_t f) {
+  return std::atomic_ref<const uint8_t>(state[static_cast<size_t>(f)]).load(std::memory_order_relaxed);
+}
 
 // Grows the surfaces from pending face f across its Regular inside edges: marks every face reached
 // pending and calls reached(next) for it.
 template <class Reached>
-void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uint8_t>& state, HexFaceTable& table,
+void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uint8_t>& state, const HexFaceTable& table,
             Reached reached) {
-  const size_t from = static_cast<size_t>(state[static_cast<size_t>(f)] >> 2);
-  state[static_cast<size_t>(f)] = kSep;
+  std::atomic_ref<uint8_t> own(state[static_cast<size_t>(f)]);
+  const size_t from = static_cast<size_t>(own.load(std::memory_order_relaxed) >> 2);
+  own.store(kSep, std::memory_order_relaxed);
   const auto fe = m.face_edges(static_cast<size_t>(f));
   for (size_t i = 0; i < fe.size(); ++i) {
     const int32_t e = fe[i];
     if (i + 1 == from || g.is_structural(e) || m.edge_boundary[e]) continue;
     const int32_t next = regular_straight_face(m, e, f, i, table);
-    if (next < 0 || state[static_cast<size_t>(next)]) continue;
+    if (next < 0 || load(state, next)) continue;
     const auto ne = m.face_edges(static_cast<size_t>(next));
     const size_t at = ne.size() == 4 ? HexFaceTable::slot_of(ne.data(), 4, e) + 1 : 0;
-    state[static_cast<size_t>(next)] = static_cast<uint8_t>(kSep | kPending | at << 2);
-    reached(next);
+    uint8_t expected = 0;
+    if (std::atomic_ref<uint8_t>(state[static_cast<size_t>(next)])
+            .compare_exchange_strong(expected, static_cast<uint8_t>(kSep | kPending | at << 2), std::memory_order_relaxed))
+      reached(next);
   }
+}
+
+// The seeds: boundary faces separate but grow no surface; faces at a structural edge grow one.
+std::vector<uint8_t> separation_seeds(const Mesh& m, const SingularityGraph& g, const LoadOptions& par) {
+  std::vector<uint8_t> state;
+  resize_huge(state, m.num_faces());
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      const auto fe = m.face_edges(f);
+      state[f] = m.face_boundary[f] ? kSep
+                 : std::any_of(fe.begin(), fe.end(), [&](int32_t x) { return g.is_structural(x); }) ? kSep | kPending
+                                                                                                   : 0;
+    }
+  });
+  return state;
 }
 
 // Separation faces: boundary faces, and the surfaces traced straight from every face around an
 // edge of the hybrid singularity graph until they reach another such edge or the boundary.
-// The result is a closure, so the order of growth is free: sweeps over the faces in increasing,
-// then decreasing id (a face reached ahead of the sweep is grown in the same sweep) keep the
-// memory accesses in order, where a breadth-first queue scatters them over the whole mesh. A few
-// sweeps settle meshes numbered layer by layer; after those, a stack finishes whatever is left.
-std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) {
+// The result is a closure, so the order of growth is free: sweeps over each thread's range of
+// faces in increasing, then decreasing id (a face reached ahead of the sweep in the same range is
+// grown in the same sweep) keep the memory accesses in order, where a breadth-first queue
+// scatters them over the whole mesh. A few sweeps settle meshes numbered layer by layer; after
+// those, a stack finishes whatever is left.
+std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g, const HexFaceTable& table,
+                                      const LoadOptions& par) {
   const size_t nf = m.num_faces();
-  std::vector<uint8_t> state(nf, 0);
-  for (size_t f = 0; f < nf; ++f) {
-    if (m.face_boundary[f]) {
-      state[f] = kSep;  // the boundary separates but grows no surface
-      continue;
-    }
-    const auto fe = m.face_edges(f);
-    if (std::any_of(fe.begin(), fe.end(), [&](int32_t e) { return g.is_structural(e); })) state[f] = kSep | kPending;
-  }
-  HexFaceTable table(m.num_cells());
+  std::vector<uint8_t> state = separation_seeds(m, g, par);
   bool behind = true;
   for (int sweep = 0; sweep < 6 && behind; ++sweep) {
-    behind = false;
     const bool up = sweep % 2 == 0;
-    for (size_t k = 0; k < nf; ++k) {
-      const int32_t f = static_cast<int32_t>(up ? k : nf - 1 - k);
-      if (state[static_cast<size_t>(f)] & kPending)
-        spread(m, g, f, state, table, [&](int32_t next) { behind = behind || (up ? next < f : next > f); });
-    }
+    std::vector<uint8_t> late(static_cast<size_t>(range_count(nf, par)), 0);
+    parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
+      bool left = false;  // a face was reached that this sweep will not visit again
+      for (size_t k = b; k < e; ++k) {
+        const int32_t f = static_cast<int32_t>(up ? k : b + e - 1 - k);
+        if (load(state, f) & kPending)
+          spread(m, g, f, state, table, [&](int32_t next) {
+            const auto n = static_cast<size_t>(next);
+            left = left || n < b || n >= e || (up ? next < f : next > f);
+          });
+      }
+      late[static_cast<size_t>(r)] = left;
+    });
+    behind = std::find(late.begin(), late.end(), 1) != late.end();
   }
   std::vector<int32_t> stack;
   for (size_t f = 0; behind && f < nf; ++f)
@@ -235,72 +242,49 @@ std::vector<uint8_t> separation_faces(const Mesh& m, const SingularityGraph& g) 
     stack.pop_back();
     spread(m, g, f, state, table, [&](int32_t next) { stack.push_back(next); });
   }
-  for (uint8_t& x : state) x &= kSep;
+  parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) state[f] &= kSep;
+  });
   return state;
 }
 
-// Groups the elements 0..n-1 that `take` accepts into connected groups: each unlabelled accepted
-// element, in increasing order, seeds a group that grows through neighbours(x, reach) (which
-// calls reach(y) for every neighbour y of x that joins x's group). label[x] = group (or -1 when
-// not taken); groups gets one sorted row per group, numbered by its lowest element.
-template <class Take, class Neighbours>
-void label_groups(size_t n, Take take, Neighbours neighbours, std::vector<int32_t>& label, Csr<int32_t>& groups) {
-  label.assign(n, -1);
-  std::vector<int32_t> stack, members;
-  for (size_t s = 0; s < n; ++s) {
-    if (label[s] >= 0 || !take(s)) continue;
-    const int32_t id = static_cast<int32_t>(groups.rows());
-    members.clear();
-    stack.assign(1, static_cast<int32_t>(s));
-    label[s] = id;
-    while (!stack.empty()) {
-      const int32_t x = stack.back();
-      stack.pop_back();
-      members.push_back(x);
-      neighbours(x, [&](int32_t y) {
-        if (label[y] >= 0) return;
-        label[y] = id;
-        stack.push_back(y);
-      });
-    }
-    push_unique_row(members, groups);
-  }
-}
-
 // Components: cells joined across faces that do not separate, numbered by their lowest cell.
-void find_components(const Mesh& m, BaseComplex& bc) {
+void find_components(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   const auto& sep = bc.face_separation;
-  bc.component_cells.items.reserve(m.num_cells());
-  label_groups(
-      m.num_cells(), [](size_t) { return true; },
-      [&](int32_t c, auto reach) {
-        for (int32_t f : m.cell_faces[c]) {
-          if (sep[f]) continue;
-          const int32_t d = m.face_cells[f][0] == c ? m.face_cells[f][1] : m.face_cells[f][0];
-          if (d >= 0) reach(d);
-        }
-      },
-      bc.cell_component, bc.component_cells);
+  ConcurrentUnionFind uf(m.num_cells(), par);
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f)
+      if (!sep[f] && m.face_cells[f][1] >= 0) uf.unite(m.face_cells[f][0], m.face_cells[f][1]);
+  });
+  number_classes(uf, m.num_cells(), par, [](size_t) { return true; }, bc.cell_component, bc.component_cells);
 }
 
 // Curves: chains of complex edges (every face around them separates) between corners (vertices
 // whose every edge is a complex edge).
-void find_curves(const Mesh& m, BaseComplex& bc) {
+void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   const size_t ne = m.num_edges(), nv = m.num_vertices();
   // Complex edges: every face around them separates; corners: every edge at them is complex.
-  bc.edge_complex.assign(ne, 1);
-  for (size_t f = 0; f < m.num_faces(); ++f)
-    if (!bc.face_separation[f])
-      for (int32_t e : m.face_edges(f)) bc.edge_complex[static_cast<size_t>(e)] = 0;
-  std::vector<uint8_t> has_edge(nv, 0);
+  // Threads only ever write the same value into a shared flag, through relaxed atomic stores.
+  auto clear = [](std::vector<uint8_t>& v, int32_t i) {
+    std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(0, std::memory_order_relaxed);
+  };
+  resize_huge(bc.edge_complex, ne, uint8_t{1});
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f)
+      if (!bc.face_separation[f])
+        for (int32_t x : m.face_edges(f)) clear(bc.edge_complex, x);
+  });
+  std::vector<uint8_t> no_edge(nv, 1);
   bc.vert_corner.assign(nv, 1);
-  for (size_t e = 0; e < ne; ++e)
-    for (int32_t v : m.edge_verts[e]) {
-      has_edge[static_cast<size_t>(v)] = 1;
-      bc.vert_corner[static_cast<size_t>(v)] &= bc.edge_complex[e];
-    }
+  parallel_ranges(ne, par, [&](size_t b, size_t e, int) {
+    for (size_t x = b; x < e; ++x)
+      for (int32_t v : m.edge_verts[x]) {
+        clear(no_edge, v);
+        if (!bc.edge_complex[x]) clear(bc.vert_corner, v);
+      }
+  });
   for (size_t v = 0; v < nv; ++v) {
-    bc.vert_corner[v] &= has_edge[v];
+    bc.vert_corner[v] &= !no_edge[v];
     if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
   }
   const std::vector<int32_t> zero(ne, 0);
@@ -312,36 +296,40 @@ void find_curves(const Mesh& m, BaseComplex& bc) {
 
 // Patches: separation faces joined straight across edges that are not curves; the components on
 // the two sides of each patch are those of its lowest face.
-void find_patches(const Mesh& m, BaseComplex& bc) {
+void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table, const LoadOptions& par) {
   const auto& sep = bc.face_separation;
-  bc.patch_faces.items.reserve(static_cast<size_t>(std::count(sep.begin(), sep.end(), 1)));
-  label_groups(
-      m.num_faces(), [&](size_t f) { return sep[f] != 0; },
-      [&, table = HexFaceTable(m.num_cells())](int32_t f, auto reach) mutable {
-        // An edge that is not complex has a face that does not separate, so it is not structural
-        // (all faces around a structural edge separate): it is Regular.
-        const auto fe = m.face_edges(static_cast<size_t>(f));
-        for (size_t i = 0; i < fe.size(); ++i) {
-          if (bc.edge_complex[fe[i]]) continue;
-          const int32_t h = regular_straight_face(m, fe[i], f, i, table);
-          if (h >= 0 && sep[h]) reach(h);
-        }
-      },
-      bc.face_patch, bc.patch_faces);
-  for (size_t p = 0; p < bc.patch_faces.rows(); ++p) {
-    const auto fc = m.face_cells[bc.patch_faces[p][0]];
-    bc.patch_components.push_back({bc.cell_component[fc[0]], fc[1] >= 0 ? bc.cell_component[fc[1]] : -1});
-  }
+  ConcurrentUnionFind uf(m.num_faces(), par);
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      if (!sep[f]) continue;
+      // An edge that is not complex has a face that does not separate, so it is not structural
+      // (all faces around a structural edge separate): it is Regular.
+      const auto fe = m.face_edges(f);
+      for (size_t i = 0; i < fe.size(); ++i) {
+        if (bc.edge_complex[fe[i]]) continue;
+        const int32_t h = regular_straight_face(m, fe[i], static_cast<int32_t>(f), i, table);
+        if (h >= 0 && sep[h]) uf.unite(static_cast<int32_t>(f), h);
+      }
+    }
+  });
+  number_classes(uf, m.num_faces(), par, [&](size_t f) { return sep[f] != 0; }, bc.face_patch, bc.patch_faces);
+  bc.patch_components.resize(bc.patch_faces.rows());
+  parallel_ranges(bc.patch_faces.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t p = b; p < e; ++p) {
+      const auto fc = m.face_cells[bc.patch_faces[p][0]];
+      bc.patch_components[p] = {bc.cell_component[fc[0]], fc[1] >= 0 ? bc.cell_component[fc[1]] : -1};
+    }
+  });
 }
 
-// The corners and curves on each patch.
-void patch_incidences(const Mesh& m, BaseComplex& bc) {
-  const size_t npatch = bc.patch_faces.rows();
+// The corners and curves of patches first..last-1, appended to `corners` and `curves`.
+void patch_rows(const Mesh& m, const BaseComplex& bc, size_t first, size_t last, Csr<int32_t>& corners,
+                Csr<int32_t>& curves) {
   RowCollector by_vertex(m.num_vertices()), by_curve(bc.curve_edges.rows());
   // Quads dominate: room for 4 corners and curves per patch.
-  bc.patch_corners.reserve(npatch, 4 * npatch);
-  bc.patch_curves.reserve(npatch, 4 * npatch);
-  for (size_t p = 0; p < npatch; ++p) {
+  corners.reserve(last - first, 4 * (last - first));
+  curves.reserve(last - first, 4 * (last - first));
+  for (size_t p = first; p < last; ++p) {
     by_vertex.begin();
     by_curve.begin();
     for (int32_t f : bc.patch_faces[p]) {
@@ -350,8 +338,22 @@ void patch_incidences(const Mesh& m, BaseComplex& bc) {
       for (int32_t e : m.face_edges(static_cast<size_t>(f)))
         if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
     }
-    by_vertex.end(bc.patch_corners);
-    by_curve.end(bc.patch_curves);
+    by_vertex.end(corners);
+    by_curve.end(curves);
+  }
+}
+
+// The corners and curves on each patch, in ranges of patches holding about as many faces each.
+void patch_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
+  std::vector<std::array<Csr<int32_t>, 2>> parts(
+      static_cast<size_t>(range_count(std::max(bc.patch_faces.rows(), bc.patch_faces.items.size()), par)));
+  parallel_rows(bc.patch_faces, par, [&](size_t first, size_t last, int r) {
+    if (r == 0) patch_rows(m, bc, first, last, bc.patch_corners, bc.patch_curves);
+    else patch_rows(m, bc, first, last, parts[static_cast<size_t>(r)][0], parts[static_cast<size_t>(r)][1]);
+  });
+  for (size_t r = 1; r < parts.size(); ++r) {
+    append_rows(bc.patch_corners, parts[r][0]);
+    append_rows(bc.patch_curves, parts[r][1]);
   }
 }
 
@@ -364,17 +366,18 @@ void find_self_adjacent_faces(const Mesh& m, BaseComplex& bc) {
   }
 }
 
-// Per component: the adjacent components, and its patches, curves and corners.
-void component_incidences(const Mesh& m, BaseComplex& bc) {
-  const size_t ncomp = bc.component_cells.rows();
-  RowCollector by_vertex(m.num_vertices()), by_curve(bc.curve_edges.rows()), by_patch(bc.patch_faces.rows()),
-      by_component(ncomp);
-  // Cubes dominate: room for 8 corners, 12 curves, 6 patches and 6 neighbours per component.
-  bc.component_corners.reserve(ncomp, 8 * ncomp);
-  bc.component_curves.reserve(ncomp, 12 * ncomp);
-  bc.component_patches.reserve(ncomp, 6 * ncomp);
-  bc.component_adjacency.reserve(ncomp, 6 * ncomp);
-  for (size_t k = 0; k < ncomp; ++k) {
+// The incidence rows of components first..last-1: adjacent components, patches, curves, corners.
+void component_rows(const Mesh& m, const BaseComplex& bc, size_t first, size_t last,
+                    std::array<Csr<int32_t>*, 4> out) {
+  RowCollector by_component(bc.component_cells.rows()), by_patch(bc.patch_faces.rows()),
+      by_curve(bc.curve_edges.rows()), by_vertex(m.num_vertices());
+  // Cubes dominate: room for 6 neighbours, 6 patches, 12 curves and 8 corners per component.
+  const size_t n = last - first;
+  out[0]->reserve(n, 6 * n);
+  out[1]->reserve(n, 6 * n);
+  out[2]->reserve(n, 12 * n);
+  out[3]->reserve(n, 8 * n);
+  for (size_t k = first; k < last; ++k) {
     by_component.begin();
     by_patch.begin();
     by_curve.begin();
@@ -393,11 +396,26 @@ void component_incidences(const Mesh& m, BaseComplex& bc) {
         for (int32_t v : m.face_verts[static_cast<size_t>(f)])
           if (bc.vert_corner[v]) by_vertex.add(v);
       }
-    by_component.end(bc.component_adjacency);
-    by_patch.end(bc.component_patches);
-    by_curve.end(bc.component_curves);
-    by_vertex.end(bc.component_corners);
+    by_component.end(*out[0]);
+    by_patch.end(*out[1]);
+    by_curve.end(*out[2]);
+    by_vertex.end(*out[3]);
   }
+}
+
+// Per component: the adjacent components, and its patches, curves and corners, in ranges of
+// components holding about as many cells each; range 0 writes straight into bc.
+void component_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
+  const size_t nr = static_cast<size_t>(range_count(std::max(bc.component_cells.rows(), bc.component_cells.items.size()), par));
+  std::vector<std::array<Csr<int32_t>, 4>> parts(nr);
+  const std::array<Csr<int32_t>*, 4> mine = {&bc.component_adjacency, &bc.component_patches, &bc.component_curves,
+                                             &bc.component_corners};
+  parallel_rows(bc.component_cells, par, [&](size_t first, size_t last, int r) {
+    auto& p = parts[static_cast<size_t>(r)];
+    component_rows(m, bc, first, last, r == 0 ? mine : std::array<Csr<int32_t>*, 4>{&p[0], &p[1], &p[2], &p[3]});
+  });
+  for (size_t r = 1; r < nr; ++r)
+    for (size_t i = 0; i < 4; ++i) append_rows(*mine[i], parts[r][i]);
 }
 
 // Euler characteristic V - E + F of the boundary surface of component k (faces counted once per
@@ -453,15 +471,17 @@ void classify_components(const Mesh& m, BaseComplex& bc) {
 
 }  // namespace
 
-BaseComplex base_complex(const Mesh& m, const SingularityGraph& g) {
+BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOptions& options) {
+  const LoadOptions par = resolved(options);
   BaseComplex bc;
-  bc.face_separation = separation_faces(m, g);
-  find_components(m, bc);
-  find_curves(m, bc);
-  find_patches(m, bc);
-  patch_incidences(m, bc);
+  const HexFaceTable table(m, par);
+  bc.face_separation = separation_faces(m, g, table, par);
+  find_components(m, bc, par);
+  find_curves(m, bc, par);
+  find_patches(m, bc, table, par);
+  patch_incidences(m, bc, par);
   find_self_adjacent_faces(m, bc);
-  component_incidences(m, bc);
+  component_incidences(m, bc, par);
   classify_components(m, bc);
   return bc;
 }

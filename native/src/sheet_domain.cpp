@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "hbc/sheets.hpp"
+#include "parallel.hpp"
 
 namespace hbc {
 namespace {
@@ -20,7 +21,7 @@ bool share_end(const std::array<int32_t, 2>& a, const std::array<int32_t, 2>& b)
 // Parallel pairs of every quad (4 curves, no shared end within a pair); `quads` rows list the
 // curves of each quad.
 Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<std::array<int32_t, 2>>& ends,
-                                  size_t ncurves) {
+                                  size_t ncurves, const LoadOptions& par) {
   // Count, fill, then sort and dedupe each (short) row: no global sort of all pairs.
   auto for_each_pair = [&](auto&& fn) {
     for (size_t q = 0; q < quads.rows(); ++q) {
@@ -41,15 +42,21 @@ Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<s
   out.items.resize(out.offsets.back());
   std::vector<int32_t> fill(out.offsets.begin(), out.offsets.end() - 1);
   for_each_pair([&](int32_t a, int32_t b) { out.items[fill[a]++] = b; });
-  // Dedupe rows in place, then compact.
+  // Sort and dedupe rows in place (in parallel ranges), then compact.
+  std::vector<int32_t> kept(ncurves);
+  detail::parallel_ranges(ncurves, par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k) {
+      auto r = out.row(k);
+      std::sort(r.begin(), r.end());
+      kept[k] = static_cast<int32_t>(std::unique(r.begin(), r.end()) - r.begin());
+    }
+  });
   Csr<int32_t> packed;
   packed.offsets.reserve(ncurves + 1);
   packed.items.reserve(out.items.size());
   for (size_t k = 0; k < ncurves; ++k) {
-    auto r = out.row(k);
-    std::sort(r.begin(), r.end());
-    auto last = std::unique(r.begin(), r.end());
-    packed.push_row(std::span<const int32_t>(r.data(), static_cast<size_t>(last - r.begin())));
+    const int32_t* r = out.items.data() + out.offsets[k];
+    packed.push_row(r, r + kept[k]);
   }
   return packed;
 }
@@ -74,7 +81,8 @@ Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vecto
 
 }  // namespace
 
-SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
+SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level, const LoadOptions& options) {
+  const LoadOptions par = resolved(options);
   SheetDomain d;
   d.level = level;
   const size_t nc = m.num_cells(), nf = m.num_faces();
@@ -90,12 +98,16 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
       d.block_component.push_back(static_cast<int32_t>(k));
       d.block_cells.push_row(bc.component_cells[k]);
     }
-    for (size_t c = 0; c < nc; ++c) d.cell_block[c] = m.is_hex(c) ? comp_block[bc.cell_component[c]] : -1;
+    detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int) {
+      for (size_t c = b; c < e; ++c) d.cell_block[c] = m.is_hex(c) ? comp_block[bc.cell_component[c]] : -1;
+    });
+    // comp_block only grows with the component, so the kept neighbours stay sorted and distinct.
+    d.block_adjacency.reserve(d.block_component.size(), bc.component_adjacency.items.size());
     for (int32_t k : d.block_component) {
       buf.clear();
       for (int32_t j : bc.component_adjacency[k])
         if (comp_block[j] >= 0) buf.push_back(comp_block[j]);
-      push_sorted_unique(buf, d.block_adjacency);
+      d.block_adjacency.push_row(buf.begin(), buf.end());
     }
     d.curve_edges = bc.curve_edges;
     for (size_t k = 0; k < bc.curve_verts.rows(); ++k) {
@@ -103,11 +115,13 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
       d.curve_ends.push_back(bc.curve_closed[k] ? std::array<int32_t, 2>{-1, -1}
                                                 : std::array<int32_t, 2>{vs.front(), vs.back()});
     }
-    for (size_t f = 0; f < nf; ++f) {
-      const auto fc = m.face_cells[f];
-      d.face_joins[f] = !bc.face_separation[f] && fc[1] >= 0 && m.is_hex(fc[0]) && m.is_hex(fc[1]);
-    }
-    d.curve_parallels = parallels_from_quads(bc.patch_curves, d.curve_ends, d.curve_edges.rows());
+    detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
+      for (size_t f = b; f < e; ++f) {
+        const auto fc = m.face_cells[f];
+        d.face_joins[f] = !bc.face_separation[f] && fc[1] >= 0 && m.is_hex(fc[0]) && m.is_hex(fc[1]);
+      }
+    });
+    d.curve_parallels = parallels_from_quads(bc.patch_curves, d.curve_ends, d.curve_edges.rows(), par);
     // Blocks and non-hex cells at each curve, without walking the fans of its edges: a cell at a
     // curve edge has both its faces there among the separation faces, so the curve is one of its
     // component's curves, and conversely. A non-hex cell is a component of its own, and
@@ -147,7 +161,7 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level) {
       const bool hex_face = m.is_hex(fc[0]) || (fc[1] >= 0 && m.is_hex(fc[1]));
       if (hex_face && m.face_verts.count(f) == 4) quads.push_row(m.face_edges(f));
     }
-    d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges());
+    d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges(), par);
   }
 
   // Mesh level: blocks holding each curve, and non-hex cells touching it, from the edge fans.

@@ -3,9 +3,15 @@
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
+#include <cstdlib>
+#include <iterator>
+#include <memory>
+#include <new>
 #include <numeric>
 
-#include "union_find.hpp"
+#include "concurrent_union_find.hpp"
+#include "parallel.hpp"
+#include "row_collector.hpp"
 
 namespace hbc {
 
@@ -26,7 +32,9 @@ size_t Sheets::count(SheetType t) const {
 
 namespace {
 
-using detail::UnionFind;
+using detail::parallel_ranges;
+using detail::parallel_rows;
+using detail::range_count;
 
 bool contains(std::span<const int32_t> sorted, int32_t x) {
   return std::binary_search(sorted.begin(), sorted.end(), x);
@@ -252,23 +260,23 @@ SheetClass classify_sheet(const SheetDomain& d, const std::vector<int32_t>& curv
 namespace {
 
 // Mesh edges joined into parallel classes: opposite edges of every quad of a hex cell, and the
-// orthogonal directions of two hex cells across a joining face.
-UnionFind join_parallel_edges(const Mesh& m, const SheetDomain& d) {
-  UnionFind uf(m.num_edges());
-  for (size_t c = 0; c < m.num_cells(); ++c) {
-    if (!m.is_hex(c)) continue;
-    for (int32_t f : m.cell_faces[c]) {
-      auto fe = m.face_edges(static_cast<size_t>(f));
+// orthogonal directions of two hex cells across a joining face. Each face of a hex cell once, in
+// parallel ranges of faces: the classes (their lowest edges as roots) do not depend on the order
+// of the unions.
+std::vector<int32_t> join_parallel_edges(const Mesh& m, const SheetDomain& d, const LoadOptions& par) {
+  detail::ConcurrentUnionFind uf(m.num_edges(), par);
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      const auto fc = m.face_cells[f];
+      if (!m.is_hex(static_cast<size_t>(fc[0])) && (fc[1] < 0 || !m.is_hex(static_cast<size_t>(fc[1])))) continue;
+      const auto fe = m.face_edges(f);
       uf.unite(fe[0], fe[2]);
       uf.unite(fe[1], fe[3]);
+      if (d.face_joins[f])
+        uf.unite(orthogonal_edge(m, fc[0], static_cast<int32_t>(f)), orthogonal_edge(m, fc[1], static_cast<int32_t>(f)));
     }
-  }
-  for (size_t f = 0; f < m.num_faces(); ++f) {
-    if (!d.face_joins[f]) continue;
-    const auto fc = m.face_cells[f];
-    uf.unite(orthogonal_edge(m, fc[0], static_cast<int32_t>(f)), orthogonal_edge(m, fc[1], static_cast<int32_t>(f)));
-  }
-  return uf;
+  });
+  return std::move(uf.parents());
 }
 
 // The parallel classes with dense ids, and the blocks and curves of each.
@@ -285,7 +293,7 @@ namespace {
 // root, so no second per-edge table is needed.
 class EdgeClasses {
  public:
-  explicit EdgeClasses(UnionFind&& uf) : parent_(std::move(uf.parent)) {}
+  explicit EdgeClasses(std::vector<int32_t>&& parents) : parent_(std::move(parents)) {}
   // Class of edge x, numbering its root's class now if it has none yet.
   int32_t number(int32_t x, int32_t& count) {
     const int32_t r = root(x);
@@ -331,8 +339,8 @@ struct BlockClasses {
 
 }  // namespace
 
-ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d) {
-  EdgeClasses classes(join_parallel_edges(m, d));
+ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d, const LoadOptions& par) {
+  EdgeClasses classes(join_parallel_edges(m, d, par));
   const size_t nc = m.num_cells();
   ParallelClasses pc;
   BlockClasses bc(d.block_cells.rows());
@@ -366,85 +374,101 @@ struct Group {
   std::vector<int32_t> blocks, curves;
 };
 
-// Each class split into face-connected groups of its blocks: one sheet per group. first[k] ..
-// first[k + 1] are the groups of class k.
-std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc, std::vector<size_t>& first) {
-  const size_t nblocks = d.block_cells.rows();
-  std::vector<Group> groups;
-  std::vector<int32_t> stamp(nblocks, -1), seen(nblocks, -1), stack;
-  first.assign(static_cast<size_t>(pc.count) + 1, 0);
-  for (int32_t k = 0; k < pc.count; ++k) {
-    first[k] = groups.size();
-    for (int32_t u : pc.blocks[k]) stamp[u] = k;
-    for (int32_t u0 : pc.blocks[k]) {
-      if (seen[u0] == k) continue;
-      Group g;
-      stack.assign(1, u0);
-      seen[u0] = k;
-      while (!stack.empty()) {
-        const int32_t u = stack.back();
-        stack.pop_back();
-        g.blocks.push_back(u);
-        for (int32_t w : d.block_adjacency[u])
-          if (stamp[w] == k && seen[w] != k) {
-            seen[w] = k;
-            stack.push_back(w);
-          }
-      }
-      std::sort(g.blocks.begin(), g.blocks.end());
-      groups.push_back(std::move(g));
+// Per-thread tables over the blocks for class_groups: the class a block was last marked with,
+// and its group (+ 1 for both, as calloc'd zeros mean nothing yet; pages never touched cost
+// nothing).
+struct GroupScratch {
+  std::unique_ptr<int32_t, decltype(&std::free)> in_class, group;
+  explicit GroupScratch(size_t nblocks)
+      : in_class(static_cast<int32_t*>(std::calloc(nblocks + 1, sizeof(int32_t))), &std::free),
+        group(static_cast<int32_t*>(std::calloc(nblocks + 1, sizeof(int32_t))), &std::free) {
+    if (!in_class || !group) throw std::bad_alloc();
+  }
+};
+
+// Class k split into face-connected groups of its blocks, one sheet per group, appended to `out`
+// in order of their first block in pc.blocks[k]; each group's blocks sorted, and its curves: the
+// curves of the class held by its blocks (one group per block and class), increasing.
+void class_groups(const SheetDomain& d, const ParallelClasses& pc, int32_t k, GroupScratch& scratch,
+                  std::vector<int32_t>& stack, std::vector<Group>& out) {
+  int32_t* in_class = scratch.in_class.get();
+  int32_t* group = scratch.group.get();
+  const auto blocks = pc.blocks[k];
+  const size_t first = out.size();
+  for (int32_t u : blocks) {
+    in_class[u] = k + 1;
+    group[u] = 0;
+  }
+  // Label the groups by a flood, then list each group's blocks in the class's order: sorted
+  // without a sort when that order is (every block's cells share its classes), else sorted after.
+  for (int32_t u0 : blocks) {
+    if (group[u0] != 0) continue;
+    const auto id = static_cast<int32_t>(out.size() - first) + 1;
+    out.emplace_back();
+    stack.assign(1, u0);
+    group[u0] = id;
+    while (!stack.empty()) {
+      const int32_t u = stack.back();
+      stack.pop_back();
+      for (int32_t w : d.block_adjacency[u])
+        if (in_class[w] == k + 1 && group[w] == 0) {
+          group[w] = id;
+          stack.push_back(w);
+        }
     }
   }
-  first[pc.count] = groups.size();
+  for (int32_t u : blocks) out[first + static_cast<size_t>(group[u] - 1)].blocks.push_back(u);
+  if (!std::is_sorted(blocks.begin(), blocks.end()))
+    for (size_t g = first; g < out.size(); ++g) std::sort(out[g].blocks.begin(), out[g].blocks.end());
+  for (int32_t curve : pc.curves[k]) {
+    int32_t last = -1;
+    for (int32_t u : d.curve_blocks[curve]) {
+      const int32_t g = in_class[u] == k + 1 ? group[u] - 1 : -1;
+      if (g >= 0 && g != last) {
+        auto& cv = out[first + static_cast<size_t>(g)].curves;
+        if (cv.empty() || cv.back() != curve) cv.push_back(curve);
+        last = g;
+      }
+    }
+  }
+}
+
+// Every class's groups, class after class, from ranges of classes holding about as many blocks
+// each.
+std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc, const LoadOptions& par) {
+  const size_t nr = static_cast<size_t>(range_count(std::max(pc.blocks.rows(), pc.blocks.items.size()), par));
+  std::vector<std::vector<Group>> parts(nr);
+  parallel_rows(pc.blocks, par, [&](size_t first, size_t last, int r) {
+    GroupScratch scratch(d.block_cells.rows());
+    std::vector<int32_t> stack;
+    for (size_t k = first; k < last; ++k)
+      class_groups(d, pc, static_cast<int32_t>(k), scratch, stack, parts[static_cast<size_t>(r)]);
+  });
+  std::vector<Group> groups = std::move(parts[0]);
+  for (size_t r = 1; r < nr; ++r) std::move(parts[r].begin(), parts[r].end(), std::back_inserter(groups));
   return groups;
 }
 
-// Curves of a class go to the groups of the blocks holding them (one group per block and class).
-void assign_curves(const SheetDomain& d, const ParallelClasses& pc, const std::vector<size_t>& first,
-                   std::vector<Group>& groups) {
-  const size_t nblocks = d.block_cells.rows();
-  std::vector<int32_t> block_group(nblocks, -1), stamp(nblocks, -1);
-  for (int32_t k = 0; k < pc.count; ++k) {
-    for (size_t g = first[k]; g < first[k + 1]; ++g)
-      for (int32_t u : groups[g].blocks) block_group[u] = static_cast<int32_t>(g);
-    for (int32_t u : pc.blocks[k]) stamp[u] = k;
-    for (int32_t curve : pc.curves[k]) {
-      int32_t last = -1;
-      for (int32_t u : d.curve_blocks[curve]) {
-        const int32_t g = stamp[u] == k ? block_group[u] : -1;
-        if (g >= 0 && g != last) {
-          auto& cv = groups[static_cast<size_t>(g)].curves;
-          if (cv.empty() || cv.back() != curve) cv.push_back(curve);
-          last = g;
-        }
-      }
-    }
-  }
-}
-
-// Sorted, distinct rows[r] for r in `keys`, concatenated, as one row of `out`.
+// Sorted, distinct rows[r] for r in `keys`, concatenated, as one row of `out`. Rows of disjoint
+// sorted sets listed in the order of their lowest ids (the cells of blocks, or of single-edge
+// curves) come out sorted already: then there is nothing to sort.
 void push_union_row(const Csr<int32_t>& rows, const std::vector<int32_t>& keys, std::vector<int32_t>& buf,
                     Csr<int32_t>& out) {
   buf.clear();
   for (int32_t r : keys)
     for (int32_t x : rows[r]) buf.push_back(x);
-  sort_unique(buf);
+  if (!std::is_sorted(buf.begin(), buf.end())) std::sort(buf.begin(), buf.end());
+  buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
   out.push_row(buf.begin(), buf.end());
 }
 
-// The sheets in a stable order (lowest block, then lowest curve), with their cells, curves, edges,
-// adjacent non-hex cells and classification.
-Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups) {
-  std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
-    if (a.blocks[0] != b.blocks[0]) return a.blocks[0] < b.blocks[0];
-    const int32_t ca = a.curves.empty() ? -1 : a.curves[0], cb = b.curves.empty() ? -1 : b.curves[0];
-    return ca < cb;
-  });
-  Sheets s;
-  s.level = d.level;
+// Sheets first..last-1 of `groups`, with their cells, curves, edges, adjacent non-hex cells and
+// classification, appended to `s`.
+void sheet_rows(const SheetDomain& d, std::vector<Group>& groups, size_t first, size_t last, Sheets& s) {
   BlockMask mask(d.block_cells.rows());
   std::vector<int32_t> buf;
-  for (Group& g : groups) {
+  for (size_t i = first; i < last; ++i) {
+    Group& g = groups[i];
     sort_unique(g.curves);
     s.sheet_blocks.push_row(g.blocks.begin(), g.blocks.end());
     push_union_row(d.block_cells, g.blocks, buf, s.sheet_cells);
@@ -454,17 +478,48 @@ Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups) {
     mask.set(g.blocks);
     s.classes.push_back(classify(d, g.curves, mask));
   }
+}
+
+// The sheets in a stable order (lowest block, then lowest curve), written by ranges of sheets
+// holding about as many blocks and curves each.
+Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups, const LoadOptions& par) {
+  std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
+    if (a.blocks[0] != b.blocks[0]) return a.blocks[0] < b.blocks[0];
+    const int32_t ca = a.curves.empty() ? -1 : a.curves[0], cb = b.curves.empty() ? -1 : b.curves[0];
+    return ca < cb;
+  });
+  std::vector<size_t> weight(groups.size() + 1, 0);  // blocks and curves before each sheet
+  for (size_t i = 0; i < groups.size(); ++i) weight[i + 1] = weight[i] + groups[i].blocks.size() + groups[i].curves.size();
+  const size_t nr = static_cast<size_t>(range_count(std::max(groups.size(), weight.back()), par));
+  std::vector<Sheets> parts(nr);
+  parallel_ranges(nr, LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
+    for (size_t r = b; r < e; ++r) {
+      auto at = [&](size_t q) {
+        return static_cast<size_t>(std::lower_bound(weight.begin(), weight.end() - 1, weight.back() * q / nr) - weight.begin());
+      };
+      sheet_rows(d, groups, r == 0 ? 0 : at(r), r + 1 == nr ? groups.size() : at(r + 1), parts[r]);
+    }
+  });
+  Sheets s = std::move(parts[0]);
+  s.level = d.level;
+  for (size_t r = 1; r < nr; ++r) {
+    detail::append_rows(s.sheet_blocks, parts[r].sheet_blocks);
+    detail::append_rows(s.sheet_cells, parts[r].sheet_cells);
+    detail::append_rows(s.sheet_curves, parts[r].sheet_curves);
+    detail::append_rows(s.sheet_edges, parts[r].sheet_edges);
+    detail::append_rows(s.sheet_non_hex_cells, parts[r].sheet_non_hex_cells);
+    std::move(parts[r].classes.begin(), parts[r].classes.end(), std::back_inserter(s.classes));
+  }
   return s;
 }
 
 }  // namespace
 
-Sheets extract_sheets(const Mesh& m, const SheetDomain& d) {
-  const ParallelClasses pc = parallel_classes(m, d);
-  std::vector<size_t> first;
-  std::vector<Group> groups = block_groups(d, pc, first);
-  assign_curves(d, pc, first, groups);
-  return write_sheets(d, groups);
+Sheets extract_sheets(const Mesh& m, const SheetDomain& d, const LoadOptions& options) {
+  const LoadOptions par = resolved(options);
+  const ParallelClasses pc = parallel_classes(m, d, par);
+  std::vector<Group> groups = block_groups(d, pc, par);
+  return write_sheets(d, groups, par);
 }
 
 Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sheet) {

@@ -60,7 +60,9 @@ struct BaseComplex {
   size_t num_curves() const { return curve_edges.rows(); }
 };
 
-BaseComplex base_complex(const Mesh& mesh, const SingularityGraph& graph);
+// `par` splits the work over threads (LoadOptions::threads, 0: HBC_THREADS else every core); the
+// result is the same for any number.
+BaseComplex base_complex(const Mesh& mesh, const SingularityGraph& graph, const LoadOptions& par = {});
 
 // The straight continuation of face f across edge e: the face around e sharing no cell with f,
 // defined when e's fan is manifold, all-hex and regular (4 faces inside, 3 on the boundary).

@@ -1,0 +1,82 @@
+#pragma once
+// Union-find over 0..n-1 that several threads may unite into at once. A root is only ever linked
+// below a lower root (by compare-exchange), so every parent is at most its child and each class's
+// root is its lowest member, whatever the order of the unions: class ids taken from the roots do
+// not depend on the number of threads.
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "hbc/csr.hpp"
+#include "parallel.hpp"
+
+namespace hbc::detail {
+
+class ConcurrentUnionFind {
+ public:
+  ConcurrentUnionFind(size_t n, const LoadOptions& par) {
+    resize_huge(parent_, n);
+    parallel_ranges(n, par, [&](size_t b, size_t e, int) { std::iota(parent_.begin() + b, parent_.begin() + e, static_cast<int32_t>(b)); });
+  }
+  int32_t find(int32_t x) {
+    for (;;) {
+      const int32_t p = at(x).load(std::memory_order_acquire);
+      if (p == x) return x;
+      const int32_t gp = at(p).load(std::memory_order_acquire);
+      // Path halving: x is no root, and gp is an ancestor of x for good, so any thread may store it.
+      if (gp != p) at(x).store(gp, std::memory_order_release);
+      x = p;
+    }
+  }
+  void unite(int32_t a, int32_t b) {
+    for (;;) {
+      a = find(a);
+      b = find(b);
+      if (a == b) return;
+      if (a < b) std::swap(a, b);
+      int32_t expected = a;
+      if (at(a).compare_exchange_strong(expected, b, std::memory_order_acq_rel)) return;
+    }
+  }
+  // The table itself (once no thread unites any more): parents at most their children, roots
+  // their own parents.
+  std::vector<int32_t>& parents() { return parent_; }
+
+ private:
+  std::atomic_ref<int32_t> at(int32_t x) { return std::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
+  std::vector<int32_t> parent_;
+};
+
+// The classes of the elements 0..n-1 that `take` accepts, numbered by their lowest element (their
+// root): label[x] = class (-1 when not taken), and one row of increasing members per class.
+template <class Take>
+void number_classes(ConcurrentUnionFind& uf, size_t n, const LoadOptions& par, Take take, std::vector<int32_t>& label,
+                    Csr<int32_t>& groups) {
+  const size_t nr = static_cast<size_t>(range_count(n, par));
+  std::vector<int32_t> roots(nr + 1, 0);
+  resize_huge(label, n);
+  // Roots numbered in increasing order: counted per range, then offset by the ranges before.
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    int32_t count = 0;
+    for (size_t x = b; x < e; ++x) count += take(x) && uf.find(static_cast<int32_t>(x)) == static_cast<int32_t>(x);
+    roots[static_cast<size_t>(r) + 1] = count;
+  });
+  for (size_t r = 0; r < nr; ++r) roots[r + 1] += roots[r];
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    int32_t next = roots[static_cast<size_t>(r)];
+    for (size_t x = b; x < e; ++x) label[x] = take(x) && uf.find(static_cast<int32_t>(x)) == static_cast<int32_t>(x) ? next++ : -1;
+  });
+  parallel_ranges(n, par, [&](size_t b, size_t e, int) {
+    for (size_t x = b; x < e; ++x)
+      if (take(x) && label[x] < 0) label[x] = label[static_cast<size_t>(uf.find(static_cast<int32_t>(x)))];
+  });
+  // Members grouped by class (an extra last key gathers the elements not taken, then dropped).
+  const auto nclasses = static_cast<size_t>(roots[nr]);
+  groups = group_by_key(n, nclasses + 1, par, [&](size_t x) { return label[x] < 0 ? nclasses : static_cast<size_t>(label[x]); });
+  groups.offsets.pop_back();
+  groups.items.resize(static_cast<size_t>(groups.offsets.back()));
+}
+
+}  // namespace hbc::detail

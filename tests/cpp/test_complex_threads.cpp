@@ -1,0 +1,118 @@
+// The base complex, the sheet domain and the sheets split over threads: every array equals the
+// single-threaded result. A small grain splits even these small meshes into many ranges, so that
+// range boundaries fall inside components, patches, classes and sheets.
+#include <gtest/gtest.h>
+
+#include "hbc/analysis.hpp"
+#include "hbc/generate.hpp"
+#include "test_support.hpp"
+
+namespace hbc {
+namespace {
+
+template <class T>
+void expect_same(const Csr<T>& a, const Csr<T>& b, const char* what) {
+  EXPECT_EQ(a.offsets, b.offsets) << what;
+  EXPECT_EQ(a.items, b.items) << what;
+}
+
+void expect_same_complex(const BaseComplex& a, const BaseComplex& b) {
+  EXPECT_EQ(a.face_separation, b.face_separation);
+  EXPECT_EQ(a.edge_complex, b.edge_complex);
+  EXPECT_EQ(a.vert_corner, b.vert_corner);
+  EXPECT_EQ(a.cell_component, b.cell_component);
+  expect_same(a.component_cells, b.component_cells, "component_cells");
+  EXPECT_EQ(a.component_kind, b.component_kind);
+  expect_same(a.component_adjacency, b.component_adjacency, "component_adjacency");
+  EXPECT_EQ(a.face_patch, b.face_patch);
+  expect_same(a.patch_faces, b.patch_faces, "patch_faces");
+  EXPECT_EQ(a.patch_components, b.patch_components);
+  expect_same(a.patch_corners, b.patch_corners, "patch_corners");
+  expect_same(a.patch_curves, b.patch_curves, "patch_curves");
+  EXPECT_EQ(a.edge_curve, b.edge_curve);
+  expect_same(a.curve_verts, b.curve_verts, "curve_verts");
+  expect_same(a.curve_edges, b.curve_edges, "curve_edges");
+  EXPECT_EQ(a.curve_closed, b.curve_closed);
+  EXPECT_EQ(a.corners, b.corners);
+  expect_same(a.component_patches, b.component_patches, "component_patches");
+  expect_same(a.component_curves, b.component_curves, "component_curves");
+  expect_same(a.component_corners, b.component_corners, "component_corners");
+  EXPECT_EQ(a.self_adjacent_faces, b.self_adjacent_faces);
+}
+
+void expect_same_domain(const SheetDomain& a, const SheetDomain& b) {
+  EXPECT_EQ(a.cell_block, b.cell_block);
+  expect_same(a.block_cells, b.block_cells, "block_cells");
+  expect_same(a.block_curves, b.block_curves, "block_curves");
+  expect_same(a.block_adjacency, b.block_adjacency, "block_adjacency");
+  expect_same(a.curve_edges, b.curve_edges, "curve_edges");
+  EXPECT_EQ(a.curve_ends, b.curve_ends);
+  expect_same(a.curve_blocks, b.curve_blocks, "curve_blocks");
+  expect_same(a.curve_parallels, b.curve_parallels, "curve_parallels");
+  expect_same(a.curve_non_hex_cells, b.curve_non_hex_cells, "curve_non_hex_cells");
+  EXPECT_EQ(a.block_component, b.block_component);
+  EXPECT_EQ(a.face_joins, b.face_joins);
+}
+
+void expect_same_sheets(const Sheets& a, const Sheets& b) {
+  expect_same(a.sheet_blocks, b.sheet_blocks, "sheet_blocks");
+  expect_same(a.sheet_cells, b.sheet_cells, "sheet_cells");
+  expect_same(a.sheet_curves, b.sheet_curves, "sheet_curves");
+  expect_same(a.sheet_edges, b.sheet_edges, "sheet_edges");
+  expect_same(a.sheet_non_hex_cells, b.sheet_non_hex_cells, "sheet_non_hex_cells");
+  ASSERT_EQ(a.classes.size(), b.classes.size());
+  for (size_t s = 0; s < a.classes.size(); ++s) {
+    const SheetClass &x = a.classes[s], &y = b.classes[s];
+    EXPECT_EQ(x.type, y.type) << s;
+    EXPECT_EQ(x.type1, y.type1) << s;
+    EXPECT_EQ(x.type2, y.type2) << s;
+    EXPECT_EQ(x.type3, y.type3) << s;
+    EXPECT_EQ(x.unmatched_vertices, y.unmatched_vertices) << s;
+    EXPECT_EQ(x.shared_vertices, y.shared_vertices) << s;
+    EXPECT_EQ(x.self_parallel_curves, y.self_parallel_curves) << s;
+    EXPECT_EQ(x.self_intersecting_blocks, y.self_intersecting_blocks) << s;
+  }
+}
+
+// One thread against 2 and 3 (3 threads on 2 cores still run the ranges concurrently), at both
+// sheet levels.
+void expect_thread_independent(const Mesh& m) {
+  const SingularityGraph g = singularity_graph(m);
+  const LoadOptions one{1, 8};
+  const BaseComplex bc = base_complex(m, g, one);
+  for (int threads : {2, 3}) {
+    SCOPED_TRACE(threads);
+    const LoadOptions par{threads, 8};
+    const BaseComplex other = base_complex(m, g, par);
+    expect_same_complex(bc, other);
+    for (Level level : {Level::Complex, Level::Mesh}) {
+      SCOPED_TRACE(level == Level::Complex ? "complex level" : "mesh level");
+      const SheetDomain d = sheet_domain(m, bc, level, one), d2 = sheet_domain(m, other, level, par);
+      expect_same_domain(d, d2);
+      expect_same_sheets(extract_sheets(m, d, one), extract_sheets(m, d2, par));
+    }
+  }
+}
+
+TEST(ComplexThreads, RealMeshesGiveTheSameArraysForAnyThreadCount) {
+  for (const char* rel : {"hexalab-edge-cone-rectification/armadillo_out.mesh", "cinolib/rockerarm.mesh",
+                          "hybrid-base-complex/twistcube_s.mesh", "cinolib/eight_voronoi.hedra",
+                          "hybrid-base-complex/cube_twist-comp.obj.HYBRID", "openvolumemesh/NonManifold.ovm",
+                          "openvolumemesh/Cylinder.ovmb"}) {
+    SCOPED_TRACE(rel);
+    HBC_REQUIRE_DATA(rel);
+    expect_thread_independent(load_mesh(test::data_path(rel)));
+  }
+}
+
+TEST(ComplexThreads, GeneratedMeshesGiveTheSameArraysForAnyThreadCount) {
+  // The all-singleton worst case (a grid with about 1 % of its cells split into pyramids) and a
+  // hex-dominant cylinder with large components.
+  std::vector<std::array<int, 3>> split;
+  for (int i = 0; i < 12 * 12 * 12; i += 97) split.push_back({i % 12, i / 12 % 12, i / 144});
+  expect_thread_independent(build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split)));
+  expect_thread_independent(build_mesh(generate_cylinder(6, 8)));
+}
+
+}  // namespace
+}  // namespace hbc
