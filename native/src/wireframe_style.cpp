@@ -126,35 +126,38 @@ void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWirefr
   std::vector<uint8_t> source(ne, 0);
   std::vector<int32_t> dv(nv, kInf);
   // Distances beyond opacity_hops all give the floor, so the search stops there; below it they
-  // are small integers, so a queue of one bucket per distance replaces a heap (shortest
-  // distances do not depend on the order vertices are settled in).
+  // are small integers, so the vertices are settled one distance at a time (shortest distances
+  // do not depend on the order vertices are settled in): a sweep in vertex order per distance
+  // reads the complex in memory order, where a queue would hop across it.
   const int32_t horizon = std::max(opt.opacity_hops, 1);
-  std::vector<std::vector<int32_t>> bucket(static_cast<size_t>(horizon) + 1);
   for (size_t e = 0; e < ne; ++e) {
     source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
     if (!source[e] || cx.closed(e)) continue;
-    for (int32_t v : cx.edge_verts[e])
-      if (dv[v] != 0) {
-        dv[v] = 0;
-        bucket[0].push_back(v);
-      }
+    for (int32_t v : cx.edge_verts[e]) dv[v] = 0;
   }
-  for (int32_t d = 0; d <= horizon; ++d) {
-    // Buckets above d only grow while bucket d is read: index, not iterators.
-    for (size_t i = 0; i < bucket[static_cast<size_t>(d)].size(); ++i) {
-      const int32_t v = bucket[static_cast<size_t>(d)][i];
-      if (d != dv[v]) continue;
-      for (int32_t e : cx.vert_edges[v]) {
-        const int32_t u = cx.other_vertex(e, v);
-        const int32_t nd = d + cx.edge_points.count(e) - 1;
-        if (nd < dv[u] && nd <= horizon) {
-          dv[u] = nd;
-          bucket[static_cast<size_t>(nd)].push_back(u);
-        }
+  std::vector<int32_t> same;  // reached at the current distance (an edge of no segment): settled now
+  int32_t reach = 0;          // the farthest distance given so far: no sweep past it
+  auto settle = [&](int32_t v, int32_t d) {
+    for (int32_t e : cx.vert_edges[v]) {
+      const int32_t u = cx.other_vertex(e, v);
+      const int32_t nd = d + cx.edge_points.count(e) - 1;
+      if (nd < dv[u] && nd <= horizon) {
+        dv[u] = nd;
+        reach = std::max(reach, nd);
+        if (nd == d) same.push_back(u);
       }
     }
-    std::vector<int32_t>().swap(bucket[static_cast<size_t>(d)]);
-  }
+  };
+  for (int32_t d = 0; d <= horizon && d <= reach; ++d)
+    for (size_t v = 0; v < nv; ++v) {
+      if (dv[v] != d) continue;
+      settle(static_cast<int32_t>(v), d);
+      while (!same.empty()) {
+        const int32_t u = same.back();
+        same.pop_back();
+        if (static_cast<size_t>(u) < v) settle(u, d);  // later ones are met by the sweep
+      }
+    }
   const double floor = std::clamp(opt.opacity_floor, 0.0, 1.0);
   auto value = [&](int32_t d) {
     return static_cast<float>(std::max(floor, 1.0 - (1.0 - floor) * double(d) / double(horizon)));
