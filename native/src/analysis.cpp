@@ -37,7 +37,7 @@ SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const Analy
 WireframeStage wireframe_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt) {
   WireframeStage st;
   st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, complex) : complex_from_mesh(mesh);
-  st.wireframe = vsg_wireframe(st.view, opt.wireframe_options);
+  st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, LoadOptions{opt.threads});
   return st;
 }
 
@@ -156,7 +156,7 @@ StatsRun analyze_stats(const Mesh& mesh, const AnalysisOptions& opt) {
     WireframeStage st;
     st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, bc) : complex_from_mesh(mesh);
     if (opt.sheets) keep_for_sheets(bc);
-    st.wireframe = vsg_wireframe(st.view, opt.wireframe_options);
+    st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, LoadOptions{opt.threads});
     s.timings.vsg_wireframe = since(t);
     wireframe_stats(st.wireframe, s);
   }

@@ -1,9 +1,11 @@
 #include "hbc/vsg_wireframe.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <utility>
 
+#include "parallel.hpp"
 #include "union_find.hpp"
 
 namespace hbc {
@@ -92,17 +94,20 @@ struct Region {
   }
 };
 
-std::vector<uint32_t> face_masks(const Region& r) {
+// Each vertex fills its own slots: ranges of vertices in parallel.
+std::vector<uint32_t> face_masks(const Region& r, const LoadOptions& par) {
   const CellComplex& cx = r.cx;
   std::vector<uint32_t> mask(cx.vert_edges.items.size(), 0);
-  for (size_t v = 0; v < cx.num_vertices(); ++v) {
-    const auto row = cx.vert_edges[v];
-    if (row.size() > 32) continue;
-    uint32_t* m = mask.data() + cx.vert_edges.offsets[v];
-    for (size_t i = 0; i < row.size(); ++i)
-      for (size_t j = i + 1; j < row.size(); ++j)
-        if (r.share_face(row[i], row[j])) m[i] |= uint32_t{1} << j, m[j] |= uint32_t{1} << i;
-  }
+  detail::parallel_ranges(cx.num_vertices(), par, [&](size_t b, size_t e, int) {
+    for (size_t v = b; v < e; ++v) {
+      const auto row = cx.vert_edges[v];
+      if (row.size() > 32) continue;
+      uint32_t* m = mask.data() + cx.vert_edges.offsets[v];
+      for (size_t i = 0; i < row.size(); ++i)
+        for (size_t j = i + 1; j < row.size(); ++j)
+          if (r.share_face(row[i], row[j])) m[i] |= uint32_t{1} << j, m[j] |= uint32_t{1} << i;
+    }
+  });
   return mask;
 }
 
@@ -134,6 +139,11 @@ template <class Next>
 Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
                     const Next& next) {
   Chains out;
+  // Room for the most there can be (a chain per seed, each edge on one chain at most), reserved
+  // rather than grown: millions of rows would otherwise be copied at every doubling.
+  const size_t seeds = static_cast<size_t>(std::count(seed.begin(), seed.end(), uint8_t{1}));
+  out.edges.reserve(seeds, cx.num_edges());
+  out.verts.reserve(seeds, cx.num_edges() + seeds);
   std::vector<uint8_t> used(cx.num_edges(), 0);
   std::vector<int32_t> lv, le, rv, re;
   for (size_t s = 0; s < seed.size(); ++s) {
@@ -244,47 +254,68 @@ std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& st
 
 // Singular vertices of the complete wireframe: ends of patch edges (all faces flooded or on the
 // boundary) with a patch-edge count other than 0 and 2, or two patch edges sharing a face.
-std::vector<uint8_t> patch_singular_vertices(const Region& r, const std::vector<uint8_t>& flooded) {
+// Each element's flag depends on its neighbours' only: ranges in parallel.
+std::vector<uint8_t> patch_singular_vertices(const Region& r, const std::vector<uint8_t>& flooded, const LoadOptions& par) {
   const CellComplex& cx = r.cx;
-  std::vector<uint8_t> patched(cx.num_faces());
-  for (size_t f = 0; f < patched.size(); ++f)
-    patched[f] = flooded[f] || cx.face_cells[f][1] < 0;
   std::vector<uint8_t> patch_edge(cx.num_edges(), 0);
-  for (size_t e = 0; e < patch_edge.size(); ++e) {
-    bool all = !cx.edge_faces[e].empty();
-    for (int32_t f : cx.edge_faces[e]) all = all && patched[f];
-    patch_edge[e] = all;
-  }
+  detail::parallel_ranges(patch_edge.size(), par, [&](size_t b, size_t end, int) {
+    for (size_t e = b; e < end; ++e) {
+      bool all = !cx.edge_faces[e].empty();
+      for (int32_t f : cx.edge_faces[e]) all = all && (flooded[f] || cx.face_cells[f][1] < 0);
+      patch_edge[e] = all;
+    }
+  });
   std::vector<uint8_t> out(cx.num_vertices(), 0);
-  std::vector<int32_t> at;
-  for (size_t v = 0; v < out.size(); ++v) {
-    at.clear();
-    for (int32_t e : cx.vert_edges[v])
-      if (patch_edge[e]) at.push_back(e);
-    out[v] = (!at.empty() && at.size() != 2) || (at.size() == 2 && r.share_region_face(at[0], at[1]));
-  }
+  detail::parallel_ranges(out.size(), par, [&](size_t b, size_t end, int) {
+    int32_t at[2] = {-1, -1};
+    for (size_t v = b; v < end; ++v) {
+      size_t n = 0;
+      for (int32_t e : cx.vert_edges[v])
+        if (patch_edge[e] && n++ < 2) at[n - 1] = e;
+      out[v] = (n != 0 && n != 2) || (n == 2 && r.share_region_face(at[0], at[1]));
+    }
+  });
   return out;
 }
 
-// Appends the mesh vertices of edge e walked from its end `from`, its first one only when the row
-// is still empty (otherwise it is the previous edge's last).
-void append_points(const CellComplex& cx, int32_t e, int32_t from, bool first, std::vector<int32_t>& items) {
+// Writes the mesh vertices of edge e walked from its end `from` at `out`, its first one only for
+// the chain's first edge (otherwise it is the previous edge's last); returns the end of what it wrote.
+int32_t* put_points(const CellComplex& cx, int32_t e, int32_t from, bool first, int32_t* out) {
   const auto pts = cx.edge_points[e];
   const bool forward = cx.edge_verts[e][0] == from;
   const size_t n = pts.size();
-  for (size_t k = first ? 0 : 1; k < n; ++k) items.push_back(forward ? pts[k] : pts[n - 1 - k]);
+  for (size_t k = first ? 0 : 1; k < n; ++k) *out++ = forward ? pts[k] : pts[n - 1 - k];
+  return out;
 }
 
-// Written straight into `out` (no row buffer per chain: millions of chains).
-void push_polyline(const CellComplex& cx, std::span<const int32_t> es, std::span<const int32_t> vs, Csr<int32_t>& out) {
-  for (size_t i = 0; i < es.size(); ++i) append_points(cx, es[i], vs[i], i == 0, out.items);
-  out.offsets.push_back(static_cast<int32_t>(out.items.size()));
-}
-
-// Room for the polylines of chains over distinct edges: at most every edge's points, less the
-// point each edge shares with the previous one, plus one per chain.
-void reserve_polylines(const CellComplex& cx, size_t chains, Csr<int32_t>& out) {
-  out.reserve(chains, cx.edge_points.items.size() - cx.num_edges() + chains);
+// The mesh vertices along each chain (a closed complex edge: its own points). Rows are sized
+// first, so ranges of chains then write their own rows in parallel.
+Csr<int32_t> polylines(const CellComplex& cx, const Chains& ch, const LoadOptions& par) {
+  const size_t n = ch.edges.rows();
+  Csr<int32_t> out;
+  out.offsets.resize(n + 1);
+  out.offsets[0] = 0;
+  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) {
+      int32_t size = 1;
+      for (int32_t x : ch.edges[c]) size += cx.edge_points.count(x) - 1;
+      out.offsets[c + 1] = size;
+    }
+  });
+  for (size_t c = 0; c < n; ++c) out.offsets[c + 1] += out.offsets[c];
+  out.items.resize(static_cast<size_t>(out.offsets[n]));
+  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) {
+      const auto es = ch.edges[c], vs = ch.verts[c];
+      int32_t* at = out.items.data() + out.offsets[c];
+      if (vs[0] < 0) {
+        std::copy(cx.edge_points[es[0]].begin(), cx.edge_points[es[0]].end(), at);
+        continue;
+      }
+      for (size_t i = 0; i < es.size(); ++i) at = put_points(cx, es[i], vs[i], i == 0, at);
+    }
+  });
+  return out;
 }
 
 // Closed complex edges (curves without corners) are chains by themselves when seeded.
@@ -297,7 +328,6 @@ void add_closed(const CellComplex& cx, const std::vector<uint8_t>& seed, Chains&
   }
 }
 
-void push_row_span(Csr<int32_t>& out, std::span<const int32_t> row) { out.push_row(row.begin(), row.end()); }
 
 }  // namespace
 
@@ -317,30 +347,47 @@ struct Cleaning {
   std::vector<uint8_t> redundant_vert, non_important, reactivated, kept;
 };
 
-// Chain ids per edge (-1 off the wireframe) and the chains through each vertex.
+// Chain ids per edge (-1 off the wireframe).
 struct ChainIndex {
   std::vector<int32_t> edge_chain;
-  Csr<int32_t> vert_chains;
 };
 
-ChainIndex index_chains(const CellComplex& cx, const Chains& ch, const std::vector<uint8_t>& keep) {
+// Each edge lies on one chain at most, so ranges of chains write disjoint entries.
+ChainIndex index_chains(const CellComplex& cx, const Chains& ch, const std::vector<uint8_t>& keep, const LoadOptions& par) {
   ChainIndex ix;
   ix.edge_chain.assign(cx.num_edges(), -1);
-  Csr<int32_t> chain_verts;
-  std::vector<int32_t> buf;
-  for (size_t c = 0; c < ch.edges.rows(); ++c) {
-    buf.clear();
-    if (keep[c]) {
-      for (int32_t e : ch.edges[c]) ix.edge_chain[e] = static_cast<int32_t>(c);
-      for (int32_t v : ch.verts[c])
-        if (v >= 0) buf.push_back(v);
-      std::sort(buf.begin(), buf.end());
-      buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
-    }
-    chain_verts.push_row(buf.begin(), buf.end());
-  }
-  ix.vert_chains = transpose(chain_verts, cx.num_vertices());
+  detail::parallel_ranges(ch.edges.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c)
+      if (keep[c])
+        for (int32_t x : ch.edges[c]) ix.edge_chain[x] = static_cast<int32_t>(c);
+  });
   return ix;
+}
+
+// Distinct chains through v: every vertex of a chain ends one of its edges.
+int32_t chains_at(const CellComplex& cx, const ChainIndex& ix, int32_t v, std::vector<int32_t>& buf) {
+  buf.clear();
+  for (int32_t e : cx.vert_edges[v])
+    if (ix.edge_chain[e] >= 0) buf.push_back(ix.edge_chain[e]);
+  sort_unique(buf);
+  return static_cast<int32_t>(buf.size());
+}
+
+// The rows of `parts` one after the other (parts are consumed).
+template <class T>
+Csr<T> join_rows(std::vector<Csr<T>>&& parts) {
+  if (parts.size() == 1) return std::move(parts[0]);
+  Csr<T> all;
+  size_t rows = 0, items = 0;
+  for (const auto& p : parts) rows += p.rows(), items += p.items.size();
+  all.reserve(rows, items);
+  for (auto& p : parts) {
+    const int32_t base = static_cast<int32_t>(all.items.size());
+    for (size_t k = 1; k < p.offsets.size(); ++k) all.offsets.push_back(base + p.offsets[k]);
+    all.items.insert(all.items.end(), p.items.begin(), p.items.end());
+    p = Csr<T>{};
+  }
+  return all;
 }
 
 // A redundant singular vertex: the corner of one cell with only quads around it, or one whose
@@ -378,15 +425,18 @@ void candidate_pairs(const Region& r, const ChainIndex& ix, int32_t v, std::vect
 
 // Pairs sharing an edge form a group; a group of one pair stays, a larger one keeps the one pair of
 // lowest valence gap, else of highest quad ratio, else none (the authors' tie-breaks).
-std::vector<std::array<int32_t, 2>> resolve_pairs(const Region& r, const std::vector<std::array<int32_t, 2>>& pairs) {
+void resolve_pairs(const Region& r, const std::vector<std::array<int32_t, 2>>& pairs, std::vector<std::array<int32_t, 2>>& out) {
   const size_t n = pairs.size();
-  if (n <= 1) return pairs;  // no group of two or more: nothing to break ties in
+  out.clear();
+  if (n <= 1) {  // no group of two or more: nothing to break ties in
+    out = pairs;
+    return;
+  }
   detail::UnionFind uf(n);
   for (size_t i = 0; i < n; ++i)
     for (size_t j = i + 1; j < n; ++j)
       if (intersects(pairs[i], pairs[j]))
         uf.unite(static_cast<int32_t>(i), static_cast<int32_t>(j));
-  std::vector<std::array<int32_t, 2>> out;
   for (size_t g = 0; g < n; ++g) {
     if (uf.find(static_cast<int32_t>(g)) != static_cast<int32_t>(g)) continue;
     std::vector<size_t> members;
@@ -410,7 +460,6 @@ std::vector<std::array<int32_t, 2>> resolve_pairs(const Region& r, const std::ve
       if (qr(i) == best_qr) ++count, pick = i;
     if (low.size() == 1 || count == 1) out.push_back(pairs[low.size() == 1 ? low[0] : pick]);
   }
-  return out;
 }
 
 // Chain pairs (sorted, second -1 when both edges lie on one chain or one is off the wireframe).
@@ -423,7 +472,7 @@ ChainPair chain_pair(const ChainIndex& ix, const std::array<int32_t, 2>& p) {
 }
 
 struct PairTable {
-  std::vector<std::vector<ChainPair>> at;  // nv: resolved chain pairs at the vertex (empty: none)
+  Csr<ChainPair> at;  // nv rows: resolved chain pairs at the vertex (empty: none)
 };
 
 ChainPair make_pair_of(int32_t a, int32_t b) {
@@ -431,7 +480,7 @@ ChainPair make_pair_of(int32_t a, int32_t b) {
   return {std::min(a, b), std::max(a, b)};
 }
 
-bool in_pair(const std::vector<ChainPair>& ps, int32_t c) {
+bool in_pair(std::span<const ChainPair> ps, int32_t c) {
   for (const auto& p : ps)
     if (p[0] == c || p[1] == c) return true;
   return false;
@@ -452,20 +501,17 @@ struct NextScratch {
   std::vector<int32_t> found, partners, free, side;
 };
 
-// `slot_chain`: ix.edge_chain of each cx.vert_edges item, read along the row; `paired`: pt.at[v]
-// is not empty.
-void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
-                 const std::vector<int32_t>& slot_chain, bool paired, const std::vector<uint8_t>& parallel,
-                 int32_t c, int32_t v, NextScratch& s) {
+// `ps`: the chain pairs at v.
+void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, std::span<const ChainPair> ps,
+                 const std::vector<uint8_t>& parallel, int32_t c, int32_t v, NextScratch& s) {
   const CellComplex& cx = r.cx;
   const int32_t e = end_edge(ch, c, v);
   std::vector<int32_t>& found = s.found;
   found.clear();
-  r.each_straight(v, e, [&](int32_t, size_t slot) {
-    if (slot_chain[slot] >= 0) found.push_back(slot_chain[slot]);
+  r.each_straight(v, e, [&](int32_t f, size_t) {
+    if (ix.edge_chain[f] >= 0) found.push_back(ix.edge_chain[f]);
   });
-  if (paired) {
-    const auto& ps = pt.at[v];
+  if (!ps.empty()) {
     s.partners.clear();
     s.free.clear();
     for (int32_t x : found) {
@@ -487,73 +533,109 @@ void next_chains(const Region& r, const Chains& ch, const ChainIndex& ix, const 
   }
 }
 
-// Reactivation: every chain reached from a kept one (`stack`, the chains kept so far) through its
-// continuations stays. Continuations at v are chains with an edge at v, so the ends where no
-// non-important chain has an edge can only lead to chains kept already: they are not looked at.
-std::vector<uint8_t> reactivate(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
-                                const std::vector<uint8_t>& parallel, const std::vector<uint8_t>& non_important,
-                                std::vector<int32_t> stack) {
+// The reactivation's graph: rows 2c and 2c+1 list the continuations of chain c at its first and
+// at its last vertex; they stay empty for a closed chain and at a vertex where no non-important
+// chain has an edge (continuations there are chains with an edge there, all kept anyway). What
+// continues a chain depends on the tables only, never on what is kept so far, so every row is
+// found at once, in chain order (the complex's memory order), ranges of chains in parallel.
+Csr<int32_t> continuations(const Region& r, const Chains& ch, const ChainIndex& ix, const PairTable& pt,
+                           const std::vector<uint8_t>& parallel, const std::vector<uint8_t>& non_important,
+                           const LoadOptions& par) {
   const CellComplex& cx = r.cx;
-  // Per vertex: 1 when some non-important chain has an edge here, 2 when it has chain pairs.
-  std::vector<uint8_t> open_to(cx.num_vertices(), 0);
-  std::vector<int32_t> slot_chain(cx.vert_edges.items.size());
-  for (size_t v = 0; v < open_to.size(); ++v) {
-    for (size_t j = static_cast<size_t>(cx.vert_edges.offsets[v]); j < static_cast<size_t>(cx.vert_edges.offsets[v + 1]); ++j) {
-      const int32_t x = slot_chain[j] = ix.edge_chain[cx.vert_edges.items[j]];
-      if (x >= 0 && non_important[x]) open_to[v] |= 1;
-    }
-    if (!pt.at[v].empty()) open_to[v] |= 2;
-  }
-  // The kept set is everything reachable, whatever the visiting order: a chain is marked when
-  // first reached, and the chains are visited in rounds, each in increasing id order (ids follow
-  // the complex's memory order; a depth-first order would jump across it at every step).
-  std::vector<uint8_t> keep(ch.edges.rows(), 0);
-  for (int32_t c : stack) keep[c] = 1;
-  NextScratch scratch;
-  std::vector<int32_t> reached;
-  while (!stack.empty()) {
-    std::sort(stack.begin(), stack.end());
-    reached.clear();
-    for (int32_t c : stack) {
+  std::vector<uint8_t> open(cx.num_vertices(), 0);
+  detail::parallel_ranges(open.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t v = b; v < e; ++v)
+      for (int32_t f : cx.vert_edges[v])
+        if (ix.edge_chain[f] >= 0 && non_important[ix.edge_chain[f]]) open[v] = 1;
+  });
+  const size_t nc = ch.edges.rows();
+  std::vector<Csr<int32_t>> parts(static_cast<size_t>(detail::range_count(nc, par)));
+  detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int k) {
+    Csr<int32_t>& out = parts[static_cast<size_t>(k)];
+    out.reserve(2 * (e - b), e - b);
+    NextScratch s;
+    for (size_t c = b; c < e; ++c) {
       const auto vs = ch.verts[c];
-      if (vs.front() == vs.back()) continue;
       for (int32_t v : {vs.front(), vs.back()}) {
-        if (!(open_to[v] & 1)) continue;
-        next_chains(r, ch, ix, pt, slot_chain, (open_to[v] & 2) != 0, parallel, c, v, scratch);
-        for (int32_t x : scratch.found)
-          if (!keep[x]) keep[x] = 1, reached.push_back(x);
+        if (vs.front() != vs.back() && open[v]) {
+          next_chains(r, ch, ix, pt.at[v], parallel, static_cast<int32_t>(c), v, s);
+          out.items.insert(out.items.end(), s.found.begin(), s.found.end());
+        }
+        out.offsets.push_back(static_cast<int32_t>(out.items.size()));
       }
     }
-    stack.swap(reached);
+  });
+  return join_rows(std::move(parts));
+}
+
+// Reactivation: every chain reached from a kept one (`kept`, the chains kept so far) through its
+// continuations stays. The kept set is everything reachable, whatever the visiting order, so the
+// chains are expanded in one sweep in id order (the complex's memory order, where a chain's
+// continuations mostly lie close by): a chain reached ahead of the sweep waits for it, one
+// reached behind it is expanded at once from a stack.
+std::vector<uint8_t> reactivate(const Csr<int32_t>& next, size_t chains, const std::vector<int32_t>& kept) {
+  enum : uint8_t { Unreached = 0, Reached = 1, Expanded = 2 };
+  std::vector<uint8_t> state(chains, Unreached);
+  for (int32_t c : kept) state[c] = Reached;
+  std::vector<int32_t> stack;
+  for (size_t s = 0; s < chains; ++s) {
+    if (state[s] != Reached) continue;
+    stack.assign(1, static_cast<int32_t>(s));
+    while (!stack.empty()) {
+      const size_t c = static_cast<size_t>(stack.back());
+      stack.pop_back();
+      state[c] = Expanded;
+      for (size_t row : {2 * c, 2 * c + 1})
+        for (int32_t x : next[row]) {
+          if (state[x] != Unreached) continue;
+          state[x] = Reached;
+          if (static_cast<size_t>(x) < s) stack.push_back(x);
+        }
+    }
   }
-  return keep;
+  for (uint8_t& k : state) k = k != Unreached;
+  return state;
+}
+
+// Resolved chain pairs at each singular, non-redundant vertex, and which singular vertices are
+// redundant: ranges of vertices in parallel, each into rows of its own, joined in order.
+PairTable pair_table(const Region& r, const ChainIndex& ix, const std::vector<uint8_t>& singular,
+                     const LoadOptions& par, std::vector<uint8_t>& redundant) {
+  const size_t nv = r.cx.num_vertices();
+  redundant.assign(nv, 0);
+  std::vector<Csr<ChainPair>> parts(static_cast<size_t>(detail::range_count(nv, par)));
+  detail::parallel_ranges(nv, par, [&](size_t b, size_t e, int k) {
+    Csr<ChainPair>& out = parts[static_cast<size_t>(k)];
+    out.offsets.reserve(e - b + 1);
+    std::vector<int32_t> cand;
+    std::vector<std::array<int32_t, 2>> pairs, kept;
+    for (size_t v = b; v < e; ++v) {
+      const int32_t vi = static_cast<int32_t>(v);
+      redundant[v] = singular[v] && redundant_vertex(r, ix, vi);
+      if (singular[v] && !redundant[v]) {
+        candidate_pairs(r, ix, vi, cand, pairs);
+        resolve_pairs(r, pairs, kept);
+        for (const auto& p : kept) {
+          const ChainPair cp = chain_pair(ix, p);
+          if (cp[0] >= 0) out.items.push_back(cp);
+        }
+      }
+      out.offsets.push_back(static_cast<int32_t>(out.items.size()));
+    }
+  });
+  return PairTable{join_rows(std::move(parts))};
 }
 
 Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& singular,
-                      const std::vector<uint8_t>& parallel) {
-  const CellComplex& cx = r.cx;
-  const size_t nc = ch.edges.rows(), nv = cx.num_vertices();
-  const ChainIndex ix = index_chains(cx, ch, std::vector<uint8_t>(nc, 1));
+                      const std::vector<uint8_t>& parallel, const LoadOptions& par) {
+  const size_t nc = ch.edges.rows();
+  const ChainIndex ix = index_chains(r.cx, ch, std::vector<uint8_t>(nc, 1), par);
   Cleaning cl;
-  cl.redundant_vert.assign(nv, 0);
-  for (size_t v = 0; v < nv; ++v)
-    cl.redundant_vert[v] = singular[v] && redundant_vertex(r, ix, static_cast<int32_t>(v));
-  PairTable pt;
-  pt.at.resize(nv);
+  const PairTable pt = pair_table(r, ix, singular, par, cl.redundant_vert);
   cl.non_important.assign(nc, 0);
-  std::vector<int32_t> cand;
-  std::vector<std::array<int32_t, 2>> pairs;
-  for (size_t v = 0; v < nv; ++v) {
-    if (!singular[v] || cl.redundant_vert[v]) continue;
-    candidate_pairs(r, ix, static_cast<int32_t>(v), cand, pairs);
-    for (const auto& p : resolve_pairs(r, pairs)) {
-      const ChainPair cp = chain_pair(ix, p);
-      if (cp[0] < 0) continue;
-      pt.at[v].push_back(cp);
-      for (int32_t c : cp)
-        if (c >= 0) cl.non_important[c] = 2;
-    }
-  }
+  for (const ChainPair& p : pt.at.items)
+    for (int32_t c : p)
+      if (c >= 0) cl.non_important[c] = 2;
   std::vector<int32_t> stack;
   for (size_t c = 0; c < nc; ++c) {
     if (cl.non_important[c]) continue;
@@ -562,7 +644,7 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
     if (open && cl.redundant_vert[vs.front()] && cl.redundant_vert[vs.back()]) cl.non_important[c] = 1;
     else stack.push_back(static_cast<int32_t>(c));
   }
-  cl.kept = reactivate(r, ch, ix, pt, parallel, cl.non_important, std::move(stack));
+  cl.kept = reactivate(continuations(r, ch, ix, pt, parallel, cl.non_important, par), nc, stack);
   cl.reactivated.assign(nc, 0);
   for (size_t c = 0; c < nc; ++c) {
     cl.reactivated[c] = cl.kept[c] && cl.non_important[c];
@@ -577,89 +659,99 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
 // through it with no two of its wireframe edges in one cell; chains are then traced from the edges
 // at the remaining singular vertices along the unique kept straight continuation. (Chains that
 // touch no remaining singular vertex, closed ones included, drop out, as in the authors' code.)
-Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& kept) {
+Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& kept, const LoadOptions& par) {
   const CellComplex& cx = r.cx;
-  const ChainIndex ix = index_chains(cx, ch, kept);
-  std::vector<uint8_t> on(cx.num_edges(), 0), singular(cx.num_vertices(), 0);
-  for (size_t e = 0; e < on.size(); ++e) on[e] = ix.edge_chain[e] >= 0;
-  std::vector<int32_t> at;
+  const ChainIndex ix = index_chains(cx, ch, kept, par);
+  const auto on = [&](int32_t e) { return ix.edge_chain[e] >= 0; };
+  std::vector<uint8_t> end(cx.num_vertices(), 0), singular(cx.num_vertices(), 0);
   for (size_t c = 0; c < ch.edges.rows(); ++c) {
     const auto vs = ch.verts[c];
-    if (!kept[c] || vs.front() == vs.back()) continue;
-    for (int32_t v : {vs.front(), vs.back()}) {
-      if (ix.vert_chains.count(v) != 2) {
-        singular[v] = 1;
-        continue;
-      }
+    if (kept[c] && vs.front() != vs.back()) end[vs.front()] = end[vs.back()] = 1;
+  }
+  detail::parallel_ranges(end.size(), par, [&](size_t b, size_t e, int) {
+    std::vector<int32_t> at;
+    for (size_t v = b; v < e; ++v) {
+      if (!end[v]) continue;
+      const int32_t vi = static_cast<int32_t>(v);
+      singular[v] = chains_at(cx, ix, vi, at) != 2;
       at.clear();
-      for (int32_t e : cx.vert_edges[v])
-        if (on[e]) at.push_back(e);
+      for (int32_t x : cx.vert_edges[v])
+        if (on(x)) at.push_back(x);
       for (size_t i = 0; i < at.size() && !singular[v]; ++i)
         for (size_t j = i + 1; j < at.size(); ++j)
           if (r.share_cell(at[i], at[j])) singular[v] = 1;
     }
-  }
+  });
   std::vector<uint8_t> seeds(cx.num_edges(), 0);
   for (size_t v = 0; v < singular.size(); ++v)
     if (singular[v])
-      for (int32_t e : cx.vert_edges[v]) seeds[e] = on[e];
+      for (int32_t e : cx.vert_edges[v]) seeds[e] = on(e);
   return trace_chains(cx, seeds, singular, [&](int32_t v, int32_t e) {
-    return straight_next(r, v, e, [&](int32_t f) { return on[f] != 0; });
+    return straight_next(r, v, e, [&](int32_t f) { return on(f); });
   });
 }
 
-void fill_complete(const Region& r, const Chains& ch, VsgWireframe& w) {
+void fill_complete(const Region& r, const Chains& ch, const LoadOptions& par, VsgWireframe& w) {
   const CellComplex& cx = r.cx;
   const size_t n = ch.edges.rows();
   w.edges = ch.edges;
-  reserve_polylines(cx, n, w.polylines);
-  w.ends.reserve(n);
-  w.kind.reserve(n);
-  w.valence.reserve(n);
-  w.stop.reserve(n);
-  for (size_t c = 0; c < n; ++c) {
-    const auto es = ch.edges[c], vs = ch.verts[c];
-    if (vs[0] < 0) push_row_span(w.polylines, cx.edge_points[es[0]]);
-    else push_polyline(cx, es, vs, w.polylines);
-    const bool closed = vs.front() == vs.back();
-    w.ends.push_back(closed ? std::array<int32_t, 2>{-1, -1} : std::array<int32_t, 2>{vs.front(), vs.back()});
-    bool all_vsg = true;
-    for (int32_t e : es) all_vsg = all_vsg && w.edge_vsg[e];
-    w.kind.push_back(all_vsg ? WireKind::Vsg : WireKind::Trace);
-    w.valence.push_back(r.valence(es[0]));
-    const int32_t last = vs.back();
-    w.stop.push_back(closed ? TraceStop::None
-                     : w.vert_singular[last] ? TraceStop::VsgVertex
-                     : cx.vert_boundary[last] ? TraceStop::Boundary
-                                              : TraceStop::NoContinuation);
-  }
+  w.polylines = polylines(cx, ch, par);
+  w.ends.resize(n);
+  w.kind.resize(n);
+  w.valence.resize(n);
+  w.stop.resize(n);
+  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) {
+      const auto es = ch.edges[c], vs = ch.verts[c];
+      const bool closed = vs.front() == vs.back();
+      w.ends[c] = closed ? std::array<int32_t, 2>{-1, -1} : std::array<int32_t, 2>{vs.front(), vs.back()};
+      bool all_vsg = true;
+      for (int32_t x : es) all_vsg = all_vsg && w.edge_vsg[x];
+      w.kind[c] = all_vsg ? WireKind::Vsg : WireKind::Trace;
+      w.valence[c] = r.valence(es[0]);
+      const int32_t last = vs.back();
+      w.stop[c] = closed ? TraceStop::None
+                  : w.vert_singular[last] ? TraceStop::VsgVertex
+                  : cx.vert_boundary[last] ? TraceStop::Boundary
+                                           : TraceStop::NoContinuation;
+    }
+  });
 }
 
+// Connected components of the chains: their vertices are joined chain by chain, and each set of
+// wireframe vertices is one component (its root, the lowest member, counted once); a chain of a
+// closed curve alone has no vertex and is a component by itself.
 int64_t components(const CellComplex& cx, const Csr<int32_t>& chains) {
-  const size_t nv = cx.num_vertices();
-  detail::UnionFind uf(nv + chains.rows());
+  detail::UnionFind uf(cx.num_vertices());
+  std::vector<uint8_t> on(cx.num_vertices(), 0);
+  int64_t n = 0;
   for (size_t c = 0; c < chains.rows(); ++c) {
-    const int32_t id = static_cast<int32_t>(nv + c);
+    int32_t first = -1;
     for (int32_t e : chains[c])
-      for (int32_t v : cx.edge_verts[e])
-        if (v >= 0) uf.unite(id, v);
+      for (int32_t v : cx.edge_verts[e]) {
+        if (v < 0) continue;
+        on[v] = 1;
+        if (first < 0) first = v;
+        else uf.unite(first, v);
+      }
+    n += first < 0;
   }
-  // A chain's own id joins its vertices' set: count sets, not chains.
-  std::vector<int32_t> roots;
-  for (size_t c = 0; c < chains.rows(); ++c) roots.push_back(uf.find(static_cast<int32_t>(nv + c)));
-  std::sort(roots.begin(), roots.end());
-  return std::unique(roots.begin(), roots.end()) - roots.begin();
+  for (size_t v = 0; v < on.size(); ++v) n += on[v] && uf.parent[v] == static_cast<int32_t>(v);
+  return n;
 }
 
 }  // namespace
 
-VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& opt) {
+VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& opt, const LoadOptions& threads) {
+  const LoadOptions par = resolved(threads);
   Region r{cx, {}};
-  r.face_mask = face_masks(r);
+  r.face_mask = face_masks(r, par);
   VsgWireframe w;
   const size_t ne = cx.num_edges(), nv = cx.num_vertices();
   w.edge_vsg.assign(ne, 0);
-  for (size_t e = 0; e < ne; ++e) w.edge_vsg[e] = !r.regular(static_cast<int32_t>(e));
+  detail::parallel_ranges(ne, par, [&](size_t b, size_t end, int) {
+    for (size_t e = b; e < end; ++e) w.edge_vsg[e] = !r.regular(static_cast<int32_t>(e));
+  });
   w.vsg_edges = std::count(w.edge_vsg.begin(), w.edge_vsg.end(), uint8_t{1});
 
   // VSG: chains of seeds, broken only where the continuation is not unique or changes valence.
@@ -674,29 +766,27 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_vsg[v])
       for (int32_t e : cx.vert_edges[v]) start[e] = 1;
-  w.vert_singular = patch_singular_vertices(r, flood_faces(r, start));
+  w.vert_singular = patch_singular_vertices(r, flood_faces(r, start), par);
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_singular[v]) w.singular_vertices.push_back(static_cast<int32_t>(v));
   std::vector<uint8_t> seeds(ne, 0);
   for (int32_t v : w.singular_vertices)
     for (int32_t e : cx.vert_edges[v]) seeds[e] = 1;
   const Chains complete = valence_chains(r, seeds, w.vert_singular);
-  fill_complete(r, complete, w);
+  fill_complete(r, complete, par, w);
 
   // Simplification.
   std::vector<uint8_t> parallel(ne, 0);
   for (int32_t e : opt.parallel_edges)
     if (e >= 0 && static_cast<size_t>(e) < ne) parallel[e] = 1;
-  const Cleaning cl = clean_chains(r, complete, w.vert_singular, parallel);
+  const Cleaning cl = clean_chains(r, complete, w.vert_singular, parallel, par);
   w.vert_non_important.resize(nv);
   for (size_t v = 0; v < nv; ++v) w.vert_non_important[v] = !w.vert_singular[v] || cl.redundant_vert[v];
   w.non_important = cl.non_important;
   w.reactivated = cl.reactivated;
-  const Chains simple = final_chains(r, complete, cl.kept);
+  const Chains simple = final_chains(r, complete, cl.kept, par);
   w.simplified_edges = simple.edges;
-  reserve_polylines(cx, simple.edges.rows(), w.simplified_polylines);
-  for (size_t c = 0; c < simple.edges.rows(); ++c)
-    push_polyline(cx, simple.edges[c], simple.verts[c], w.simplified_polylines);
+  w.simplified_polylines = polylines(cx, simple, par);
   const std::vector<uint8_t> on = edge_flags(cx, simple.edges);
   w.shown.assign(w.size(), 0);
   for (size_t c = 0; c < w.size(); ++c) {
@@ -712,9 +802,10 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   return w;
 }
 
-VsgWireframe vsg_wireframe(const CellComplex& cx, const WireframeOptions& opt) {
-  VsgWireframe w = vsg_wireframe_graph(cx, opt);
-  w.style = wireframe_style(cx, w, opt);
+VsgWireframe vsg_wireframe(const CellComplex& cx, const WireframeOptions& opt, const LoadOptions& threads) {
+  const LoadOptions par = resolved(threads);
+  VsgWireframe w = vsg_wireframe_graph(cx, opt, par);
+  w.style = wireframe_style(cx, w, opt, par);
   return w;
 }
 

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
 #include <utility>
 
+#include "parallel.hpp"
 #include "union_find.hpp"
 
 namespace hbc {
@@ -14,6 +16,41 @@ namespace hbc {
 namespace {
 
 using MinUnionFind = detail::UnionFind;  // root = lowest member: deterministic class ids
+
+// The rows of `parts` one after the other (parts are consumed).
+template <class T>
+Csr<T> join_rows(std::vector<Csr<T>>&& parts) {
+  if (parts.size() == 1) return std::move(parts[0]);
+  Csr<T> all;
+  size_t rows = 0, items = 0;
+  for (const auto& p : parts) rows += p.rows(), items += p.items.size();
+  all.reserve(rows, items);
+  for (auto& p : parts) {
+    const int32_t base = static_cast<int32_t>(all.items.size());
+    for (size_t k = 1; k < p.offsets.size(); ++k) all.offsets.push_back(base + p.offsets[k]);
+    all.items.insert(all.items.end(), p.items.begin(), p.items.end());
+    p = Csr<T>{};
+  }
+  return all;
+}
+
+// Rows [0, n) built by row(i, out, scratch) (appending row i's items to out.items), ranges of rows
+// in parallel, each into rows of its own with scratch room of its own, joined in order: the same
+// rows for any thread count.
+template <class T, class Scratch, class Row>
+Csr<T> parallel_rows_of(size_t n, const LoadOptions& par, Row&& row) {
+  std::vector<Csr<T>> parts(static_cast<size_t>(detail::range_count(n, par)));
+  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int k) {
+    Csr<T>& out = parts[static_cast<size_t>(k)];
+    out.offsets.reserve(e - b + 1);
+    Scratch scratch{};
+    for (size_t i = b; i < e; ++i) {
+      row(i, out, scratch);
+      out.offsets.push_back(static_cast<int32_t>(out.items.size()));
+    }
+  });
+  return join_rows(std::move(parts));
+}
 
 bool share_vertex(const CellComplex& cx, int32_t e, int32_t f) {
   const auto a = cx.edge_verts[e], b = cx.edge_verts[f];
@@ -52,86 +89,106 @@ Index index_points(const CellComplex& cx, const VsgWireframe& w) {
   return ix;
 }
 
-void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWireframe& wf, WireframeStyle& st) {
+// Opacity of the points of chain w (see wireframe_style.hpp), `dv` the hops of each vertex.
+template <class Value>
+void chain_opacity(const CellComplex& cx, const VsgWireframe& wf, const std::vector<uint8_t>& source,
+                   const std::vector<int32_t>& dv, int32_t horizon, const Value& value, size_t w,
+                   std::vector<float>& point_opacity) {
+  const auto es = wf.edges[w];
+  bool full = wf.kind[w] == WireKind::Vsg;
+  for (int32_t e : es) full = full || cx.edge_non_hex[e];
+  if (full) return;
+  size_t out = static_cast<size_t>(wf.polylines.offsets[w]);
+  if (cx.closed(es[0])) {  // a curve without corners: its own distance is unknown, so the floor
+    for (int32_t k = 0; k < wf.polylines.count(w); ++k) point_opacity[out++] = value(source[es[0]] ? 0 : horizon);
+    return;
+  }
+  // Walk the complex edges in polyline order; point k of an edge of n segments from end a to b
+  // is min(d(a) + k, d(b) + n - k) hops away.
+  // The polyline starts at the end of its first edge whose mesh vertex it starts with.
+  int32_t cur = cx.edge_verts[es[0]][wf.polylines[w][0] == cx.edge_points[es[0]][0] ? 0 : 1];
+  for (size_t i = 0; i < es.size(); ++i) {
+    const int32_t e = es[i];
+    const int32_t n = cx.edge_points.count(e) - 1;
+    const int32_t next = cx.other_vertex(e, cur);
+    for (int32_t k = i == 0 ? 0 : 1; k <= n; ++k) {
+      const int32_t d = source[e] ? 0 : std::min(dv[cur] + k, dv[next] + n - k);
+      point_opacity[out++] = value(d);
+    }
+    cur = next;
+  }
+}
+
+void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWireframe& wf, const LoadOptions& par,
+             WireframeStyle& st) {
   const size_t nv = cx.num_vertices(), ne = cx.num_edges();
   constexpr int32_t kInf = std::numeric_limits<int32_t>::max() / 4;
   std::vector<uint8_t> source(ne, 0);
   std::vector<int32_t> dv(nv, kInf);
   // Distances beyond opacity_hops all give the floor, so the search stops there; below it they
-  // are small integers, so a queue of one bucket per distance replaces a heap (shortest
-  // distances do not depend on the order vertices are settled in).
+  // are small integers, so the vertices are settled one distance at a time (shortest distances
+  // do not depend on the order vertices are settled in): a sweep in vertex order per distance
+  // reads the complex in memory order, where a queue would hop across it.
   const int32_t horizon = std::max(opt.opacity_hops, 1);
-  std::vector<std::vector<int32_t>> bucket(static_cast<size_t>(horizon) + 1);
   for (size_t e = 0; e < ne; ++e) {
     source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
     if (!source[e] || cx.closed(e)) continue;
-    for (int32_t v : cx.edge_verts[e])
-      if (dv[v] != 0) {
-        dv[v] = 0;
-        bucket[0].push_back(v);
-      }
+    for (int32_t v : cx.edge_verts[e]) dv[v] = 0;
   }
-  for (int32_t d = 0; d <= horizon; ++d) {
-    // Buckets above d only grow while bucket d is read: index, not iterators.
-    for (size_t i = 0; i < bucket[static_cast<size_t>(d)].size(); ++i) {
-      const int32_t v = bucket[static_cast<size_t>(d)][i];
-      if (d != dv[v]) continue;
-      for (int32_t e : cx.vert_edges[v]) {
-        const int32_t u = cx.other_vertex(e, v);
-        const int32_t nd = d + cx.edge_points.count(e) - 1;
-        if (nd < dv[u] && nd <= horizon) {
-          dv[u] = nd;
-          bucket[static_cast<size_t>(nd)].push_back(u);
-        }
+  std::vector<int32_t> same;  // reached at the current distance (an edge of no segment): settled now
+  int32_t reach = 0;          // the farthest distance given so far: no sweep past it
+  auto settle = [&](int32_t v, int32_t d) {
+    for (int32_t e : cx.vert_edges[v]) {
+      const int32_t u = cx.other_vertex(e, v);
+      const int32_t nd = d + cx.edge_points.count(e) - 1;
+      if (nd < dv[u] && nd <= horizon) {
+        dv[u] = nd;
+        reach = std::max(reach, nd);
+        if (nd == d) same.push_back(u);
       }
     }
-    std::vector<int32_t>().swap(bucket[static_cast<size_t>(d)]);
-  }
+  };
+  for (int32_t d = 0; d <= horizon && d <= reach; ++d)
+    for (size_t v = 0; v < nv; ++v) {
+      if (dv[v] != d) continue;
+      settle(static_cast<int32_t>(v), d);
+      while (!same.empty()) {
+        const int32_t u = same.back();
+        same.pop_back();
+        if (static_cast<size_t>(u) < v) settle(u, d);  // later ones are met by the sweep
+      }
+    }
   const double floor = std::clamp(opt.opacity_floor, 0.0, 1.0);
   auto value = [&](int32_t d) {
     return static_cast<float>(std::max(floor, 1.0 - (1.0 - floor) * double(d) / double(horizon)));
   };
   st.point_opacity.assign(wf.polylines.items.size(), 1.0f);
-  for (size_t w = 0; w < wf.size(); ++w) {
-    const auto es = wf.edges[w];
-    bool full = wf.kind[w] == WireKind::Vsg;
-    for (int32_t e : es) full = full || cx.edge_non_hex[e];
-    if (full) continue;
-    size_t out = static_cast<size_t>(wf.polylines.offsets[w]);
-    if (cx.closed(es[0])) {  // a curve without corners: its own distance is unknown, so the floor
-      for (int32_t k = 0; k < wf.polylines.count(w); ++k) st.point_opacity[out++] = value(source[es[0]] ? 0 : horizon);
-      continue;
-    }
-    // Walk the complex edges in polyline order; point k of an edge of n segments from end a to b
-    // is min(d(a) + k, d(b) + n - k) hops away.
-    // The polyline starts at the end of its first edge whose mesh vertex it starts with.
-    int32_t cur = cx.edge_verts[es[0]][wf.polylines[w][0] == cx.edge_points[es[0]][0] ? 0 : 1];
-    for (size_t i = 0; i < es.size(); ++i) {
-      const int32_t e = es[i];
-      const int32_t n = cx.edge_points.count(e) - 1;
-      const int32_t next = cx.other_vertex(e, cur);
-      for (int32_t k = i == 0 ? 0 : 1; k <= n; ++k) {
-        const int32_t d = source[e] ? 0 : std::min(dv[cur] + k, dv[next] + n - k);
-        st.point_opacity[out++] = value(d);
-      }
-      cur = next;
-    }
-  }
+  // Each chain writes its own points: ranges of chains in parallel.
+  detail::parallel_ranges(wf.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t w = b; w < e; ++w) chain_opacity(cx, wf, source, dv, horizon, value, w, st.point_opacity);
+  });
 }
 
 // A point where more wires meet than this is crowded (see colours()).
 constexpr size_t kCrowded = 64;
 
 // The distinct points of each class's wires, and the crowded ones among them (numbered densely,
-// crowded_point[q] being crowded point q), each row sorted.
+// crowded_point[q] being crowded point q), each row sorted. A class of one wire (most of them)
+// reads its wire's points; only larger classes have rows of their own in `merged`.
 struct ClassPoints {
-  Csr<int32_t> points, crowded;
+  const Csr<int32_t>& class_wires;
+  const Index& ix;
+  Csr<int32_t> merged, crowded;
   std::vector<int32_t> crowded_point;
   size_t crowded_points = 0;
+  std::span<const int32_t> points(size_t c) const {
+    const auto ws = class_wires[c];
+    return ws.size() == 1 ? ix.wire_points[static_cast<size_t>(ws[0])] : merged[c];
+  }
 };
 
-ClassPoints class_points(const Csr<int32_t>& class_wires, const Index& ix) {
-  ClassPoints cp;
+ClassPoints class_points(const Csr<int32_t>& class_wires, const Index& ix, const LoadOptions& par) {
+  ClassPoints cp{class_wires, ix, {}, {}, {}, 0};
   const size_t np = ix.point_wires.rows();
   std::vector<int32_t> crowded_id(np, -1);
   for (size_t p = 0; p < np; ++p)
@@ -140,34 +197,28 @@ ClassPoints class_points(const Csr<int32_t>& class_wires, const Index& ix) {
       cp.crowded_point.push_back(static_cast<int32_t>(p));
     }
   cp.crowded_points = cp.crowded_point.size();
-  std::vector<int32_t> buf, heavy;
-  for (size_t c = 0; c < class_wires.rows(); ++c) {
-    buf.clear();
-    heavy.clear();
+  const size_t nc = class_wires.rows();
+  cp.merged = parallel_rows_of<int32_t, std::vector<int32_t>>(nc, par, [&](size_t c, Csr<int32_t>& out, std::vector<int32_t>& buf) {
     const auto ws = class_wires[c];
+    if (ws.size() <= 1) return;  // one wire's points are sorted and distinct already
+    buf.clear();
     for (int32_t w : ws)
       for (int32_t p : ix.wire_points[w]) buf.push_back(p);
-    if (ws.size() > 1) sort_unique(buf);  // one wire's points are sorted and distinct already
-    for (int32_t p : buf)
-      if (crowded_id[static_cast<size_t>(p)] >= 0) heavy.push_back(crowded_id[static_cast<size_t>(p)]);
-    cp.points.push_row(buf.begin(), buf.end());
-    cp.crowded.push_row(heavy.begin(), heavy.end());
-  }
+    sort_unique(buf);
+    out.items.insert(out.items.end(), buf.begin(), buf.end());
+  });
+  cp.crowded = parallel_rows_of<int32_t, char>(nc, par, [&](size_t c, Csr<int32_t>& out, char&) {
+    for (int32_t p : cp.points(c))
+      if (crowded_id[static_cast<size_t>(p)] >= 0) out.items.push_back(crowded_id[static_cast<size_t>(p)]);
+  });
   return cp;
 }
 
-void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
-             WireframeStyle& st) {
-  const size_t nw = wf.size();
-  // (w, w', |E_w|): how many complex edges of wire w are parallel (Definition 1) to an edge of
-  // wire w', in (w, w') order. The (w', e) incidences are gathered and counted one wire at a time,
-  // so only the counts are kept, never every incidence of the whole wireframe at once.
-  // Row w of `counts` holds (w', |E_w|) by increasing w', so the reverse count of a pair is
-  // looked up in the short row of w', not searched for among all counts.
-  Csr<std::array<int32_t, 2>> counts;
-  counts.offsets.reserve(nw + 1);
-  std::vector<std::array<int32_t, 2>> par;  // (w', e) for the current wire
-  for (size_t w = 0; w < nw; ++w) {
+// Row w: (w', |E_w|) by increasing w' (see colours()), ranges of wires in parallel.
+Csr<std::array<int32_t, 2>> parallel_counts(const CellComplex& cx, const Index& ix, const VsgWireframe& wf,
+                                            const LoadOptions& threads) {
+  using Pairs = std::vector<std::array<int32_t, 2>>;  // (w', e) for the current wire
+  return parallel_rows_of<std::array<int32_t, 2>, Pairs>(wf.size(), threads, [&](size_t w, Csr<std::array<int32_t, 2>>& counts, Pairs& par) {
     par.clear();
     for (int32_t e : wf.edges[w])
       for (int32_t f : cx.edge_faces[e]) {
@@ -185,8 +236,18 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
       counts.items.push_back({par[i][0], static_cast<int32_t>(j - i)});
       i = j;
     }
-    counts.offsets.push_back(static_cast<int32_t>(counts.items.size()));
-  }
+  });
+}
+
+void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
+             const LoadOptions& threads, WireframeStyle& st) {
+  const size_t nw = wf.size();
+  // (w, w', |E_w|): how many complex edges of wire w are parallel (Definition 1) to an edge of
+  // wire w', in (w, w') order. The (w', e) incidences are gathered and counted one wire at a time,
+  // so only the counts are kept, never every incidence of the whole wireframe at once.
+  // Row w of `counts` holds (w', |E_w|) by increasing w', so the reverse count of a pair is
+  // looked up in the short row of w', not searched for among all counts.
+  const Csr<std::array<int32_t, 2>> counts = parallel_counts(cx, ix, wf, threads);
   MinUnionFind uf(nw);
   for (size_t a = 0; a < nw; ++a)
     for (const auto& [b, na] : counts[a]) {
@@ -206,10 +267,8 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
   // thousands of wires meet (a fan of cells around an edge) would make quadratic in memory. Such
   // a crowded point keeps a count of its coloured classes per colour instead of being visited
   // by each of its classes, which would make the colouring quadratic in time.
-  Csr<int32_t> wire_class;
-  for (size_t w = 0; w < nw; ++w) wire_class.push_row(&st.color_class[w], &st.color_class[w] + 1);
-  const Csr<int32_t> class_wires = transpose(wire_class, nw);
-  const ClassPoints cp = class_points(class_wires, ix);
+  const Csr<int32_t> class_wires = group_by(st.color_class, nw);
+  const ClassPoints cp = class_points(class_wires, ix, threads);
   const int32_t palette = std::max(opt.palette_size, 1);
   std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette)), stamp(nw, -1);
   std::vector<int32_t> crowded_count(cp.crowded_points * static_cast<size_t>(palette), 0);
@@ -221,7 +280,7 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
     if (by_count)
       for (int32_t k = 0; k < palette; ++k) used[static_cast<size_t>(k)] = crowded_count[static_cast<size_t>(crowded[0] * palette + k)];
     stamp[c] = static_cast<int32_t>(c);
-    for (int32_t p : cp.points[c]) {
+    for (int32_t p : cp.points(c)) {
       if (by_count && p == cp.crowded_point[static_cast<size_t>(crowded[0])]) continue;
       for (int32_t w2 : ix.point_wires[p]) {
         const int32_t b = st.color_class[w2];
@@ -242,10 +301,13 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
 
 }  // namespace
 
-WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options) {
+WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options,
+                               const LoadOptions& threads) {
+  const LoadOptions par = resolved(threads);
   WireframeStyle st;
-  opacity(complex, options, w, st);
-  colours(complex, options, index_points(complex, w), w, st);
+  opacity(complex, options, w, par, st);
+  const Index ix = index_points(complex, w);
+  colours(complex, options, ix, w, par, st);
   return st;
 }
 

@@ -17,6 +17,7 @@ namespace hbc {
 struct CellComplex;
 struct VsgWireframe;
 struct WireframeOptions;
+struct LoadOptions;
 
 struct WireframeStyle {
   std::vector<float> point_opacity;  // aligned with the wireframe's polylines.items
@@ -24,6 +25,8 @@ struct WireframeStyle {
   std::vector<int32_t> color;        // per chain, in [0, palette_size)
 };
 
-WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options);
+// `threads` as for vsg_wireframe_graph (resolved there: threads 0 means HBC_THREADS, else every core).
+WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options,
+                               const LoadOptions& threads);
 
 }  // namespace hbc
