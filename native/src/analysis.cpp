@@ -1,6 +1,10 @@
 #include "hbc/analysis.hpp"
 
 #include <chrono>
+#include <functional>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace hbc {
 
@@ -17,10 +21,13 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt, Timings& timings) {
+// `after_domain` runs once the domain is built (analyze_stats frees what only the domain read).
+SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt, Timings& timings,
+                       const std::function<void()>& after_domain = {}) {
   auto t = std::chrono::steady_clock::now();
   SheetStage st;
   st.domain = sheet_domain(mesh, complex, opt.sheet_level, LoadOptions{opt.threads});
+  if (after_domain) after_domain();
   st.sheets = extract_sheets(mesh, st.domain, LoadOptions{opt.threads});
   st.largest_self_intersecting = largest_self_intersecting(st.sheets);
   timings.sheets = since(t);
@@ -109,20 +116,120 @@ void release(T& v) {
   v = T();  // clear() would keep the room
 }
 
-// Frees the base complex arrays that neither sheet_domain nor the statistics read (about half of
-// it on a mesh cut into many components). Kept: the components, their kinds, cells, adjacency and
-// curves, the curves themselves, the patches' curves, the separation faces, the corners' count and
-// the self-adjacent faces.
-void keep_for_sheets(BaseComplex& bc) {
+// Hands the heap's free pages back to the system: arrays below glibc's mmap threshold (up to 32 MB)
+// live in the heap, whose pages a free() keeps unless they are at its top.
+void return_freed_memory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
+// The graph arrays base_complex does not read (it asks is_structural, the edge classes, only):
+// dropped once counted, before the base complex is built next to the graph.
+void keep_for_base_complex(SingularityGraph& g) {
+  release(g.edge_irregular);
+  release(g.chain_verts);
+  release(g.chain_edges);
+  release(g.edge_chain);
+  release(g.pseudo_singular_edges);
+  release(g.non_manifold_edges);
+  release(g.singular_vertices);
+  release(g.pseudo_singular_vertices);
+  release(g.vert_pseudo_singular);
+}
+
+// analyze_stats frees each base complex array once the last of base_view_facts, sheet_domain and
+// complex_from_base(bc, facts) that reads it is done. Read by none of them:
+void drop_unread(BaseComplex& bc) {
   release(bc.edge_complex);
   release(bc.vert_corner);
-  release(bc.face_patch);
-  release(bc.patch_faces.items);  // the row count (num_patches) stays
-  release(bc.patch_components);
-  release(bc.patch_corners);
   release(bc.edge_curve);
   release(bc.component_patches);
   release(bc.component_corners);
+  release(bc.corners);
+  release(bc.self_adjacent_faces);
+}
+
+// Read by base_view_facts only.
+void drop_facts_only(BaseComplex& bc) {
+  release(bc.face_patch);
+  release(bc.patch_faces);
+  release(bc.patch_corners);
+}
+
+// Read by base_view_facts and sheet_domain, not by the view built from the facts.
+void drop_domain_only(BaseComplex& bc) {
+  release(bc.face_separation);
+  release(bc.cell_component);
+  release(bc.component_cells);
+  release(bc.component_adjacency);
+  release(bc.curve_edges);
+}
+
+// The graph and the base complex, counted; only the base complex (all of it) is kept.
+BaseComplex counted_base_complex(const Mesh& mesh, const AnalysisOptions& opt, Stats& s) {
+  auto t = std::chrono::steady_clock::now();
+  SingularityGraph graph = singularity_graph(mesh);
+  s.timings.singularity_graph = since(t);
+  graph_stats(mesh, graph, s);
+  keep_for_base_complex(graph);
+  t = std::chrono::steady_clock::now();
+  BaseComplex bc = base_complex(mesh, graph, LoadOptions{opt.threads});
+  s.timings.base_complex = since(t);
+  complex_stats(bc, s);
+  return bc;
+}
+
+void counted_sheets(const Mesh& mesh, BaseComplex& bc, const AnalysisOptions& opt, StatsRun& run) {
+  const SheetStage st = sheet_stage(mesh, bc, opt, run.stats.timings, [&] {
+    drop_domain_only(bc);
+    return_freed_memory();
+  });
+  sheet_stats(st, run.stats);
+  if (st.subsheets)
+    for (const Subsheets& x : *st.subsheets)
+      run.subsheet_counts.push_back({x.sheet, st.sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)),
+                                     static_cast<int64_t>(x.size())});
+}
+
+// analyze_stats; `owned` is the mesh when the caller gave it up (freed before the view is built).
+StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
+  StatsRun run;
+  Stats& s = run.stats;
+  BaseComplex bc = counted_base_complex(mesh, opt, s);
+  drop_unread(bc);
+  // The complex-level view is built last, from the base complex alone, so that neither the mesh
+  // nor the sheets are alive next to it; what it needs of the mesh is taken now (its time is the
+  // wireframe's).
+  std::optional<BaseViewFacts> facts;
+  if (opt.wireframe && opt.wireframe_level == Level::Complex) {
+    const auto t = std::chrono::steady_clock::now();
+    facts = base_view_facts(mesh, bc);
+    s.timings.vsg_wireframe = since(t);
+  }
+  drop_facts_only(bc);
+  // Past the facts only the sheets read the mesh, and only its topology: a given-up mesh's points
+  // (a tenth of it) go now. Not without the facts: complex_from_mesh counts the vertices by them.
+  if (owned && facts) release(owned->points);
+  return_freed_memory();
+  if (opt.sheets) counted_sheets(mesh, bc, opt, run);
+  return_freed_memory();
+  if (!opt.wireframe) return run;
+  const auto t = std::chrono::steady_clock::now();
+  WireframeStage st;
+  if (facts) {
+    if (owned) release(*owned);
+    st.view = complex_from_base(bc, *facts);
+    facts.reset();
+    release(bc);
+  } else {
+    release(bc);
+    st.view = complex_from_mesh(mesh);
+  }
+  st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, LoadOptions{opt.threads});
+  s.timings.vsg_wireframe += since(t);
+  wireframe_stats(st.wireframe, s);
+  return run;
 }
 
 }  // namespace
@@ -137,38 +244,8 @@ Stats compute_stats(const Mesh& m, const Analysis& a) {
   return s;
 }
 
-StatsRun analyze_stats(const Mesh& mesh, const AnalysisOptions& opt) {
-  StatsRun run;
-  Stats& s = run.stats;
-  BaseComplex bc;
-  {
-    auto t = std::chrono::steady_clock::now();
-    const SingularityGraph graph = singularity_graph(mesh);
-    s.timings.singularity_graph = since(t);
-    graph_stats(mesh, graph, s);
-    t = std::chrono::steady_clock::now();
-    bc = base_complex(mesh, graph, LoadOptions{opt.threads});
-    s.timings.base_complex = since(t);
-    complex_stats(bc, s);
-  }
-  if (opt.wireframe) {
-    const auto t = std::chrono::steady_clock::now();
-    WireframeStage st;
-    st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, bc) : complex_from_mesh(mesh);
-    if (opt.sheets) keep_for_sheets(bc);
-    st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, LoadOptions{opt.threads});
-    s.timings.vsg_wireframe = since(t);
-    wireframe_stats(st.wireframe, s);
-  }
-  if (opt.sheets) {
-    const SheetStage st = sheet_stage(mesh, bc, opt, s.timings);
-    sheet_stats(st, s);
-    if (st.subsheets)
-      for (const Subsheets& x : *st.subsheets)
-        run.subsheet_counts.push_back({x.sheet, st.sheets.sheet_blocks.count(static_cast<size_t>(x.sheet)),
-                                       static_cast<int64_t>(x.size())});
-  }
-  return run;
-}
+StatsRun analyze_stats(const Mesh& mesh, const AnalysisOptions& opt) { return stats_run(mesh, nullptr, opt); }
+
+StatsRun analyze_stats(Mesh&& mesh, const AnalysisOptions& opt) { return stats_run(mesh, &mesh, opt); }
 
 }  // namespace hbc

@@ -230,6 +230,16 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc) {
   return complex_from_base(m, bc, all);
 }
 
+BaseViewFacts base_view_facts(const Mesh& m, const BaseComplex& bc) {
+  std::vector<int32_t> all(bc.num_components());
+  for (size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int32_t>(k);
+  return base_view_facts(m, bc, all);
+}
+
+bool BaseViewFacts::whole() const {
+  return std::find(component_in.begin(), component_in.end(), 0) == component_in.end();
+}
+
 namespace {
 
 // Rows of the curves in the view (compact ids, `curve_map`) listing the region owners of each
@@ -256,31 +266,79 @@ Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vecto
 // Per corner in the view (vmap >= 0): the region components with a cell there. A cell at a
 // vertex has a face there; components are visited one by one, so a stamp per vertex (the last
 // component that counted it) counts each component once without sorting (vertex, component) pairs.
-void count_corner_components(const Mesh& m, const BaseComplex& bc, const std::vector<int32_t>& components,
+void count_corner_components(const Mesh& m, const BaseComplex& bc, const std::vector<uint8_t>& component_in,
                              const std::vector<int32_t>& vmap, std::vector<int32_t>& count) {
   std::vector<int32_t> stamp(m.num_vertices(), -1);
-  for (int32_t k : components)
-    for (int32_t c : bc.component_cells[static_cast<size_t>(k)])
+  for (size_t k = 0; k < component_in.size(); ++k) {
+    if (!component_in[k]) continue;
+    for (int32_t c : bc.component_cells[k])
       for (int32_t f : m.cell_faces[static_cast<size_t>(c)])
         for (int32_t v : m.face_verts[static_cast<size_t>(f)]) {
           const int32_t x = vmap[static_cast<size_t>(v)];
-          if (x < 0 || stamp[static_cast<size_t>(v)] == k) continue;
-          stamp[static_cast<size_t>(v)] = k;
+          if (x < 0 || stamp[static_cast<size_t>(v)] == static_cast<int32_t>(k)) continue;
+          stamp[static_cast<size_t>(v)] = static_cast<int32_t>(k);
           ++count[static_cast<size_t>(x)];
         }
+  }
+}
+
+// Which curves are in the view, their valence and boundary flag. A curve is in the view when a
+// region cell lies at its first mesh edge (every mesh edge has a cell, so with the whole region
+// every curve is). The valence is that of the curve's first mesh edge: every face around a curve
+// separates, so each mesh cell there is a corner of a different coarse cell.
+void curve_facts(const Mesh& m, const BaseComplex& bc, const std::vector<uint8_t>& in_cell, const RegionBoundary& rb,
+                 bool whole, BaseViewFacts& f) {
+  const size_t ncurve = bc.num_curves();
+  f.curve_in.assign(ncurve, whole ? 1 : 0);
+  f.curve_valence.assign(ncurve, 0);
+  f.curve_boundary.assign(ncurve, 0);
+  EdgeFan fan;
+  for (size_t k = 0; k < ncurve; ++k) {
+    const auto es = bc.curve_edges[k];
+    if (whole) {
+      f.curve_valence[k] = m.edge_valence(static_cast<size_t>(es[0]));
+    } else {
+      edge_fan(m, es[0], fan);
+      f.curve_valence[k] = static_cast<int32_t>(std::count_if(fan.cells.begin(), fan.cells.end(), [&](int32_t c) { return in_cell[c] != 0; }));
+      f.curve_in[k] = f.curve_valence[k] > 0;
+    }
+    if (!f.curve_in[k]) continue;
+    for (int32_t e : es) f.curve_boundary[k] = f.curve_boundary[k] || rb.edge_boundary[e];
+  }
+}
+
+// The view's vertices (the ends of its open curves) and, per vertex, its boundary flag, the
+// region components there and whether every region patch there is a quad.
+void corner_facts(const Mesh& m, const BaseComplex& bc, const RegionBoundary& rb, BaseViewFacts& f) {
+  std::vector<uint8_t> corner_in(m.num_vertices(), 0);
+  for (size_t k = 0; k < f.curve_in.size(); ++k) {
+    if (!f.curve_in[k] || bc.curve_closed[k]) continue;
+    const auto vs = bc.curve_verts[k];
+    corner_in[vs.front()] = corner_in[vs.back()] = 1;
+  }
+  const std::vector<int32_t> vmap = compact(corner_in, f.corners);
+  const size_t n = f.corners.size();
+  f.corner_boundary.resize(n);
+  for (size_t i = 0; i < n; ++i) f.corner_boundary[i] = rb.vert_boundary[f.corners[i]];
+  f.corner_cells.assign(n, 0);
+  count_corner_components(m, bc, f.component_in, vmap, f.corner_cells);
+  // Non-quad patches at each corner, from the faces' side.
+  f.corner_all_quad.assign(n, 1);
+  for (size_t x = 0; x < m.num_faces(); ++x)
+    if (rb.face_in[x] && bc.face_patch[x] >= 0 && !f.patch_quad[bc.face_patch[x]])
+      for (int32_t v : m.face_verts[x])
+        if (corner_in[static_cast<size_t>(v)]) f.corner_all_quad[static_cast<size_t>(vmap[v])] = 0;
 }
 
 // The view's edges (curves): end vertices, mesh polylines, valence, boundary flag, cells and
-// faces around, non-hex and all-quad flags. `whole`: the region is every component, so a curve's
-// valence is its first mesh edge's valence in the mesh (no fan walk).
-void curve_edges_of_view(const Mesh& m, const BaseComplex& bc, const std::vector<uint8_t>& in_cell,
-                         const RegionBoundary& rb, const std::vector<int32_t>& kmap, const std::vector<int32_t>& pmap,
-                         const std::vector<int32_t>& emap, const std::vector<int32_t>& vmap, bool whole,
-                         CellComplex& cx) {
+// faces around, non-hex and all-quad flags.
+void curve_edges_of_view(const BaseComplex& bc, const BaseViewFacts& f, const std::vector<int32_t>& kmap,
+                         const std::vector<int32_t>& pmap, const std::vector<int32_t>& emap,
+                         const std::vector<int32_t>& vmap, CellComplex& cx) {
   const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
   cx.edge_verts.resize(nx);
   cx.edge_valence.resize(nx);
-  cx.edge_boundary.assign(nx, 0);
+  cx.edge_boundary.resize(nx);
   cx.edge_non_hex.assign(nx, 0);
   cx.edge_all_quad.assign(nx, 1);
   // Components and patches around a curve: a cell at a curve's mesh edge has its two faces there
@@ -291,7 +349,6 @@ void curve_edges_of_view(const Mesh& m, const BaseComplex& bc, const std::vector
   cx.edge_cells = curve_owner_rows(bc.component_curves, kmap, emap, nx);
   cx.edge_faces = curve_owner_rows(bc.patch_curves, pmap, emap, nx);
   cx.edge_points.reserve(nx, bc.curve_verts.items.size() + nx);
-  EdgeFan fan;
   for (size_t i = 0; i < nx; ++i) {
     const int32_t k = cx.edge_source[i];
     const auto vs = bc.curve_verts[k];
@@ -304,65 +361,27 @@ void curve_edges_of_view(const Mesh& m, const BaseComplex& bc, const std::vector
       cx.edge_verts[i] = {vmap[vs.front()], vmap[vs.back()]};
       cx.edge_points.push_row(vs.begin(), vs.end());
     }
-    // The valence is that of the curve's first mesh edge: every face around a curve separates,
-    // so each mesh cell there is a corner of a different coarse cell.
-    const auto es = bc.curve_edges[k];
-    if (whole) {
-      cx.edge_valence[i] = m.edge_valence(static_cast<size_t>(es[0]));
-    } else {
-      edge_fan(m, es[0], fan);
-      cx.edge_valence[i] = static_cast<int32_t>(std::count_if(fan.cells.begin(), fan.cells.end(), [&](int32_t c) { return in_cell[c] != 0; }));
-    }
-    for (int32_t e : es) cx.edge_boundary[i] = cx.edge_boundary[i] || rb.edge_boundary[e];
+    cx.edge_valence[i] = f.curve_valence[k];
+    cx.edge_boundary[i] = f.curve_boundary[k];
     for (int32_t x : cx.edge_cells[i]) cx.edge_non_hex[i] = cx.edge_non_hex[i] || cx.cell_non_hex[x];
-    for (int32_t f : cx.edge_faces[i]) cx.edge_all_quad[i] = cx.edge_all_quad[i] && cx.face_quad[f];
+    for (int32_t p : cx.edge_faces[i]) cx.edge_all_quad[i] = cx.edge_all_quad[i] && cx.face_quad[p];
   }
 }
 
-}  // namespace
-
-CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
-                              std::span<const int32_t> region_components) {
+// Everything of the view but the whole-mesh adjacency of a proper region, from `bc` and the facts
+// alone (no mesh).
+CellComplex view_from_facts(const BaseComplex& bc, const BaseViewFacts& f) {
   CellComplex cx;
   cx.level = Level::Complex;
-  const std::vector<uint8_t> in_comp = flags_of(region_components, bc.num_components(), "component");
-  std::vector<uint8_t> in_cell(m.num_cells());
-  for (size_t c = 0; c < in_cell.size(); ++c) in_cell[c] = in_comp[bc.cell_component[c]];
-  const RegionBoundary rb = region_boundary(m, in_cell);
-  const size_t npatch = bc.num_patches(), ncurve = bc.num_curves();
-
-  const std::vector<int32_t> kmap = compact(in_comp, cx.cell_source);
-  const bool whole = cx.num_cells() == bc.num_components();
+  const std::vector<int32_t> kmap = compact(f.component_in, cx.cell_source);
   cx.cell_non_hex.resize(cx.num_cells());
   for (size_t i = 0; i < cx.num_cells(); ++i)
     cx.cell_non_hex[i] = bc.component_kind[cx.cell_source[i]] == ComponentKind::NonHex;
-
-  // A patch is in the region when its faces are; all its faces have the same two components.
-  std::vector<uint8_t> patch_in(npatch, 0);
-  for (size_t p = 0; p < npatch; ++p) patch_in[p] = rb.face_in[bc.patch_faces[p][0]];
-  const std::vector<int32_t> pmap = compact(patch_in, cx.face_source);
-  std::vector<uint8_t> patch_quad(npatch);
-  for (size_t p = 0; p < npatch; ++p)
-    patch_quad[p] = bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
-
-  // A curve is in the view when a region cell lies at its first mesh edge (every mesh edge has a
-  // cell, so with the whole region every curve is).
-  std::vector<uint8_t> curve_in(ncurve, whole ? 1 : 0);
-  if (!whole) {
-    EdgeFan fan;
-    for (size_t k = 0; k < ncurve; ++k) {
-      edge_fan(m, bc.curve_edges[k][0], fan);
-      for (int32_t c : fan.cells) curve_in[k] = curve_in[k] || in_cell[c];
-    }
-  }
-  const std::vector<int32_t> emap = compact(curve_in, cx.edge_source);
-  std::vector<uint8_t> corner_in(m.num_vertices(), 0);
-  for (int32_t k : cx.edge_source) {
-    if (bc.curve_closed[k]) continue;
-    const auto vs = bc.curve_verts[k];
-    corner_in[vs.front()] = corner_in[vs.back()] = 1;
-  }
-  const std::vector<int32_t> vmap = compact(corner_in, cx.vert_mesh);
+  const std::vector<int32_t> pmap = compact(f.patch_in, cx.face_source);
+  const std::vector<int32_t> emap = compact(f.curve_in, cx.edge_source);
+  cx.vert_mesh = f.corners;
+  std::vector<int32_t> vmap(f.num_mesh_vertices, -1);
+  for (size_t i = 0; i < f.corners.size(); ++i) vmap[static_cast<size_t>(f.corners[i])] = static_cast<int32_t>(i);
 
   // A patch's edges are the curves on it (patch_curves), those off the view as -1.
   std::vector<int32_t> buf;
@@ -373,28 +392,52 @@ CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
     buf.clear();
     for (int32_t k : bc.patch_curves[p]) buf.push_back(emap[k]);
     sort_unique_row(buf, cx.face_edges);
-    cx.face_quad[i] = patch_quad[p];
+    cx.face_quad[i] = f.patch_quad[p];
   }
   cx.face_cells = region_face_cells(cx.face_source, bc.patch_components, kmap);
-  curve_edges_of_view(m, bc, in_cell, rb, kmap, pmap, emap, vmap, whole, cx);
+  curve_edges_of_view(bc, f, kmap, pmap, emap, vmap, cx);
+  cx.vert_boundary = f.corner_boundary;
+  cx.vert_cell_count = f.corner_cells;
+  cx.vert_all_quad = f.corner_all_quad;
+  build_vert_edges(cx);
+  return cx;
+}
 
-  const size_t nvx = cx.num_vertices();
-  cx.vert_boundary.resize(nvx);
-  cx.vert_cell_count.assign(nvx, 0);
-  cx.vert_all_quad.assign(nvx, 1);
-  for (size_t i = 0; i < nvx; ++i) cx.vert_boundary[i] = rb.vert_boundary[cx.vert_mesh[i]];
-  count_corner_components(m, bc, cx.cell_source, vmap, cx.vert_cell_count);
-  // Non-quad patches at each corner, from the faces' side.
-  for (size_t f = 0; f < m.num_faces(); ++f)
-    if (rb.face_in[f] && bc.face_patch[f] >= 0 && !patch_quad[bc.face_patch[f]])
-      for (int32_t v : m.face_verts[f])
-        if (corner_in[static_cast<size_t>(v)]) cx.vert_all_quad[static_cast<size_t>(vmap[v])] = 0;
-  if (!whole)
+}  // namespace
+
+BaseViewFacts base_view_facts(const Mesh& m, const BaseComplex& bc, std::span<const int32_t> region_components) {
+  BaseViewFacts f;
+  f.num_mesh_vertices = m.num_vertices();
+  f.component_in = flags_of(region_components, bc.num_components(), "component");
+  std::vector<uint8_t> in_cell(m.num_cells());
+  for (size_t c = 0; c < in_cell.size(); ++c) in_cell[c] = f.component_in[bc.cell_component[c]];
+  const RegionBoundary rb = region_boundary(m, in_cell);
+  const size_t npatch = bc.num_patches();
+  // A patch is in the region when its faces are; all its faces have the same two components.
+  f.patch_in.resize(npatch);
+  f.patch_quad.resize(npatch);
+  for (size_t p = 0; p < npatch; ++p) {
+    f.patch_in[p] = rb.face_in[bc.patch_faces[p][0]];
+    f.patch_quad[p] = bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
+  }
+  curve_facts(m, bc, in_cell, rb, f.whole(), f);
+  corner_facts(m, bc, rb, f);
+  return f;
+}
+
+CellComplex complex_from_base(const BaseComplex& bc, const BaseViewFacts& facts) {
+  if (!facts.whole()) throw std::invalid_argument("complex_from_base without the mesh: the facts are of a proper region");
+  return view_from_facts(bc, facts);
+}
+
+CellComplex complex_from_base(const Mesh& m, const BaseComplex& bc,
+                              std::span<const int32_t> region_components) {
+  CellComplex cx = view_from_facts(bc, base_view_facts(m, bc, region_components));
+  if (cx.num_cells() < bc.num_components())
     fill_whole_mesh_adjacency(
         m, cx, [&](size_t i) { return bc.curve_edges[cx.edge_source[i]]; },
         [&](int32_t f) { return bc.face_patch[f]; }, [&](int32_t c) { return bc.cell_component[c]; },
         bc.patch_components);
-  build_vert_edges(cx);
   return cx;
 }
 

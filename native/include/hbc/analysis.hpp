@@ -94,9 +94,13 @@ struct StatsRun {
 };
 
 // compute_stats(mesh, analyze(mesh, options)) without holding every stage at once: each stage's
-// results are dropped once counted, and the wireframe runs before the sheets so that the base
-// complex arrays only it needs can go first. Peak memory is then about one stage on top of the
-// mesh and the base complex instead of the sum of the stages (the CLI's analyze on 10^7 cells).
+// results and each base complex array are dropped once the last reader is done, and the sheets run
+// before the wireframe, whose complex-level view is built from the base complex alone (what it
+// needs of the mesh taken beforehand, base_view_facts). Peak memory is then the mesh and the base
+// complex plus the sheet domain, instead of the sum of the stages (the CLI's analyze on 10^7 cells).
 StatsRun analyze_stats(const Mesh& mesh, const AnalysisOptions& options = {});
+// The same, freeing the mesh once only the view is still to be built: the peak of the wireframe
+// stage is then the view without the mesh.
+StatsRun analyze_stats(Mesh&& mesh, const AnalysisOptions& options = {});
 
 }  // namespace hbc

@@ -91,6 +91,32 @@ CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc);
 CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc,
                               std::span<const int32_t> region_components);
 
+// What the complex-level view takes from the mesh, per base complex element (patch, curve) and per
+// vertex of the view (corner), so that the view can be built once the mesh is gone: analyze_stats
+// frees the mesh before building it, and the view and the mesh need not be held at once.
+struct BaseViewFacts {
+  size_t num_mesh_vertices = 0;
+  std::vector<uint8_t> component_in;      // ncomp: in the region
+  std::vector<uint8_t> patch_in;          // npatch: a region cell on one of its sides
+  std::vector<uint8_t> patch_quad;        // npatch: 4 curves and 4 corners
+  std::vector<uint8_t> curve_in;          // ncurve: a region cell at its first mesh edge
+  std::vector<int32_t> curve_valence;     // ncurve: region cells around its first mesh edge (0 when out)
+  std::vector<uint8_t> curve_boundary;    // ncurve: a mesh edge of it on a region boundary face
+  std::vector<int32_t> corners;           // the view's vertices: mesh ids of the curves' ends, sorted
+  std::vector<uint8_t> corner_boundary;   // per corner: on a region boundary face
+  std::vector<int32_t> corner_cells;      // per corner: region components with a cell there
+  std::vector<uint8_t> corner_all_quad;   // per corner: every region patch there is a quad
+  bool whole() const;
+};
+BaseViewFacts base_view_facts(const Mesh& mesh, const BaseComplex& bc);
+BaseViewFacts base_view_facts(const Mesh& mesh, const BaseComplex& bc, std::span<const int32_t> region_components);
+
+// complex_from_base(mesh, bc) from the facts of the whole base complex and these arrays of `bc`
+// alone: component_kind, patch_curves, patch_components, curve_verts, curve_closed,
+// component_curves (the others may have been released). Throws for the facts of a proper region
+// (their view needs the mesh for the whole-mesh adjacency).
+CellComplex complex_from_base(const BaseComplex& bc, const BaseViewFacts& facts);
+
 // The complex edges (ids of `cx`) holding the given mesh edges, sorted and distinct; mesh edges
 // off the view (or, at the complex level, on no curve) are skipped. `bc` is read at the complex
 // level only.
