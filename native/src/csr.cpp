@@ -33,19 +33,4 @@ Csr<int32_t> group_by(std::span<const int32_t> keys, size_t nkeys) {
   return g;
 }
 
-Csr<int32_t> concat(std::vector<Csr<int32_t>>&& parts) {
-  if (parts.size() == 1) return std::move(parts[0]);
-  Csr<int32_t> all;
-  size_t rows = 0, items = 0;
-  for (const auto& p : parts) rows += p.rows(), items += p.items.size();
-  all.reserve(rows, items);
-  for (auto& p : parts) {
-    const int32_t base = static_cast<int32_t>(all.items.size());
-    for (size_t r = 1; r < p.offsets.size(); ++r) all.offsets.push_back(base + p.offsets[r]);
-    all.items.insert(all.items.end(), p.items.begin(), p.items.end());
-    p = Csr<int32_t>{};
-  }
-  return all;
-}
-
 }  // namespace hbc

@@ -103,42 +103,12 @@ void assign_touched(std::vector<T>& v, size_t n, const T& value, const LoadOptio
   v.assign(n, value);
 }
 
-// Counting sort of the items 0..n-1 by key_of(i) in [0, nkeys): row k lists the items with key k
-// in increasing order. Each range of items counts into its own table (ranges x nkeys ints) and
-// fills its own share of every row, so the result does not depend on the number of threads.
-template <class KeyOf>
-Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&& key_of) {
-  const int nr = range_count(n, par);
-  std::vector<std::vector<int32_t>> next(static_cast<size_t>(nr));
-  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
-    std::vector<int32_t>& count = next[static_cast<size_t>(r)];
-    count.assign(nkeys, 0);
-    for (size_t i = b; i < e; ++i) ++count[static_cast<size_t>(key_of(i))];
-  });
-  Csr<int32_t> g;
-  resize_touched(g.offsets, nkeys + 1, par);
-  int32_t pos = 0;
-  for (size_t k = 0; k < nkeys; ++k) {
-    g.offsets[k] = pos;
-    for (auto& count : next) {
-      const int32_t c = count[k];
-      count[k] = pos;  // where range r writes its first item of key k
-      pos += c;
-    }
-  }
-  g.offsets[nkeys] = pos;
-  resize_touched(g.items, n, par);
-  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
-    std::vector<int32_t>& at = next[static_cast<size_t>(r)];
-    for (size_t i = b; i < e; ++i) g.items[static_cast<size_t>(at[static_cast<size_t>(key_of(i))]++)] = static_cast<int32_t>(i);
-  });
-  return g;
-}
-
-// group_by_key over items that come in units (a cell's slots): unit u holds the items
-// first(u) .. first(u+1)-1 (first(nunits) = every item), and each_key(u, emit) calls emit(key)
-// for them in order. Ranges split the units, so the keys are found twice instead of being kept
-// in an array as large as the items; the result is group_by_key's. emit(key, tag) with a tag
+// Counting sort of items that come in units (a cell's slots) by key: row k lists the items with
+// key k in increasing order. Unit u holds the items first(u) .. first(u+1)-1 (first(nunits) =
+// every item), and each_key(u, emit) calls emit(key) for them in order, key in [0, nkeys). Each
+// range of units counts into its own table (ranges x nkeys ints) and fills its own share of every
+// row, so the result does not depend on the number of threads. The keys are found twice instead
+// of being kept in an array as large as the items. emit(key, tag) with a tag
 // (a bit above 31-bit item ids, say) stores item | tag instead.
 template <class First, class EachKey>
 Csr<int32_t> group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, First&& first, EachKey&& each_key) {
@@ -156,7 +126,7 @@ Csr<int32_t> group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& 
     g.offsets[k] = pos;
     for (auto& count : next) {
       const int32_t c = count[k];
-      count[k] = pos;
+      count[k] = pos;  // where range r writes its first item of key k
       pos += c;
     }
   }
@@ -172,6 +142,15 @@ Csr<int32_t> group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& 
     }
   });
   return g;
+}
+
+// Counting sort of the items 0..n-1 by key_of(i) in [0, nkeys): row k lists the items with key k
+// in increasing order: group_units_by_key with one item a unit.
+template <class KeyOf>
+Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&& key_of) {
+  return group_units_by_key(
+      n, nkeys, par, [](size_t u) { return u; },
+      [&](size_t u, auto&& emit) { emit(static_cast<int32_t>(key_of(u))); });
 }
 
 // Calls f(row_begin, row_end, r) over ranges of the rows of `rows` holding about as many items

@@ -373,23 +373,6 @@ int32_t chains_at(const CellComplex& cx, const ChainIndex& ix, int32_t v, std::v
   return static_cast<int32_t>(buf.size());
 }
 
-// The rows of `parts` one after the other (parts are consumed).
-template <class T>
-Csr<T> join_rows(std::vector<Csr<T>>&& parts) {
-  if (parts.size() == 1) return std::move(parts[0]);
-  Csr<T> all;
-  size_t rows = 0, items = 0;
-  for (const auto& p : parts) rows += p.rows(), items += p.items.size();
-  all.reserve(rows, items);
-  for (auto& p : parts) {
-    const int32_t base = static_cast<int32_t>(all.items.size());
-    for (size_t k = 1; k < p.offsets.size(); ++k) all.offsets.push_back(base + p.offsets[k]);
-    all.items.insert(all.items.end(), p.items.begin(), p.items.end());
-    p = Csr<T>{};
-  }
-  return all;
-}
-
 // A redundant singular vertex: the corner of one cell with only quads around it, or one whose
 // wireframe edges are all of regular valence (or all-quad corner edges).
 bool redundant_vertex(const Region& r, const ChainIndex& ix, int32_t v) {
@@ -565,7 +548,7 @@ Csr<int32_t> continuations(const Region& r, const Chains& ch, const ChainIndex& 
       }
     }
   });
-  return join_rows(std::move(parts));
+  return concat(std::move(parts));
 }
 
 // Reactivation: every chain reached from a kept one (`kept`, the chains kept so far) through its
@@ -623,7 +606,7 @@ PairTable pair_table(const Region& r, const ChainIndex& ix, const std::vector<ui
       out.offsets.push_back(static_cast<int32_t>(out.items.size()));
     }
   });
-  return PairTable{join_rows(std::move(parts))};
+  return PairTable{concat(std::move(parts))};
 }
 
 Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& singular,

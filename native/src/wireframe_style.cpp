@@ -17,23 +17,6 @@ namespace {
 
 using MinUnionFind = detail::UnionFind;  // root = lowest member: deterministic class ids
 
-// The rows of `parts` one after the other (parts are consumed).
-template <class T>
-Csr<T> join_rows(std::vector<Csr<T>>&& parts) {
-  if (parts.size() == 1) return std::move(parts[0]);
-  Csr<T> all;
-  size_t rows = 0, items = 0;
-  for (const auto& p : parts) rows += p.rows(), items += p.items.size();
-  all.reserve(rows, items);
-  for (auto& p : parts) {
-    const int32_t base = static_cast<int32_t>(all.items.size());
-    for (size_t k = 1; k < p.offsets.size(); ++k) all.offsets.push_back(base + p.offsets[k]);
-    all.items.insert(all.items.end(), p.items.begin(), p.items.end());
-    p = Csr<T>{};
-  }
-  return all;
-}
-
 // Rows [0, n) built by row(i, out, scratch) (appending row i's items to out.items), ranges of rows
 // in parallel, each into rows of its own with scratch room of its own, joined in order: the same
 // rows for any thread count.
@@ -49,7 +32,7 @@ Csr<T> parallel_rows_of(size_t n, const LoadOptions& par, Row&& row) {
       out.offsets.push_back(static_cast<int32_t>(out.items.size()));
     }
   });
-  return join_rows(std::move(parts));
+  return concat(std::move(parts));
 }
 
 bool share_vertex(const CellComplex& cx, int32_t e, int32_t f) {

@@ -10,56 +10,50 @@
 namespace hbc {
 namespace {
 
-template <class T>
-void expect_same(const Csr<T>& a, const Csr<T>& b, const char* what) {
-  EXPECT_EQ(a.offsets, b.offsets) << what;
-  EXPECT_EQ(a.items, b.items) << what;
-}
-
 void expect_same_complex(const BaseComplex& a, const BaseComplex& b) {
   EXPECT_EQ(a.face_separation, b.face_separation);
   EXPECT_EQ(a.edge_complex, b.edge_complex);
   EXPECT_EQ(a.vert_corner, b.vert_corner);
   EXPECT_EQ(a.cell_component, b.cell_component);
-  expect_same(a.component_cells, b.component_cells, "component_cells");
+  test::expect_same_csr(a.component_cells, b.component_cells, "component_cells");
   EXPECT_EQ(a.component_kind, b.component_kind);
-  expect_same(a.component_adjacency, b.component_adjacency, "component_adjacency");
+  test::expect_same_csr(a.component_adjacency, b.component_adjacency, "component_adjacency");
   EXPECT_EQ(a.face_patch, b.face_patch);
-  expect_same(a.patch_faces, b.patch_faces, "patch_faces");
+  test::expect_same_csr(a.patch_faces, b.patch_faces, "patch_faces");
   EXPECT_EQ(a.patch_components, b.patch_components);
-  expect_same(a.patch_corners, b.patch_corners, "patch_corners");
-  expect_same(a.patch_curves, b.patch_curves, "patch_curves");
+  test::expect_same_csr(a.patch_corners, b.patch_corners, "patch_corners");
+  test::expect_same_csr(a.patch_curves, b.patch_curves, "patch_curves");
   EXPECT_EQ(a.edge_curve, b.edge_curve);
-  expect_same(a.curve_verts, b.curve_verts, "curve_verts");
-  expect_same(a.curve_edges, b.curve_edges, "curve_edges");
+  test::expect_same_csr(a.curve_verts, b.curve_verts, "curve_verts");
+  test::expect_same_csr(a.curve_edges, b.curve_edges, "curve_edges");
   EXPECT_EQ(a.curve_closed, b.curve_closed);
   EXPECT_EQ(a.corners, b.corners);
-  expect_same(a.component_patches, b.component_patches, "component_patches");
-  expect_same(a.component_curves, b.component_curves, "component_curves");
-  expect_same(a.component_corners, b.component_corners, "component_corners");
+  test::expect_same_csr(a.component_patches, b.component_patches, "component_patches");
+  test::expect_same_csr(a.component_curves, b.component_curves, "component_curves");
+  test::expect_same_csr(a.component_corners, b.component_corners, "component_corners");
   EXPECT_EQ(a.self_adjacent_faces, b.self_adjacent_faces);
 }
 
 void expect_same_domain(const SheetDomain& a, const SheetDomain& b) {
   EXPECT_EQ(a.cell_block, b.cell_block);
-  expect_same(a.block_cells, b.block_cells, "block_cells");
-  expect_same(a.block_curves, b.block_curves, "block_curves");
-  expect_same(a.block_adjacency, b.block_adjacency, "block_adjacency");
-  expect_same(a.curve_edges, b.curve_edges, "curve_edges");
+  test::expect_same_csr(a.block_cells, b.block_cells, "block_cells");
+  test::expect_same_csr(a.block_curves, b.block_curves, "block_curves");
+  test::expect_same_csr(a.block_adjacency, b.block_adjacency, "block_adjacency");
+  test::expect_same_csr(a.curve_edges, b.curve_edges, "curve_edges");
   EXPECT_EQ(a.curve_ends, b.curve_ends);
-  expect_same(a.curve_blocks, b.curve_blocks, "curve_blocks");
-  expect_same(a.curve_parallels, b.curve_parallels, "curve_parallels");
-  expect_same(a.curve_non_hex_cells, b.curve_non_hex_cells, "curve_non_hex_cells");
+  test::expect_same_csr(a.curve_blocks, b.curve_blocks, "curve_blocks");
+  test::expect_same_csr(a.curve_parallels, b.curve_parallels, "curve_parallels");
+  test::expect_same_csr(a.curve_non_hex_cells, b.curve_non_hex_cells, "curve_non_hex_cells");
   EXPECT_EQ(a.block_component, b.block_component);
   EXPECT_EQ(a.face_joins, b.face_joins);
 }
 
 void expect_same_sheets(const Sheets& a, const Sheets& b) {
-  expect_same(a.sheet_blocks, b.sheet_blocks, "sheet_blocks");
-  expect_same(a.sheet_cells, b.sheet_cells, "sheet_cells");
-  expect_same(a.sheet_curves, b.sheet_curves, "sheet_curves");
-  expect_same(a.sheet_edges, b.sheet_edges, "sheet_edges");
-  expect_same(a.sheet_non_hex_cells, b.sheet_non_hex_cells, "sheet_non_hex_cells");
+  test::expect_same_csr(a.sheet_blocks, b.sheet_blocks, "sheet_blocks");
+  test::expect_same_csr(a.sheet_cells, b.sheet_cells, "sheet_cells");
+  test::expect_same_csr(a.sheet_curves, b.sheet_curves, "sheet_curves");
+  test::expect_same_csr(a.sheet_edges, b.sheet_edges, "sheet_edges");
+  test::expect_same_csr(a.sheet_non_hex_cells, b.sheet_non_hex_cells, "sheet_non_hex_cells");
   ASSERT_EQ(a.classes.size(), b.classes.size());
   for (size_t s = 0; s < a.classes.size(); ++s) {
     const SheetClass &x = a.classes[s], &y = b.classes[s];
@@ -95,10 +89,7 @@ void expect_thread_independent(const Mesh& m) {
 }
 
 TEST(ComplexThreads, RealMeshesGiveTheSameArraysForAnyThreadCount) {
-  for (const char* rel : {"hexalab-edge-cone-rectification/armadillo_out.mesh", "cinolib/rockerarm.mesh",
-                          "hybrid-base-complex/twistcube_s.mesh", "cinolib/eight_voronoi.hedra",
-                          "hybrid-base-complex/cube_twist-comp.obj.HYBRID", "openvolumemesh/NonManifold.ovm",
-                          "openvolumemesh/Cylinder.ovmb"}) {
+  for (const char* rel : test::kVariedMeshes) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
     expect_thread_independent(load_mesh(test::data_path(rel)));

@@ -403,10 +403,7 @@ using test::expect_same_mesh;
 TEST(LoadParallel, EveryArrayEqualsTheSingleThreadedLoad) {
   // A grain of 64 splits even the small meshes into many ranges per step, so range boundaries
   // fall inside every kind of element; 3 threads on 2 cores still run the ranges concurrently.
-  for (const char* rel : {"hexalab-edge-cone-rectification/armadillo_out.mesh", "cinolib/rockerarm.mesh",
-                          "hybrid-base-complex/twistcube_s.mesh", "cinolib/eight_voronoi.hedra",
-                          "hybrid-base-complex/cube_twist-comp.obj.HYBRID", "openvolumemesh/NonManifold.ovm",
-                          "openvolumemesh/Cylinder.ovmb"}) {
+  for (const char* rel : test::kVariedMeshes) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
     const Mesh one = load_mesh(test::data_path(rel), Format::Auto, LoadOptions{1, 64});

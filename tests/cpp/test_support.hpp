@@ -18,6 +18,20 @@ namespace hbc::test {
 inline std::string data_dir() { return HBC_DATA_DIR; }
 inline std::string data_path(const std::string& rel) { return data_dir() + "/" + rel; }
 
+// Shared meshes of every reader and cell mix (hex-dominant, polyhedral, non-manifold), for the
+// tests that compare one thread against several.
+inline constexpr const char* kVariedMeshes[] = {
+    "hexalab-edge-cone-rectification/armadillo_out.mesh", "cinolib/rockerarm.mesh",
+    "hybrid-base-complex/twistcube_s.mesh", "cinolib/eight_voronoi.hedra",
+    "hybrid-base-complex/cube_twist-comp.obj.HYBRID", "openvolumemesh/NonManifold.ovm",
+    "openvolumemesh/Cylinder.ovmb"};
+
+template <class T>
+void expect_same_csr(const Csr<T>& a, const Csr<T>& b, const char* what) {
+  EXPECT_EQ(a.offsets, b.offsets) << what;
+  EXPECT_EQ(a.items, b.items) << what;
+}
+
 // Skips nothing silently: a missing data folder fails the test with a clear message.
 #define HBC_REQUIRE_DATA(rel)                                                              \
   do {                                                                                     \

@@ -16,21 +16,16 @@
 namespace hbc {
 namespace {
 
-void expect_same_csr(const Csr<int32_t>& a, const Csr<int32_t>& b, const char* what) {
-  EXPECT_EQ(a.offsets, b.offsets) << what;
-  EXPECT_EQ(a.items, b.items) << what;
-}
-
 void expect_same_wireframe(const VsgWireframe& a, const VsgWireframe& b) {
   EXPECT_EQ(a.edge_vsg, b.edge_vsg);
   EXPECT_EQ(a.vert_vsg, b.vert_vsg);
-  expect_same_csr(a.vsg_chain_edges, b.vsg_chain_edges, "vsg_chain_edges");
+  test::expect_same_csr(a.vsg_chain_edges, b.vsg_chain_edges, "vsg_chain_edges");
   EXPECT_EQ(a.vsg_edges, b.vsg_edges);
   EXPECT_EQ(a.vsg_chains, b.vsg_chains);
   EXPECT_EQ(a.vert_singular, b.vert_singular);
   EXPECT_EQ(a.singular_vertices, b.singular_vertices);
-  expect_same_csr(a.edges, b.edges, "edges");
-  expect_same_csr(a.polylines, b.polylines, "polylines");
+  test::expect_same_csr(a.edges, b.edges, "edges");
+  test::expect_same_csr(a.polylines, b.polylines, "polylines");
   EXPECT_EQ(a.ends, b.ends);
   EXPECT_EQ(a.kind, b.kind);
   EXPECT_EQ(a.valence, b.valence);
@@ -39,8 +34,8 @@ void expect_same_wireframe(const VsgWireframe& a, const VsgWireframe& b) {
   EXPECT_EQ(a.non_important, b.non_important);
   EXPECT_EQ(a.reactivated, b.reactivated);
   EXPECT_EQ(a.shown, b.shown);
-  expect_same_csr(a.simplified_edges, b.simplified_edges, "simplified_edges");
-  expect_same_csr(a.simplified_polylines, b.simplified_polylines, "simplified_polylines");
+  test::expect_same_csr(a.simplified_edges, b.simplified_edges, "simplified_edges");
+  test::expect_same_csr(a.simplified_polylines, b.simplified_polylines, "simplified_polylines");
   EXPECT_EQ(a.vsg_mesh_edges, b.vsg_mesh_edges);
   EXPECT_EQ(a.wireframe_mesh_edges, b.wireframe_mesh_edges);
   EXPECT_EQ(a.simplified_mesh_edges, b.simplified_mesh_edges);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace hbc {
@@ -47,7 +48,21 @@ Csr<int32_t> transpose(const Csr<int32_t>& a, size_t ncols);
 Csr<int32_t> group_by(std::span<const int32_t> keys, size_t nkeys);
 
 // The rows of `parts` one after the other (parts are consumed).
-Csr<int32_t> concat(std::vector<Csr<int32_t>>&& parts);
+template <class T>
+Csr<T> concat(std::vector<Csr<T>>&& parts) {
+  if (parts.size() == 1) return std::move(parts[0]);
+  Csr<T> all;
+  size_t rows = 0, items = 0;
+  for (const auto& p : parts) rows += p.rows(), items += p.items.size();
+  all.reserve(rows, items);
+  for (auto& p : parts) {
+    const int32_t base = static_cast<int32_t>(all.items.size());
+    for (size_t r = 1; r < p.offsets.size(); ++r) all.offsets.push_back(base + p.offsets[r]);
+    all.items.insert(all.items.end(), p.items.begin(), p.items.end());
+    p = Csr<T>{};
+  }
+  return all;
+}
 
 // Sorts v and removes repeated values.
 template <class T>
