@@ -166,6 +166,15 @@ void drop_domain_only(BaseComplex& bc) {
   release(bc.curve_edges);
 }
 
+// Past the facts only the sheets read a given-up mesh: its topology and edge fans, none of these
+// flags (test_stats_memory runs the sheets on a given-up mesh).
+void keep_for_sheets(Mesh& m) {
+  release(m.valence_small);
+  release(m.edge_boundary);
+  release(m.face_boundary);
+  release(m.vert_non_manifold);
+}
+
 // The graph and the base complex, counted; only the base complex (all of it) is kept.
 BaseComplex counted_base_complex(const Mesh& mesh, const AnalysisOptions& opt, Stats& s) {
   auto t = std::chrono::steady_clock::now();
@@ -196,6 +205,9 @@ void counted_sheets(const Mesh& mesh, BaseComplex& bc, const AnalysisOptions& op
 StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
   StatsRun run;
   Stats& s = run.stats;
+  // Only complex_from_mesh, the mesh-level view, reads what the stages before it do not.
+  const bool mesh_view = opt.wireframe && opt.wireframe_level == Level::Mesh;
+  if (owned && !mesh_view) release_unanalyzed(*owned);
   BaseComplex bc = counted_base_complex(mesh, opt, s);
   drop_unread(bc);
   // The complex-level view is built last, from the base complex alone, so that neither the mesh
@@ -208,9 +220,7 @@ StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
     s.timings.vsg_wireframe = since(t);
   }
   drop_facts_only(bc);
-  // Past the facts only the sheets read the mesh, and only its topology: a given-up mesh's points
-  // (a tenth of it) go now. Not without the facts: complex_from_mesh counts the vertices by them.
-  if (owned && facts) release(owned->points);
+  if (owned && !mesh_view) keep_for_sheets(*owned);
   return_freed_memory();
   if (opt.sheets) counted_sheets(mesh, bc, opt, run);
   return_freed_memory();

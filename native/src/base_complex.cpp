@@ -287,8 +287,7 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
     bc.vert_corner[v] &= !no_edge[v];
     if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
   }
-  const std::vector<int32_t> zero(ne, 0);
-  chain_edges(m, bc.edge_complex, zero, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
+  chain_edges(m, bc.edge_complex, {}, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
   bc.edge_curve.assign(ne, -1);
   for (size_t k = 0; k < bc.curve_edges.rows(); ++k)
     for (int32_t e : bc.curve_edges[k]) bc.edge_curve[e] = static_cast<int32_t>(k);
@@ -322,6 +321,23 @@ void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table, con
   });
 }
 
+// Appends parts[r][i] for r >= 1 to `out` in range order, into room of the exact size (no growth
+// slack to copy), freeing each part once appended.
+template <size_t N>
+void append_parts(Csr<int32_t>& out, std::vector<std::array<Csr<int32_t>, N>>& parts, size_t i) {
+  size_t rows = out.offsets.size(), items = out.items.size();
+  for (size_t r = 1; r < parts.size(); ++r) {
+    rows += parts[r][i].rows();
+    items += parts[r][i].items.size();
+  }
+  out.offsets.reserve(rows);
+  out.items.reserve(items);
+  for (size_t r = 1; r < parts.size(); ++r) {
+    append_rows(out, parts[r][i]);
+    parts[r][i] = Csr<int32_t>();
+  }
+}
+
 // The corners and curves of patches first..last-1, appended to `corners` and `curves`.
 void patch_rows(const Mesh& m, const BaseComplex& bc, size_t first, size_t last, Csr<int32_t>& corners,
                 Csr<int32_t>& curves) {
@@ -351,10 +367,8 @@ void patch_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
     if (r == 0) patch_rows(m, bc, first, last, bc.patch_corners, bc.patch_curves);
     else patch_rows(m, bc, first, last, parts[static_cast<size_t>(r)][0], parts[static_cast<size_t>(r)][1]);
   });
-  for (size_t r = 1; r < parts.size(); ++r) {
-    append_rows(bc.patch_corners, parts[r][0]);
-    append_rows(bc.patch_curves, parts[r][1]);
-  }
+  append_parts(bc.patch_corners, parts, 0);
+  append_parts(bc.patch_curves, parts, 1);
 }
 
 // Separation faces with the same component on both sides (reported, never hidden).
@@ -414,16 +428,26 @@ void component_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par
     auto& p = parts[static_cast<size_t>(r)];
     component_rows(m, bc, first, last, r == 0 ? mine : std::array<Csr<int32_t>*, 4>{&p[0], &p[1], &p[2], &p[3]});
   });
-  for (size_t r = 1; r < nr; ++r)
-    for (size_t i = 0; i < 4; ++i) append_rows(*mine[i], parts[r][i]);
+  // One array at a time, each part freed once appended: the stage's peak is here at 10^7 cells.
+  for (size_t i = 0; i < 4; ++i) append_parts(*mine[i], parts, i);
+}
+
+// The number of distinct ids in v (sorted on the way).
+size_t distinct(std::vector<int32_t>& v) {
+  std::sort(v.begin(), v.end());
+  return static_cast<size_t>(std::unique(v.begin(), v.end()) - v.begin());
 }
 
 // Euler characteristic V - E + F of the boundary surface of component k (faces counted once per
-// side): 2 for a ball, 0 for a solid torus. edge_seen / vert_seen (ne / nv) hold the last
-// component that counted an element, so they need no clearing between components.
-int64_t boundary_euler(const Mesh& m, const BaseComplex& bc, int32_t k, std::vector<int32_t>& edge_seen,
-                       std::vector<int32_t>& vert_seen) {
-  int64_t F = 0, E = 0, V = 0;
+// side): 2 for a ball, 0 for a solid torus. The distinct edges and vertices are counted by sorting
+// the ids met (`edges`, `verts`: reused buffers), not by stamps over every mesh edge and vertex:
+// only the components that are not cubes get here, and tables over the whole mesh (160 MB at
+// 10^7 cells) would add to the stage's peak.
+int64_t boundary_euler(const Mesh& m, const BaseComplex& bc, int32_t k, std::vector<int32_t>& edges,
+                       std::vector<int32_t>& verts) {
+  int64_t F = 0;
+  edges.clear();
+  verts.clear();
   for (int32_t c : bc.component_cells[k])
     for (int32_t f : m.cell_faces[c]) {
       if (!bc.face_separation[f]) continue;
@@ -431,18 +455,12 @@ int64_t boundary_euler(const Mesh& m, const BaseComplex& bc, int32_t k, std::vec
       const int32_t other = fc[0] == c ? fc[1] : fc[0];
       if (other >= 0 && bc.cell_component[other] == k) continue;  // a cut inside: not the boundary
       ++F;
-      for (int32_t e : m.face_edges(static_cast<size_t>(f)))
-        if (edge_seen[e] != k) {
-          edge_seen[e] = k;
-          ++E;
-        }
-      for (int32_t v : m.face_verts[f])
-        if (vert_seen[v] != k) {
-          vert_seen[v] = k;
-          ++V;
-        }
+      const auto fe = m.face_edges(static_cast<size_t>(f));
+      const auto fv = m.face_verts[f];
+      edges.insert(edges.end(), fe.begin(), fe.end());
+      verts.insert(verts.end(), fv.begin(), fv.end());
     }
-  return V - E + F;
+  return static_cast<int64_t>(distinct(verts)) - static_cast<int64_t>(distinct(edges)) + F;
 }
 
 // The kind of each component: a single non-hex cell; a cube (6 quad patches, 12 curves, 8
@@ -451,7 +469,7 @@ void classify_components(const Mesh& m, BaseComplex& bc) {
   const size_t ncomp = bc.component_cells.rows();
   std::vector<uint8_t> self_cut(ncomp, 0);
   for (int32_t f : bc.self_adjacent_faces) self_cut[bc.cell_component[m.face_cells[f][0]]] = 1;
-  std::vector<int32_t> edge_seen(m.num_edges(), -1), vert_seen(m.num_vertices(), -1);
+  std::vector<int32_t> edges, verts;
   bc.component_kind.assign(ncomp, ComponentKind::Other);
   for (size_t k = 0; k < ncomp; ++k) {
     const auto cells = bc.component_cells[k];
@@ -464,7 +482,7 @@ void classify_components(const Mesh& m, BaseComplex& bc) {
     for (int32_t p : bc.component_patches[k])
       cube = cube && bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
     if (cube) bc.component_kind[k] = ComponentKind::Cube;
-    else if (self_cut[k] || boundary_euler(m, bc, static_cast<int32_t>(k), edge_seen, vert_seen) == 0)
+    else if (self_cut[k] || boundary_euler(m, bc, static_cast<int32_t>(k), edges, verts) == 0)
       bc.component_kind[k] = ComponentKind::Ring;
   }
 }
@@ -474,11 +492,14 @@ void classify_components(const Mesh& m, BaseComplex& bc) {
 BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOptions& options) {
   const LoadOptions par = resolved(options);
   BaseComplex bc;
-  const HexFaceTable table(m, par);
-  bc.face_separation = separation_faces(m, g, table, par);
-  find_components(m, bc, par);
-  find_curves(m, bc, par);
-  find_patches(m, bc, table, par);
+  {
+    // Gone before the incidences, where the stage peaks.
+    const HexFaceTable table(m, par);
+    bc.face_separation = separation_faces(m, g, table, par);
+    find_components(m, bc, par);
+    find_curves(m, bc, par);
+    find_patches(m, bc, table, par);
+  }
   patch_incidences(m, bc, par);
   find_self_adjacent_faces(m, bc);
   component_incidences(m, bc, par);

@@ -26,6 +26,13 @@ size_t Mesh::num_hex_cells() const {
 }
 
 
+void release_unanalyzed(Mesh& m) {
+  m.released_vertices = m.num_vertices();
+  std::vector<double>().swap(m.points);
+  std::vector<uint8_t>().swap(m.cell_face_flip);
+  std::vector<uint8_t>().swap(m.vert_boundary);
+}
+
 int resolve_threads(const LoadOptions& options) {
   if (options.threads > 0) return options.threads;
   if (const char* env = std::getenv("HBC_THREADS")) {

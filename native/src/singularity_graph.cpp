@@ -4,7 +4,7 @@
 
 namespace hbc {
 
-void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, const std::vector<int32_t>& value,
+void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, std::span<const int32_t> value,
                  const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
                  std::vector<uint8_t>& closed) {
   // The walk only ever looks at member edges, so the vertex table needs only them.
@@ -12,7 +12,7 @@ void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, const std::v
 }
 
 void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
-                 const std::vector<uint8_t>& member, const std::vector<int32_t>& value,
+                 const std::vector<uint8_t>& member, std::span<const int32_t> value,
                  const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
                  std::vector<uint8_t>& closed) {
   verts.clear();
@@ -36,7 +36,7 @@ void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<i
       ++count;
       if (f != e) other = f;
     }
-    if (count != 2 || other < 0 || value[other] != value[e]) return -1;
+    if (count != 2 || other < 0 || (!value.empty() && value[other] != value[e])) return -1;
     return other;
   };
   std::vector<uint8_t> seen(ne, 0);

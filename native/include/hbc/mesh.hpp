@@ -85,8 +85,9 @@ struct Mesh {
   int64_t dropped_faces = 0;                        // faces in the file used by no cell
   int64_t dropped_edges = 0;                        // edges in the file used by no kept face
   std::vector<std::string> warnings;
+  size_t released_vertices = 0;                     // num_vertices() once release_unanalyzed() freed the points
 
-  size_t num_vertices() const { return points.size() / 3; }
+  size_t num_vertices() const { return points.empty() ? released_vertices : points.size() / 3; }
   size_t num_edges() const { return edge_verts.size(); }
   size_t num_faces() const { return face_verts.rows(); }
   size_t num_cells() const { return cell_faces.rows(); }
@@ -113,6 +114,11 @@ struct EdgeFan {
   std::vector<int32_t> faces, cells;
 };
 void edge_fan(const Mesh& m, int32_t e, EdgeFan& out);
+
+// Frees what the analysis stages (singularity graph, base complex, sheets, complex-level view)
+// never read: the vertex positions (num_vertices() stays), the cells' face orientations and the
+// boundary vertex flags. For a caller that gives the mesh up to count (analyze_stats).
+void release_unanalyzed(Mesh& m);
 
 // The vertices / edges of cell c, sorted, each once, written over `out`.
 void cell_vertices(const Mesh& m, size_t c, std::vector<int32_t>& out);

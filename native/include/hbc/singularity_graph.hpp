@@ -47,19 +47,19 @@ struct SingularityGraph {
 
 SingularityGraph singularity_graph(const Mesh& mesh);
 
-// Chains the edges marked in `member` (ne flags) into maximal chains of equal `edge_value`,
-// cut at vertices marked in `stop` (nv flags), at vertices with other than two member edges and
-// where the value changes. Shared by the hybrid singularity graph and the VSG (SPEC §4).
+// Chains the edges marked in `member` (ne flags) into maximal chains of equal `edge_value`
+// (ne values, or empty for one value everywhere), cut at vertices marked in `stop` (nv flags), at
+// vertices with other than two member edges and where the value changes. Shared by the hybrid singularity graph and the VSG (SPEC §4).
 // Output rows as in SingularityGraph::chain_verts / chain_edges; closed[s] marks loops.
 // Chains are ordered by their lowest edge id; an open chain runs from its end with the lower
 // vertex id, a closed one from its lowest vertex towards its lower-id neighbour.
 void chain_edges(const Mesh& mesh, const std::vector<uint8_t>& member,
-                 const std::vector<int32_t>& edge_value, const std::vector<uint8_t>& stop,
+                 std::span<const int32_t> edge_value, const std::vector<uint8_t>& stop,
                  Csr<int32_t>& verts, Csr<int32_t>& edges, std::vector<uint8_t>& closed);
 // The same on any edge graph given by its end vertices (ne pairs) and the edges at each vertex
 // (nv rows); the VSG chains the edges of a CellComplex with it.
 void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
-                 const std::vector<uint8_t>& member, const std::vector<int32_t>& edge_value,
+                 const std::vector<uint8_t>& member, std::span<const int32_t> edge_value,
                  const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
                  std::vector<uint8_t>& closed);
 
