@@ -38,8 +38,10 @@ void BM_LoadSteps(benchmark::State& state) {
     return;
   }
   using namespace hbc::mesh_steps;
-  std::optional<hbc::detail::WorkerPool> pool;  // as load_mesh keeps one for all its steps
-  const hbc::LoadOptions par = hbc::detail::with_pool(hbc::resolved({}), pool);
+  // As load_mesh, one worker pool for all the steps; HBC_BENCH_NO_POOL=1: a thread per range, as
+  // before the pool, to compare.
+  std::optional<hbc::detail::WorkerPool> pool;
+  const hbc::LoadOptions par = std::getenv("HBC_BENCH_NO_POOL") ? hbc::resolved({}) : hbc::detail::with_pool(hbc::resolved({}), pool);
   const bool with_usage = std::getenv("HBC_BENCH_RUSAGE") != nullptr;
   std::map<std::string, double> total;
   for (auto _ : state) {
