@@ -1,8 +1,12 @@
 // The steps of build_mesh one by one (hbc/mesh_steps.hpp) on $HBC_BENCH_FILE, after reading it:
 // wall seconds per step as counters (mean over iterations), to see where a load spends its time
 // and how each step uses the threads (HBC_THREADS). Not for comparing with older builds: the steps
-// are this version's.
+// are this version's. With HBC_BENCH_RUSAGE=1, also each step's user and system CPU seconds (all
+// threads) and minor page faults (<step>_usr, _sys, _flt): on a VM the kernel's zeroing of fresh
+// pages can cost more than the step's own work, and grows with the memory a step first touches.
 #include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -11,10 +15,21 @@
 
 #include "hbc/io.hpp"
 #include "hbc/mesh_steps.hpp"
+#include "worker_pool.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+struct Usage {
+  double usr = 0, sys = 0, faults = 0;
+};
+Usage usage_now() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  auto secs = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return {secs(u.ru_utime), secs(u.ru_stime), static_cast<double>(u.ru_minflt)};
+}
 
 void BM_LoadSteps(benchmark::State& state) {
   const char* file = std::getenv("HBC_BENCH_FILE");
@@ -23,14 +38,25 @@ void BM_LoadSteps(benchmark::State& state) {
     return;
   }
   using namespace hbc::mesh_steps;
-  const hbc::LoadOptions par = hbc::resolved({});
+  // As load_mesh, one worker pool for all the steps; HBC_BENCH_NO_POOL=1: a thread per range, as
+  // before the pool, to compare.
+  std::optional<hbc::detail::WorkerPool> pool;
+  const hbc::LoadOptions par = std::getenv("HBC_BENCH_NO_POOL") ? hbc::resolved({}) : hbc::detail::with_pool(hbc::resolved({}), pool);
+  const bool with_usage = std::getenv("HBC_BENCH_RUSAGE") != nullptr;
   std::map<std::string, double> total;
   for (auto _ : state) {
     auto t = Clock::now();
-    auto lap = [&](const char* step) {
+    Usage u = with_usage ? usage_now() : Usage{};
+    auto lap = [&](const std::string& step) {
       const auto now = Clock::now();
       total[step] += std::chrono::duration<double>(now - t).count();
       t = now;
+      if (!with_usage) return;
+      const Usage v = usage_now();
+      total[step + "_usr"] += v.usr - u.usr;
+      total[step + "_sys"] += v.sys - u.sys;
+      total[step + "_flt"] += v.faults - u.faults;
+      u = v;
     };
     hbc::MeshInput in = hbc::read_input(file, hbc::Format::Auto, par);
     lap("s0_read_parse");

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "text_scanner.hpp"
+#include "worker_pool.hpp"
 
 namespace hbc {
 
@@ -141,7 +142,9 @@ MeshInput read_input(const std::string& path, Format format, const LoadOptions& 
 }
 
 Mesh load_mesh(const std::string& path, Format format, const LoadOptions& options) {
-  return build_mesh(read_input(path, format, options), options);
+  std::optional<detail::WorkerPool> pool;  // one for the reading and the building
+  const LoadOptions par = detail::with_pool(resolved(options), pool);
+  return build_mesh(read_input(path, format, par), par);
 }
 
 void write_mesh(const Mesh& mesh, const std::string& path, Format format) {

@@ -46,7 +46,7 @@ bool split_lines(std::string_view text, size_t begin, int64_t n, int nranges, co
   const size_t nslices = static_cast<size_t>(std::max(1, par.threads)) * 8;
   std::vector<int64_t> count(nslices, 0);
   auto slice = [&](size_t i) { return begin + rest * i / nslices; };
-  parallel_ranges(nslices, LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
+  parallel_ranges(nslices, with_grain(par, 1), [&](size_t b, size_t e, int) {
     for (size_t i = b; i < e; ++i) count[i] = count_newlines(text.data() + slice(i), text.data() + slice(i + 1));
   });
   // The position just after newline number `k` (1-based) counted from `begin`.

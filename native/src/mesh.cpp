@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "hbc/mesh_steps.hpp"
+#include "worker_pool.hpp"
 
 namespace hbc {
 
@@ -52,7 +53,8 @@ LoadOptions resolved(const LoadOptions& options) {
 
 Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   using namespace mesh_steps;
-  const LoadOptions par = resolved(options);
+  std::optional<detail::WorkerPool> pool;
+  const LoadOptions par = detail::with_pool(resolved(options), pool);
   validate_input(in, par);
   std::vector<int64_t>().swap(in.vertex_loc);  // only validate_input names vertices
   Mesh m;

@@ -11,6 +11,7 @@
 #include "hbc/csr.hpp"
 #include "hbc/mesh.hpp"
 #include "huge_pages.hpp"
+#include "worker_pool.hpp"
 
 namespace hbc::detail {
 
@@ -23,7 +24,8 @@ inline int range_count(size_t n, const LoadOptions& par) {
 }
 
 // Calls f(begin, end, r) for ranges r = 0 .. range_count(n, par)-1 covering [0, n) in order,
-// range 0 on the calling thread. An exception thrown in a range is rethrown after all ranges end;
+// range 0 on the calling thread, the others on par.pool's workers when it has them free, else on
+// threads of their own. An exception thrown in a range is rethrown after all ranges end;
 // when several throw, the one of the lowest range wins (the first bad element in order, when each
 // range stops at its first).
 template <class F>
@@ -39,13 +41,24 @@ void parallel_ranges(size_t n, const LoadOptions& par, F&& f) {
       errors[static_cast<size_t>(r)] = std::current_exception();
     }
   };
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<size_t>(nr - 1));
-  for (int r = 1; r < nr; ++r) pool.emplace_back(run, r);
-  run(0);
-  for (auto& t : pool) t.join();
+  if (nr == 1) {
+    run(0);
+  } else if (!par.pool || !par.pool->run(nr, run)) {
+    std::vector<std::thread> pool;
+    pool.reserve(static_cast<size_t>(nr - 1));
+    for (int r = 1; r < nr; ++r) pool.emplace_back(run, r);
+    run(0);
+    for (auto& t : pool) t.join();
+  }
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+// par with another grain (and the same threads and pool).
+inline LoadOptions with_grain(const LoadOptions& par, int grain) {
+  LoadOptions p = par;
+  p.grain = grain;
+  return p;
 }
 
 // Runs independent jobs, one per thread when threads > 1.
@@ -83,7 +96,7 @@ inline void touch_pages(void* p, size_t bytes, const LoadOptions& par) {
   const size_t npages = bytes / kPage;
   if (par.threads <= 1 || npages < 1024) return;  // under 4 MB: not worth a thread
   auto* b = static_cast<volatile char*>(p);
-  parallel_ranges(npages, LoadOptions{par.threads, 256}, [&](size_t pb, size_t pe, int) {
+  parallel_ranges(npages, with_grain(par, 256), [&](size_t pb, size_t pe, int) {
     for (size_t i = pb; i < pe; ++i) b[i * kPage] = 0;
   });
 }
@@ -166,7 +179,7 @@ void parallel_rows(const Csr<int32_t>& rows, const LoadOptions& par, F&& f) {
     start[static_cast<size_t>(r)] = static_cast<size_t>(std::lower_bound(rows.offsets.begin(), rows.offsets.end() - 1, target) - rows.offsets.begin());
   }
   start[0] = 0;
-  parallel_ranges(static_cast<size_t>(nr), LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
+  parallel_ranges(static_cast<size_t>(nr), with_grain(par, 1), [&](size_t b, size_t e, int) {
     for (size_t r = b; r < e; ++r) f(start[r], start[r + 1], static_cast<int>(r));
   });
 }

@@ -2,10 +2,13 @@
 // scanner, and parallel loads against single-threaded ones (every array of the Mesh).
 #include <algorithm>
 #include <cstring>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "hbc/generate.hpp"
 #include "hbc/mesh_steps.hpp"
+#include "parallel.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -414,6 +417,33 @@ TEST(LoadParallel, EveryArrayEqualsTheSingleThreadedLoad) {
   for (int i = 0; i < 12 * 12 * 12; i += 97) split.push_back({i % 12, i / 12 % 12, i / 144});
   const Mesh one = build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), LoadOptions{1, 64});
   expect_same_mesh(one, build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), LoadOptions{2, 64}));
+}
+
+TEST(LoadParallel, APoolRunsEveryRangeOnceAndSplitsNestedCallsOnItsOwn) {
+  // Many short steps in a row (as a load runs them), a range that splits its own work while the
+  // pool is busy, and an exception: the same ranges and the same first error as without a pool.
+  std::optional<detail::WorkerPool> own;
+  const LoadOptions par = detail::with_pool(LoadOptions{3, 8}, own);
+  ASSERT_NE(par.pool, nullptr);
+  for (int step = 0; step < 200; ++step) {
+    const size_t n = 1 + static_cast<size_t>(step) * 7 % 100;
+    std::vector<int> hits(n, 0);
+    detail::parallel_ranges(n, par, [&](size_t b, size_t e, int) {
+      for (size_t i = b; i < e; ++i) ++hits[i];
+      detail::parallel_ranges(e - b, par, [&](size_t nb, size_t ne, int) {
+        for (size_t i = nb; i < ne; ++i) ++hits[b + i];
+      });
+    });
+    EXPECT_EQ(std::count(hits.begin(), hits.end(), 2), static_cast<std::ptrdiff_t>(n)) << "step " << step;
+  }
+  try {
+    detail::parallel_ranges(100, par, [&](size_t b, size_t, int r) {
+      if (r > 0) throw std::runtime_error("range " + std::to_string(r) + " from " + std::to_string(b));
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "range 1 from 33");
+  }
 }
 
 TEST(LoadParallel, ErrorsNameTheFirstBadCellForAnyThreadCount) {

@@ -131,10 +131,15 @@ Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep = {});
 // How to load: threads = how many threads may split the work (results are identical for any
 // number); 0 means the environment variable HBC_THREADS when it holds a positive number, else
 // every core of the machine. grain = the fewest elements worth a thread of their own (tests lower
-// it to split small meshes into many ranges).
+// it to split small meshes into many ranges). pool: worker threads the load keeps for its steps
+// (set by the load itself; leave it null).
+namespace detail {
+class WorkerPool;
+}
 struct LoadOptions {
   int threads = 0;
   int grain = 4096;
+  detail::WorkerPool* pool = nullptr;
 };
 // The thread count `options` asks for, resolved as described above (always >= 1).
 int resolve_threads(const LoadOptions& options);

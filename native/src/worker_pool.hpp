@@ -1,0 +1,91 @@
+#pragma once
+// Worker threads kept for the length of one load, so that its thirty-odd parallel steps do not each
+// start and join their own threads (some 50-80 µs a thread here, as much as a small step's work).
+// The pool is an object of the load (see build_mesh, read_input), handed to the steps through
+// LoadOptions::pool; nothing outlives it. A call made while the pool is busy (a range that itself
+// splits its work) gets false and starts threads of its own, as without a pool.
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "hbc/mesh.hpp"
+
+namespace hbc::detail {
+
+class WorkerPool {
+ public:
+  explicit WorkerPool(int workers) {
+    threads_.reserve(static_cast<size_t>(std::max(0, workers)));
+    for (int w = 1; w <= workers; ++w) threads_.emplace_back([this, w] { work(w); });
+  }
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+  ~WorkerPool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& t : threads_) t.join();
+  }
+
+  // Runs job(i) for i in [0, n): 0 on the calling thread, the others on workers 1 .. n-1; returns
+  // once all have ended. False (nothing run) when n - 1 exceeds the workers or the pool is busy.
+  // job must not throw (parallel_ranges catches per range).
+  bool run(int n, const std::function<void(int)>& job) {
+    if (n - 1 > static_cast<int>(threads_.size())) return false;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (busy_) return false;
+      busy_ = true;
+      job_ = &job;
+      count_ = n;
+      pending_ = n - 1;
+      ++generation_;
+    }
+    if (n > 1) wake_.notify_all();
+    job(0);
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return pending_ == 0; });
+    busy_ = false;
+    job_ = nullptr;
+    return true;
+  }
+
+ private:
+  void work(int w) {
+    uint64_t seen = 0;
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      if (stop_) return;
+      seen = generation_;
+      if (w >= count_) continue;
+      const std::function<void(int)>* job = job_;
+      lock.unlock();
+      (*job)(w);
+      lock.lock();
+      if (--pending_ == 0) done_.notify_one();
+    }
+  }
+
+  std::vector<std::thread> threads_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(int)>* job_ = nullptr;
+  uint64_t generation_ = 0;
+  int count_ = 0, pending_ = 0;
+  bool busy_ = false, stop_ = false;
+};
+
+// par (resolved) with a pool: its own when it has none and more than one thread, kept in `own`.
+inline LoadOptions with_pool(LoadOptions par, std::optional<WorkerPool>& own) {
+  if (!par.pool && par.threads > 1) par.pool = &own.emplace(par.threads - 1);
+  return par;
+}
+
+}  // namespace hbc::detail
