@@ -134,19 +134,20 @@ void walk(const CellComplex& cx, int32_t from, int32_t e, const std::vector<uint
   }
 }
 
-// Chains through the seed edges of [first, last) (in increasing id order), traced first from the
-// seed's second end through it, then from its first end: the two walks are joined at the seed.
-// `used` holds the edges of earlier chains. Room for the most rows there can be (a chain per
-// seed, each edge on one chain at most) is reserved rather than grown: millions of rows would
-// otherwise be copied at every doubling (pages never written are never touched).
+// Chains through every seed edge (in increasing id order), traced first from the seed's second end
+// through it, then from its first end: the two walks are joined at the seed.
 template <class Next>
-void trace_seeds(const CellComplex& cx, const std::vector<uint8_t>& seed, size_t first, size_t last,
-                 const std::vector<uint8_t>& stop_vert, std::vector<uint8_t>& used, const Next& next, Chains& out) {
-  const auto seeds = static_cast<size_t>(std::count(seed.begin() + static_cast<ptrdiff_t>(first), seed.begin() + static_cast<ptrdiff_t>(last), uint8_t{1}));
-  out.edges.reserve(out.edges.rows() + seeds, out.edges.items.size() + cx.num_edges());
-  out.verts.reserve(out.verts.rows() + seeds, out.verts.items.size() + cx.num_edges() + seeds);
+Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
+                    const Next& next) {
+  Chains out;
+  // Room for the most there can be (a chain per seed, each edge on one chain at most), reserved
+  // rather than grown: millions of rows would otherwise be copied at every doubling.
+  const size_t seeds = static_cast<size_t>(std::count(seed.begin(), seed.end(), uint8_t{1}));
+  out.edges.reserve(seeds, cx.num_edges());
+  out.verts.reserve(seeds, cx.num_edges() + seeds);
+  std::vector<uint8_t> used(cx.num_edges(), 0);
   std::vector<int32_t> lv, le, rv, re;
-  for (size_t s = first; s < last; ++s) {
+  for (size_t s = 0; s < seed.size(); ++s) {
     const int32_t e = static_cast<int32_t>(s);
     if (!seed[e] || used[e] || cx.closed(e)) continue;
     walk(cx, cx.edge_verts[e][1], e, stop_vert, used, next, lv, le);
@@ -162,100 +163,6 @@ void trace_seeds(const CellComplex& cx, const std::vector<uint8_t>& seed, size_t
     }
     out.edges.push_row(le.begin(), le.end());
     out.verts.push_row(lv.begin(), lv.end());
-  }
-}
-
-// Rows of range k's chains that are disjoint from the edges of the ranges before it (keep), and
-// whether every other row lies wholly on those edges (then it is a chain of an earlier range
-// traced again from another of its seeds, which the sequential order skips).
-bool settle_range(const std::vector<Chains>& parts, const std::vector<std::vector<uint8_t>>& used, size_t k,
-                  std::vector<uint8_t>& keep) {
-  const Chains& ch = parts[k];
-  keep.assign(ch.edges.rows(), 1);
-  for (size_t c = 0; c < ch.edges.rows(); ++c) {
-    size_t earlier = 0;
-    for (int32_t x : ch.edges[c])
-      for (size_t j = 0; j < k; ++j)
-        if (used[j][static_cast<size_t>(x)]) {
-          ++earlier;
-          break;
-        }
-    if (earlier == 0) continue;
-    if (earlier != ch.edges[c].size()) return false;
-    keep[c] = 0;
-  }
-  return true;
-}
-
-// The kept rows of the parts, in order, into out (empty), each part copying its own rows.
-void gather_chains(std::vector<Chains>& parts, const std::vector<std::vector<uint8_t>>& keep, const LoadOptions& par,
-                   Chains& out) {
-  const size_t np = parts.size();
-  std::vector<size_t> rows(np + 1, 0), edges(np + 1, 0), verts(np + 1, 0);
-  for (size_t k = 0; k < np; ++k) {
-    rows[k + 1] = rows[k], edges[k + 1] = edges[k], verts[k + 1] = verts[k];
-    for (size_t c = 0; c < parts[k].edges.rows(); ++c)
-      if (keep[k][c]) ++rows[k + 1], edges[k + 1] += parts[k].edges.count(c), verts[k + 1] += parts[k].verts.count(c);
-  }
-  out.edges.offsets.resize(rows[np] + 1);
-  out.verts.offsets.resize(rows[np] + 1);
-  detail::resize_touched(out.edges.items, edges[np], par);
-  detail::resize_touched(out.verts.items, verts[np], par);
-  detail::parallel_ranges(np, LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
-    for (size_t k = b; k < e; ++k) {
-      size_t r = rows[k];
-      auto ei = static_cast<int32_t>(edges[k]), vi = static_cast<int32_t>(verts[k]);
-      for (size_t c = 0; c < parts[k].edges.rows(); ++c) {
-        if (!keep[k][c]) continue;
-        for (int32_t x : parts[k].edges[c]) out.edges.items[static_cast<size_t>(ei++)] = x;
-        for (int32_t x : parts[k].verts[c]) out.verts.items[static_cast<size_t>(vi++)] = x;
-        ++r;
-        out.edges.offsets[r] = ei;
-        out.verts.offsets[r] = vi;
-      }
-    }
-  });
-}
-
-// Chains through every seed edge, as trace_seeds over all of them. Ranges of seeds trace at once,
-// each as if the seeds before it had claimed nothing; a range's chain then either misses every
-// edge of the ranges before it (the sequential order traces it the same) or lies wholly on them
-// (a chain met again from its other end seed, which the sequential order skips). A chain that
-// half overlaps (two chains merging, or one cut short) would need the order: from that range
-// on, the seeds are traced again in order, on one thread.
-template <class Next>
-Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
-                    const Next& next, const LoadOptions& par) {
-  const size_t ne = cx.num_edges();
-  const LoadOptions tp{std::min(par.threads, 8), par.grain};  // one edge table per range
-  const auto nr = static_cast<size_t>(detail::range_count(ne, tp));
-  std::vector<std::vector<uint8_t>> used(nr);
-  if (nr == 1) {
-    Chains out;
-    used[0].assign(ne, 0);
-    trace_seeds(cx, seed, 0, ne, stop_vert, used[0], next, out);
-    return out;
-  }
-  std::vector<Chains> parts(nr);
-  detail::parallel_ranges(ne, tp, [&](size_t b, size_t e, int k) {
-    const auto ku = static_cast<size_t>(k);
-    used[ku].assign(ne, 0);
-    trace_seeds(cx, seed, b, e, stop_vert, used[ku], next, parts[ku]);
-  });
-  std::vector<std::vector<uint8_t>> keep(nr);
-  std::vector<uint8_t> settled(nr, 1);
-  detail::parallel_ranges(nr, LoadOptions{tp.threads, 1}, [&](size_t b, size_t e, int) {
-    for (size_t k = b; k < e; ++k) settled[k] = settle_range(parts, used, k, keep[k]);
-  });
-  const size_t good = static_cast<size_t>(std::find(settled.begin(), settled.end(), uint8_t{0}) - settled.begin());
-  parts.resize(good);
-  keep.resize(good);
-  Chains out;
-  gather_chains(parts, keep, par, out);
-  if (good < nr) {  // the rest in order, after the edges of the settled ranges
-    for (size_t j = 1; j < good; ++j)
-      for (size_t x = 0; x < ne; ++x) used[0][x] |= used[j][x];
-    trace_seeds(cx, seed, ne * good / nr, ne, stop_vert, used[0], next, out);
   }
   return out;
 }
@@ -274,12 +181,11 @@ int32_t straight_next(const Region& r, int32_t v, int32_t e, const Allow& allow)
 }
 
 // Chains of the VSG rule: the unique straight continuation, when it has the same valence.
-Chains valence_chains(const Region& r, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
-                      const LoadOptions& par) {
+Chains valence_chains(const Region& r, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert) {
   return trace_chains(r.cx, seed, stop_vert, [&](int32_t v, int32_t e) {
     const int32_t f = straight_next(r, v, e, [](int32_t) { return true; });
     return f >= 0 && r.valence(f) == r.valence(e) ? f : -1;
-  }, par);
+  });
 }
 
 std::vector<uint8_t> chain_end_flags(const CellComplex& cx, const Chains& ch) {
@@ -772,7 +678,7 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
       for (int32_t e : cx.vert_edges[v]) seeds[e] = on(e);
   return trace_chains(cx, seeds, singular, [&](int32_t v, int32_t e) {
     return straight_next(r, v, e, [&](int32_t f) { return on(f); });
-  }, par);
+  });
 }
 
 void fill_complete(const Region& r, const Chains& ch, const LoadOptions& par, VsgWireframe& w) {
@@ -839,7 +745,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   w.vsg_edges = std::count(w.edge_vsg.begin(), w.edge_vsg.end(), uint8_t{1});
 
   // VSG: chains of seeds, broken only where the continuation is not unique or changes valence.
-  Chains vsg = valence_chains(r, w.edge_vsg, std::vector<uint8_t>(nv, 0), par);
+  Chains vsg = valence_chains(r, w.edge_vsg, std::vector<uint8_t>(nv, 0));
   add_closed(cx, w.edge_vsg, vsg);
   w.vsg_chain_edges = vsg.edges;
   w.vsg_chains = static_cast<int64_t>(vsg.edges.rows());
@@ -857,7 +763,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   std::vector<uint8_t> seeds(ne, 0);
   for (int32_t v : w.singular_vertices)
     for (int32_t e : cx.vert_edges[v]) seeds[e] = 1;
-  const Chains complete = valence_chains(r, seeds, w.vert_singular, par);
+  const Chains complete = valence_chains(r, seeds, w.vert_singular);
   fill_complete(r, complete, par, w);
 
   // Simplification.
