@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <utility>
 
+#include "concurrent_union_find.hpp"
 #include "parallel.hpp"
 #include "union_find.hpp"
 
@@ -208,47 +209,52 @@ std::vector<uint8_t> edge_flags(const CellComplex& cx, const Csr<int32_t>& rows)
 // marks none, so there only the boundary stops.
 // Crossing is symmetric (it depends on the edge and on the two faces alone), so the reachable
 // faces are the classes, under "crossed into each other", of the start faces: classes are joined
-// edge by edge in id order, which reads the complex in memory order instead of hopping from face
-// to face.
-std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& start) {
+// edge by edge, which reads the complex in memory order instead of hopping from face to face.
+// Which faces a class holds does not depend on the order of the unions, so ranges of edges
+// unite at once.
+std::vector<uint8_t> flood_faces(const Region& r, const std::vector<uint8_t>& start, const LoadOptions& par) {
   const CellComplex& cx = r.cx;
   const bool mesh_level = cx.level == Level::Mesh;
-  detail::UnionFind uf(cx.num_faces());
-  std::vector<int32_t> rest, next, queue;
-  for (size_t g = 0; g < cx.num_edges(); ++g) {
-    const int32_t e = static_cast<int32_t>(g);
-    if (cx.edge_faces.count(g) < 2 || r.mesh_boundary(e) || (mesh_level && r.mesh_singular(e))) continue;
-    // Classes of the faces around g under "share no cell": a search in the complement of the
-    // share-a-cell relation, each test either settling a face or charged to a sharing pair, so a
-    // fan of thousands of faces costs about as many tests as it has faces.
-    const auto fs = cx.edge_faces[g];
-    rest.assign(fs.begin() + 1, fs.end());
-    queue.assign(1, fs[0]);
-    for (size_t q = 0;; ++q) {
-      if (q == queue.size()) {
-        if (rest.empty()) break;
-        queue.push_back(rest.back());
-        rest.pop_back();
-      }
-      const int32_t f = queue[q];
-      next.clear();
-      for (int32_t h : rest) {
-        if (r.faces_share_cell(f, h)) {
-          next.push_back(h);
-        } else {
-          uf.unite(f, h);
-          queue.push_back(h);
+  detail::ConcurrentUnionFind uf(cx.num_faces(), par);
+  detail::parallel_ranges(cx.num_edges(), par, [&](size_t begin, size_t end, int) {
+    std::vector<int32_t> rest, next, queue;
+    for (size_t g = begin; g < end; ++g) {
+      const int32_t e = static_cast<int32_t>(g);
+      if (cx.edge_faces.count(g) < 2 || r.mesh_boundary(e) || (mesh_level && r.mesh_singular(e))) continue;
+      // Classes of the faces around g under "share no cell": a search in the complement of the
+      // share-a-cell relation, each test either settling a face or charged to a sharing pair, so a
+      // fan of thousands of faces costs about as many tests as it has faces.
+      const auto fs = cx.edge_faces[g];
+      rest.assign(fs.begin() + 1, fs.end());
+      queue.assign(1, fs[0]);
+      for (size_t q = 0;; ++q) {
+        if (q == queue.size()) {
+          if (rest.empty()) break;
+          queue.push_back(rest.back());
+          rest.pop_back();
         }
+        const int32_t f = queue[q];
+        next.clear();
+        for (int32_t h : rest) {
+          if (r.faces_share_cell(f, h)) {
+            next.push_back(h);
+          } else {
+            uf.unite(f, h);
+            queue.push_back(h);
+          }
+        }
+        rest.swap(next);
       }
-      rest.swap(next);
     }
-  }
+  });
   std::vector<uint8_t> root_seen(cx.num_faces(), 0);
   for (size_t e = 0; e < start.size(); ++e)
     if (start[e])
       for (int32_t f : cx.edge_faces[e]) root_seen[static_cast<size_t>(uf.find(f))] = 1;
   std::vector<uint8_t> seen(cx.num_faces(), 0);
-  for (size_t f = 0; f < seen.size(); ++f) seen[f] = root_seen[static_cast<size_t>(uf.find(static_cast<int32_t>(f)))];
+  detail::parallel_ranges(seen.size(), par, [&](size_t begin, size_t end, int) {
+    for (size_t f = begin; f < end; ++f) seen[f] = root_seen[static_cast<size_t>(uf.find(static_cast<int32_t>(f)))];
+  });
   return seen;
 }
 
@@ -627,7 +633,8 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
     if (open && cl.redundant_vert[vs.front()] && cl.redundant_vert[vs.back()]) cl.non_important[c] = 1;
     else stack.push_back(static_cast<int32_t>(c));
   }
-  cl.kept = reactivate(continuations(r, ch, ix, pt, parallel, cl.non_important, par), nc, stack);
+  const Csr<int32_t> nexts = continuations(r, ch, ix, pt, parallel, cl.non_important, par);
+  cl.kept = reactivate(nexts, nc, stack);
   cl.reactivated.assign(nc, 0);
   for (size_t c = 0; c < nc; ++c) {
     cl.reactivated[c] = cl.kept[c] && cl.non_important[c];
@@ -749,7 +756,8 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_vsg[v])
       for (int32_t e : cx.vert_edges[v]) start[e] = 1;
-  w.vert_singular = patch_singular_vertices(r, flood_faces(r, start), par);
+  const std::vector<uint8_t> flooded = flood_faces(r, start, par);
+  w.vert_singular = patch_singular_vertices(r, flooded, par);
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_singular[v]) w.singular_vertices.push_back(static_cast<int32_t>(v));
   std::vector<uint8_t> seeds(ne, 0);

@@ -4,18 +4,17 @@
 #include "hbc/vsg_wireframe.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <span>
 #include <utility>
 
+#include "concurrent_union_find.hpp"
 #include "parallel.hpp"
-#include "union_find.hpp"
 
 namespace hbc {
 
 namespace {
-
-using MinUnionFind = detail::UnionFind;  // root = lowest member: deterministic class ids
 
 // Rows [0, n) built by row(i, out, scratch) (appending row i's items to out.items), ranges of rows
 // in parallel, each into rows of its own with scratch room of its own, joined in order: the same
@@ -47,11 +46,14 @@ struct Index {
   Csr<int32_t> wire_points, point_wires;
 };
 
-Index index_points(const CellComplex& cx, const VsgWireframe& w) {
+Index index_points(const CellComplex& cx, const VsgWireframe& w, const LoadOptions& par) {
   Index ix;
   ix.edge_wire.assign(cx.num_edges(), -1);
-  for (size_t c = 0; c < w.size(); ++c)
-    for (int32_t e : w.edges[c]) ix.edge_wire[e] = static_cast<int32_t>(c);
+  // An edge lies on one chain at most: ranges of chains write disjoint entries.
+  detail::parallel_ranges(w.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c)
+      for (int32_t x : w.edges[c]) ix.edge_wire[static_cast<size_t>(x)] = static_cast<int32_t>(c);
+  });
   int32_t max_id = -1;
   for (int32_t p : w.polylines.items) max_id = std::max(max_id, p);
   // Points numbered in increasing mesh id: flags over the id range, no sort of every point.
@@ -60,14 +62,12 @@ Index index_points(const CellComplex& cx, const VsgWireframe& w) {
   int32_t n = 0;
   for (int32_t& id : point_of_mesh)
     if (id == 0) id = n++;
-  std::vector<int32_t> buf;
-  ix.wire_points.reserve(w.size(), w.polylines.items.size());
-  for (size_t c = 0; c < w.size(); ++c) {
+  ix.wire_points = parallel_rows_of<int32_t, std::vector<int32_t>>(w.size(), par, [&](size_t c, Csr<int32_t>& out, std::vector<int32_t>& buf) {
     buf.clear();
     for (int32_t p : w.polylines[c]) buf.push_back(point_of_mesh[p]);
     if (buf.size() > 2 || (buf.size() == 2 && buf[1] <= buf[0])) sort_unique(buf);
-    ix.wire_points.push_row(buf.begin(), buf.end());
-  }
+    out.items.insert(out.items.end(), buf.begin(), buf.end());
+  });
   ix.point_wires = transpose(ix.wire_points, static_cast<size_t>(n));
   return ix;
 }
@@ -102,45 +102,58 @@ void chain_opacity(const CellComplex& cx, const VsgWireframe& wf, const std::vec
   }
 }
 
+// Hops from the vertices at distance 0 in `dv` (kInf elsewhere), up to `horizon` (farther ones
+// keep kInf). Distances beyond opacity_hops all give the floor, so the search stops there; below
+// it they are small integers, so the vertices are settled one distance at a time: a sweep in
+// vertex order per distance reads the complex in memory order, where a queue would hop across
+// it. Shortest distances do not depend on the order vertices are settled in, so ranges of
+// vertices sweep at once, lowering distances by atomic minima; an edge of no segment reaches
+// vertices at the current distance, which one more sweep of that distance settles.
+void hop_distances(const CellComplex& cx, int32_t horizon, const LoadOptions& par, std::vector<int32_t>& dv) {
+  const size_t nv = cx.num_vertices();
+  const auto nr = static_cast<size_t>(detail::range_count(nv, par));
+  int32_t reach = 0;  // the farthest distance given so far: no sweep past it
+  for (int32_t d = 0; d <= horizon && d <= reach; ++d) {
+    for (bool again = true; again;) {
+      std::vector<int32_t> reached(nr, 0);
+      std::vector<uint8_t> same(nr, 0);
+      detail::parallel_ranges(nv, par, [&](size_t b, size_t end, int k) {
+        for (size_t v = b; v < end; ++v) {
+          if (std::atomic_ref<int32_t>(dv[v]).load(std::memory_order_relaxed) != d) continue;
+          for (int32_t e : cx.vert_edges[v]) {
+            const int32_t u = cx.other_vertex(e, static_cast<int32_t>(v));
+            const int32_t nd = d + cx.edge_points.count(e) - 1;
+            if (nd > horizon) continue;
+            std::atomic_ref<int32_t> du(dv[static_cast<size_t>(u)]);
+            int32_t old = du.load(std::memory_order_relaxed);
+            while (nd < old && !du.compare_exchange_weak(old, nd, std::memory_order_relaxed)) {
+            }
+            if (nd < old) {
+              reached[static_cast<size_t>(k)] = std::max(reached[static_cast<size_t>(k)], nd);
+              same[static_cast<size_t>(k)] |= nd == d;
+            }
+          }
+        }
+      });
+      reach = std::max(reach, *std::max_element(reached.begin(), reached.end()));
+      again = std::find(same.begin(), same.end(), uint8_t{1}) != same.end();
+    }
+  }
+}
+
 void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWireframe& wf, const LoadOptions& par,
              WireframeStyle& st) {
   const size_t nv = cx.num_vertices(), ne = cx.num_edges();
   constexpr int32_t kInf = std::numeric_limits<int32_t>::max() / 4;
   std::vector<uint8_t> source(ne, 0);
   std::vector<int32_t> dv(nv, kInf);
-  // Distances beyond opacity_hops all give the floor, so the search stops there; below it they
-  // are small integers, so the vertices are settled one distance at a time (shortest distances
-  // do not depend on the order vertices are settled in): a sweep in vertex order per distance
-  // reads the complex in memory order, where a queue would hop across it.
   const int32_t horizon = std::max(opt.opacity_hops, 1);
   for (size_t e = 0; e < ne; ++e) {
     source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
     if (!source[e] || cx.closed(e)) continue;
     for (int32_t v : cx.edge_verts[e]) dv[v] = 0;
   }
-  std::vector<int32_t> same;  // reached at the current distance (an edge of no segment): settled now
-  int32_t reach = 0;          // the farthest distance given so far: no sweep past it
-  auto settle = [&](int32_t v, int32_t d) {
-    for (int32_t e : cx.vert_edges[v]) {
-      const int32_t u = cx.other_vertex(e, v);
-      const int32_t nd = d + cx.edge_points.count(e) - 1;
-      if (nd < dv[u] && nd <= horizon) {
-        dv[u] = nd;
-        reach = std::max(reach, nd);
-        if (nd == d) same.push_back(u);
-      }
-    }
-  };
-  for (int32_t d = 0; d <= horizon && d <= reach; ++d)
-    for (size_t v = 0; v < nv; ++v) {
-      if (dv[v] != d) continue;
-      settle(static_cast<int32_t>(v), d);
-      while (!same.empty()) {
-        const int32_t u = same.back();
-        same.pop_back();
-        if (static_cast<size_t>(u) < v) settle(u, d);  // later ones are met by the sweep
-      }
-    }
+  hop_distances(cx, horizon, par, dv);
   const double floor = std::clamp(opt.opacity_floor, 0.0, 1.0);
   auto value = [&](int32_t d) {
     return static_cast<float>(std::max(floor, 1.0 - (1.0 - floor) * double(d) / double(horizon)));
@@ -170,7 +183,27 @@ struct ClassPoints {
   }
 };
 
-ClassPoints class_points(const Csr<int32_t>& class_wires, const Index& ix, const LoadOptions& par) {
+// Row c: the distinct points of class c when it has several wires (else empty), in increasing
+// order. Each point lists such classes among its wires once, and the transpose then lists every
+// class's points in point order: a linear pass instead of a sort of each class's points (a class
+// along a sheet of a split grid gathers tens of thousands).
+Csr<int32_t> merged_points(const Csr<int32_t>& class_wires, const std::vector<int32_t>& wire_class, const Index& ix,
+                           const LoadOptions& par) {
+  const Csr<int32_t> point_classes = parallel_rows_of<int32_t, std::vector<int32_t>>(
+      ix.point_wires.rows(), par, [&](size_t p, Csr<int32_t>& out, std::vector<int32_t>& buf) {
+        buf.clear();
+        for (int32_t w : ix.point_wires[p]) {
+          const int32_t c = wire_class[static_cast<size_t>(w)];
+          if (class_wires.count(static_cast<size_t>(c)) > 1) buf.push_back(c);
+        }
+        sort_unique(buf);
+        out.items.insert(out.items.end(), buf.begin(), buf.end());
+      });
+  return transpose(point_classes, class_wires.rows());
+}
+
+ClassPoints class_points(const Csr<int32_t>& class_wires, const std::vector<int32_t>& wire_class, const Index& ix,
+                         const LoadOptions& par) {
   ClassPoints cp{class_wires, ix, {}, {}, {}, 0};
   const size_t np = ix.point_wires.rows();
   std::vector<int32_t> crowded_id(np, -1);
@@ -181,15 +214,7 @@ ClassPoints class_points(const Csr<int32_t>& class_wires, const Index& ix, const
     }
   cp.crowded_points = cp.crowded_point.size();
   const size_t nc = class_wires.rows();
-  cp.merged = parallel_rows_of<int32_t, std::vector<int32_t>>(nc, par, [&](size_t c, Csr<int32_t>& out, std::vector<int32_t>& buf) {
-    const auto ws = class_wires[c];
-    if (ws.size() <= 1) return;  // one wire's points are sorted and distinct already
-    buf.clear();
-    for (int32_t w : ws)
-      for (int32_t p : ix.wire_points[w]) buf.push_back(p);
-    sort_unique(buf);
-    out.items.insert(out.items.end(), buf.begin(), buf.end());
-  });
+  cp.merged = merged_points(class_wires, wire_class, ix, par);
   cp.crowded = parallel_rows_of<int32_t, char>(nc, par, [&](size_t c, Csr<int32_t>& out, char&) {
     for (int32_t p : cp.points(c))
       if (crowded_id[static_cast<size_t>(p)] >= 0) out.items.push_back(crowded_id[static_cast<size_t>(p)]);
@@ -222,6 +247,42 @@ Csr<std::array<int32_t, 2>> parallel_counts(const CellComplex& cx, const Index& 
   });
 }
 
+// Row c, for a class root c: the classes b < c (the ones coloured before c) that c's colour
+// avoids, each once (see colours()); other rows are empty. Which they are does not depend on the
+// colours, so ranges of classes find them in parallel, each with a stamp table of its own, and
+// only the choice of colours itself stays in class order.
+Csr<int32_t> earlier_neighbours(const ClassPoints& cp, const Index& ix, const std::vector<int32_t>& wire_class,
+                                const LoadOptions& par) {
+  const size_t nw = wire_class.size();
+  std::vector<Csr<int32_t>> parts(static_cast<size_t>(detail::range_count(nw, par)));
+  detail::parallel_ranges(nw, par, [&](size_t begin, size_t end, int k) {
+    Csr<int32_t>& out = parts[static_cast<size_t>(k)];
+    out.offsets.reserve(end - begin + 1);
+    std::vector<int32_t> stamp(nw, -1);
+    for (size_t c = begin; c < end; ++c) {
+      const auto ci = static_cast<int32_t>(c);
+      if (wire_class[c] == ci) {
+        const auto crowded = cp.crowded[c];
+        const bool by_count = crowded.size() == 1;  // more crowded points: visited, to count each class once
+        for (int32_t p : cp.points(c)) {
+          if (by_count && p == cp.crowded_point[static_cast<size_t>(crowded[0])]) continue;
+          for (int32_t w2 : ix.point_wires[static_cast<size_t>(p)]) {
+            const int32_t b = wire_class[static_cast<size_t>(w2)];
+            if (b >= ci || stamp[static_cast<size_t>(b)] == ci) continue;
+            stamp[static_cast<size_t>(b)] = ci;
+            // A class at the crowded point is in its count already.
+            const auto bc = cp.crowded[static_cast<size_t>(b)];
+            if (by_count && std::binary_search(bc.begin(), bc.end(), crowded[0])) continue;
+            out.items.push_back(b);
+          }
+        }
+      }
+      out.offsets.push_back(static_cast<int32_t>(out.items.size()));
+    }
+  });
+  return concat(std::move(parts));
+}
+
 void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
              const LoadOptions& threads, WireframeStyle& st) {
   const size_t nw = wf.size();
@@ -231,49 +292,44 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
   // Row w of `counts` holds (w', |E_w|) by increasing w', so the reverse count of a pair is
   // looked up in the short row of w', not searched for among all counts.
   const Csr<std::array<int32_t, 2>> counts = parallel_counts(cx, ix, wf, threads);
-  MinUnionFind uf(nw);
-  for (size_t a = 0; a < nw; ++a)
-    for (const auto& [b, na] : counts[a]) {
-      if (static_cast<int32_t>(a) > b) continue;
-      const auto back = counts[static_cast<size_t>(b)];
-      auto it = std::lower_bound(back.begin(), back.end(), std::array<int32_t, 2>{static_cast<int32_t>(a), 0});
-      if (it == back.end() || (*it)[0] != static_cast<int32_t>(a)) continue;
-      const double fa = double(na) / double(wf.edges.count(a));
-      const double fb = double((*it)[1]) / double(wf.edges.count(b));
-      if (std::min(fa, fb) >= opt.rho) uf.unite(static_cast<int32_t>(a), b);
-    }
+  // Classes are the same whatever the order of the unions, and a class's root is its lowest
+  // wire either way: ranges of wires unite at once.
+  detail::ConcurrentUnionFind uf(nw, threads);
+  detail::parallel_ranges(nw, threads, [&](size_t begin, size_t end, int) {
+    for (size_t a = begin; a < end; ++a)
+      for (const auto& [b, na] : counts[a]) {
+        if (static_cast<int32_t>(a) > b) continue;
+        const auto back = counts[static_cast<size_t>(b)];
+        auto it = std::lower_bound(back.begin(), back.end(), std::array<int32_t, 2>{static_cast<int32_t>(a), 0});
+        if (it == back.end() || (*it)[0] != static_cast<int32_t>(a)) continue;
+        const double fa = double(na) / double(wf.edges.count(a));
+        const double fb = double((*it)[1]) / double(wf.edges.count(b));
+        if (std::min(fa, fb) >= opt.rho) uf.unite(static_cast<int32_t>(a), b);
+      }
+  });
   st.color_class.resize(nw);
-  for (size_t w = 0; w < nw; ++w) st.color_class[w] = uf.find(static_cast<int32_t>(w));
+  detail::parallel_ranges(nw, threads, [&](size_t begin, size_t end, int) {
+    for (size_t w = begin; w < end; ++w) st.color_class[w] = uf.find(static_cast<int32_t>(w));
+  });
   // Class graph: classes of wire edges sharing a point; each class takes the first colour none of
-  // its coloured neighbours holds, else the one fewest of them hold. Neighbours are visited on the
-  // fly (a stamp per class counts each once) instead of listed as pairs, which a point where
-  // thousands of wires meet (a fan of cells around an edge) would make quadratic in memory. Such
-  // a crowded point keeps a count of its coloured classes per colour instead of being visited
-  // by each of its classes, which would make the colouring quadratic in time.
+  // its coloured neighbours holds, else the one fewest of them hold. Only the neighbours coloured
+  // before a class are listed (each pair once), and a point where thousands of wires meet (a fan
+  // of cells around an edge) is not visited through it: such a crowded point keeps a count of its
+  // coloured classes per colour instead, which keeps the lists (and the time) from growing with
+  // the square of a fan.
   const Csr<int32_t> class_wires = group_by(st.color_class, nw);
-  const ClassPoints cp = class_points(class_wires, ix, threads);
+  const ClassPoints cp = class_points(class_wires, st.color_class, ix, threads);
+  const Csr<int32_t> earlier = earlier_neighbours(cp, ix, st.color_class, threads);
   const int32_t palette = std::max(opt.palette_size, 1);
-  std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette)), stamp(nw, -1);
+  std::vector<int32_t> class_color(nw, -1), used(static_cast<size_t>(palette));
   std::vector<int32_t> crowded_count(cp.crowded_points * static_cast<size_t>(palette), 0);
   for (size_t c = 0; c < nw; ++c) {
     if (st.color_class[c] != static_cast<int32_t>(c)) continue;
     std::fill(used.begin(), used.end(), 0);
     const auto crowded = cp.crowded[c];
-    const bool by_count = crowded.size() == 1;  // more crowded points: visited, to count each class once
-    if (by_count)
+    if (crowded.size() == 1)
       for (int32_t k = 0; k < palette; ++k) used[static_cast<size_t>(k)] = crowded_count[static_cast<size_t>(crowded[0] * palette + k)];
-    stamp[c] = static_cast<int32_t>(c);
-    for (int32_t p : cp.points(c)) {
-      if (by_count && p == cp.crowded_point[static_cast<size_t>(crowded[0])]) continue;
-      for (int32_t w2 : ix.point_wires[p]) {
-        const int32_t b = st.color_class[w2];
-        if (stamp[b] == static_cast<int32_t>(c)) continue;
-        stamp[b] = static_cast<int32_t>(c);
-        // A class at the crowded point is in its count already.
-        if (by_count && std::binary_search(cp.crowded[b].begin(), cp.crowded[b].end(), crowded[0])) continue;
-        if (class_color[b] >= 0) ++used[class_color[b]];
-      }
-    }
+    for (int32_t b : earlier[c]) ++used[static_cast<size_t>(class_color[static_cast<size_t>(b)])];
     // The first free colour; with none free, the one fewest neighbours hold.
     class_color[c] = static_cast<int32_t>(std::min_element(used.begin(), used.end()) - used.begin());
     for (int32_t q : crowded) ++crowded_count[static_cast<size_t>(q * palette + class_color[c])];
@@ -289,7 +345,7 @@ WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w
   const LoadOptions par = resolved(threads);
   WireframeStyle st;
   opacity(complex, options, w, par, st);
-  const Index ix = index_points(complex, w);
+  const Index ix = index_points(complex, w, par);
   colours(complex, options, ix, w, par, st);
   return st;
 }
