@@ -39,12 +39,12 @@ def test_no_leak_over_100_load_cycles(shared_data_dir, tmp_path, resident_growth
     assert growth < 4e6, f"resident memory grew by {growth / 1e6:.1f} MB over 100 cycles"
 
 
-def test_load_releases_the_gil(tmp_path, hbc_cli, longest_stall):
-    # The shared meshes now load in 20-30 ms, too quick to tell a held GIL from the interpreter's
-    # 5 ms switches: a generated 60^3 grid (216,000 hexes, 14 MB) takes about 0.1 s a load.
+def test_load_releases_the_gil(tmp_path, hbc_cli, main_thread_share):
+    # The shared meshes now load in 20-30 ms, too quick for the main thread's CPU share to mean
+    # much next to starting and joining the thread: a generated 60^3 grid (216,000 hexes, 14 MB) takes about 0.1 s a load.
     path = tmp_path / "grid60.mesh"
     subprocess.run([hbc_cli, "generate", "grid", "--size", "60", "60", "60", "-o", str(path)],
                    check=True, capture_output=True)
-    stall, elapsed = longest_stall(lambda: hbc.load(path))
+    share, elapsed = main_thread_share(lambda: hbc.load(path))
     assert elapsed > 0.1, "the loads were too quick to tell"
-    assert stall < 0.5 * elapsed / 3, (stall, elapsed)
+    assert share > 0.15, (share, elapsed)

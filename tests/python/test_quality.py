@@ -133,13 +133,13 @@ def test_cli_json_per_type_on_a_split_grid(hbc_cli, tmp_path):
     assert doc["inverted"] == 0
 
 
-def test_quality_releases_the_gil(hbc_cli, tmp_path, longest_stall):
+def test_quality_releases_the_gil(hbc_cli, tmp_path, main_thread_share):
     m = hbc.load(generate(hbc_cli, tmp_path, "grid", "--size", "60", "60", "60"))
 
     def work():
         hbc.cell_quality(m)
         hbc.cell_depth(m)
 
-    stall, elapsed = longest_stall(work)
+    share, elapsed = main_thread_share(work)
     assert elapsed > 0.1, "the calls were too quick to tell"
-    assert stall < 0.5 * elapsed / 3, (stall, elapsed)
+    assert share > 0.15, (share, elapsed)
