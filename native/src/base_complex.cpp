@@ -32,7 +32,9 @@ using detail::append_rows;
 using detail::ConcurrentUnionFind;
 using detail::number_classes_in_place;
 using detail::parallel_ranges;
+using detail::assign_touched;
 using detail::resize_huge;
+using detail::resize_touched;
 using detail::parallel_rows;
 using detail::range_count;
 using detail::RowCollector;
@@ -97,7 +99,7 @@ namespace {
 class HexFaceTable {
  public:
   HexFaceTable(const Mesh& m, const LoadOptions& par) {
-    resize_huge(other_, m.num_cells());
+    resize_touched(other_, m.num_cells(), par);
     parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
       for (size_t c = b; c < e; ++c)
         if (m.is_hex(c)) build(m, c);
@@ -193,7 +195,7 @@ void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uin
 // The seeds: boundary faces separate but grow no surface; faces at a structural edge grow one.
 std::vector<uint8_t> separation_seeds(const Mesh& m, const SingularityGraph& g, const LoadOptions& par) {
   std::vector<uint8_t> state;
-  resize_huge(state, m.num_faces());
+  resize_touched(state, m.num_faces(), par);
   parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f) {
       const auto fe = m.face_edges(f);
@@ -268,14 +270,15 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   auto clear = [](std::vector<uint8_t>& v, int32_t i) {
     std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(0, std::memory_order_relaxed);
   };
-  resize_huge(bc.edge_complex, ne, uint8_t{1});
+  resize_touched(bc.edge_complex, ne, par, uint8_t{1});
   parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f)
       if (!bc.face_separation[f])
         for (int32_t x : m.face_edges(f)) clear(bc.edge_complex, x);
   });
-  std::vector<uint8_t> no_edge(nv, 1);
-  bc.vert_corner.assign(nv, 1);
+  std::vector<uint8_t> no_edge;
+  assign_touched(no_edge, nv, uint8_t{1}, par);
+  assign_touched(bc.vert_corner, nv, uint8_t{1}, par);
   parallel_ranges(ne, par, [&](size_t b, size_t e, int) {
     for (size_t x = b; x < e; ++x)
       for (int32_t v : m.edge_verts[x]) {
@@ -288,7 +291,7 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
     if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
   }
   chain_edges(m, bc.edge_complex, {}, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
-  bc.edge_curve.assign(ne, -1);
+  assign_touched(bc.edge_curve, ne, int32_t{-1}, par);
   for (size_t k = 0; k < bc.curve_edges.rows(); ++k)
     for (int32_t e : bc.curve_edges[k]) bc.edge_curve[e] = static_cast<int32_t>(k);
 }
@@ -312,7 +315,7 @@ void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table, con
     }
   });
   number_classes_in_place(uf, m.num_faces(), par, [&](size_t f) { return sep[f] != 0; }, bc.face_patch, bc.patch_faces);
-  bc.patch_components.resize(bc.patch_faces.rows());
+  resize_touched(bc.patch_components, bc.patch_faces.rows(), par);
   parallel_ranges(bc.patch_faces.rows(), par, [&](size_t b, size_t e, int) {
     for (size_t p = b; p < e; ++p) {
       const auto fc = m.face_cells[bc.patch_faces[p][0]];

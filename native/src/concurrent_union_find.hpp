@@ -17,7 +17,7 @@ namespace hbc::detail {
 class ConcurrentUnionFind {
  public:
   ConcurrentUnionFind(size_t n, const LoadOptions& par) {
-    resize_huge(parent_, n);
+    resize_touched(parent_, n, par);  // the pages faulted in by every thread, not by resize alone
     parallel_ranges(n, par, [&](size_t b, size_t e, int) { std::iota(parent_.begin() + b, parent_.begin() + e, static_cast<int32_t>(b)); });
   }
   int32_t find(int32_t x) {
