@@ -30,9 +30,11 @@ namespace {
 
 using detail::append_rows;
 using detail::ConcurrentUnionFind;
-using detail::number_classes;
+using detail::number_classes_in_place;
 using detail::parallel_ranges;
+using detail::assign_touched;
 using detail::resize_huge;
+using detail::resize_touched;
 using detail::parallel_rows;
 using detail::range_count;
 using detail::RowCollector;
@@ -97,7 +99,7 @@ namespace {
 class HexFaceTable {
  public:
   HexFaceTable(const Mesh& m, const LoadOptions& par) {
-    resize_huge(other_, m.num_cells());
+    resize_touched(other_, m.num_cells(), par);
     parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
       for (size_t c = b; c < e; ++c)
         if (m.is_hex(c)) build(m, c);
@@ -193,7 +195,7 @@ void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uin
 // The seeds: boundary faces separate but grow no surface; faces at a structural edge grow one.
 std::vector<uint8_t> separation_seeds(const Mesh& m, const SingularityGraph& g, const LoadOptions& par) {
   std::vector<uint8_t> state;
-  resize_huge(state, m.num_faces());
+  resize_touched(state, m.num_faces(), par);
   parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f) {
       const auto fe = m.face_edges(f);
@@ -256,7 +258,7 @@ void find_components(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
     for (size_t f = b; f < e; ++f)
       if (!sep[f] && m.face_cells[f][1] >= 0) uf.unite(m.face_cells[f][0], m.face_cells[f][1]);
   });
-  number_classes(uf, m.num_cells(), par, [](size_t) { return true; }, bc.cell_component, bc.component_cells);
+  number_classes_in_place(uf, m.num_cells(), par, [](size_t) { return true; }, bc.cell_component, bc.component_cells);
 }
 
 // Curves: chains of complex edges (every face around them separates) between corners (vertices
@@ -268,14 +270,15 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   auto clear = [](std::vector<uint8_t>& v, int32_t i) {
     std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(0, std::memory_order_relaxed);
   };
-  resize_huge(bc.edge_complex, ne, uint8_t{1});
+  resize_touched(bc.edge_complex, ne, par, uint8_t{1});
   parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f)
       if (!bc.face_separation[f])
         for (int32_t x : m.face_edges(f)) clear(bc.edge_complex, x);
   });
-  std::vector<uint8_t> no_edge(nv, 1);
-  bc.vert_corner.assign(nv, 1);
+  std::vector<uint8_t> no_edge;
+  assign_touched(no_edge, nv, uint8_t{1}, par);
+  assign_touched(bc.vert_corner, nv, uint8_t{1}, par);
   parallel_ranges(ne, par, [&](size_t b, size_t e, int) {
     for (size_t x = b; x < e; ++x)
       for (int32_t v : m.edge_verts[x]) {
@@ -288,7 +291,7 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
     if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
   }
   chain_edges(m, bc.edge_complex, {}, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
-  bc.edge_curve.assign(ne, -1);
+  assign_touched(bc.edge_curve, ne, int32_t{-1}, par);
   for (size_t k = 0; k < bc.curve_edges.rows(); ++k)
     for (int32_t e : bc.curve_edges[k]) bc.edge_curve[e] = static_cast<int32_t>(k);
 }
@@ -311,8 +314,8 @@ void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table, con
       }
     }
   });
-  number_classes(uf, m.num_faces(), par, [&](size_t f) { return sep[f] != 0; }, bc.face_patch, bc.patch_faces);
-  bc.patch_components.resize(bc.patch_faces.rows());
+  number_classes_in_place(uf, m.num_faces(), par, [&](size_t f) { return sep[f] != 0; }, bc.face_patch, bc.patch_faces);
+  resize_touched(bc.patch_components, bc.patch_faces.rows(), par);
   parallel_ranges(bc.patch_faces.rows(), par, [&](size_t b, size_t e, int) {
     for (size_t p = b; p < e; ++p) {
       const auto fc = m.face_cells[bc.patch_faces[p][0]];
@@ -380,56 +383,67 @@ void find_self_adjacent_faces(const Mesh& m, BaseComplex& bc) {
   }
 }
 
-// The incidence rows of components first..last-1: adjacent components, patches, curves, corners.
-void component_rows(const Mesh& m, const BaseComplex& bc, size_t first, size_t last,
-                    std::array<Csr<int32_t>*, 4> out) {
-  RowCollector by_component(bc.component_cells.rows()), by_patch(bc.patch_faces.rows()),
-      by_curve(bc.curve_edges.rows()), by_vertex(m.num_vertices());
-  // Cubes dominate: room for 6 neighbours, 6 patches, 12 curves and 8 corners per component.
-  const size_t n = last - first;
-  out[0]->reserve(n, 6 * n);
-  out[1]->reserve(n, 6 * n);
-  out[2]->reserve(n, 12 * n);
-  out[3]->reserve(n, 8 * n);
-  for (size_t k = first; k < last; ++k) {
-    by_component.begin();
-    by_patch.begin();
-    by_curve.begin();
-    by_vertex.begin();
-    // Every face around a curve edge separates, and so does every face at a corner: a cell's
-    // curves and corners lie on its separation faces, the only faces looked at.
-    for (int32_t c : bc.component_cells[k])
-      for (int32_t f : m.cell_faces[c]) {
-        if (!bc.face_separation[f]) continue;
-        by_patch.add(bc.face_patch[f]);
-        const auto fc = m.face_cells[f];
-        const int32_t other = fc[0] == c ? fc[1] : fc[0];
-        if (other >= 0 && bc.cell_component[other] != static_cast<int32_t>(k)) by_component.add(bc.cell_component[other]);
-        for (int32_t e : m.face_edges(static_cast<size_t>(f)))
-          if (bc.edge_curve[e] >= 0) by_curve.add(bc.edge_curve[e]);
-        for (int32_t v : m.face_verts[static_cast<size_t>(f)])
-          if (bc.vert_corner[v]) by_vertex.add(v);
-      }
-    by_component.end(*out[0]);
-    by_patch.end(*out[1]);
-    by_curve.end(*out[2]);
-    by_vertex.end(*out[3]);
+// Per component, its patches: patch_components transposed (rows in increasing patch id). Every
+// face of a patch has the patch's components on its two sides: faces join across an edge that is
+// not complex, hence Regular, whose two other faces (each the straight continuation of the other,
+// and separation faces are closed under it) then do not separate and join the cells on each side.
+void component_patch_rows(BaseComplex& bc) {
+  Csr<int32_t>& out = bc.component_patches;
+  out.offsets.assign(bc.component_cells.rows() + 1, 0);
+  for (const auto& pc : bc.patch_components) {
+    ++out.offsets[static_cast<size_t>(pc[0]) + 1];
+    if (pc[1] >= 0 && pc[1] != pc[0]) ++out.offsets[static_cast<size_t>(pc[1]) + 1];
+  }
+  for (size_t k = 1; k < out.offsets.size(); ++k) out.offsets[k] += out.offsets[k - 1];
+  resize_huge(out.items, static_cast<size_t>(out.offsets.back()));
+  std::vector<int32_t> at(out.offsets.begin(), out.offsets.end() - 1);
+  for (size_t p = 0; p < bc.patch_components.size(); ++p) {
+    const auto pc = bc.patch_components[p];
+    out.items[static_cast<size_t>(at[static_cast<size_t>(pc[0])]++)] = static_cast<int32_t>(p);
+    if (pc[1] >= 0 && pc[1] != pc[0]) out.items[static_cast<size_t>(at[static_cast<size_t>(pc[1])]++)] = static_cast<int32_t>(p);
   }
 }
 
-// Per component: the adjacent components, and its patches, curves and corners, in ranges of
-// components holding about as many cells each; range 0 writes straight into bc.
-void component_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
-  const size_t nr = static_cast<size_t>(range_count(std::max(bc.component_cells.rows(), bc.component_cells.items.size()), par));
-  std::vector<std::array<Csr<int32_t>, 4>> parts(nr);
-  const std::array<Csr<int32_t>*, 4> mine = {&bc.component_adjacency, &bc.component_patches, &bc.component_curves,
-                                             &bc.component_corners};
-  parallel_rows(bc.component_cells, par, [&](size_t first, size_t last, int r) {
+// The adjacent components, curves and corners of components first..last-1, gathered from their
+// patches: a component's separation faces are exactly the faces of its patches (see above).
+void component_rows(const BaseComplex& bc, size_t first, size_t last, std::array<Csr<int32_t>*, 3> out) {
+  RowCollector by_component(bc.component_cells.rows()), by_curve(bc.curve_edges.rows()),
+      by_vertex(bc.vert_corner.size());
+  // Cubes dominate: room for 6 neighbours, 12 curves and 8 corners per component.
+  const size_t n = last - first;
+  out[0]->reserve(n, 6 * n);
+  out[1]->reserve(n, 12 * n);
+  out[2]->reserve(n, 8 * n);
+  for (size_t k = first; k < last; ++k) {
+    by_component.begin();
+    by_curve.begin();
+    by_vertex.begin();
+    for (int32_t p : bc.component_patches[k]) {
+      for (int32_t j : bc.patch_components[static_cast<size_t>(p)])
+        if (j >= 0 && j != static_cast<int32_t>(k)) by_component.add(j);
+      for (int32_t c : bc.patch_curves[static_cast<size_t>(p)]) by_curve.add(c);
+      for (int32_t v : bc.patch_corners[static_cast<size_t>(p)]) by_vertex.add(v);
+    }
+    by_component.end(*out[0]);
+    by_curve.end(*out[1]);
+    by_vertex.end(*out[2]);
+  }
+}
+
+// Per component: its patches, then the adjacent components, curves and corners, in ranges of
+// components holding about as many patches each; range 0 writes straight into bc.
+void component_incidences(BaseComplex& bc, const LoadOptions& par) {
+  component_patch_rows(bc);
+  const Csr<int32_t>& rows = bc.component_patches;
+  const size_t nr = static_cast<size_t>(range_count(std::max(rows.rows(), rows.items.size()), par));
+  std::vector<std::array<Csr<int32_t>, 3>> parts(nr);
+  const std::array<Csr<int32_t>*, 3> mine = {&bc.component_adjacency, &bc.component_curves, &bc.component_corners};
+  parallel_rows(rows, par, [&](size_t first, size_t last, int r) {
     auto& p = parts[static_cast<size_t>(r)];
-    component_rows(m, bc, first, last, r == 0 ? mine : std::array<Csr<int32_t>*, 4>{&p[0], &p[1], &p[2], &p[3]});
+    component_rows(bc, first, last, r == 0 ? mine : std::array<Csr<int32_t>*, 3>{&p[0], &p[1], &p[2]});
   });
   // One array at a time, each part freed once appended: the stage's peak is here at 10^7 cells.
-  for (size_t i = 0; i < 4; ++i) append_parts(*mine[i], parts, i);
+  for (size_t i = 0; i < 3; ++i) append_parts(*mine[i], parts, i);
 }
 
 // The number of distinct ids in v (sorted on the way).
@@ -502,7 +516,7 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOpt
   }
   patch_incidences(m, bc, par);
   find_self_adjacent_faces(m, bc);
-  component_incidences(m, bc, par);
+  component_incidences(bc, par);
   classify_components(m, bc);
   return bc;
 }

@@ -17,7 +17,7 @@ namespace hbc::detail {
 class ConcurrentUnionFind {
  public:
   ConcurrentUnionFind(size_t n, const LoadOptions& par) {
-    resize_huge(parent_, n);
+    resize_touched(parent_, n, par);  // the pages faulted in by every thread, not by resize alone
     parallel_ranges(n, par, [&](size_t b, size_t e, int) { std::iota(parent_.begin() + b, parent_.begin() + e, static_cast<int32_t>(b)); });
   }
   int32_t find(int32_t x) {
@@ -73,6 +73,52 @@ void number_classes(ConcurrentUnionFind& uf, size_t n, const LoadOptions& par, T
       if (take(x) && label[x] < 0) label[x] = label[static_cast<size_t>(uf.find(static_cast<int32_t>(x)))];
   });
   // Members grouped by class (an extra last key gathers the elements not taken, then dropped).
+  const auto nclasses = static_cast<size_t>(roots[nr]);
+  groups = group_by_key(n, nclasses + 1, par, [&](size_t x) { return label[x] < 0 ? nclasses : static_cast<size_t>(label[x]); });
+  groups.offsets.pop_back();
+  groups.items.resize(static_cast<size_t>(groups.offsets.back()));
+}
+
+// number_classes with the labels written over the union-find's own table, which it hands over
+// to `label` (the union-find is spent): at 10^7 elements a second table of n ids is 40-120 MB of
+// fresh pages, which the kernel zeroes at under 1 GB/s here, and its passes are gone too.
+// The same labels and rows as number_classes.
+template <class Take>
+void number_classes_in_place(ConcurrentUnionFind& uf, size_t n, const LoadOptions& par, Take take,
+                             std::vector<int32_t>& label, Csr<int32_t>& groups) {
+  std::vector<int32_t>& p = uf.parents();
+  const size_t nr = static_cast<size_t>(range_count(n, par));
+  std::vector<int32_t> roots(nr + 1, 0);
+  // Every member linked straight to its root (a root is an ancestor: other threads' finds stay
+  // right), roots counted per range.
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    int32_t count = 0;
+    for (size_t x = b; x < e; ++x) {
+      if (!take(x)) continue;
+      const int32_t root = uf.find(static_cast<int32_t>(x));
+      if (root == static_cast<int32_t>(x)) ++count;
+      else std::atomic_ref<int32_t>(p[x]).store(root, std::memory_order_relaxed);
+    }
+    roots[static_cast<size_t>(r) + 1] = count;
+  });
+  for (size_t r = 0; r < nr; ++r) roots[r + 1] += roots[r];
+  // Then, each pass reading only entries no thread writes in it: roots get their class as
+  // -2 - class (elements not taken -1), members their root's class, roots theirs decoded.
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    int32_t next = roots[static_cast<size_t>(r)];
+    for (size_t x = b; x < e; ++x)
+      if (!take(x)) p[x] = -1;
+      else if (p[x] == static_cast<int32_t>(x)) p[x] = -2 - next++;
+  });
+  parallel_ranges(n, par, [&](size_t b, size_t e, int) {
+    for (size_t x = b; x < e; ++x)
+      if (p[x] >= 0) p[x] = -2 - p[static_cast<size_t>(p[x])];
+  });
+  parallel_ranges(n, par, [&](size_t b, size_t e, int) {
+    for (size_t x = b; x < e; ++x)
+      if (p[x] < -1) p[x] = -2 - p[x];
+  });
+  label = std::move(p);
   const auto nclasses = static_cast<size_t>(roots[nr]);
   groups = group_by_key(n, nclasses + 1, par, [&](size_t x) { return label[x] < 0 ? nclasses : static_cast<size_t>(label[x]); });
   groups.offsets.pop_back();

@@ -68,12 +68,43 @@ void expect_same_sheets(const Sheets& a, const Sheets& b) {
   }
 }
 
+// A component's neighbours, patches, curves and corners by their definition, from the separation
+// faces of its cells: the stage gathers them from its patches instead (a patch's faces all have the
+// patch's components on their sides).
+void expect_component_rows_from_faces(const Mesh& m, const BaseComplex& bc) {
+  auto same = [](std::span<const int32_t> row, const std::vector<int32_t>& want, const char* what, size_t k) {
+    EXPECT_EQ(std::vector<int32_t>(row.begin(), row.end()), want) << what << " of component " << k;
+  };
+  for (size_t k = 0; k < bc.num_components(); ++k) {
+    std::vector<int32_t> adjacent, patches, curves, corners;
+    for (int32_t c : bc.component_cells[k])
+      for (int32_t f : m.cell_faces[static_cast<size_t>(c)]) {
+        if (!bc.face_separation[static_cast<size_t>(f)]) continue;
+        patches.push_back(bc.face_patch[static_cast<size_t>(f)]);
+        const auto fc = m.face_cells[static_cast<size_t>(f)];
+        const int32_t other = fc[0] == c ? fc[1] : fc[0];
+        if (other >= 0 && bc.cell_component[static_cast<size_t>(other)] != static_cast<int32_t>(k))
+          adjacent.push_back(bc.cell_component[static_cast<size_t>(other)]);
+        for (int32_t e : m.face_edges(static_cast<size_t>(f)))
+          if (bc.edge_curve[static_cast<size_t>(e)] >= 0) curves.push_back(bc.edge_curve[static_cast<size_t>(e)]);
+        for (int32_t v : m.face_verts[static_cast<size_t>(f)])
+          if (bc.vert_corner[static_cast<size_t>(v)]) corners.push_back(v);
+      }
+    for (auto* v : {&adjacent, &patches, &curves, &corners}) sort_unique(*v);
+    same(bc.component_adjacency[k], adjacent, "neighbours", k);
+    same(bc.component_patches[k], patches, "patches", k);
+    same(bc.component_curves[k], curves, "curves", k);
+    same(bc.component_corners[k], corners, "corners", k);
+  }
+}
+
 // One thread against 2 and 3 (3 threads on 2 cores still run the ranges concurrently), at both
 // sheet levels.
 void expect_thread_independent(const Mesh& m) {
   const SingularityGraph g = singularity_graph(m);
   const LoadOptions one{1, 8};
   const BaseComplex bc = base_complex(m, g, one);
+  expect_component_rows_from_faces(m, bc);
   for (int threads : {2, 3}) {
     SCOPED_TRACE(threads);
     const LoadOptions par{threads, 8};
