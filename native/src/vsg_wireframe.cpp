@@ -684,6 +684,7 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
 void fill_complete(const Region& r, const Chains& ch, const LoadOptions& par, VsgWireframe& w) {
   const CellComplex& cx = r.cx;
   const size_t n = ch.edges.rows();
+  w.edges = ch.edges;
   w.polylines = polylines(cx, ch, par);
   w.ends.resize(n);
   w.kind.resize(n);
@@ -746,12 +747,12 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   // VSG: chains of seeds, broken only where the continuation is not unique or changes valence.
   Chains vsg = valence_chains(r, w.edge_vsg, std::vector<uint8_t>(nv, 0));
   add_closed(cx, w.edge_vsg, vsg);
+  w.vsg_chain_edges = vsg.edges;
   w.vsg_chains = static_cast<int64_t>(vsg.edges.rows());
-  w.vsg_chain_edges = std::move(vsg.edges);  // moved, not copied: millions of rows on a split grid
   w.vert_vsg = chain_end_flags(cx, vsg);
 
   // Complete wireframe: flood from the VSG's edges and from every edge at a VSG vertex.
-  std::vector<uint8_t> start = edge_flags(cx, w.vsg_chain_edges);
+  std::vector<uint8_t> start = edge_flags(cx, vsg.edges);
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_vsg[v])
       for (int32_t e : cx.vert_edges[v]) start[e] = 1;
@@ -762,7 +763,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   std::vector<uint8_t> seeds(ne, 0);
   for (int32_t v : w.singular_vertices)
     for (int32_t e : cx.vert_edges[v]) seeds[e] = 1;
-  Chains complete = valence_chains(r, seeds, w.vert_singular);
+  const Chains complete = valence_chains(r, seeds, w.vert_singular);
   fill_complete(r, complete, par, w);
 
   // Simplification.
@@ -774,11 +775,10 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   for (size_t v = 0; v < nv; ++v) w.vert_non_important[v] = !w.vert_singular[v] || cl.redundant_vert[v];
   w.non_important = cl.non_important;
   w.reactivated = cl.reactivated;
-  Chains simple = final_chains(r, complete, cl.kept, par);
-  w.edges = std::move(complete.edges);  // the complete chains' rows, read no more as chains
+  const Chains simple = final_chains(r, complete, cl.kept, par);
+  w.simplified_edges = simple.edges;
   w.simplified_polylines = polylines(cx, simple, par);
-  w.simplified_edges = std::move(simple.edges);
-  const std::vector<uint8_t> on = edge_flags(cx, w.simplified_edges);
+  const std::vector<uint8_t> on = edge_flags(cx, simple.edges);
   w.shown.assign(w.size(), 0);
   for (size_t c = 0; c < w.size(); ++c) {
     bool all = true;
