@@ -181,7 +181,21 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level, cons
     push_sorted_unique(buf, d.curve_blocks);
     push_sorted_unique(non_hex, d.curve_non_hex_cells);
   }
-  d.block_curves = transpose(d.curve_blocks, d.block_cells.rows());
+  if (level == Level::Complex) {
+    // The transpose of curve_blocks is each hex component's own curves (sorted, distinct), whose
+    // rows are copied in order instead of scattered curve by curve.
+    d.block_curves.reserve(d.block_component.size(), 0);
+    size_t n = 0;
+    for (int32_t k : d.block_component) n += bc.component_curves[k].size();
+    d.block_curves.items.reserve(n);
+    for (int32_t k : d.block_component) {
+      const auto row = bc.component_curves[k];
+      d.block_curves.items.insert(d.block_curves.items.end(), row.begin(), row.end());
+      d.block_curves.offsets.push_back(static_cast<int32_t>(d.block_curves.items.size()));
+    }
+  } else {
+    d.block_curves = transpose(d.curve_blocks, d.block_cells.rows());
+  }
   return d;
 }
 

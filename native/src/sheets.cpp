@@ -33,7 +33,6 @@ size_t Sheets::count(SheetType t) const {
 namespace {
 
 using detail::parallel_ranges;
-using detail::parallel_rows;
 using detail::range_count;
 
 bool contains(std::span<const int32_t> sorted, int32_t x) {
@@ -240,8 +239,54 @@ std::vector<int32_t> unmatched_vertices(const SheetDomain& d, const std::vector<
   return unmatched;
 }
 
-SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const BlockMask& in_blocks) {
+// A stamp per mesh vertex: the set of curves last seen at it, negated once a second end met it.
+struct EndStamps {
+  std::vector<int32_t> stamp;
+  int32_t current = 0;
+  explicit EndStamps(size_t nverts) : stamp(nverts, 0) {}
+};
+
+// The (end vertex, curve) pairs of sorted_curve_ends at the ends two or more curves share: the
+// only ones configurations are found at. Most sheets share none, and then nothing is sorted.
+CurveEnds shared_curve_ends(const SheetDomain& d, const std::vector<int32_t>& curves, EndStamps& t) {
+  const int32_t cur = ++t.current;
+  bool any = false;
+  auto see = [&](int32_t v) {
+    int32_t& s = t.stamp[static_cast<size_t>(v)];
+    if (s == cur || s == -cur) {
+      s = -cur;
+      any = true;
+    } else {
+      s = cur;
+    }
+  };
+  for (int32_t c : curves) {
+    const auto [a, b] = d.curve_ends[c];
+    if (a < 0) continue;
+    see(a);
+    if (b != a) see(b);
+  }
+  CurveEnds ends;
+  if (!any) return ends;
+  for (int32_t c : curves) {
+    const auto [a, b] = d.curve_ends[c];
+    if (a < 0) continue;
+    if (t.stamp[static_cast<size_t>(a)] == -cur) ends.push_back({a, c});
+    if (b != a && t.stamp[static_cast<size_t>(b)] == -cur) ends.push_back({b, c});
+  }
+  std::sort(ends.begin(), ends.end());
+  return ends;
+}
+
+// `stamps` (optional) spares the sort of every curve end when no end is shared.
+SheetClass classify(const SheetDomain& d, const std::vector<int32_t>& curves, const BlockMask& in_blocks,
+                    EndStamps* stamps = nullptr) {
   SheetClass k;
+  if (stamps) {
+    detect_configurations(d, shared_curve_ends(d, curves, *stamps), in_blocks, k);
+    if (k.type != SheetType::Perfect) k.unmatched_vertices = unmatched_vertices(d, curves, sorted_curve_ends(d, curves));
+    return k;
+  }
   const CurveEnds ends = sorted_curve_ends(d, curves);
   detect_configurations(d, ends, in_blocks, k);
   if (k.type != SheetType::Perfect) k.unmatched_vertices = unmatched_vertices(d, curves, ends);
@@ -279,11 +324,13 @@ std::vector<int32_t> join_parallel_edges(const Mesh& m, const SheetDomain& d, co
   return std::move(uf.parents());
 }
 
-// The parallel classes with dense ids, and the blocks and curves of each.
+// The parallel classes with dense ids, as (class, block) entries and the class of each curve.
 struct ParallelClasses {
   int32_t count = 0;
-  Csr<int32_t> blocks;  // count rows: blocks with a direction in the class, once, in order of their first such cell
-  Csr<int32_t> curves;  // count rows: curves of the class, increasing
+  // Per entry, one per (class, block) with a direction of the class in the block, in order of the
+  // block's first cell with it: its class and its block.
+  std::vector<int32_t> entry_class, entry_block;
+  std::vector<int32_t> curve_class;  // ncurve: class of the curve, -1 for none
 };
 
 namespace {
@@ -353,19 +400,16 @@ ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d, const Load
                              orthogonal_edge(m, static_cast<int32_t>(c), f)};
     for (int32_t r : reps) bc.add(d.cell_block[c], classes.number(r, pc.count), static_cast<int32_t>(c));
   }
-  // Each class's blocks in order of their first cell with it: the entries come in cell order and
-  // name each (class, block) once, so grouping them by class (stable) sorts them by (class, cell).
-  std::vector<int32_t> entry_class(bc.entries.size());
-  for (size_t i = 0; i < bc.entries.size(); ++i) entry_class[i] = bc.entries[i][0];
-  pc.blocks = group_by(entry_class, static_cast<size_t>(pc.count));
-  for (int32_t& i : pc.blocks.items) i = bc.entries[static_cast<size_t>(i)][2];
-  Csr<int32_t> curve_class;
-  for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
-    const int32_t cls = classes.of(d.curve_edges[k][0]);
-    if (cls >= 0) curve_class.items.push_back(cls);
-    curve_class.offsets.push_back(static_cast<int32_t>(curve_class.items.size()));
+  pc.entry_class.resize(bc.entries.size());
+  pc.entry_block.resize(bc.entries.size());
+  for (size_t i = 0; i < bc.entries.size(); ++i) {
+    pc.entry_class[i] = bc.entries[i][0];
+    pc.entry_block[i] = bc.entries[i][2];
   }
-  pc.curves = transpose(curve_class, static_cast<size_t>(pc.count));
+  pc.curve_class.resize(d.curve_edges.rows());
+  parallel_ranges(pc.curve_class.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k) pc.curve_class[k] = classes.of(d.curve_edges[k][0]);
+  });
   return pc;
 }
 
@@ -374,79 +418,64 @@ struct Group {
   std::vector<int32_t> blocks, curves;
 };
 
-// Per-thread tables over the blocks for class_groups: the class a block was last marked with,
-// and its group (+ 1 for both, as calloc'd zeros mean nothing yet; pages never touched cost
-// nothing).
-struct GroupScratch {
-  std::unique_ptr<int32_t, decltype(&std::free)> in_class, group;
-  explicit GroupScratch(size_t nblocks)
-      : in_class(static_cast<int32_t*>(std::calloc(nblocks + 1, sizeof(int32_t))), &std::free),
-        group(static_cast<int32_t*>(std::calloc(nblocks + 1, sizeof(int32_t))), &std::free) {
-    if (!in_class || !group) throw std::bad_alloc();
-  }
-};
-
-// Class k split into face-connected groups of its blocks, one sheet per group, appended to `out`
-// in order of their first block in pc.blocks[k]; each group's blocks sorted, and its curves: the
-// curves of the class held by its blocks (one group per block and class), increasing.
-void class_groups(const SheetDomain& d, const ParallelClasses& pc, int32_t k, GroupScratch& scratch,
-                  std::vector<int32_t>& stack, std::vector<Group>& out) {
-  int32_t* in_class = scratch.in_class.get();
-  int32_t* group = scratch.group.get();
-  const auto blocks = pc.blocks[k];
-  const size_t first = out.size();
-  for (int32_t u : blocks) {
-    in_class[u] = k + 1;
-    group[u] = 0;
-  }
-  // Label the groups by a flood, then list each group's blocks in the class's order: sorted
-  // without a sort when that order is (every block's cells share its classes), else sorted after.
-  for (int32_t u0 : blocks) {
-    if (group[u0] != 0) continue;
-    const auto id = static_cast<int32_t>(out.size() - first) + 1;
-    out.emplace_back();
-    stack.assign(1, u0);
-    group[u0] = id;
-    while (!stack.empty()) {
-      const int32_t u = stack.back();
-      stack.pop_back();
-      for (int32_t w : d.block_adjacency[u])
-        if (in_class[w] == k + 1 && group[w] == 0) {
-          group[w] = id;
-          stack.push_back(w);
-        }
-    }
-  }
-  for (int32_t u : blocks) out[first + static_cast<size_t>(group[u] - 1)].blocks.push_back(u);
-  if (!std::is_sorted(blocks.begin(), blocks.end()))
-    for (size_t g = first; g < out.size(); ++g) std::sort(out[g].blocks.begin(), out[g].blocks.end());
-  for (int32_t curve : pc.curves[k]) {
-    int32_t last = -1;
-    for (int32_t u : d.curve_blocks[curve]) {
-      const int32_t g = in_class[u] == k + 1 ? group[u] - 1 : -1;
-      if (g >= 0 && g != last) {
-        auto& cv = out[first + static_cast<size_t>(g)].curves;
-        if (cv.empty() || cv.back() != curve) cv.push_back(curve);
-        last = g;
-      }
-    }
-  }
-}
-
-// Every class's groups, class after class, from ranges of classes holding about as many blocks
-// each.
+// Each class's blocks split into face-connected groups, one sheet per group, class after class
+// and within a class in order of their first block with the class; each group's blocks sorted,
+// and its curves: the curves of the class held by its blocks, increasing.
+// The groups are the classes of (class, block) entries joined across the faces between blocks,
+// found block by block and curve by curve in memory order (a flood per class would hop across
+// the blocks of a layer). A group's root is its lowest entry, which in its class's order (entries
+// come in cell order) is its first block: ordering the roots by class gives the groups' order.
 std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc, const LoadOptions& par) {
-  const size_t nr = static_cast<size_t>(range_count(std::max(pc.blocks.rows(), pc.blocks.items.size()), par));
-  std::vector<std::vector<Group>> parts(nr);
-  parallel_rows(pc.blocks, par, [&](size_t first, size_t last, int r) {
-    GroupScratch scratch(d.block_cells.rows());
-    std::vector<int32_t> stack;
-    for (size_t k = first; k < last; ++k)
-      class_groups(d, pc, static_cast<int32_t>(k), scratch, stack, parts[static_cast<size_t>(r)]);
+  const size_t ne = pc.entry_class.size(), nb = d.block_cells.rows();
+  const Csr<int32_t> block_entries = group_by(pc.entry_block, nb);
+  auto entry_of = [&](int32_t u, int32_t k) {
+    for (int32_t a : block_entries[static_cast<size_t>(u)])
+      if (pc.entry_class[static_cast<size_t>(a)] == k) return a;
+    return -1;
+  };
+  detail::ConcurrentUnionFind uf(ne, par);
+  parallel_ranges(nb, par, [&](size_t b, size_t e, int) {
+    for (size_t u = b; u < e; ++u)
+      for (int32_t w : d.block_adjacency[u]) {
+        if (static_cast<size_t>(w) <= u) continue;  // face adjacency is symmetric: each pair once
+        for (int32_t a : block_entries[u]) {
+          const int32_t x = entry_of(w, pc.entry_class[static_cast<size_t>(a)]);
+          if (x >= 0) uf.unite(a, x);
+        }
+      }
   });
-  std::vector<Group> groups = std::move(parts[0]);
-  for (size_t r = 1; r < nr; ++r) std::move(parts[r].begin(), parts[r].end(), std::back_inserter(groups));
-  return groups;
+  std::vector<int32_t> root(ne);
+  parallel_ranges(ne, par, [&](size_t b, size_t e, int) {
+    for (size_t a = b; a < e; ++a) root[a] = uf.find(static_cast<int32_t>(a));
+  });
+  std::vector<int32_t> root_class;  // per root in entry order: its class
+  for (size_t a = 0; a < ne; ++a)
+    if (root[a] == static_cast<int32_t>(a)) root_class.push_back(pc.entry_class[a]);
+  const Csr<int32_t> by_class = group_by(root_class, static_cast<size_t>(pc.count));
+  std::vector<int32_t> group_of_root(root_class.size());
+  for (size_t g = 0; g < by_class.items.size(); ++g) group_of_root[static_cast<size_t>(by_class.items[g])] = static_cast<int32_t>(g);
+  // Entry -> group: roots come in entry order, so a root's rank among them is its index.
+  std::vector<int32_t> group(ne);
+  for (size_t a = 0, r = 0; a < ne; ++a)
+    if (root[a] == static_cast<int32_t>(a)) group[a] = group_of_root[r++];
+  parallel_ranges(ne, par, [&](size_t b, size_t e, int) {
+    for (size_t a = b; a < e; ++a)
+      if (root[a] != static_cast<int32_t>(a)) group[a] = group[static_cast<size_t>(root[a])];
+  });
+  std::vector<Group> out(root_class.size());
+  for (size_t u = 0; u < nb; ++u)
+    for (int32_t a : block_entries[u]) out[static_cast<size_t>(group[static_cast<size_t>(a)])].blocks.push_back(static_cast<int32_t>(u));
+  for (size_t c = 0; c < pc.curve_class.size(); ++c) {
+    const int32_t k = pc.curve_class[c];
+    if (k < 0) continue;
+    for (int32_t u : d.curve_blocks[c]) {
+      const int32_t a = entry_of(u, k);
+      if (a < 0) continue;
+      auto& cv = out[static_cast<size_t>(group[static_cast<size_t>(a)])].curves;
+      if (cv.empty() || cv.back() != static_cast<int32_t>(c)) cv.push_back(static_cast<int32_t>(c));
+    }
+  }
+  return out;
 }
 
 // Sorted, distinct rows[r] for r in `keys`, concatenated, as one row of `out`. Rows of disjoint
@@ -464,8 +493,9 @@ void push_union_row(const Csr<int32_t>& rows, const std::vector<int32_t>& keys, 
 
 // Sheets first..last-1 of `groups`, with their cells, curves, edges, adjacent non-hex cells and
 // classification, appended to `s`.
-void sheet_rows(const SheetDomain& d, std::vector<Group>& groups, size_t first, size_t last, Sheets& s) {
+void sheet_rows(const SheetDomain& d, size_t nverts, std::vector<Group>& groups, size_t first, size_t last, Sheets& s) {
   BlockMask mask(d.block_cells.rows());
+  EndStamps stamps(nverts);
   std::vector<int32_t> buf;
   for (size_t i = first; i < last; ++i) {
     Group& g = groups[i];
@@ -476,13 +506,13 @@ void sheet_rows(const SheetDomain& d, std::vector<Group>& groups, size_t first, 
     push_union_row(d.curve_edges, g.curves, buf, s.sheet_edges);
     push_union_row(d.curve_non_hex_cells, g.curves, buf, s.sheet_non_hex_cells);
     mask.set(g.blocks);
-    s.classes.push_back(classify(d, g.curves, mask));
+    s.classes.push_back(classify(d, g.curves, mask, &stamps));
   }
 }
 
 // The sheets in a stable order (lowest block, then lowest curve), written by ranges of sheets
 // holding about as many blocks and curves each.
-Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups, const LoadOptions& par) {
+Sheets write_sheets(const SheetDomain& d, size_t nverts, std::vector<Group>& groups, const LoadOptions& par) {
   std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) {
     if (a.blocks[0] != b.blocks[0]) return a.blocks[0] < b.blocks[0];
     const int32_t ca = a.curves.empty() ? -1 : a.curves[0], cb = b.curves.empty() ? -1 : b.curves[0];
@@ -497,7 +527,7 @@ Sheets write_sheets(const SheetDomain& d, std::vector<Group>& groups, const Load
       auto at = [&](size_t q) {
         return static_cast<size_t>(std::lower_bound(weight.begin(), weight.end() - 1, weight.back() * q / nr) - weight.begin());
       };
-      sheet_rows(d, groups, r == 0 ? 0 : at(r), r + 1 == nr ? groups.size() : at(r + 1), parts[r]);
+      sheet_rows(d, nverts, groups, r == 0 ? 0 : at(r), r + 1 == nr ? groups.size() : at(r + 1), parts[r]);
     }
   });
   Sheets s = std::move(parts[0]);
@@ -519,7 +549,7 @@ Sheets extract_sheets(const Mesh& m, const SheetDomain& d, const LoadOptions& op
   const LoadOptions par = resolved(options);
   const ParallelClasses pc = parallel_classes(m, d, par);
   std::vector<Group> groups = block_groups(d, pc, par);
-  return write_sheets(d, groups, par);
+  return write_sheets(d, m.num_vertices(), groups, par);
 }
 
 Subsheets decompose_sheet(const SheetDomain& d, const Sheets& sheets, int32_t sheet) {
