@@ -196,9 +196,8 @@ class HalfEdgeSets {
  public:
   // With one thread doing every union and find, plain stores: a locked compare-and-swap per
   // union costs more than the rest of the step.
-  HalfEdgeSets(size_t n, const LoadOptions& par) : shared_(par.threads > 1) {
-    detail::resize_touched(parent_, n, par);
-    detail::parallel_ranges(n, par, [&](size_t b, size_t e, int) { std::iota(parent_.begin() + b, parent_.begin() + e, static_cast<int32_t>(b)); });
+  HalfEdgeSets(size_t n, const LoadOptions& par) : parent_(n, par), shared_(par.threads > 1) {
+    detail::parallel_ranges(n, par, [&](size_t b, size_t e, int) { std::iota(parent_.data() + b, parent_.data() + e, static_cast<int32_t>(b)); });
   }
   int32_t find(int32_t x) {
     for (;;) {
@@ -227,7 +226,7 @@ class HalfEdgeSets {
 
  private:
   std::atomic_ref<int32_t> at(int32_t x) { return std::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
-  std::vector<int32_t> parent_;
+  detail::RawArray<int32_t> parent_;  // every entry set by the iota above
   bool shared_;
 };
 

@@ -288,7 +288,7 @@ std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, con
   const size_t n = items.size();
   // Units: the cells (their slots), then the unused soup faces.
   const size_t nc = items.slot_offsets.size() - 1;
-  const Csr<int32_t> by_lowest = detail::group_units_by_key(
+  const detail::RawRows by_lowest = detail::group_units_by_key<detail::RawRows>(
       nc + items.unused.size(), nv, par,
       [&](size_t u) { return u <= nc ? static_cast<size_t>(items.slot_offsets[u]) : items.nslots() + (u - nc); },
       [&](size_t u, auto&& emit) {
@@ -471,10 +471,10 @@ void prefill_next(const Mesh& m, std::vector<int32_t>& rep, const LoadOptions& p
 
 // Corners by the lower end of their edge, a corner of a boundary face tagged with kBoundary.
 constexpr uint32_t kBoundary = 1u << 31, kCorner = kBoundary - 1;
-Csr<int32_t> corners_by_lower_end(const Mesh& m, const LoadOptions& par) {
+detail::RawRows corners_by_lower_end(const Mesh& m, const LoadOptions& par) {
   const auto& off = m.face_verts.offsets;
   const auto& loops = m.face_verts.items;
-  return detail::group_units_by_key(
+  return detail::group_units_by_key<detail::RawRows>(
       m.num_faces(), m.num_vertices(), par, [&](size_t f) { return static_cast<size_t>(off[f]); },
       [&](size_t f, auto&& emit) {
         const uint32_t tag = m.face_cells[f][1] < 0 ? kBoundary : 0;
@@ -487,7 +487,7 @@ Csr<int32_t> corners_by_lower_end(const Mesh& m, const LoadOptions& par) {
 // end of their edge, in increasing order, so the first corner met of each edge is its lowest).
 // A vertex starts a few edges: a short list of (other end, first corner) finds them faster than
 // sorting the bucket, whose order is random to the branch predictor; long buckets are sorted.
-void edge_representatives(const Mesh& m, const Csr<int32_t>& by_lo, std::vector<int32_t>& rep, const LoadOptions& par) {
+void edge_representatives(const Mesh& m, const detail::RawRows& by_lo, std::vector<int32_t>& rep, const LoadOptions& par) {
   const std::vector<int32_t>& loops = m.face_verts.items;
   constexpr size_t kListed = 64;  // longer buckets: sorted, as the list would grow quadratic
   detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
@@ -565,7 +565,7 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
 // edge where there is one. Each edge's corners are all in the bucket of its lower end, in
 // increasing order, so a range of buckets counts its edges alone and meets each edge's lowest
 // boundary corner first.
-std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, const LoadOptions& par) {
+std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const detail::RawRows& by_lo, const LoadOptions& par) {
   std::vector<EdgeFaceCount> count;
   detail::resize_touched(count, m.num_edges(), par);
   const auto& off = m.face_verts.offsets;
@@ -589,7 +589,7 @@ std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const Csr<int32_t>& by_lo, 
 std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
   std::vector<int32_t>& rep = m.face_edge_ids;
   prefill_next(m, rep, par);
-  const Csr<int32_t> by_lo = corners_by_lower_end(m, par);
+  const detail::RawRows by_lo = corners_by_lower_end(m, par);
   edge_representatives(m, by_lo, rep, par);
   number_edges(m, rep, par);
   return count_edge_faces(m, by_lo, par);

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <memory>
+#include <span>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "hbc/csr.hpp"
@@ -116,6 +119,42 @@ void assign_touched(std::vector<T>& v, size_t n, const T& value, const LoadOptio
   v.assign(n, value);
 }
 
+// A scratch array of n trivially copyable T that the caller fills entirely: not value-initialised,
+// unlike a std::vector, whose resize zeroes every byte on the calling thread alone (a sequential
+// pass over tens of MB, as long as the parallel fill that follows); on advised huge pages whose
+// first touch every thread shares.
+template <class T>
+class RawArray {
+  static_assert(std::is_trivially_default_constructible_v<T>);
+
+ public:
+  RawArray() = default;
+  RawArray(size_t n, const LoadOptions& par) : data_(n ? new T[n] : nullptr), size_(n) {
+    advise_huge_pages(data_.get(), n * sizeof(T));
+    touch_pages(data_.get(), n * sizeof(T), par);
+  }
+  size_t size() const { return size_; }
+  T* data() { return data_.get(); }
+  const T* data() const { return data_.get(); }
+  T& operator[](size_t i) { return data_[i]; }
+  const T& operator[](size_t i) const { return data_[i]; }
+
+ private:
+  std::unique_ptr<T[]> data_;
+  size_t size_ = 0;
+};
+
+// Rows of item ids as group_units_by_key makes them, over a RawArray: for the load's scratch
+// groupings, which are read and dropped within their step.
+struct RawRows {
+  std::vector<int32_t> offsets{0};
+  RawArray<int32_t> items;
+  size_t rows() const { return offsets.size() - 1; }
+  std::span<const int32_t> operator[](size_t r) const {
+    return {items.data() + offsets[r], static_cast<size_t>(offsets[r + 1] - offsets[r])};
+  }
+};
+
 // Counting sort of items that come in units (a cell's slots) by key: row k lists the items with
 // key k in increasing order. Unit u holds the items first(u) .. first(u+1)-1 (first(nunits) =
 // every item), and each_key(u, emit) calls emit(key) for them in order, key in [0, nkeys). Each
@@ -123,8 +162,9 @@ void assign_touched(std::vector<T>& v, size_t n, const T& value, const LoadOptio
 // row, so the result does not depend on the number of threads. The keys are found twice instead
 // of being kept in an array as large as the items. emit(key, tag) with a tag
 // (a bit above 31-bit item ids, say) stores item | tag instead.
-template <class First, class EachKey>
-Csr<int32_t> group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, First&& first, EachKey&& each_key) {
+// Rows is Csr<int32_t>, or RawRows for scratch rows.
+template <class Rows = Csr<int32_t>, class First, class EachKey>
+Rows group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, First&& first, EachKey&& each_key) {
   const int nr = range_count(nunits, par);
   std::vector<std::vector<int32_t>> next(static_cast<size_t>(nr));
   parallel_ranges(nunits, par, [&](size_t b, size_t e, int r) {
@@ -132,7 +172,7 @@ Csr<int32_t> group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& 
     count.assign(nkeys, 0);
     for (size_t u = b; u < e; ++u) each_key(u, [&](int32_t key, uint32_t = 0) { ++count[static_cast<size_t>(key)]; });
   });
-  Csr<int32_t> g;
+  Rows g;
   resize_touched(g.offsets, nkeys + 1, par);
   int32_t pos = 0;
   for (size_t k = 0; k < nkeys; ++k) {
@@ -144,7 +184,8 @@ Csr<int32_t> group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& 
     }
   }
   g.offsets[nkeys] = pos;
-  resize_touched(g.items, static_cast<size_t>(first(nunits)), par);
+  if constexpr (std::is_same_v<Rows, RawRows>) g.items = RawArray<int32_t>(static_cast<size_t>(first(nunits)), par);
+  else resize_touched(g.items, static_cast<size_t>(first(nunits)), par);
   parallel_ranges(nunits, par, [&](size_t b, size_t e, int r) {
     std::vector<int32_t>& at = next[static_cast<size_t>(r)];
     for (size_t u = b; u < e; ++u) {
@@ -169,9 +210,9 @@ Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&
 // Calls f(row_begin, row_end, r) over ranges of the rows of `rows` holding about as many items
 // each, so that rows of very different lengths (vertex buckets are longest at low ids when the
 // lowest vertex of random ids is taken) still split evenly. Results must not depend on the split.
-template <class F>
-void parallel_rows(const Csr<int32_t>& rows, const LoadOptions& par, F&& f) {
-  const size_t nrows = rows.rows(), nitems = rows.items.size();
+template <class Rows, class F>
+void parallel_rows(const Rows& rows, const LoadOptions& par, F&& f) {
+  const size_t nrows = rows.rows(), nitems = static_cast<size_t>(rows.offsets.back());
   const int nr = range_count(std::max(nrows, nitems), par);
   std::vector<size_t> start(static_cast<size_t>(nr) + 1, nrows);
   for (int r = 0; r < nr; ++r) {
