@@ -30,7 +30,7 @@ namespace {
 
 using detail::append_rows;
 using detail::ConcurrentUnionFind;
-using detail::number_classes_in_place;
+using detail::number_classes;
 using detail::parallel_ranges;
 using detail::assign_touched;
 using detail::resize_huge;
@@ -258,7 +258,7 @@ void find_components(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
     for (size_t f = b; f < e; ++f)
       if (!sep[f] && m.face_cells[f][1] >= 0) uf.unite(m.face_cells[f][0], m.face_cells[f][1]);
   });
-  number_classes_in_place(uf, m.num_cells(), par, [](size_t) { return true; }, bc.cell_component, bc.component_cells);
+  number_classes(uf, m.num_cells(), par, [](size_t) { return true; }, bc.cell_component, bc.component_cells);
 }
 
 // Curves: chains of complex edges (every face around them separates) between corners (vertices
@@ -314,7 +314,7 @@ void find_patches(const Mesh& m, BaseComplex& bc, const HexFaceTable& table, con
       }
     }
   });
-  number_classes_in_place(uf, m.num_faces(), par, [&](size_t f) { return sep[f] != 0; }, bc.face_patch, bc.patch_faces);
+  number_classes(uf, m.num_faces(), par, [&](size_t f) { return sep[f] != 0; }, bc.face_patch, bc.patch_faces);
   resize_touched(bc.patch_components, bc.patch_faces.rows(), par);
   parallel_ranges(bc.patch_faces.rows(), par, [&](size_t b, size_t e, int) {
     for (size_t p = b; p < e; ++p) {

@@ -51,40 +51,11 @@ class ConcurrentUnionFind {
 
 // The classes of the elements 0..n-1 that `take` accepts, numbered by their lowest element (their
 // root): label[x] = class (-1 when not taken), and one row of increasing members per class.
+// The labels are written over the union-find's own table, which is handed over to `label` (the
+// union-find is spent): at 10^7 elements a second table of n ids is 40-120 MB of fresh pages,
+// which the kernel zeroes at under 1 GB/s here.
 template <class Take>
-void number_classes(ConcurrentUnionFind& uf, size_t n, const LoadOptions& par, Take take, std::vector<int32_t>& label,
-                    Csr<int32_t>& groups) {
-  const size_t nr = static_cast<size_t>(range_count(n, par));
-  std::vector<int32_t> roots(nr + 1, 0);
-  resize_huge(label, n);
-  // Roots numbered in increasing order: counted per range, then offset by the ranges before.
-  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
-    int32_t count = 0;
-    for (size_t x = b; x < e; ++x) count += take(x) && uf.find(static_cast<int32_t>(x)) == static_cast<int32_t>(x);
-    roots[static_cast<size_t>(r) + 1] = count;
-  });
-  for (size_t r = 0; r < nr; ++r) roots[r + 1] += roots[r];
-  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
-    int32_t next = roots[static_cast<size_t>(r)];
-    for (size_t x = b; x < e; ++x) label[x] = take(x) && uf.find(static_cast<int32_t>(x)) == static_cast<int32_t>(x) ? next++ : -1;
-  });
-  parallel_ranges(n, par, [&](size_t b, size_t e, int) {
-    for (size_t x = b; x < e; ++x)
-      if (take(x) && label[x] < 0) label[x] = label[static_cast<size_t>(uf.find(static_cast<int32_t>(x)))];
-  });
-  // Members grouped by class (an extra last key gathers the elements not taken, then dropped).
-  const auto nclasses = static_cast<size_t>(roots[nr]);
-  groups = group_by_key(n, nclasses + 1, par, [&](size_t x) { return label[x] < 0 ? nclasses : static_cast<size_t>(label[x]); });
-  groups.offsets.pop_back();
-  groups.items.resize(static_cast<size_t>(groups.offsets.back()));
-}
-
-// number_classes with the labels written over the union-find's own table, which it hands over
-// to `label` (the union-find is spent): at 10^7 elements a second table of n ids is 40-120 MB of
-// fresh pages, which the kernel zeroes at under 1 GB/s here, and its passes are gone too.
-// The same labels and rows as number_classes.
-template <class Take>
-void number_classes_in_place(ConcurrentUnionFind& uf, size_t n, const LoadOptions& par, Take take,
+void number_classes(ConcurrentUnionFind& uf, size_t n, const LoadOptions& par, Take take,
                              std::vector<int32_t>& label, Csr<int32_t>& groups) {
   std::vector<int32_t>& p = uf.parents();
   const size_t nr = static_cast<size_t>(range_count(n, par));
