@@ -530,16 +530,24 @@ Sheets write_sheets(const SheetDomain& d, size_t nverts, std::vector<Group>& gro
       sheet_rows(d, nverts, groups, r == 0 ? 0 : at(r), r + 1 == nr ? groups.size() : at(r + 1), parts[r]);
     }
   });
-  Sheets s = std::move(parts[0]);
+  // Each table joined at its exact size, each part freed once copied: appending to the first
+  // part would grow it by doubling, with the old copy alive while the new one fills (the peak of
+  // the analysis on the split grid).
+  auto join = [&](Csr<int32_t> Sheets::*rows) {
+    std::vector<Csr<int32_t>> tables(nr);
+    for (size_t r = 0; r < nr; ++r) tables[r] = std::move(parts[r].*rows);
+    return concat(std::move(tables));
+  };
+  Sheets s;
   s.level = d.level;
-  for (size_t r = 1; r < nr; ++r) {
-    detail::append_rows(s.sheet_blocks, parts[r].sheet_blocks);
-    detail::append_rows(s.sheet_cells, parts[r].sheet_cells);
-    detail::append_rows(s.sheet_curves, parts[r].sheet_curves);
-    detail::append_rows(s.sheet_edges, parts[r].sheet_edges);
-    detail::append_rows(s.sheet_non_hex_cells, parts[r].sheet_non_hex_cells);
+  s.sheet_blocks = join(&Sheets::sheet_blocks);
+  s.sheet_cells = join(&Sheets::sheet_cells);
+  s.sheet_curves = join(&Sheets::sheet_curves);
+  s.sheet_edges = join(&Sheets::sheet_edges);
+  s.sheet_non_hex_cells = join(&Sheets::sheet_non_hex_cells);
+  s.classes = std::move(parts[0].classes);
+  for (size_t r = 1; r < nr; ++r)
     std::move(parts[r].classes.begin(), parts[r].classes.end(), std::back_inserter(s.classes));
-  }
   return s;
 }
 
@@ -547,8 +555,8 @@ Sheets write_sheets(const SheetDomain& d, size_t nverts, std::vector<Group>& gro
 
 Sheets extract_sheets(const Mesh& m, const SheetDomain& d, const LoadOptions& options) {
   const LoadOptions par = resolved(options);
-  const ParallelClasses pc = parallel_classes(m, d, par);
-  std::vector<Group> groups = block_groups(d, pc, par);
+  // The classes end with the groups made from them, before the sheets are written.
+  std::vector<Group> groups = block_groups(d, parallel_classes(m, d, par), par);
   return write_sheets(d, m.num_vertices(), groups, par);
 }
 

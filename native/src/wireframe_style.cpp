@@ -17,13 +17,26 @@ namespace hbc {
 namespace {
 
 // Rows [0, n) built by row(i, out, scratch) (appending row i's items to out.items), ranges of rows
-// in parallel, each into rows of its own with scratch room of its own, joined in order: the same
-// rows for any thread count.
+// in parallel, each into rows of its own with scratch room of its own, kept as the ranges made
+// them: the same rows for any thread count. Joining the parts into one Csr (parallel_rows_of)
+// holds them twice at its end; a table read row by row is kept parted instead.
+template <class T>
+struct PartedRows {
+  std::vector<size_t> first;  // per part: its first row
+  std::vector<Csr<T>> parts;
+  std::span<const T> operator[](size_t r) const {
+    const size_t k = static_cast<size_t>(std::upper_bound(first.begin(), first.end(), r) - first.begin()) - 1;
+    return parts[k][r - first[k]];
+  }
+};
+
 template <class T, class Scratch, class Row>
-Csr<T> parallel_rows_of(size_t n, const LoadOptions& par, Row&& row) {
-  std::vector<Csr<T>> parts(static_cast<size_t>(detail::range_count(n, par)));
+PartedRows<T> parallel_parted_rows(size_t n, const LoadOptions& par, Row&& row) {
+  const auto nr = static_cast<size_t>(detail::range_count(n, par));
+  PartedRows<T> rows{std::vector<size_t>(nr, 0), std::vector<Csr<T>>(nr)};
   detail::parallel_ranges(n, par, [&](size_t b, size_t e, int k) {
-    Csr<T>& out = parts[static_cast<size_t>(k)];
+    rows.first[static_cast<size_t>(k)] = b;
+    Csr<T>& out = rows.parts[static_cast<size_t>(k)];
     out.offsets.reserve(e - b + 1);
     Scratch scratch{};
     for (size_t i = b; i < e; ++i) {
@@ -31,7 +44,12 @@ Csr<T> parallel_rows_of(size_t n, const LoadOptions& par, Row&& row) {
       out.offsets.push_back(static_cast<int32_t>(out.items.size()));
     }
   });
-  return concat(std::move(parts));
+  return rows;
+}
+
+template <class T, class Scratch, class Row>
+Csr<T> parallel_rows_of(size_t n, const LoadOptions& par, Row&& row) {
+  return concat(parallel_parted_rows<T, Scratch>(n, par, std::forward<Row>(row)).parts);
 }
 
 bool share_vertex(const CellComplex& cx, int32_t e, int32_t f) {
@@ -223,10 +241,10 @@ ClassPoints class_points(const Csr<int32_t>& class_wires, const std::vector<int3
 }
 
 // Row w: (w', |E_w|) by increasing w' (see colours()), ranges of wires in parallel.
-Csr<std::array<int32_t, 2>> parallel_counts(const CellComplex& cx, const Index& ix, const VsgWireframe& wf,
-                                            const LoadOptions& threads) {
+PartedRows<std::array<int32_t, 2>> parallel_counts(const CellComplex& cx, const Index& ix, const VsgWireframe& wf,
+                                                  const LoadOptions& threads) {
   using Pairs = std::vector<std::array<int32_t, 2>>;  // (w', e) for the current wire
-  return parallel_rows_of<std::array<int32_t, 2>, Pairs>(wf.size(), threads, [&](size_t w, Csr<std::array<int32_t, 2>>& counts, Pairs& par) {
+  return parallel_parted_rows<std::array<int32_t, 2>, Pairs>(wf.size(), threads, [&](size_t w, Csr<std::array<int32_t, 2>>& counts, Pairs& par) {
     par.clear();
     for (int32_t e : wf.edges[w])
       for (int32_t f : cx.edge_faces[e]) {
@@ -283,15 +301,18 @@ Csr<int32_t> earlier_neighbours(const ClassPoints& cp, const Index& ix, const st
   return concat(std::move(parts));
 }
 
-void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
-             const LoadOptions& threads, WireframeStyle& st) {
+// The class (lowest wire) of each wire: wires whose parallel edge counts reach rho both ways are
+// joined. The counts and the union-find end here, before the class graph is built (the counts
+// are the wireframe style's largest table, some 100 MB on the split grid).
+std::vector<int32_t> colour_classes(const CellComplex& cx, const WireframeOptions& opt, const Index& ix,
+                                    const VsgWireframe& wf, const LoadOptions& threads) {
   const size_t nw = wf.size();
   // (w, w', |E_w|): how many complex edges of wire w are parallel (Definition 1) to an edge of
   // wire w', in (w, w') order. The (w', e) incidences are gathered and counted one wire at a time,
   // so only the counts are kept, never every incidence of the whole wireframe at once.
   // Row w of `counts` holds (w', |E_w|) by increasing w', so the reverse count of a pair is
   // looked up in the short row of w', not searched for among all counts.
-  const Csr<std::array<int32_t, 2>> counts = parallel_counts(cx, ix, wf, threads);
+  const PartedRows<std::array<int32_t, 2>> counts = parallel_counts(cx, ix, wf, threads);
   // Classes are the same whatever the order of the unions, and a class's root is its lowest
   // wire either way: ranges of wires unite at once.
   detail::ConcurrentUnionFind uf(nw, threads);
@@ -307,10 +328,17 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
         if (std::min(fa, fb) >= opt.rho) uf.unite(static_cast<int32_t>(a), b);
       }
   });
-  st.color_class.resize(nw);
+  std::vector<int32_t> color_class(nw);
   detail::parallel_ranges(nw, threads, [&](size_t begin, size_t end, int) {
-    for (size_t w = begin; w < end; ++w) st.color_class[w] = uf.find(static_cast<int32_t>(w));
+    for (size_t w = begin; w < end; ++w) color_class[w] = uf.find(static_cast<int32_t>(w));
   });
+  return color_class;
+}
+
+void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
+             const LoadOptions& threads, WireframeStyle& st) {
+  const size_t nw = wf.size();
+  st.color_class = colour_classes(cx, opt, ix, wf, threads);
   // Class graph: classes of wire edges sharing a point; each class takes the first colour none of
   // its coloured neighbours holds, else the one fewest of them hold. Only the neighbours coloured
   // before a class are listed (each pair once), and a point where thousands of wires meet (a fan
