@@ -214,8 +214,11 @@ CellCheck check_cells(Mesh& m, const MeshInput& in, const LoadOptions& par) {
   detail::parallel_ranges(nc, par, [&](size_t cb, size_t ce, int r) {
     CellCorners cc;
     std::vector<int32_t> scratch;
+    // Kept local and stored once: the ranges' flags share a cache line, and a byte store per cell
+    // there (a char store, which the compiler cannot keep in a register) had the cores contend for it.
+    bool repeat = false;
     for (size_t c = cb; c < ce; ++c) {
-      repeats[static_cast<size_t>(r)] |= repeats_a_neighbour(m, c, scratch) ? 1 : 0;
+      repeat = repeats_a_neighbour(m, c, scratch) || repeat;
       const auto flips = std::span<const uint8_t>(m.cell_face_flip).subspan(static_cast<size_t>(m.cell_faces.offsets[c]), m.cell_faces.count(c));
       if (in.shape(c) != CellShape::Faces) {
         // An element with distinct corners is its template: closed, its loops agreeing as the
@@ -232,6 +235,7 @@ CellCheck check_cells(Mesh& m, const MeshInput& in, const LoadOptions& par) {
       const auto begin = static_cast<size_t>(m.cell_faces.offsets[c]);
       for (size_t i = 0; i < cc.state.size(); ++i) m.cell_face_flip[begin + i] = static_cast<uint8_t>(cc.state[i]);
     }
+    repeats[static_cast<size_t>(r)] = repeat ? 1 : 0;
   });
   for (const auto& p : pinched) out.pinched.insert(out.pinched.end(), p.begin(), p.end());
   out.faces_shared_twice = std::find(repeats.begin(), repeats.end(), 1) != repeats.end();

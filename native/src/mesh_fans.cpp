@@ -190,8 +190,8 @@ namespace {
 
 // Union-find over half-edges (edge e at its end j is 2e + j), safe for threads uniting at once:
 // a root is linked to a lower one only by compare-and-swap while it is still a root, and path
-// halving only ever points an entry further up its own tree. The sets do not depend on the order
-// of the unions.
+// halving only ever points a non-root entry to one of its ancestors. The sets do not depend on
+// the order of the unions.
 class HalfEdgeSets {
  public:
   // With one thread doing every union and find, plain stores: a locked compare-and-swap per
@@ -205,7 +205,10 @@ class HalfEdgeSets {
       if (p == x) return x;
       const int32_t g = at(p).load(std::memory_order_acquire);
       if (g == p) return p;
-      if (shared_) at(x).compare_exchange_weak(p, g, std::memory_order_acq_rel);  // x now points to its grandparent, if unchanged
+      // x now points to its grandparent. A plain store, not a locked compare-exchange: entries
+      // only ever point to ancestors, and g stays one of x's whatever other threads link
+      // meanwhile, so overwriting a newer, higher parent with g loses nothing.
+      if (shared_) at(x).store(g, std::memory_order_release);
       else parent_[static_cast<size_t>(x)] = g;
       x = g;
     }

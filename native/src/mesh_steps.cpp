@@ -387,10 +387,14 @@ void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, c
       }
   };
   detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int r) {
+    // Counted locally: the ranges' totals share a cache line.
+    int64_t faces = 0, corners = 0;
     each_new_face(b, e, [&](size_t, size_t c, int j) {
-      ++first_face[static_cast<size_t>(r) + 1];
-      first_corner[static_cast<size_t>(r) + 1] += items.loops.size(c, j);
+      ++faces;
+      corners += items.loops.size(c, j);
     });
+    first_face[static_cast<size_t>(r) + 1] = faces;
+    first_corner[static_cast<size_t>(r) + 1] = corners;
   });
   for (size_t r = 0; r < static_cast<size_t>(nr); ++r) {
     first_face[r + 1] += first_face[r];
@@ -533,8 +537,10 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
     return std::pair{static_cast<size_t>(m.face_verts.offsets[f]), static_cast<size_t>(m.face_verts.offsets[f + 1])};
   };
   detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
+    int64_t count = 0;  // local: the ranges' totals share a cache line
     for (size_t f = b; f < e; ++f)
-      for (auto [k, k1] = corners(f); k < k1; ++k) first[static_cast<size_t>(r) + 1] += rep[k] == static_cast<int32_t>(k);
+      for (auto [k, k1] = corners(f); k < k1; ++k) count += rep[k] == static_cast<int32_t>(k);
+    first[static_cast<size_t>(r) + 1] = count;
   });
   for (size_t r = 0; r < static_cast<size_t>(nr); ++r) first[r + 1] += first[r];
   detail::resize_touched(m.edge_verts, static_cast<size_t>(first.back()), par);
