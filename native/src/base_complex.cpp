@@ -367,8 +367,15 @@ void patch_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   std::vector<std::array<Csr<int32_t>, 2>> parts(
       static_cast<size_t>(range_count(std::max(bc.patch_faces.rows(), bc.patch_faces.items.size()), par)));
   parallel_rows(bc.patch_faces, par, [&](size_t first, size_t last, int r) {
-    if (r == 0) patch_rows(m, bc, first, last, bc.patch_corners, bc.patch_curves);
-    else patch_rows(m, bc, first, last, parts[static_cast<size_t>(r)][0], parts[static_cast<size_t>(r)][1]);
+    // Filled on this thread's stack and moved into place at the end: the growing tables' headers
+    // sit next to each other and to the tables the other threads read, and a push per row there
+    // would bounce their cache lines between the cores. Range 0 takes over bc's own tables, which
+    // patch_rows does not read.
+    std::array<Csr<int32_t>, 2> own;
+    if (r == 0) own = {std::move(bc.patch_corners), std::move(bc.patch_curves)};
+    patch_rows(m, bc, first, last, own[0], own[1]);
+    if (r == 0) bc.patch_corners = std::move(own[0]), bc.patch_curves = std::move(own[1]);
+    else parts[static_cast<size_t>(r)] = std::move(own);
   });
   append_parts(bc.patch_corners, parts, 0);
   append_parts(bc.patch_curves, parts, 1);
@@ -439,8 +446,15 @@ void component_incidences(BaseComplex& bc, const LoadOptions& par) {
   std::vector<std::array<Csr<int32_t>, 3>> parts(nr);
   const std::array<Csr<int32_t>*, 3> mine = {&bc.component_adjacency, &bc.component_curves, &bc.component_corners};
   parallel_rows(rows, par, [&](size_t first, size_t last, int r) {
-    auto& p = parts[static_cast<size_t>(r)];
-    component_rows(bc, first, last, r == 0 ? mine : std::array<Csr<int32_t>*, 3>{&p[0], &p[1], &p[2]});
+    // On this thread's stack, then moved into place (see patch_incidences); component_rows does
+    // not read the tables range 0 takes over.
+    std::array<Csr<int32_t>, 3> own;
+    if (r == 0)
+      for (size_t i = 0; i < 3; ++i) own[i] = std::move(*mine[i]);
+    component_rows(bc, first, last, {&own[0], &own[1], &own[2]});
+    if (r == 0)
+      for (size_t i = 0; i < 3; ++i) *mine[i] = std::move(own[i]);
+    else parts[static_cast<size_t>(r)] = std::move(own);
   });
   // One array at a time, each part freed once appended: the stage's peak is here at 10^7 cells.
   for (size_t i = 0; i < 3; ++i) append_parts(*mine[i], parts, i);

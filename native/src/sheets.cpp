@@ -527,7 +527,9 @@ Sheets write_sheets(const SheetDomain& d, size_t nverts, std::vector<Group>& gro
       auto at = [&](size_t q) {
         return static_cast<size_t>(std::lower_bound(weight.begin(), weight.end() - 1, weight.back() * q / nr) - weight.begin());
       };
-      sheet_rows(d, nverts, groups, r == 0 ? 0 : at(r), r + 1 == nr ? groups.size() : at(r + 1), parts[r]);
+      Sheets own;  // on this thread's stack: neighbouring parts share cache lines
+      sheet_rows(d, nverts, groups, r == 0 ? 0 : at(r), r + 1 == nr ? groups.size() : at(r + 1), own);
+      parts[r] = std::move(own);
     }
   });
   // Each table joined at its exact size, each part freed once copied: appending to the first

@@ -540,7 +540,7 @@ Csr<int32_t> continuations(const Region& r, const Chains& ch, const ChainIndex& 
   const size_t nc = ch.edges.rows();
   std::vector<Csr<int32_t>> parts(static_cast<size_t>(detail::range_count(nc, par)));
   detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int k) {
-    Csr<int32_t>& out = parts[static_cast<size_t>(k)];
+    Csr<int32_t> out;  // on this thread's stack: the parts' headers share cache lines
     out.reserve(2 * (e - b), e - b);
     NextScratch s;
     for (size_t c = b; c < e; ++c) {
@@ -553,6 +553,7 @@ Csr<int32_t> continuations(const Region& r, const Chains& ch, const ChainIndex& 
         out.offsets.push_back(static_cast<int32_t>(out.items.size()));
       }
     }
+    parts[static_cast<size_t>(k)] = std::move(out);
   });
   return concat(std::move(parts));
 }
@@ -594,7 +595,7 @@ PairTable pair_table(const Region& r, const ChainIndex& ix, const std::vector<ui
   redundant.assign(nv, 0);
   std::vector<Csr<ChainPair>> parts(static_cast<size_t>(detail::range_count(nv, par)));
   detail::parallel_ranges(nv, par, [&](size_t b, size_t e, int k) {
-    Csr<ChainPair>& out = parts[static_cast<size_t>(k)];
+    Csr<ChainPair> out;  // on this thread's stack: the parts' headers share cache lines
     out.offsets.reserve(e - b + 1);
     std::vector<int32_t> cand;
     std::vector<std::array<int32_t, 2>> pairs, kept;
@@ -611,6 +612,7 @@ PairTable pair_table(const Region& r, const ChainIndex& ix, const std::vector<ui
       }
       out.offsets.push_back(static_cast<int32_t>(out.items.size()));
     }
+    parts[static_cast<size_t>(k)] = std::move(out);
   });
   return PairTable{concat(std::move(parts))};
 }

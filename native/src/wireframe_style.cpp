@@ -36,13 +36,16 @@ PartedRows<T> parallel_parted_rows(size_t n, const LoadOptions& par, Row&& row) 
   PartedRows<T> rows{std::vector<size_t>(nr, 0), std::vector<Csr<T>>(nr)};
   detail::parallel_ranges(n, par, [&](size_t b, size_t e, int k) {
     rows.first[static_cast<size_t>(k)] = b;
-    Csr<T>& out = rows.parts[static_cast<size_t>(k)];
+    // Filled on this thread's stack, then moved in: the parts' headers share cache lines, and a
+    // push per row there would bounce them between the cores.
+    Csr<T> out;
     out.offsets.reserve(e - b + 1);
     Scratch scratch{};
     for (size_t i = b; i < e; ++i) {
       row(i, out, scratch);
       out.offsets.push_back(static_cast<int32_t>(out.items.size()));
     }
+    rows.parts[static_cast<size_t>(k)] = std::move(out);
   });
   return rows;
 }
@@ -136,6 +139,8 @@ void hop_distances(const CellComplex& cx, int32_t horizon, const LoadOptions& pa
       std::vector<int32_t> reached(nr, 0);
       std::vector<uint8_t> same(nr, 0);
       detail::parallel_ranges(nv, par, [&](size_t b, size_t end, int k) {
+        int32_t my_reach = 0;  // local, stored once: the ranges' entries share a cache line
+        bool my_same = false;
         for (size_t v = b; v < end; ++v) {
           if (std::atomic_ref<int32_t>(dv[v]).load(std::memory_order_relaxed) != d) continue;
           for (int32_t e : cx.vert_edges[v]) {
@@ -147,11 +152,13 @@ void hop_distances(const CellComplex& cx, int32_t horizon, const LoadOptions& pa
             while (nd < old && !du.compare_exchange_weak(old, nd, std::memory_order_relaxed)) {
             }
             if (nd < old) {
-              reached[static_cast<size_t>(k)] = std::max(reached[static_cast<size_t>(k)], nd);
-              same[static_cast<size_t>(k)] |= nd == d;
+              my_reach = std::max(my_reach, nd);
+              my_same = my_same || nd == d;
             }
           }
         }
+        reached[static_cast<size_t>(k)] = my_reach;
+        same[static_cast<size_t>(k)] = my_same ? 1 : 0;
       });
       reach = std::max(reach, *std::max_element(reached.begin(), reached.end()));
       again = std::find(same.begin(), same.end(), uint8_t{1}) != same.end();
@@ -274,7 +281,7 @@ Csr<int32_t> earlier_neighbours(const ClassPoints& cp, const Index& ix, const st
   const size_t nw = wire_class.size();
   std::vector<Csr<int32_t>> parts(static_cast<size_t>(detail::range_count(nw, par)));
   detail::parallel_ranges(nw, par, [&](size_t begin, size_t end, int k) {
-    Csr<int32_t>& out = parts[static_cast<size_t>(k)];
+    Csr<int32_t> out;  // on this thread's stack: the parts' headers share cache lines
     out.offsets.reserve(end - begin + 1);
     std::vector<int32_t> stamp(nw, -1);
     for (size_t c = begin; c < end; ++c) {
@@ -297,6 +304,7 @@ Csr<int32_t> earlier_neighbours(const ClassPoints& cp, const Index& ix, const st
       }
       out.offsets.push_back(static_cast<int32_t>(out.items.size()));
     }
+    parts[static_cast<size_t>(k)] = std::move(out);
   });
   return concat(std::move(parts));
 }
