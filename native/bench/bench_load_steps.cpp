@@ -66,13 +66,13 @@ void BM_LoadSteps(benchmark::State& state) {
     m.points = std::move(in.points);
     merge_faces(in, m, par);
     lap("s2_merge_faces");
-    std::vector<EdgeFaceCount> counts = build_edges(m, par);
+    EdgeFaceCounts counts = build_edges(m, par);
     lap("s3_build_edges");
     CellCheck cells = check_cells(m, in, par);
     lap("s4_check_cells");
     orient_groups(m, cells.volume, par);
     lap("s5_orient_groups");
-    mark_boundary(m);
+    mark_boundary(m, par);
     lap("s6_mark_boundary");
     edge_fans(m, counts, cells, par);
     lap("s7_edge_fans");

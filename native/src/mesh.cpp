@@ -62,13 +62,13 @@ Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   m.points = std::move(in.points);
   m.warnings = std::move(in.warnings);  // what the reader skipped (lower-dimensional elements, ...)
   merge_faces(in, m, par);
-  std::vector<EdgeFaceCount> counts = build_edges(m, par);
+  EdgeFaceCounts counts = build_edges(m, par);
   CellCheck cells = check_cells(m, in, par);
   orient_groups(m, cells.volume, par);
   std::vector<double>().swap(cells.volume);
-  mark_boundary(m);
+  mark_boundary(m, par);
   edge_fans(m, counts, cells, par);
-  std::vector<EdgeFaceCount>().swap(counts);
+  counts = {};
   non_manifold_vertices(m, cells, par);
   drop_declared_edges(m, in);
   return m;

@@ -106,16 +106,21 @@ Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep) {
 
 namespace mesh_steps {
 
-void mark_boundary(Mesh& m) {
+void mark_boundary(Mesh& m, const LoadOptions& par) {
   m.face_boundary.assign(m.num_faces(), 0);
   m.edge_boundary.assign(m.num_edges(), 0);
   m.vert_boundary.assign(m.num_vertices(), 0);
-  for (size_t f = 0; f < m.num_faces(); ++f) {
-    if (m.face_cells[f][1] >= 0) continue;
-    m.face_boundary[f] = 1;
-    for (int32_t e : m.face_edges(f)) m.edge_boundary[static_cast<size_t>(e)] = 1;
-    for (int32_t v : m.face_verts[f]) m.vert_boundary[static_cast<size_t>(v)] = 1;
-  }
+  // Ranges of faces; an edge or vertex of faces in two ranges may be marked by both, with the
+  // same value, hence the atomic stores.
+  auto mark = [](uint8_t& flag) { std::atomic_ref<uint8_t>(flag).store(1, std::memory_order_relaxed); };
+  detail::parallel_ranges(m.num_faces(), par, [&](size_t fb, size_t fe, int) {
+    for (size_t f = fb; f < fe; ++f) {
+      if (m.face_cells[f][1] >= 0) continue;
+      m.face_boundary[f] = 1;
+      for (int32_t e : m.face_edges(f)) mark(m.edge_boundary[static_cast<size_t>(e)]);
+      for (int32_t v : m.face_verts[f]) mark(m.vert_boundary[static_cast<size_t>(v)]);
+    }
+  });
 }
 
 namespace {
@@ -158,7 +163,7 @@ bool cyclic_by_count(const EdgeFaceCount& c, bool twice) {
 
 }  // namespace
 
-void edge_fans(Mesh& m, const std::vector<EdgeFaceCount>& counts, const CellCheck& cells, const LoadOptions& par) {
+void edge_fans(Mesh& m, const EdgeFaceCounts& counts, const CellCheck& cells, const LoadOptions& par) {
   const size_t ne = m.num_edges();
   std::vector<uint8_t> odd(ne, 0);
   m.valence_small.assign(ne, 0);

@@ -571,9 +571,10 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
 // edge where there is one. Each edge's corners are all in the bucket of its lower end, in
 // increasing order, so a range of buckets counts its edges alone and meets each edge's lowest
 // boundary corner first.
-std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const detail::RawRows& by_lo, const LoadOptions& par) {
-  std::vector<EdgeFaceCount> count;
-  detail::resize_touched(count, m.num_edges(), par);
+EdgeFaceCounts count_edge_faces(Mesh& m, const detail::RawRows& by_lo, const LoadOptions& par) {
+  EdgeFaceCounts count(m.num_edges());
+  detail::advise_huge_pages(count.data(), count.size() * sizeof(EdgeFaceCount));
+  detail::parallel_ranges(count.size(), par, [&](size_t b, size_t e, int) { std::fill(count.data() + b, count.data() + e, EdgeFaceCount{0, 0}); });
   const auto& off = m.face_verts.offsets;
   detail::parallel_rows(by_lo, par, [&](size_t vb, size_t ve, int) {
     for (size_t v = vb; v < ve; ++v)
@@ -592,7 +593,7 @@ std::vector<EdgeFaceCount> count_edge_faces(Mesh& m, const detail::RawRows& by_l
 
 }  // namespace
 
-std::vector<EdgeFaceCount> build_edges(Mesh& m, const LoadOptions& par) {
+EdgeFaceCounts build_edges(Mesh& m, const LoadOptions& par) {
   std::vector<int32_t>& rep = m.face_edge_ids;
   prefill_next(m, rep, par);
   const detail::RawRows by_lo = corners_by_lower_end(m, par);

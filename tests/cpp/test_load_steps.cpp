@@ -48,7 +48,7 @@ void add_square(std::vector<double>& p, double x, double y, double z) {
 struct Built {
   MeshInput in;
   Mesh m;
-  std::vector<EdgeFaceCount> counts;
+  EdgeFaceCounts counts;
   CellCheck cells;
 };
 Built through_check(MeshInput in) {
@@ -212,7 +212,7 @@ TEST(LoadSteps, EdgeFansRunThroughTheCellsInOrder) {
   // 1: shared, 6+2: front of the upper) and the cells 0, 1 between them; a boundary path.
   Built b = through_check(stacked_cubes(2));
   orient_groups(b.m, b.cells.volume, kOne);
-  mark_boundary(b.m);
+  mark_boundary(b.m, kOne);
   edge_fans(b.m, b.counts, b.cells, kOne);
   const int32_t e45 = test::edge_between(b.m, 4, 5);
   ASSERT_GE(e45, 0);
