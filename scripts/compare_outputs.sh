@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Whether two builds give the same results: runs both `hbc` binaries on each mesh with one and two
+# threads (analyze, sheets and wireframe JSON at both levels, the OBJ wireframe with hidden edges,
+# the VTU export) and compares the outputs byte for byte, timings removed. A speed-up or refactor
+# must leave every one of them unchanged (see the README's Correctness section).
+#
+#   bash scripts/compare_outputs.sh OLD_HBC NEW_HBC [MESH...]
+#
+# Without meshes: every mesh under ../shared/data. Exit status 1 when any output differs; the
+# outputs are kept under $HBC_COMPARE_DIR (default: a fresh temporary directory).
+set -euo pipefail
+[ $# -ge 2 ] || { sed -n 2,10p "$0"; exit 2; }
+old=$(realpath "$1"); new=$(realpath "$2"); shift 2
+here=$(cd "$(dirname "$0")/.." && pwd)
+if [ $# -eq 0 ]; then
+  mapfile -t meshes < <(find "$here/../shared/data" -type f \
+    \( -name '*.mesh' -o -name '*.ovm' -o -name '*.ovmb' -o -name '*.HYBRID' -o -name '*.hedra' \
+       -o -name '*.msh' -o -name '*.vtk' -o -name '*.vtu' \) | sort)
+else
+  meshes=("$@")
+fi
+out=${HBC_COMPARE_DIR:-$(mktemp -d)}
+mkdir -p "$out/old" "$out/new"
+
+# JSON without its timings (the only part of an output that may change from run to run).
+strip_timings() {
+  python3 -c '
+import json, sys
+def drop(x):
+    if isinstance(x, dict):
+        return {k: drop(v) for k, v in x.items() if k not in ("timings", "timing") and not k.startswith("seconds")}
+    if isinstance(x, list):
+        return [drop(v) for v in x]
+    return x
+print(json.dumps(drop(json.load(open(sys.argv[1]))), sort_keys=True))' "$1" > "$1.cmp"
+}
+
+run_all() {  # BIN SIDE MESH TAG THREADS
+  local bin=$1 dir=$out/$2/$4.t$5 mesh=$3 t=$5
+  mkdir -p "$dir"
+  "$bin" analyze --json --threads "$t" "$mesh" > "$dir/analyze.json"
+  "$bin" analyze --json --level mesh --threads "$t" "$mesh" > "$dir/analyze_mesh.json"
+  "$bin" sheets --json --threads "$t" "$mesh" > "$dir/sheets.json"
+  "$bin" sheets --json --level mesh --threads "$t" "$mesh" > "$dir/sheets_mesh.json"
+  "$bin" wireframe --json --threads "$t" "$mesh" > "$dir/wire.json"
+  "$bin" wireframe --json --level mesh --threads "$t" "$mesh" > "$dir/wire_mesh.json"
+  "$bin" wireframe --obj --all --threads "$t" "$mesh" > "$dir/wire.obj"
+  "$bin" export-vtu --threads "$t" "$mesh" -o "$dir/cells.vtu" > /dev/null
+  for j in "$dir"/*.json; do strip_timings "$j"; rm "$j"; done
+}
+
+status=0
+for mesh in "${meshes[@]}"; do
+  tag=$(basename "$(dirname "$mesh")")_$(basename "$mesh")
+  for t in 1 2; do
+    run_all "$old" old "$mesh" "$tag" "$t"
+    run_all "$new" new "$mesh" "$tag" "$t"
+    if diff -rq "$out/old/$tag.t$t" "$out/new/$tag.t$t" > /dev/null; then
+      echo "same       $tag (threads $t)"
+    else
+      echo "DIFFERENT  $tag (threads $t)"; diff -rq "$out/old/$tag.t$t" "$out/new/$tag.t$t" || true
+      status=1
+    fi
+  done
+done
+echo "outputs in $out"
+exit $status
