@@ -22,7 +22,7 @@ const char* cell_type_name(CellType t);
 // Element-list formats give corners, which spares the loader a face soup six times the size.
 enum class CellShape : uint8_t { Faces = 0, Tet = 1, Pyramid = 2, Prism = 3, Hex = 4 };
 // 4, 5, 6, 8; 0 for Faces.
-inline int corner_count(CellShape s) {
+constexpr int corner_count(CellShape s) {
   constexpr int kCorners[5] = {0, 4, 5, 6, 8};
   return kCorners[static_cast<int>(s)];
 }
