@@ -263,7 +263,8 @@ struct FaceItems {
 // A triangle's or quadrangle's vertex set and its item as one sortable integer: the loop size, its
 // vertices other than `shared` in increasing order (a triangle's third one above any id), the
 // item. Faces of one bucket share a vertex (their lowest-ranked), so equal keys up to the item
-// mean the same set.
+// mean the same set. `shared` is in the loop exactly once (validate_input rejects repeated
+// vertices), so at most 3 others remain.
 __extension__ typedef unsigned __int128 FaceKey;
 constexpr int kItemBits = 31;
 
