@@ -45,17 +45,22 @@ def refine(pts, hexes, n):
     return flat[first], out
 
 
+def write_medit_hexes(path, pts, hexes):
+    """pts: (nv, 3) floats; hexes: (nh, 8) 0-based vertex ids in MEDIT corner order."""
+    with open(path, "w") as f:
+        f.write(f"MeshVersionFormatted 1\nDimension 3\nVertices\n{len(pts)}\n")
+        np.savetxt(f, np.column_stack([pts, np.zeros(len(pts))]), fmt="%.17g %.17g %.17g %d")
+        f.write(f"Hexahedra\n{len(hexes)}\n")
+        np.savetxt(f, np.column_stack([hexes + 1, np.zeros(len(hexes), dtype=np.int64)]), fmt="%d")
+        f.write("End\n")
+
+
 def main():
     src, dst = sys.argv[1], sys.argv[2]
     n = int(sys.argv[3]) if len(sys.argv) > 3 else 4
     pts, hexes = read_medit_hexes(src)
     p, h = refine(pts, hexes, n)
-    with open(dst, "w") as f:
-        f.write(f"MeshVersionFormatted 1\nDimension 3\nVertices\n{len(p)}\n")
-        np.savetxt(f, np.column_stack([p, np.zeros(len(p))]), fmt="%.17g %.17g %.17g %d")
-        f.write(f"Hexahedra\n{len(h)}\n")
-        np.savetxt(f, np.column_stack([h + 1, np.zeros(len(h), dtype=np.int64)]), fmt="%d")
-        f.write("End\n")
+    write_medit_hexes(dst, p, h)
     print(f"wrote {dst}: {len(p)} vertices, {len(h)} hexahedra")
 
 

@@ -7,7 +7,7 @@ import sys
 
 import numpy as np
 
-from refine_medit_hexes import read_medit_hexes
+from refine_medit_hexes import read_medit_hexes, write_medit_hexes
 
 
 def main():
@@ -18,12 +18,7 @@ def main():
     moved = np.empty_like(pts)
     moved[new_id] = pts
     cells = new_id[hexes]
-    with open(dst, "w") as f:
-        f.write(f"MeshVersionFormatted 1\nDimension 3\nVertices\n{len(pts)}\n")
-        np.savetxt(f, np.column_stack([moved, np.zeros(len(pts))]), fmt="%.17g %.17g %.17g %d")
-        f.write(f"Hexahedra\n{len(cells)}\n")
-        np.savetxt(f, np.column_stack([cells + 1, np.zeros(len(cells), dtype=np.int64)]), fmt="%d")
-        f.write("End\n")
+    write_medit_hexes(dst, moved, cells)
     print(f"wrote {dst}: {len(pts)} vertices renumbered, {len(cells)} hexahedra")
 
 
