@@ -104,6 +104,13 @@ void validate_input(const MeshInput& in, const LoadOptions& par) {
 
 namespace {
 
+// The lowest rank[v] of a soup face's vertices: the bucket face merging puts it in.
+int32_t lowest_rank(std::span<const int32_t> loop, std::span<const int32_t> rank) {
+  int32_t lo = std::numeric_limits<int32_t>::max();
+  for (int32_t v : loop) lo = std::min(lo, rank[static_cast<size_t>(v)]);
+  return lo;
+}
+
 // The loops of the slots of a MeshInput's cells, as the cells give them.
 class SlotLoops {
  public:
@@ -133,11 +140,7 @@ class SlotLoops {
       case CellShape::Tet: return element_lowest<CellShape::Tet>(c, rank, emit);
       case CellShape::Faces: break;
     }
-    for (int32_t r : in_.cells[c]) {
-      int32_t lo = std::numeric_limits<int32_t>::max();
-      for (int32_t v : in_.faces[static_cast<size_t>(r >> 1)]) lo = std::min(lo, rank[static_cast<size_t>(v)]);
-      emit(lo);
-    }
+    for (int32_t r : in_.cells[c]) emit(lowest_rank(in_.faces[static_cast<size_t>(r >> 1)], rank));
   }
   // f(v) for each vertex of cell c, in the order the file gives them (a Faces cell's by its loops).
   template <class F>
@@ -338,9 +341,7 @@ std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, con
       [&](size_t u) { return u <= nc ? static_cast<size_t>(items.slot_offsets[u]) : items.nslots() + (u - nc); },
       [&](size_t u, auto&& emit) {
         if (u < nc) return items.loops.each_lowest(u, rank, [&](int32_t lo) { emit(lo); });
-        int32_t lo = std::numeric_limits<int32_t>::max();
-        for (int32_t v : items.in.faces[static_cast<size_t>(items.unused[u - nc])]) lo = std::min(lo, rank[static_cast<size_t>(v)]);
-        emit(lo);
+        emit(lowest_rank(items.in.faces[static_cast<size_t>(items.unused[u - nc])], rank));
       });
   std::vector<int32_t> rep;
   detail::resize_touched(rep, n, par);
