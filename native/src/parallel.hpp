@@ -4,11 +4,13 @@
 // results in range order.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <span>
 #include <thread>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "hbc/csr.hpp"
@@ -155,22 +157,20 @@ struct RawRows {
   }
 };
 
-// Counting sort of items that come in units (a cell's slots) by key: row k lists the items with
-// key k in increasing order. Unit u holds the items first(u) .. first(u+1)-1 (first(nunits) =
-// every item), and each_key(u, emit) calls emit(key) for them in order, key in [0, nkeys). Each
-// range of units counts into its own table (ranges x nkeys ints) and fills its own share of every
-// row, so the result does not depend on the number of threads. The keys are found twice instead
-// of being kept in an array as large as the items. emit(key, tag) with a tag
-// (a bit above 31-bit item ids, say) stores item | tag instead.
+// Counting sort of values by key: row k lists the values emitted with key k, in the order they
+// were emitted. each(u, emit) calls emit(key, value) for the entries of unit u, key in
+// [0, nkeys); units are visited in order. Each range of units counts into its own table
+// (ranges x nkeys ints) and fills its own share of every row, so the result does not depend on
+// the number of threads. The entries are found twice instead of being kept in an array.
 // Rows is Csr<int32_t>, or RawRows for scratch rows.
-template <class Rows = Csr<int32_t>, class First, class EachKey>
-Rows group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, First&& first, EachKey&& each_key) {
+template <class Rows = Csr<int32_t>, class Each>
+Rows group_values_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, Each&& each) {
   const int nr = range_count(nunits, par);
   std::vector<std::vector<int32_t>> next(static_cast<size_t>(nr));
   parallel_ranges(nunits, par, [&](size_t b, size_t e, int r) {
     std::vector<int32_t>& count = next[static_cast<size_t>(r)];
     count.assign(nkeys, 0);
-    for (size_t u = b; u < e; ++u) each_key(u, [&](int32_t key, uint32_t = 0) { ++count[static_cast<size_t>(key)]; });
+    for (size_t u = b; u < e; ++u) each(u, [&](int32_t key, int32_t) { ++count[static_cast<size_t>(key)]; });
   });
   Rows g;
   resize_touched(g.offsets, nkeys + 1, par);
@@ -179,23 +179,52 @@ Rows group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, Fir
     g.offsets[k] = pos;
     for (auto& count : next) {
       const int32_t c = count[k];
-      count[k] = pos;  // where range r writes its first item of key k
+      count[k] = pos;  // where range r writes its first value of key k
       pos += c;
     }
   }
   g.offsets[nkeys] = pos;
-  if constexpr (std::is_same_v<Rows, RawRows>) g.items = RawArray<int32_t>(static_cast<size_t>(first(nunits)), par);
-  else resize_touched(g.items, static_cast<size_t>(first(nunits)), par);
+  if constexpr (std::is_same_v<Rows, RawRows>) g.items = RawArray<int32_t>(static_cast<size_t>(pos), par);
+  else resize_touched(g.items, static_cast<size_t>(pos), par);
   parallel_ranges(nunits, par, [&](size_t b, size_t e, int r) {
     std::vector<int32_t>& at = next[static_cast<size_t>(r)];
-    for (size_t u = b; u < e; ++u) {
-      auto item = static_cast<int32_t>(first(u));
-      each_key(u, [&](int32_t key, uint32_t tag = 0) {
-        g.items[static_cast<size_t>(at[static_cast<size_t>(key)]++)] = static_cast<int32_t>(static_cast<uint32_t>(item++) | tag);
-      });
-    }
+    for (size_t u = b; u < e; ++u)
+      each(u, [&](int32_t key, int32_t value) { g.items[static_cast<size_t>(at[static_cast<size_t>(key)]++)] = value; });
   });
   return g;
+}
+
+// The transpose of `a` through maps: row j lists row_of(r) for every row r of `a` that names a
+// column c with col_of(c) == j, rows r in increasing order; rows and columns mapped to -1 are
+// left out. With increasing maps and rows of `a` sorted and distinct, the rows come out sorted and
+// distinct.
+template <class RowOf, class ColOf>
+Csr<int32_t> transpose_mapped(const Csr<int32_t>& a, size_t ncols, const LoadOptions& par, RowOf&& row_of, ColOf&& col_of) {
+  return group_values_by_key(a.rows(), ncols, par, [&](size_t r, auto&& emit) {
+    const int32_t to = row_of(r);
+    if (to < 0) return;
+    for (int32_t c : a[r]) {
+      const int32_t j = col_of(c);
+      if (j >= 0) emit(j, to);
+    }
+  });
+}
+
+// transpose (csr.hpp) by ranges of rows in parallel.
+inline Csr<int32_t> transpose(const Csr<int32_t>& a, size_t ncols, const LoadOptions& par) {
+  return transpose_mapped(a, ncols, par, [](size_t r) { return static_cast<int32_t>(r); }, [](int32_t c) { return c; });
+}
+
+// Counting sort of items that come in units (a cell's slots) by key: row k lists the items with
+// key k in increasing order. Unit u holds the items first(u) .. first(u+1)-1, and each_key(u,
+// emit) calls emit(key) for each of them in order, key in [0, nkeys). emit(key, tag) with a tag
+// (a bit above 31-bit item ids, say) stores item | tag instead.
+template <class Rows = Csr<int32_t>, class First, class EachKey>
+Rows group_units_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, First&& first, EachKey&& each_key) {
+  return group_values_by_key<Rows>(nunits, nkeys, par, [&](size_t u, auto&& emit) {
+    auto item = static_cast<uint32_t>(first(u));
+    each_key(u, [&](int32_t key, uint32_t tag = 0) { emit(key, static_cast<int32_t>(item++ | tag)); });
+  });
 }
 
 // Counting sort of the items 0..n-1 by key_of(i) in [0, nkeys): row k lists the items with key k
@@ -223,6 +252,56 @@ void parallel_rows(const Rows& rows, const LoadOptions& par, F&& f) {
   parallel_ranges(static_cast<size_t>(nr), with_grain(par, 1), [&](size_t b, size_t e, int) {
     for (size_t r = b; r < e; ++r) f(start[r], start[r + 1], static_cast<int>(r));
   });
+}
+
+// Rows [0, n) built by row(i, out, scratch) (appending row i's items to out.items), ranges of rows
+// in parallel, each into rows of its own with scratch room of its own, kept as the ranges made
+// them: the same rows for any thread count. Joining the parts into one Csr (parallel_rows_of)
+// holds them twice at its end; a table read row by row is kept parted instead.
+template <class T>
+struct PartedRows {
+  std::vector<size_t> first;  // per part: its first row
+  std::vector<Csr<T>> parts;
+  std::span<const T> operator[](size_t r) const {
+    const size_t k = static_cast<size_t>(std::upper_bound(first.begin(), first.end(), r) - first.begin()) - 1;
+    return parts[k][r - first[k]];
+  }
+};
+
+// No bound on a range's items: its table grows as it is filled.
+struct NoBound {
+  size_t operator()(size_t, size_t) const { return 0; }
+};
+
+// `bound(b, e)`: as many items as rows b..e-1 may hold, reserved up front (more only lets the
+// table grow as without a bound, never changes what it holds). A table that
+// grows by doubling copies itself at each step into fresh memory the kernel must zero first (on
+// the split grid's counts, some 100 MB, a quarter of their time); an over-estimate costs nothing,
+// as pages of the reservation that are never written are never touched.
+template <class T, class Scratch, class Row, class Bound = NoBound>
+PartedRows<T> parallel_parted_rows(size_t n, const LoadOptions& par, Row&& row, Bound bound = {}) {
+  const auto nr = static_cast<size_t>(range_count(n, par));
+  PartedRows<T> rows{std::vector<size_t>(nr, 0), std::vector<Csr<T>>(nr)};
+  parallel_ranges(n, par, [&](size_t b, size_t e, int k) {
+    rows.first[static_cast<size_t>(k)] = b;
+    // Filled on this thread's stack, then moved in: the parts' headers share cache lines, and a
+    // push per row there would bounce them between the cores.
+    Csr<T> out;
+    out.offsets.reserve(e - b + 1);
+    out.items.reserve(bound(b, e));
+    Scratch scratch{};
+    for (size_t i = b; i < e; ++i) {
+      row(i, out, scratch);
+      out.offsets.push_back(static_cast<int32_t>(out.items.size()));
+    }
+    rows.parts[static_cast<size_t>(k)] = std::move(out);
+  });
+  return rows;
+}
+
+template <class T, class Scratch, class Row, class Bound = NoBound>
+Csr<T> parallel_rows_of(size_t n, const LoadOptions& par, Row&& row, Bound bound = {}) {
+  return concat(parallel_parted_rows<T, Scratch>(n, par, std::forward<Row>(row), bound).parts);
 }
 
 }  // namespace hbc::detail

@@ -16,55 +16,9 @@ namespace hbc {
 
 namespace {
 
-// Rows [0, n) built by row(i, out, scratch) (appending row i's items to out.items), ranges of rows
-// in parallel, each into rows of its own with scratch room of its own, kept as the ranges made
-// them: the same rows for any thread count. Joining the parts into one Csr (parallel_rows_of)
-// holds them twice at its end; a table read row by row is kept parted instead.
-template <class T>
-struct PartedRows {
-  std::vector<size_t> first;  // per part: its first row
-  std::vector<Csr<T>> parts;
-  std::span<const T> operator[](size_t r) const {
-    const size_t k = static_cast<size_t>(std::upper_bound(first.begin(), first.end(), r) - first.begin()) - 1;
-    return parts[k][r - first[k]];
-  }
-};
-
-// No bound on a range's items: its table grows as it is filled.
-struct NoBound {
-  size_t operator()(size_t, size_t) const { return 0; }
-};
-
-// `bound(b, e)`: as many items as rows b..e-1 may hold, reserved up front (more only lets the
-// table grow as without a bound, never changes what it holds). A table that
-// grows by doubling copies itself at each step into fresh memory the kernel must zero first (on
-// the split grid's counts, some 100 MB, a quarter of their time); an over-estimate costs nothing,
-// as pages of the reservation that are never written are never touched.
-template <class T, class Scratch, class Row, class Bound = NoBound>
-PartedRows<T> parallel_parted_rows(size_t n, const LoadOptions& par, Row&& row, Bound bound = {}) {
-  const auto nr = static_cast<size_t>(detail::range_count(n, par));
-  PartedRows<T> rows{std::vector<size_t>(nr, 0), std::vector<Csr<T>>(nr)};
-  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int k) {
-    rows.first[static_cast<size_t>(k)] = b;
-    // Filled on this thread's stack, then moved in: the parts' headers share cache lines, and a
-    // push per row there would bounce them between the cores.
-    Csr<T> out;
-    out.offsets.reserve(e - b + 1);
-    out.items.reserve(bound(b, e));
-    Scratch scratch{};
-    for (size_t i = b; i < e; ++i) {
-      row(i, out, scratch);
-      out.offsets.push_back(static_cast<int32_t>(out.items.size()));
-    }
-    rows.parts[static_cast<size_t>(k)] = std::move(out);
-  });
-  return rows;
-}
-
-template <class T, class Scratch, class Row, class Bound = NoBound>
-Csr<T> parallel_rows_of(size_t n, const LoadOptions& par, Row&& row, Bound bound = {}) {
-  return concat(parallel_parted_rows<T, Scratch>(n, par, std::forward<Row>(row), bound).parts);
-}
+using detail::parallel_parted_rows;
+using detail::parallel_rows_of;
+using detail::PartedRows;
 
 bool share_vertex(const CellComplex& cx, int32_t e, int32_t f) {
   const auto a = cx.edge_verts[e], b = cx.edge_verts[f];
@@ -100,7 +54,7 @@ Index index_points(const CellComplex& cx, const VsgWireframe& w, const LoadOptio
     if (buf.size() > 2 || (buf.size() == 2 && buf[1] <= buf[0])) sort_unique(buf);
     out.items.insert(out.items.end(), buf.begin(), buf.end());
   }, [&](size_t b, size_t e) { return static_cast<size_t>(w.polylines.offsets[e] - w.polylines.offsets[b]); });
-  ix.point_wires = transpose(ix.wire_points, static_cast<size_t>(n));
+  ix.point_wires = detail::transpose(ix.wire_points, static_cast<size_t>(n), par);
   return ix;
 }
 
@@ -184,11 +138,14 @@ void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWirefr
   std::vector<uint8_t> source(ne, 0);
   std::vector<int32_t> dv(nv, kInf);
   const int32_t horizon = std::max(opt.opacity_hops, 1);
-  for (size_t e = 0; e < ne; ++e) {
-    source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
-    if (!source[e] || cx.closed(e)) continue;
-    for (int32_t v : cx.edge_verts[e]) dv[v] = 0;
-  }
+  // Threads only ever store the same 0 into a shared vertex's distance.
+  detail::parallel_ranges(ne, par, [&](size_t b, size_t end, int) {
+    for (size_t e = b; e < end; ++e) {
+      source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
+      if (!source[e] || cx.closed(e)) continue;
+      for (int32_t v : cx.edge_verts[e]) std::atomic_ref<int32_t>(dv[static_cast<size_t>(v)]).store(0, std::memory_order_relaxed);
+    }
+  });
   hop_distances(cx, horizon, par, dv);
   const double floor = std::clamp(opt.opacity_floor, 0.0, 1.0);
   auto value = [&](int32_t d) {
@@ -236,7 +193,7 @@ Csr<int32_t> merged_points(const Csr<int32_t>& class_wires, const std::vector<in
         out.items.insert(out.items.end(), buf.begin(), buf.end());
       },
       [&](size_t b, size_t e) { return static_cast<size_t>(ix.point_wires.offsets[e] - ix.point_wires.offsets[b]); });
-  return transpose(point_classes, class_wires.rows());
+  return detail::transpose(point_classes, class_wires.rows(), par);
 }
 
 ClassPoints class_points(const Csr<int32_t>& class_wires, const std::vector<int32_t>& wire_class, const Index& ix,
@@ -372,7 +329,7 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
   // of cells around an edge) is not visited through it: such a crowded point keeps a count of its
   // coloured classes per colour instead, which keeps the lists (and the time) from growing with
   // the square of a fan.
-  const Csr<int32_t> class_wires = group_by(st.color_class, nw);
+  const Csr<int32_t> class_wires = detail::group_by_key(nw, nw, threads, [&](size_t w) { return st.color_class[w]; });
   const ClassPoints cp = class_points(class_wires, st.color_class, ix, threads);
   const Csr<int32_t> earlier = earlier_neighbours(cp, ix, st.color_class, threads);
   const int32_t palette = std::max(opt.palette_size, 1);
