@@ -43,7 +43,7 @@ SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const Analy
 
 WireframeStage wireframe_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt) {
   WireframeStage st;
-  st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, complex) : complex_from_mesh(mesh);
+  st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, complex, LoadOptions{opt.threads}) : complex_from_mesh(mesh);
   st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, LoadOptions{opt.threads});
   return st;
 }
@@ -216,7 +216,7 @@ StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
   std::optional<BaseViewFacts> facts;
   if (opt.wireframe && opt.wireframe_level == Level::Complex) {
     const auto t = std::chrono::steady_clock::now();
-    facts = base_view_facts(mesh, bc);
+    facts = base_view_facts(mesh, bc, LoadOptions{opt.threads});
     s.timings.vsg_wireframe = since(t);
   }
   drop_facts_only(bc);
@@ -229,7 +229,7 @@ StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
   WireframeStage st;
   if (facts) {
     if (owned) release(*owned);
-    st.view = complex_from_base(bc, *facts);
+    st.view = complex_from_base(bc, *facts, LoadOptions{opt.threads});
     facts.reset();
     release(bc);
   } else {

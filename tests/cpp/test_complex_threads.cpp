@@ -1,5 +1,5 @@
-// The base complex, the sheet domain and the sheets split over threads: every array equals the
-// single-threaded result. A small grain splits even these small meshes into many ranges, so that
+// The base complex, the sheet domain, the sheets and the complex-level view split over threads:
+// every array equals the single-threaded result. A small grain splits even these small meshes into many ranges, so that
 // range boundaries fall inside components, patches, classes and sheets.
 #include <gtest/gtest.h>
 
@@ -110,6 +110,15 @@ void expect_thread_independent(const Mesh& m) {
     const LoadOptions par{threads, 8};
     const BaseComplex other = base_complex(m, g, par);
     expect_same_complex(bc, other);
+    {
+      // The whole view, and that of every other component (a proper region: fans of the region's
+      // cells, and the whole-mesh adjacency).
+      SCOPED_TRACE("view");
+      test::expect_same_view(complex_from_base(m, bc, one), complex_from_base(m, other, par));
+      std::vector<int32_t> region;
+      for (size_t k = 0; k < bc.num_components(); k += 2) region.push_back(static_cast<int32_t>(k));
+      test::expect_same_view(complex_from_base(m, bc, region, one), complex_from_base(m, other, region, par));
+    }
     for (Level level : {Level::Complex, Level::Mesh}) {
       SCOPED_TRACE(level == Level::Complex ? "complex level" : "mesh level");
       const SheetDomain d = sheet_domain(m, bc, level, one), d2 = sheet_domain(m, other, level, par);
