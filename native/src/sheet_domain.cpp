@@ -22,26 +22,17 @@ bool share_end(const std::array<int32_t, 2>& a, const std::array<int32_t, 2>& b)
 // curves of each quad.
 Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<std::array<int32_t, 2>>& ends,
                                   size_t ncurves, const LoadOptions& par) {
-  // Count, fill, then sort and dedupe each (short) row: no global sort of all pairs.
-  auto for_each_pair = [&](auto&& fn) {
-    for (size_t q = 0; q < quads.rows(); ++q) {
-      auto c = quads[q];
-      if (c.size() != 4) continue;
-      for (size_t i = 0; i < 4; ++i)
-        for (size_t j = i + 1; j < 4; ++j) {
-          if (ends[c[i]][0] < 0 || ends[c[j]][0] < 0 || share_end(ends[c[i]], ends[c[j]])) continue;
-          fn(c[i], c[j]);
-          fn(c[j], c[i]);
-        }
-    }
-  };
-  Csr<int32_t> out;
-  out.offsets.assign(ncurves + 1, 0);
-  for_each_pair([&](int32_t a, int32_t) { ++out.offsets[a + 1]; });
-  for (size_t i = 0; i < ncurves; ++i) out.offsets[i + 1] += out.offsets[i];
-  out.items.resize(out.offsets.back());
-  std::vector<int32_t> fill(out.offsets.begin(), out.offsets.end() - 1);
-  for_each_pair([&](int32_t a, int32_t b) { out.items[fill[a]++] = b; });
+  // Grouped by curve, then each (short) row sorted and deduped: no global sort of all pairs.
+  Csr<int32_t> out = detail::group_values_by_key(quads.rows(), ncurves, par, [&](size_t q, auto&& emit) {
+    const auto c = quads[q];
+    if (c.size() != 4) return;
+    for (size_t i = 0; i < 4; ++i)
+      for (size_t j = i + 1; j < 4; ++j) {
+        if (ends[c[i]][0] < 0 || ends[c[j]][0] < 0 || share_end(ends[c[i]], ends[c[j]])) continue;
+        emit(c[i], c[j]);
+        emit(c[j], c[i]);
+      }
+  });
   // Sort and dedupe rows in place (in parallel ranges), then compact.
   std::vector<int32_t> kept(ncurves);
   detail::parallel_ranges(ncurves, par, [&](size_t b, size_t e, int) {
@@ -64,19 +55,10 @@ Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<s
 // Row per curve listing map[o] for each owner o whose row of `owner_curves` (sorted, distinct)
 // holds the curve, skipping map[o] < 0: a transpose through a monotonic map, so rows come out
 // sorted and distinct.
-Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vector<int32_t>& map, size_t ncurves) {
-  Csr<int32_t> rows;
-  rows.offsets.assign(ncurves + 1, 0);
-  for (size_t o = 0; o < owner_curves.rows(); ++o)
-    if (map[o] >= 0)
-      for (int32_t k : owner_curves[o]) ++rows.offsets[static_cast<size_t>(k) + 1];
-  for (size_t k = 0; k < ncurves; ++k) rows.offsets[k + 1] += rows.offsets[k];
-  rows.items.resize(static_cast<size_t>(rows.offsets.back()));
-  std::vector<int32_t> fill(rows.offsets.begin(), rows.offsets.end() - 1);
-  for (size_t o = 0; o < owner_curves.rows(); ++o)
-    if (map[o] >= 0)
-      for (int32_t k : owner_curves[o]) rows.items[static_cast<size_t>(fill[static_cast<size_t>(k)]++)] = map[o];
-  return rows;
+Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vector<int32_t>& map, size_t ncurves,
+                              const LoadOptions& par) {
+  return detail::transpose_mapped(
+      owner_curves, ncurves, par, [&](size_t o) { return map[o]; }, [](int32_t k) { return k; });
 }
 
 }  // namespace
@@ -129,8 +111,8 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level, cons
     std::vector<int32_t> non_hex_cell(bc.num_components(), -1);
     for (size_t k = 0; k < bc.num_components(); ++k)
       if (bc.component_kind[k] == ComponentKind::NonHex) non_hex_cell[k] = bc.component_cells[k][0];
-    d.curve_blocks = curve_owner_rows(bc.component_curves, comp_block, d.curve_edges.rows());
-    d.curve_non_hex_cells = curve_owner_rows(bc.component_curves, non_hex_cell, d.curve_edges.rows());
+    d.curve_blocks = curve_owner_rows(bc.component_curves, comp_block, d.curve_edges.rows(), par);
+    d.curve_non_hex_cells = curve_owner_rows(bc.component_curves, non_hex_cell, d.curve_edges.rows(), par);
   } else {
     for (size_t c = 0; c < nc; ++c) {
       if (!m.is_hex(c)) continue;

@@ -427,7 +427,7 @@ struct Group {
 // come in cell order) is its first block: ordering the roots by class gives the groups' order.
 std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc, const LoadOptions& par) {
   const size_t ne = pc.entry_class.size(), nb = d.block_cells.rows();
-  const Csr<int32_t> block_entries = group_by(pc.entry_block, nb);
+  const Csr<int32_t> block_entries = detail::group_by_key(ne, nb, par, [&](size_t a) { return pc.entry_block[a]; });
   auto entry_of = [&](int32_t u, int32_t k) {
     for (int32_t a : block_entries[static_cast<size_t>(u)])
       if (pc.entry_class[static_cast<size_t>(a)] == k) return a;
@@ -451,7 +451,8 @@ std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc,
   std::vector<int32_t> root_class;  // per root in entry order: its class
   for (size_t a = 0; a < ne; ++a)
     if (root[a] == static_cast<int32_t>(a)) root_class.push_back(pc.entry_class[a]);
-  const Csr<int32_t> by_class = group_by(root_class, static_cast<size_t>(pc.count));
+  const Csr<int32_t> by_class =
+      detail::group_by_key(root_class.size(), static_cast<size_t>(pc.count), par, [&](size_t r) { return root_class[r]; });
   std::vector<int32_t> group_of_root(root_class.size());
   for (size_t g = 0; g < by_class.items.size(); ++g) group_of_root[static_cast<size_t>(by_class.items[g])] = static_cast<int32_t>(g);
   // Entry -> group: roots come in entry order, so a root's rank among them is its index.
@@ -462,19 +463,36 @@ std::vector<Group> block_groups(const SheetDomain& d, const ParallelClasses& pc,
     for (size_t a = b; a < e; ++a)
       if (root[a] != static_cast<int32_t>(a)) group[a] = group[static_cast<size_t>(root[a])];
   });
-  std::vector<Group> out(root_class.size());
-  for (size_t u = 0; u < nb; ++u)
-    for (int32_t a : block_entries[u]) out[static_cast<size_t>(group[static_cast<size_t>(a)])].blocks.push_back(static_cast<int32_t>(u));
-  for (size_t c = 0; c < pc.curve_class.size(); ++c) {
-    const int32_t k = pc.curve_class[c];
-    if (k < 0) continue;
-    for (int32_t u : d.curve_blocks[c]) {
-      const int32_t a = entry_of(u, k);
-      if (a < 0) continue;
-      auto& cv = out[static_cast<size_t>(group[static_cast<size_t>(a)])].curves;
-      if (cv.empty() || cv.back() != static_cast<int32_t>(c)) cv.push_back(static_cast<int32_t>(c));
-    }
-  }
+  // Each group's blocks, then its curves, gathered by ranges of blocks and of curves in order
+  // (so each row comes out increasing) and copied into the groups at their exact sizes.
+  const size_t ng = root_class.size();
+  std::vector<Group> out(ng);
+  auto fill = [&](const Csr<int32_t>& rows, std::vector<int32_t> Group::*member) {
+    parallel_ranges(ng, par, [&](size_t b, size_t e, int) {
+      for (size_t g = b; g < e; ++g) (out[g].*member).assign(rows[g].begin(), rows[g].end());
+    });
+  };
+  fill(detail::group_values_by_key(nb, ng, par, [&](size_t u, auto&& emit) {
+         for (int32_t a : block_entries[u]) emit(group[static_cast<size_t>(a)], static_cast<int32_t>(u));
+       }),
+       &Group::blocks);
+  // A curve joins each group holding one of its blocks' entries of its class once.
+  auto group_at = [&](int32_t u, int32_t k) {
+    const int32_t a = entry_of(u, k);
+    return a < 0 ? -1 : group[static_cast<size_t>(a)];
+  };
+  fill(detail::group_values_by_key(pc.curve_class.size(), ng, par, [&](size_t c, auto&& emit) {
+         const int32_t k = pc.curve_class[c];
+         if (k < 0) return;
+         const auto us = d.curve_blocks[c];
+         for (size_t i = 0; i < us.size(); ++i) {
+           const int32_t g = group_at(us[i], k);
+           bool before = false;
+           for (size_t j = 0; j < i && !before; ++j) before = group_at(us[j], k) == g;
+           if (g >= 0 && !before) emit(g, static_cast<int32_t>(c));
+         }
+       }),
+       &Group::curves);
   return out;
 }
 
