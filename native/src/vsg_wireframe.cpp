@@ -118,6 +118,11 @@ struct Chains {
   Csr<int32_t> edges, verts;  // verts: one more than edges; a closed chain repeats its start
 };
 
+// Threads only ever store 1 into a shared flag, through relaxed atomic stores.
+void set_flag(std::vector<uint8_t>& v, int32_t i) {
+  std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(1, std::memory_order_relaxed);
+}
+
 template <class Next>
 void walk(const CellComplex& cx, int32_t from, int32_t e, const std::vector<uint8_t>& stop_vert,
           std::vector<uint8_t>& used, const Next& next, std::vector<int32_t>& vs, std::vector<int32_t>& es) {
@@ -638,12 +643,14 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
   const Csr<int32_t> nexts = continuations(r, ch, ix, pt, parallel, cl.non_important, par);
   cl.kept = reactivate(nexts, nc, stack);
   cl.reactivated.assign(nc, 0);
-  for (size_t c = 0; c < nc; ++c) {
-    cl.reactivated[c] = cl.kept[c] && cl.non_important[c];
-    bool all_parallel = true;
-    for (int32_t e : ch.edges[c]) all_parallel = all_parallel && parallel[e];
-    if (all_parallel) cl.kept[c] = 0;
-  }
+  detail::parallel_ranges(nc, par, [&](size_t b, size_t end, int) {
+    for (size_t c = b; c < end; ++c) {
+      cl.reactivated[c] = cl.kept[c] && cl.non_important[c];
+      bool all_parallel = true;
+      for (int32_t e : ch.edges[c]) all_parallel = all_parallel && parallel[e];
+      if (all_parallel) cl.kept[c] = 0;
+    }
+  });
   return cl;
 }
 
@@ -656,10 +663,12 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
   const ChainIndex ix = index_chains(cx, ch, kept, par);
   const auto on = [&](int32_t e) { return ix.edge_chain[e] >= 0; };
   std::vector<uint8_t> end(cx.num_vertices(), 0), singular(cx.num_vertices(), 0);
-  for (size_t c = 0; c < ch.edges.rows(); ++c) {
-    const auto vs = ch.verts[c];
-    if (kept[c] && vs.front() != vs.back()) end[vs.front()] = end[vs.back()] = 1;
-  }
+  detail::parallel_ranges(ch.edges.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) {
+      const auto vs = ch.verts[c];
+      if (kept[c] && vs.front() != vs.back()) set_flag(end, vs.front()), set_flag(end, vs.back());
+    }
+  });
   detail::parallel_ranges(end.size(), par, [&](size_t b, size_t e, int) {
     std::vector<int32_t> at;
     for (size_t v = b; v < e; ++v) {
@@ -675,9 +684,12 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
     }
   });
   std::vector<uint8_t> seeds(cx.num_edges(), 0);
-  for (size_t v = 0; v < singular.size(); ++v)
-    if (singular[v])
-      for (int32_t e : cx.vert_edges[v]) seeds[e] = on(e);
+  detail::parallel_ranges(singular.size(), par, [&](size_t b, size_t end_v, int) {
+    for (size_t v = b; v < end_v; ++v)
+      if (singular[v])
+        for (int32_t e : cx.vert_edges[v])
+          if (on(e)) set_flag(seeds, e);
+  });
   return trace_chains(cx, seeds, singular, [&](int32_t v, int32_t e) {
     return straight_next(r, v, e, [&](int32_t f) { return on(f); });
   });
@@ -713,22 +725,36 @@ void fill_complete(const Region& r, const Chains& ch, const LoadOptions& par, Vs
 // Connected components of the chains: their vertices are joined chain by chain, and each set of
 // wireframe vertices is one component (its root, the lowest member, counted once); a chain of a
 // closed curve alone has no vertex and is a component by itself.
-int64_t components(const CellComplex& cx, const Csr<int32_t>& chains) {
-  detail::UnionFind uf(cx.num_vertices());
-  std::vector<uint8_t> on(cx.num_vertices(), 0);
+// The sets do not depend on the order of the unions, so ranges of chains unite at once.
+int64_t components(const CellComplex& cx, const Csr<int32_t>& chains, const LoadOptions& par) {
+  const size_t nv = cx.num_vertices();
+  detail::ConcurrentUnionFind uf(nv, par);
+  std::vector<uint8_t> on(nv, 0);
+  std::vector<int64_t> closed(static_cast<size_t>(detail::range_count(chains.rows(), par)), 0);
+  detail::parallel_ranges(chains.rows(), par, [&](size_t b, size_t e, int r) {
+    int64_t alone = 0;  // local: the ranges' counts share a cache line
+    for (size_t c = b; c < e; ++c) {
+      int32_t first = -1;
+      for (int32_t x : chains[c])
+        for (int32_t v : cx.edge_verts[x]) {
+          if (v < 0) continue;
+          set_flag(on, v);
+          if (first < 0) first = v;
+          else uf.unite(first, v);
+        }
+      alone += first < 0;
+    }
+    closed[static_cast<size_t>(r)] = alone;
+  });
+  std::vector<int64_t> roots(static_cast<size_t>(detail::range_count(nv, par)), 0);
+  detail::parallel_ranges(nv, par, [&](size_t b, size_t e, int r) {
+    int64_t n = 0;
+    for (size_t v = b; v < e; ++v) n += on[v] && uf.find(static_cast<int32_t>(v)) == static_cast<int32_t>(v);
+    roots[static_cast<size_t>(r)] = n;
+  });
   int64_t n = 0;
-  for (size_t c = 0; c < chains.rows(); ++c) {
-    int32_t first = -1;
-    for (int32_t e : chains[c])
-      for (int32_t v : cx.edge_verts[e]) {
-        if (v < 0) continue;
-        on[v] = 1;
-        if (first < 0) first = v;
-        else uf.unite(first, v);
-      }
-    n += first < 0;
-  }
-  for (size_t v = 0; v < on.size(); ++v) n += on[v] && uf.parent[v] == static_cast<int32_t>(v);
+  for (int64_t k : closed) n += k;
+  for (int64_t k : roots) n += k;
   return n;
 }
 
@@ -782,16 +808,18 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   w.simplified_polylines = polylines(cx, simple, par);
   const std::vector<uint8_t> on = edge_flags(cx, simple.edges);
   w.shown.assign(w.size(), 0);
-  for (size_t c = 0; c < w.size(); ++c) {
-    bool all = true;
-    for (int32_t e : w.edges[c]) all = all && on[e];
-    w.shown[c] = all;
-  }
+  detail::parallel_ranges(w.size(), par, [&](size_t b, size_t end, int) {
+    for (size_t c = b; c < end; ++c) {
+      bool all = true;
+      for (int32_t e : w.edges[c]) all = all && on[e];
+      w.shown[c] = all;
+    }
+  });
   w.vsg_mesh_edges = covered_mesh_edges(cx, w.vsg_chain_edges);
   w.wireframe_mesh_edges = covered_mesh_edges(cx, w.edges);
   w.simplified_mesh_edges = covered_mesh_edges(cx, w.simplified_edges);
-  w.reference_components = components(cx, w.edges);
-  w.shown_components = components(cx, w.simplified_edges);
+  w.reference_components = components(cx, w.edges, par);
+  w.shown_components = components(cx, w.simplified_edges, par);
   return w;
 }
 
