@@ -53,7 +53,7 @@ WireframeStage wireframe_stage(const Mesh& mesh, const BaseComplex& complex, con
 Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
   Analysis a;
   auto t = std::chrono::steady_clock::now();
-  a.graph = singularity_graph(mesh);
+  a.graph = singularity_graph(mesh, LoadOptions{opt.threads});
   a.timings.singularity_graph = since(t);
 
   t = std::chrono::steady_clock::now();
@@ -178,7 +178,7 @@ void keep_for_sheets(Mesh& m) {
 // The graph and the base complex, counted; only the base complex (all of it) is kept.
 BaseComplex counted_base_complex(const Mesh& mesh, const AnalysisOptions& opt, Stats& s) {
   auto t = std::chrono::steady_clock::now();
-  SingularityGraph graph = singularity_graph(mesh);
+  SingularityGraph graph = singularity_graph(mesh, LoadOptions{opt.threads});
   s.timings.singularity_graph = since(t);
   graph_stats(mesh, graph, s);
   keep_for_base_complex(graph);

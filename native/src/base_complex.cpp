@@ -290,10 +290,13 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
     bc.vert_corner[v] &= !no_edge[v];
     if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
   }
-  chain_edges(m, bc.edge_complex, {}, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed);
+  chain_edges(m, bc.edge_complex, {}, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed, par);
   assign_touched(bc.edge_curve, ne, int32_t{-1}, par);
-  for (size_t k = 0; k < bc.curve_edges.rows(); ++k)
-    for (int32_t e : bc.curve_edges[k]) bc.edge_curve[e] = static_cast<int32_t>(k);
+  // A mesh edge is on one curve at most: ranges of curves write disjoint entries.
+  parallel_ranges(bc.curve_edges.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k)
+      for (int32_t x : bc.curve_edges[k]) bc.edge_curve[x] = static_cast<int32_t>(k);
+  });
 }
 
 // Patches: separation faces joined straight across edges that are not curves; the components on
@@ -381,34 +384,32 @@ void patch_incidences(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   append_parts(bc.patch_curves, parts, 1);
 }
 
-// Separation faces with the same component on both sides (reported, never hidden).
-void find_self_adjacent_faces(const Mesh& m, BaseComplex& bc) {
-  for (size_t f = 0; f < m.num_faces(); ++f) {
-    if (!bc.face_separation[f] || m.face_cells[f][1] < 0) continue;
-    if (bc.cell_component[m.face_cells[f][0]] == bc.cell_component[m.face_cells[f][1]])
-      bc.self_adjacent_faces.push_back(static_cast<int32_t>(f));
-  }
+// Separation faces with the same component on both sides (reported, never hidden), by ranges of
+// faces joined in order.
+void find_self_adjacent_faces(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
+  std::vector<std::vector<int32_t>> parts(static_cast<size_t>(range_count(m.num_faces(), par)));
+  parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int r) {
+    std::vector<int32_t> own;  // on this thread's stack: the parts' headers share cache lines
+    for (size_t f = b; f < e; ++f) {
+      if (!bc.face_separation[f] || m.face_cells[f][1] < 0) continue;
+      if (bc.cell_component[m.face_cells[f][0]] == bc.cell_component[m.face_cells[f][1]]) own.push_back(static_cast<int32_t>(f));
+    }
+    parts[static_cast<size_t>(r)] = std::move(own);
+  });
+  for (const auto& part : parts) bc.self_adjacent_faces.insert(bc.self_adjacent_faces.end(), part.begin(), part.end());
 }
 
 // Per component, its patches: patch_components transposed (rows in increasing patch id). Every
 // face of a patch has the patch's components on its two sides: faces join across an edge that is
 // not complex, hence Regular, whose two other faces (each the straight continuation of the other,
 // and separation faces are closed under it) then do not separate and join the cells on each side.
-void component_patch_rows(BaseComplex& bc) {
-  Csr<int32_t>& out = bc.component_patches;
-  out.offsets.assign(bc.component_cells.rows() + 1, 0);
-  for (const auto& pc : bc.patch_components) {
-    ++out.offsets[static_cast<size_t>(pc[0]) + 1];
-    if (pc[1] >= 0 && pc[1] != pc[0]) ++out.offsets[static_cast<size_t>(pc[1]) + 1];
-  }
-  for (size_t k = 1; k < out.offsets.size(); ++k) out.offsets[k] += out.offsets[k - 1];
-  resize_huge(out.items, static_cast<size_t>(out.offsets.back()));
-  std::vector<int32_t> at(out.offsets.begin(), out.offsets.end() - 1);
-  for (size_t p = 0; p < bc.patch_components.size(); ++p) {
-    const auto pc = bc.patch_components[p];
-    out.items[static_cast<size_t>(at[static_cast<size_t>(pc[0])]++)] = static_cast<int32_t>(p);
-    if (pc[1] >= 0 && pc[1] != pc[0]) out.items[static_cast<size_t>(at[static_cast<size_t>(pc[1])]++)] = static_cast<int32_t>(p);
-  }
+void component_patch_rows(BaseComplex& bc, const LoadOptions& par) {
+  bc.component_patches =
+      detail::group_values_by_key(bc.patch_components.size(), bc.component_cells.rows(), par, [&](size_t p, auto&& emit) {
+        const auto pc = bc.patch_components[p];
+        emit(pc[0], static_cast<int32_t>(p));
+        if (pc[1] >= 0 && pc[1] != pc[0]) emit(pc[1], static_cast<int32_t>(p));
+      });
 }
 
 // The adjacent components, curves and corners of components first..last-1, gathered from their
@@ -440,7 +441,7 @@ void component_rows(const BaseComplex& bc, size_t first, size_t last, std::array
 // Per component: its patches, then the adjacent components, curves and corners, in ranges of
 // components holding about as many patches each; range 0 writes straight into bc.
 void component_incidences(BaseComplex& bc, const LoadOptions& par) {
-  component_patch_rows(bc);
+  component_patch_rows(bc, par);
   const Csr<int32_t>& rows = bc.component_patches;
   const size_t nr = static_cast<size_t>(range_count(std::max(rows.rows(), rows.items.size()), par));
   std::vector<std::array<Csr<int32_t>, 3>> parts(nr);
@@ -493,26 +494,29 @@ int64_t boundary_euler(const Mesh& m, const BaseComplex& bc, int32_t k, std::vec
 
 // The kind of each component: a single non-hex cell; a cube (6 quad patches, 12 curves, 8
 // corners, no cut inside); a ring (cut by a self-adjacent face, or a torus-like boundary); other.
-void classify_components(const Mesh& m, BaseComplex& bc) {
+// Ranges of components holding about as many cells each.
+void classify_components(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   const size_t ncomp = bc.component_cells.rows();
   std::vector<uint8_t> self_cut(ncomp, 0);
   for (int32_t f : bc.self_adjacent_faces) self_cut[bc.cell_component[m.face_cells[f][0]]] = 1;
-  std::vector<int32_t> edges, verts;
   bc.component_kind.assign(ncomp, ComponentKind::Other);
-  for (size_t k = 0; k < ncomp; ++k) {
-    const auto cells = bc.component_cells[k];
-    if (cells.size() == 1 && !m.is_hex(cells[0])) {
-      bc.component_kind[k] = ComponentKind::NonHex;
-      continue;
+  parallel_rows(bc.component_cells, par, [&](size_t first, size_t last, int) {
+    std::vector<int32_t> edges, verts;
+    for (size_t k = first; k < last; ++k) {
+      const auto cells = bc.component_cells[k];
+      if (cells.size() == 1 && !m.is_hex(cells[0])) {
+        bc.component_kind[k] = ComponentKind::NonHex;
+        continue;
+      }
+      bool cube = !self_cut[k] && bc.component_patches.count(k) == 6 && bc.component_curves.count(k) == 12 &&
+                  bc.component_corners.count(k) == 8;
+      for (int32_t p : bc.component_patches[k])
+        cube = cube && bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
+      if (cube) bc.component_kind[k] = ComponentKind::Cube;
+      else if (self_cut[k] || boundary_euler(m, bc, static_cast<int32_t>(k), edges, verts) == 0)
+        bc.component_kind[k] = ComponentKind::Ring;
     }
-    bool cube = !self_cut[k] && bc.component_patches.count(k) == 6 && bc.component_curves.count(k) == 12 &&
-                bc.component_corners.count(k) == 8;
-    for (int32_t p : bc.component_patches[k])
-      cube = cube && bc.patch_curves.count(p) == 4 && bc.patch_corners.count(p) == 4;
-    if (cube) bc.component_kind[k] = ComponentKind::Cube;
-    else if (self_cut[k] || boundary_euler(m, bc, static_cast<int32_t>(k), edges, verts) == 0)
-      bc.component_kind[k] = ComponentKind::Ring;
-  }
+  });
 }
 
 }  // namespace
@@ -529,9 +533,9 @@ BaseComplex base_complex(const Mesh& m, const SingularityGraph& g, const LoadOpt
     find_patches(m, bc, table, par);
   }
   patch_incidences(m, bc, par);
-  find_self_adjacent_faces(m, bc);
+  find_self_adjacent_faces(m, bc, par);
   component_incidences(bc, par);
-  classify_components(m, bc);
+  classify_components(m, bc, par);
   return bc;
 }
 

@@ -88,20 +88,11 @@ void cell_edges(const Mesh& m, size_t c, std::vector<int32_t>& out) {
   sort_unique(out);
 }
 
-Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep) {
-  const size_t ne = m.num_edges(), nv = m.num_vertices();
-  auto kept = [&](size_t e) { return keep.empty() || keep[e]; };
-  Csr<int32_t> ve;
-  ve.offsets.assign(nv + 1, 0);
-  for (size_t e = 0; e < ne; ++e)
-    if (kept(e)) ++ve.offsets[static_cast<size_t>(m.edge_verts[e][0]) + 1], ++ve.offsets[static_cast<size_t>(m.edge_verts[e][1]) + 1];
-  std::partial_sum(ve.offsets.begin(), ve.offsets.end(), ve.offsets.begin());
-  ve.items.resize(static_cast<size_t>(ve.offsets[nv]));
-  std::vector<int32_t> at(ve.offsets.begin(), ve.offsets.end() - 1);
-  for (size_t e = 0; e < ne; ++e)
-    if (kept(e))
-      for (int32_t v : m.edge_verts[e]) ve.items[static_cast<size_t>(at[static_cast<size_t>(v)]++)] = static_cast<int32_t>(e);
-  return ve;
+Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep, const LoadOptions& threads) {
+  return detail::group_values_by_key(m.num_edges(), m.num_vertices(), resolved(threads), [&](size_t e, auto&& emit) {
+    if (!keep.empty() && !keep[e]) return;
+    for (int32_t v : m.edge_verts[e]) emit(v, static_cast<int32_t>(e));
+  });
 }
 
 namespace mesh_steps {
@@ -319,7 +310,7 @@ void non_manifold_vertices(Mesh& m, const CellCheck& cells, const LoadOptions& p
 
 void drop_declared_edges(Mesh& m, const MeshInput& in) {
   if (in.declared_edges.empty()) return;
-  const Csr<int32_t> ve = vertex_edges(m);
+  const Csr<int32_t> ve = vertex_edges(m, {}, LoadOptions{1});
   const auto nv = static_cast<int32_t>(m.num_vertices());
   for (auto [a, b] : in.declared_edges) {
     const bool known = a >= 0 && b >= 0 && a < nv && b < nv &&

@@ -1,125 +1,217 @@
 #include "hbc/singularity_graph.hpp"
 
 #include <algorithm>
+#include <atomic>
+
+#include "parallel.hpp"
 
 namespace hbc {
 
-void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, std::span<const int32_t> value,
-                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
-                 std::vector<uint8_t>& closed) {
-  // The walk only ever looks at member edges, so the vertex table needs only them.
-  chain_edges(m.edge_verts, vertex_edges(m, member), member, value, stop, verts, edges, closed);
-}
+namespace {
 
-void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
-                 const std::vector<uint8_t>& member, std::span<const int32_t> value,
-                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
-                 std::vector<uint8_t>& closed) {
-  verts.clear();
-  edges.clear();
-  closed.clear();
-  const size_t ne = edge_verts.size();
-  // Named like the Mesh members so that the walk below reads the same for both callers.
-  struct {
-    std::span<const std::array<int32_t, 2>> edge_verts;
-    const Csr<int32_t>& vert_edges;
-    int32_t other_vertex(int32_t e, int32_t v) const {
-      return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0];
-    }
-  } m{edge_verts, vert_edges};
+// The member edges as a graph of chains: a chain passes a vertex between its two member edges
+// when the vertex is not a stop and their values agree. pass() is symmetric, so every chain is a
+// path or a cycle, and the edge a chain reaches a vertex by is the one it leaves it by, backwards.
+struct ChainGraph {
+  std::span<const std::array<int32_t, 2>> edge_verts;
+  const Csr<int32_t>& vert_edges;
+  const std::vector<uint8_t>& member;
+  std::span<const int32_t> value;
+  const std::vector<uint8_t>& stop;
+  int32_t other_vertex(int32_t e, int32_t v) const { return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0]; }
   // The member edge at v other than e, when v lets a chain pass (else -1).
-  auto pass = [&](int32_t v, int32_t e) -> int32_t {
+  int32_t pass(int32_t v, int32_t e) const {
     if (stop[v]) return -1;
     int32_t other = -1, count = 0;
-    for (int32_t f : m.vert_edges[v]) {
+    for (int32_t f : vert_edges[v]) {
       if (!member[f]) continue;
       ++count;
       if (f != e) other = f;
     }
     if (count != 2 || other < 0 || (!value.empty() && value[other] != value[e])) return -1;
     return other;
-  };
-  std::vector<uint8_t> seen(ne, 0);
+  }
+};
+
+// One chain, as chain_edges gives it.
+struct Chain {
   std::vector<int32_t> fwd, bwd, vs, es;  // edges found walking forward / backward from the start
-  for (size_t e0 = 0; e0 < ne; ++e0) {
-    if (!member[e0] || seen[e0]) continue;
-    const int32_t start = static_cast<int32_t>(e0);
-    seen[start] = 1;
-    fwd.clear();
-    bwd.clear();
-    bool loop = false;
-    // Forward from the hi end, then backward from the lo end.
-    int32_t v = m.edge_verts[start][1], e = start;
-    int32_t front_v = m.edge_verts[start][0];
-    for (;;) {
-      int32_t n = pass(v, e);
-      if (n < 0) break;
-      if (n == start) {
-        loop = true;
-        break;
-      }
-      seen[n] = 1;
-      fwd.push_back(n);
-      e = n;
-      v = m.other_vertex(n, v);
+  bool loop = false;
+  int32_t front_v = -1;
+};
+
+// The chain through `start`: forward from its hi end, then backward from its lo end, calling
+// reached(edge) for every other edge on it.
+template <class Reached>
+void walk_chain(const ChainGraph& g, int32_t start, Chain& ch, Reached&& reached) {
+  ch.fwd.clear();
+  ch.bwd.clear();
+  ch.loop = false;
+  int32_t v = g.edge_verts[start][1], e = start;
+  ch.front_v = g.edge_verts[start][0];
+  for (int32_t n; (n = g.pass(v, e)) >= 0; e = n, v = g.other_vertex(n, v)) {
+    if (n == start) {
+      ch.loop = true;
+      return;
     }
-    if (!loop) {
-      v = front_v;
-      e = start;
-      for (;;) {
-        int32_t n = pass(v, e);
-        if (n < 0 || seen[n]) break;
-        seen[n] = 1;
-        bwd.push_back(n);
-        e = n;
-        v = m.other_vertex(n, v);
-      }
-      front_v = v;
+    reached(n);
+    ch.fwd.push_back(n);
+  }
+  // A path (no loop): backwards from the lo end, which cannot lead back to the start.
+  v = ch.front_v;
+  e = start;
+  for (int32_t n; (n = g.pass(v, e)) >= 0 && n != start; e = n, v = g.other_vertex(n, v)) {
+    reached(n);
+    ch.bwd.push_back(n);
+  }
+  ch.front_v = v;
+}
+
+// The walked chain's vertices and edges from its start in canonical orientation (see
+// chain_edges in the header).
+void orient_chain(const ChainGraph& g, int32_t start, Chain& ch) {
+  auto& vs = ch.vs;
+  auto& es = ch.es;
+  es.assign(ch.bwd.rbegin(), ch.bwd.rend());
+  es.push_back(start);
+  es.insert(es.end(), ch.fwd.begin(), ch.fwd.end());
+  vs.clear();
+  int32_t cur = ch.loop ? g.edge_verts[es[0]][0] : ch.front_v;
+  // A loop starts from the vertex of es[0] not shared with es[1] (lo for a 1- or 2-edge loop).
+  if (ch.loop && es.size() > 1) {
+    const auto a = g.edge_verts[es[0]];
+    const auto b = g.edge_verts[es[1]];
+    cur = (a[0] == b[0] || a[0] == b[1]) ? a[1] : a[0];
+  }
+  for (int32_t x : es) {
+    vs.push_back(cur);
+    cur = g.other_vertex(x, cur);
+  }
+  if (!ch.loop) {
+    vs.push_back(cur);
+    if (vs.back() < vs.front()) {
+      std::reverse(vs.begin(), vs.end());
+      std::reverse(es.begin(), es.end());
     }
-    // Vertices along the chain from front_v.
-    es.assign(bwd.rbegin(), bwd.rend());
-    es.push_back(start);
-    es.insert(es.end(), fwd.begin(), fwd.end());
-    vs.clear();
-    int32_t cur = loop ? m.edge_verts[es[0]][0] : front_v;
-    if (loop) {
-      // For a loop, the walk direction from edge 0 is lo -> hi... find the start vertex: the
-      // vertex of es[0] not shared with es[1] (or lo for a 1- or 2-edge loop).
-      if (es.size() > 1) {
-        const auto a = m.edge_verts[es[0]];
-        const auto b = m.edge_verts[es[1]];
-        cur = (a[0] == b[0] || a[0] == b[1]) ? a[1] : a[0];
-      }
-    }
-    for (int32_t x : es) {
-      vs.push_back(cur);
-      cur = m.other_vertex(x, cur);
-    }
-    if (!loop) vs.push_back(cur);
-    // Canonical orientation for stable output.
-    if (!loop) {
-      if (vs.back() < vs.front()) {
-        std::reverse(vs.begin(), vs.end());
-        std::reverse(es.begin(), es.end());
-      }
-    } else {
-      const size_t n = vs.size();
-      size_t p = static_cast<size_t>(std::min_element(vs.begin(), vs.end()) - vs.begin());
-      std::rotate(vs.begin(), vs.begin() + static_cast<long>(p), vs.end());
-      std::rotate(es.begin(), es.begin() + static_cast<long>(p), es.end());
-      // vs[0] -> vs[1] via es[0]; the other neighbour of vs[0] is vs[n-1] via es[n-1].
-      if (n > 2 && vs[n - 1] < vs[1]) {
-        std::reverse(vs.begin() + 1, vs.end());
-        std::reverse(es.begin(), es.end());
-      }
-    }
-    verts.push_row(vs.begin(), vs.end());
-    edges.push_row(es.begin(), es.end());
-    closed.push_back(loop ? 1 : 0);
+    return;
+  }
+  const size_t n = vs.size();
+  const auto p = std::min_element(vs.begin(), vs.end()) - vs.begin();
+  std::rotate(vs.begin(), vs.begin() + p, vs.end());
+  std::rotate(es.begin(), es.begin() + p, es.end());
+  // vs[0] -> vs[1] via es[0]; the other neighbour of vs[0] is vs[n-1] via es[n-1].
+  if (n > 2 && vs[n - 1] < vs[1]) {
+    std::reverse(vs.begin() + 1, vs.end());
+    std::reverse(es.begin(), es.end());
   }
 }
 
-SingularityGraph singularity_graph(const Mesh& m) {
+struct ChainRows {
+  Csr<int32_t> verts, edges;
+  std::vector<uint8_t> closed;
+};
+
+}  // namespace
+
+void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, std::span<const int32_t> value,
+                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
+                 std::vector<uint8_t>& closed, const LoadOptions& threads) {
+  // The walk only ever looks at member edges, so the vertex table needs only them.
+  const LoadOptions par = resolved(threads);
+  chain_edges(m.edge_verts, vertex_edges(m, member, par), member, value, stop, verts, edges, closed, par);
+}
+
+// Each chain is written by the range holding its lowest edge, which is where a walk in increasing
+// edge order starts it, so the chains come out in that order for any number of ranges. A range
+// walks each chain with an edge in it once (it marks the chain's edges in its own slice of
+// `seen`, the only part it reads or writes), and skips the chains whose lowest edge lies before it.
+void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
+                 const std::vector<uint8_t>& member, std::span<const int32_t> value,
+                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
+                 std::vector<uint8_t>& closed, const LoadOptions& threads) {
+  const LoadOptions par = resolved(threads);
+  const ChainGraph g{edge_verts, vert_edges, member, value, stop};
+  const size_t ne = edge_verts.size();
+  std::vector<uint8_t> seen(ne, 0);
+  std::vector<ChainRows> parts(static_cast<size_t>(detail::range_count(ne, par)));
+  detail::parallel_ranges(ne, par, [&](size_t b, size_t e, int r) {
+    ChainRows out;  // on this thread's stack: the parts' headers share cache lines
+    Chain ch;
+    for (size_t e0 = b; e0 < e; ++e0) {
+      if (!member[e0] || seen[e0]) continue;
+      const auto start = static_cast<int32_t>(e0);
+      seen[e0] = 1;
+      bool first = true;  // the start is the chain's lowest edge
+      walk_chain(g, start, ch, [&](int32_t n) {
+        first = first && n > start;
+        if (static_cast<size_t>(n) >= b && static_cast<size_t>(n) < e) seen[static_cast<size_t>(n)] = 1;
+      });
+      if (!first) continue;
+      orient_chain(g, start, ch);
+      out.verts.push_row(ch.vs.begin(), ch.vs.end());
+      out.edges.push_row(ch.es.begin(), ch.es.end());
+      out.closed.push_back(ch.loop ? 1 : 0);
+    }
+    parts[static_cast<size_t>(r)] = std::move(out);
+  });
+  std::vector<Csr<int32_t>> vparts, eparts;
+  closed.clear();
+  for (ChainRows& p : parts) {
+    vparts.push_back(std::move(p.verts));
+    eparts.push_back(std::move(p.edges));
+    closed.insert(closed.end(), p.closed.begin(), p.closed.end());
+  }
+  verts = concat(std::move(vparts));
+  edges = concat(std::move(eparts));
+}
+
+namespace {
+
+// Threads only ever store 1 into a shared flag, through relaxed atomic stores.
+void set_flag(std::vector<uint8_t>& v, int32_t i) {
+  std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(1, std::memory_order_relaxed);
+}
+
+// The ids whose flag `take(i)` holds, in increasing order.
+template <class Take>
+std::vector<int32_t> ids_where(size_t n, Take&& take) {
+  std::vector<int32_t> out;
+  for (size_t i = 0; i < n; ++i)
+    if (take(i)) out.push_back(static_cast<int32_t>(i));
+  return out;
+}
+
+// Each chain's valence and boundary flag, the chain of each edge, and the chains' ends that are
+// not pseudo-singular (the singular vertices), by ranges of chains.
+void chain_facts(const Mesh& m, const std::vector<int32_t>& valence, SingularityGraph& g, const LoadOptions& par) {
+  const size_t ns = g.chain_closed.size();
+  g.edge_chain.assign(m.num_edges(), -1);
+  g.chain_valence.resize(ns);
+  g.chain_boundary.resize(ns);
+  std::vector<uint8_t> end(m.num_vertices(), 0);
+  detail::parallel_ranges(ns, par, [&](size_t b, size_t e, int) {
+    for (size_t s = b; s < e; ++s) {
+      const auto es = g.chain_edges[s];
+      g.chain_valence[s] = valence[es[0]];
+      bool all_boundary = true;
+      for (int32_t x : es) {
+        g.edge_chain[x] = static_cast<int32_t>(s);  // an edge is on one chain
+        all_boundary = all_boundary && m.edge_boundary[x];
+      }
+      g.chain_boundary[s] = all_boundary;
+      if (g.chain_closed[s]) continue;
+      const auto vs = g.chain_verts[s];
+      for (int32_t v : {vs.front(), vs.back()})
+        if (!g.vert_pseudo_singular[v]) set_flag(end, v);
+    }
+  });
+  g.singular_vertices = ids_where(end.size(), [&](size_t v) { return end[v] != 0; });
+}
+
+}  // namespace
+
+SingularityGraph singularity_graph(const Mesh& m, const LoadOptions& threads) {
+  const LoadOptions par = resolved(threads);
   SingularityGraph g;
   const size_t ne = m.num_edges(), nv = m.num_vertices();
   g.edge_class.assign(ne, EdgeClass::Regular);
@@ -128,55 +220,31 @@ SingularityGraph singularity_graph(const Mesh& m) {
   std::vector<int32_t> valence(ne, 0);
   // Edges of non-hex cells (the cells around an edge are those having it).
   std::vector<uint8_t> non_hex_edge(ne, 0);
-  for (size_t c = 0; c < m.num_cells(); ++c)
-    if (!m.is_hex(c))
-      for (int32_t f : m.cell_faces[c])
-        for (int32_t e : m.face_edges(static_cast<size_t>(f))) non_hex_edge[static_cast<size_t>(e)] = 1;
-  for (size_t e = 0; e < ne; ++e) {
-    valence[e] = m.edge_valence(e);
-    g.edge_irregular[e] = m.edge_boundary[e] ? valence[e] != 2 : valence[e] != 4;
-    const bool non_hex = non_hex_edge[e] != 0;
-    const auto [a, b] = m.edge_verts[e];
-    if (non_hex) g.edge_class[e] = EdgeClass::PseudoSingular;
-    else if (g.edge_irregular[e]) g.edge_class[e] = EdgeClass::Singular;
-    else if (m.vert_non_manifold[a] || m.vert_non_manifold[b]) g.edge_class[e] = EdgeClass::NonManifold;
-    singular[e] = g.edge_class[e] == EdgeClass::Singular;
-    if (g.edge_class[e] == EdgeClass::PseudoSingular) g.pseudo_singular_edges.push_back(static_cast<int32_t>(e));
-    if (g.edge_class[e] == EdgeClass::NonManifold) g.non_manifold_edges.push_back(static_cast<int32_t>(e));
-  }
+  detail::parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c)
+      if (!m.is_hex(c))
+        for (int32_t f : m.cell_faces[c])
+          for (int32_t x : m.face_edges(static_cast<size_t>(f))) set_flag(non_hex_edge, x);
+  });
   g.vert_pseudo_singular.assign(nv, 0);
-  for (size_t e = 0; e < ne; ++e) {
-    if (g.edge_class[e] == EdgeClass::PseudoSingular || g.edge_class[e] == EdgeClass::NonManifold) {
-      g.vert_pseudo_singular[m.edge_verts[e][0]] = 1;
-      g.vert_pseudo_singular[m.edge_verts[e][1]] = 1;
+  detail::parallel_ranges(ne, par, [&](size_t b, size_t end, int) {
+    for (size_t e = b; e < end; ++e) {
+      valence[e] = m.edge_valence(e);
+      g.edge_irregular[e] = m.edge_boundary[e] ? valence[e] != 2 : valence[e] != 4;
+      const auto [v0, v1] = m.edge_verts[e];
+      if (non_hex_edge[e]) g.edge_class[e] = EdgeClass::PseudoSingular;
+      else if (g.edge_irregular[e]) g.edge_class[e] = EdgeClass::Singular;
+      else if (m.vert_non_manifold[v0] || m.vert_non_manifold[v1]) g.edge_class[e] = EdgeClass::NonManifold;
+      singular[e] = g.edge_class[e] == EdgeClass::Singular;
+      if (g.edge_class[e] == EdgeClass::PseudoSingular || g.edge_class[e] == EdgeClass::NonManifold)
+        set_flag(g.vert_pseudo_singular, v0), set_flag(g.vert_pseudo_singular, v1);
     }
-  }
-  for (size_t v = 0; v < nv; ++v)
-    if (g.vert_pseudo_singular[v]) g.pseudo_singular_vertices.push_back(static_cast<int32_t>(v));
-
-  chain_edges(m, singular, valence, g.vert_pseudo_singular, g.chain_verts, g.chain_edges, g.chain_closed);
-  const size_t ns = g.chain_closed.size();
-  g.edge_chain.assign(ne, -1);
-  g.chain_valence.resize(ns);
-  g.chain_boundary.resize(ns);
-  for (size_t s = 0; s < ns; ++s) {
-    auto es = g.chain_edges[s];
-    g.chain_valence[s] = valence[es[0]];
-    bool all_boundary = true;
-    for (int32_t e : es) {
-      g.edge_chain[e] = static_cast<int32_t>(s);
-      all_boundary = all_boundary && m.edge_boundary[e];
-    }
-    g.chain_boundary[s] = all_boundary;
-    if (!g.chain_closed[s]) {
-      auto vs = g.chain_verts[s];
-      for (int32_t v : {vs.front(), vs.back()})
-        if (!g.vert_pseudo_singular[v]) g.singular_vertices.push_back(v);
-    }
-  }
-  std::sort(g.singular_vertices.begin(), g.singular_vertices.end());
-  g.singular_vertices.erase(std::unique(g.singular_vertices.begin(), g.singular_vertices.end()),
-                            g.singular_vertices.end());
+  });
+  g.pseudo_singular_edges = ids_where(ne, [&](size_t e) { return g.edge_class[e] == EdgeClass::PseudoSingular; });
+  g.non_manifold_edges = ids_where(ne, [&](size_t e) { return g.edge_class[e] == EdgeClass::NonManifold; });
+  g.pseudo_singular_vertices = ids_where(nv, [&](size_t v) { return g.vert_pseudo_singular[v] != 0; });
+  chain_edges(m, singular, valence, g.vert_pseudo_singular, g.chain_verts, g.chain_edges, g.chain_closed, par);
+  chain_facts(m, valence, g, par);
   return g;
 }
 

@@ -1,7 +1,10 @@
-// The base complex, the sheet domain, the sheets and the complex-level view split over threads:
-// every array equals the single-threaded result. A small grain splits even these small meshes into many ranges, so that
-// range boundaries fall inside components, patches, classes and sheets.
+// The hybrid singularity graph, the base complex, the sheet domain, the sheets and the
+// complex-level view split over threads: every array equals the single-threaded result. A small
+// grain splits even these small meshes into many ranges, so that range boundaries fall inside
+// chains, components, patches, classes and sheets.
 #include <gtest/gtest.h>
+
+#include <tuple>
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
@@ -9,6 +12,18 @@
 
 namespace hbc {
 namespace {
+
+void expect_same_graph(const SingularityGraph& a, const SingularityGraph& b) {
+  EXPECT_EQ(a.edge_class, b.edge_class);
+  EXPECT_EQ(a.edge_irregular, b.edge_irregular);
+  test::expect_same_csr(a.chain_verts, b.chain_verts, "chain_verts");
+  test::expect_same_csr(a.chain_edges, b.chain_edges, "chain_edges");
+  EXPECT_EQ(std::tie(a.chain_valence, a.chain_boundary, a.chain_closed, a.edge_chain),
+            std::tie(b.chain_valence, b.chain_boundary, b.chain_closed, b.edge_chain));
+  EXPECT_EQ(std::tie(a.pseudo_singular_edges, a.non_manifold_edges, a.singular_vertices, a.pseudo_singular_vertices),
+            std::tie(b.pseudo_singular_edges, b.non_manifold_edges, b.singular_vertices, b.pseudo_singular_vertices));
+  EXPECT_EQ(a.vert_pseudo_singular, b.vert_pseudo_singular);
+}
 
 void expect_same_complex(const BaseComplex& a, const BaseComplex& b) {
   EXPECT_EQ(a.face_separation, b.face_separation);
@@ -101,8 +116,12 @@ void expect_component_rows_from_faces(const Mesh& m, const BaseComplex& bc) {
 // One thread against 2 and 3 (3 threads on 2 cores still run the ranges concurrently), at both
 // sheet levels.
 void expect_thread_independent(const Mesh& m) {
-  const SingularityGraph g = singularity_graph(m);
   const LoadOptions one{1, 8};
+  const SingularityGraph g = singularity_graph(m, one);
+  for (int threads : {2, 3}) {
+    SCOPED_TRACE(threads);
+    expect_same_graph(g, singularity_graph(m, LoadOptions{threads, 8}));
+  }
   const BaseComplex bc = base_complex(m, g, one);
   expect_component_rows_from_faces(m, bc);
   for (int threads : {2, 3}) {
@@ -133,6 +152,33 @@ TEST(ComplexThreads, RealMeshesGiveTheSameArraysForAnyThreadCount) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
     expect_thread_independent(load_mesh(test::data_path(rel)));
+  }
+}
+
+// chain_edges by ranges of edges (a grain of 8: chains cross the ranges) gives the hybrid
+// singularity graph's chains computed on one thread: cut where the valence changes and at
+// pseudo-singular vertices, closed loops included.
+TEST(ComplexThreads, ChainsAreTheSameForAnyThreadCount) {
+  for (const char* rel : test::kVariedMeshes) {
+    SCOPED_TRACE(rel);
+    HBC_REQUIRE_DATA(rel);
+    const Mesh m = load_mesh(test::data_path(rel));
+    const SingularityGraph g = singularity_graph(m, LoadOptions{1});
+    std::vector<uint8_t> singular(m.num_edges());
+    std::vector<int32_t> valence(m.num_edges());
+    for (size_t e = 0; e < m.num_edges(); ++e) {
+      singular[e] = g.edge_class[e] == EdgeClass::Singular;
+      valence[e] = m.edge_valence(e);
+    }
+    for (int threads : {1, 2, 3}) {
+      SCOPED_TRACE(threads);
+      Csr<int32_t> verts, edges;
+      std::vector<uint8_t> closed;
+      chain_edges(m, singular, valence, g.vert_pseudo_singular, verts, edges, closed, LoadOptions{threads, 8});
+      test::expect_same_csr(verts, g.chain_verts, "chain_verts");
+      test::expect_same_csr(edges, g.chain_edges, "chain_edges");
+      EXPECT_EQ(closed, g.chain_closed);
+    }
   }
 }
 

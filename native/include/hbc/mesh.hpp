@@ -124,9 +124,6 @@ void release_unanalyzed(Mesh& m);
 void cell_vertices(const Mesh& m, size_t c, std::vector<int32_t>& out);
 void cell_edges(const Mesh& m, size_t c, std::vector<int32_t>& out);
 
-// Edges at each vertex (sorted ids): the transpose of edge_verts, built for the stages that walk
-// from vertex to vertex. `keep` (ne flags, or empty for every edge) restricts it to some edges.
-Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep = {});
 
 // How to load: threads = how many threads may split the work (results are identical for any
 // number); 0 means the environment variable HBC_THREADS when it holds a positive number, else
@@ -145,6 +142,11 @@ struct LoadOptions {
 int resolve_threads(const LoadOptions& options);
 // options with threads resolved and grain at least 1.
 LoadOptions resolved(const LoadOptions& options);
+
+// Edges at each vertex (sorted ids): the transpose of edge_verts, built for the stages that walk
+// from vertex to vertex. `keep` (ne flags, or empty for every edge) restricts it to some edges.
+// The same rows for any number of threads.
+Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep = {}, const LoadOptions& threads = {});
 
 // Builds the topology and checks conformity. Throws InputError (naming input.source and the line
 // of the offending element) for: an index out of range, a face with fewer than 3 distinct vertices

@@ -45,7 +45,9 @@ struct SingularityGraph {
   bool is_structural(int32_t e) const { return edge_class[e] != EdgeClass::Regular; }
 };
 
-SingularityGraph singularity_graph(const Mesh& mesh);
+// `threads` as for the stages (threads 0: HBC_THREADS, else every core); the graph is the same
+// for any number.
+SingularityGraph singularity_graph(const Mesh& mesh, const LoadOptions& threads = {});
 
 // Chains the edges marked in `member` (ne flags) into maximal chains of equal `edge_value`
 // (ne values, or empty for one value everywhere), cut at vertices marked in `stop` (nv flags), at
@@ -53,14 +55,16 @@ SingularityGraph singularity_graph(const Mesh& mesh);
 // Output rows as in SingularityGraph::chain_verts / chain_edges; closed[s] marks loops.
 // Chains are ordered by their lowest edge id; an open chain runs from its end with the lower
 // vertex id, a closed one from its lowest vertex towards its lower-id neighbour.
+// `threads` as for the stages (the chains are the same for any number).
 void chain_edges(const Mesh& mesh, const std::vector<uint8_t>& member,
                  std::span<const int32_t> edge_value, const std::vector<uint8_t>& stop,
-                 Csr<int32_t>& verts, Csr<int32_t>& edges, std::vector<uint8_t>& closed);
+                 Csr<int32_t>& verts, Csr<int32_t>& edges, std::vector<uint8_t>& closed,
+                 const LoadOptions& threads = {});
 // The same on any edge graph given by its end vertices (ne pairs) and the edges at each vertex
-// (nv rows); the VSG chains the edges of a CellComplex with it.
+// (nv rows) in which no edge joins a vertex to itself (mesh edges never do).
 void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
                  const std::vector<uint8_t>& member, std::span<const int32_t> edge_value,
                  const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
-                 std::vector<uint8_t>& closed);
+                 std::vector<uint8_t>& closed, const LoadOptions& threads = {});
 
 }  // namespace hbc
