@@ -157,6 +157,35 @@ struct RawRows {
   }
 };
 
+// Turns the counts of each range of units per key (next[r][k]) into where range r writes its
+// first value of key k, keys in order and ranges in order within a key, and sets offsets[k] to
+// the first position of key k (offsets has nkeys + 1 entries). Blocks of keys in parallel: their
+// totals first, then each block's positions from its start. Returns the total.
+inline int32_t count_positions(std::vector<std::vector<int32_t>>& next, std::vector<int32_t>& offsets, const LoadOptions& par) {
+  const size_t nkeys = offsets.size() - 1;
+  std::vector<int64_t> start(static_cast<size_t>(range_count(nkeys, par)) + 1, 0);
+  parallel_ranges(nkeys, par, [&](size_t b, size_t e, int q) {
+    int64_t total = 0;
+    for (size_t k = b; k < e; ++k)
+      for (const auto& count : next) total += count[k];
+    start[static_cast<size_t>(q) + 1] = total;
+  });
+  for (size_t q = 1; q < start.size(); ++q) start[q] += start[q - 1];
+  parallel_ranges(nkeys, par, [&](size_t b, size_t e, int q) {
+    auto pos = static_cast<int32_t>(start[static_cast<size_t>(q)]);
+    for (size_t k = b; k < e; ++k) {
+      offsets[k] = pos;
+      for (auto& count : next) {
+        const int32_t c = count[k];
+        count[k] = pos;
+        pos += c;
+      }
+    }
+  });
+  offsets[nkeys] = static_cast<int32_t>(start.back());
+  return offsets[nkeys];
+}
+
 // Counting sort of values by key: row k lists the values emitted with key k, in the order they
 // were emitted. each(u, emit) calls emit(key, value) for the entries of unit u, key in
 // [0, nkeys); units are visited in order. Each range of units counts into its own table
@@ -174,16 +203,7 @@ Rows group_values_by_key(size_t nunits, size_t nkeys, const LoadOptions& par, Ea
   });
   Rows g;
   resize_touched(g.offsets, nkeys + 1, par);
-  int32_t pos = 0;
-  for (size_t k = 0; k < nkeys; ++k) {
-    g.offsets[k] = pos;
-    for (auto& count : next) {
-      const int32_t c = count[k];
-      count[k] = pos;  // where range r writes its first value of key k
-      pos += c;
-    }
-  }
-  g.offsets[nkeys] = pos;
+  const int32_t pos = count_positions(next, g.offsets, par);
   if constexpr (std::is_same_v<Rows, RawRows>) g.items = RawArray<int32_t>(static_cast<size_t>(pos), par);
   else resize_touched(g.items, static_cast<size_t>(pos), par);
   parallel_ranges(nunits, par, [&](size_t b, size_t e, int r) {
