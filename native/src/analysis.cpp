@@ -2,9 +2,12 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
+
+#include "parallel.hpp"
 
 namespace hbc {
 
@@ -21,14 +24,23 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The stages' threads: one worker pool for all of them, as for the load, so that no thread is
+// started per parallel pass (some fifty per analysis, each a few milliseconds of work on a mesh
+// of tens of thousands of cells).
+struct StageThreads {
+  std::optional<detail::WorkerPool> pool;
+  LoadOptions par;
+  explicit StageThreads(int threads) : par(detail::with_pool(resolved(LoadOptions{threads}), pool)) {}
+};
+
 // `after_domain` runs once the domain is built (analyze_stats frees what only the domain read).
-SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt, Timings& timings,
-                       const std::function<void()>& after_domain = {}) {
+SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt, const LoadOptions& par,
+                       Timings& timings, const std::function<void()>& after_domain = {}) {
   auto t = std::chrono::steady_clock::now();
   SheetStage st;
-  st.domain = sheet_domain(mesh, complex, opt.sheet_level, LoadOptions{opt.threads});
+  st.domain = sheet_domain(mesh, complex, opt.sheet_level, par);
   if (after_domain) after_domain();
-  st.sheets = extract_sheets(mesh, st.domain, LoadOptions{opt.threads});
+  st.sheets = extract_sheets(mesh, st.domain, par);
   st.largest_self_intersecting = largest_self_intersecting(st.sheets);
   timings.sheets = since(t);
   if (opt.subsheets) {
@@ -41,29 +53,32 @@ SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const Analy
   return st;
 }
 
-WireframeStage wireframe_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt) {
+WireframeStage wireframe_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt,
+                               const LoadOptions& par) {
   WireframeStage st;
-  st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, complex, LoadOptions{opt.threads}) : complex_from_mesh(mesh);
-  st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, LoadOptions{opt.threads});
+  st.view = opt.wireframe_level == Level::Complex ? complex_from_base(mesh, complex, par) : complex_from_mesh(mesh);
+  st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, par);
   return st;
 }
 
 }  // namespace
 
 Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
+  const StageThreads threads(opt.threads);
+  const LoadOptions& par = threads.par;
   Analysis a;
   auto t = std::chrono::steady_clock::now();
-  a.graph = singularity_graph(mesh, LoadOptions{opt.threads});
+  a.graph = singularity_graph(mesh, par);
   a.timings.singularity_graph = since(t);
 
   t = std::chrono::steady_clock::now();
-  a.complex = base_complex(mesh, a.graph, LoadOptions{opt.threads});
+  a.complex = base_complex(mesh, a.graph, par);
   a.timings.base_complex = since(t);
 
-  if (opt.sheets) a.sheet_stage = sheet_stage(mesh, a.complex, opt, a.timings);
+  if (opt.sheets) a.sheet_stage = sheet_stage(mesh, a.complex, opt, par, a.timings);
   if (opt.wireframe) {
     t = std::chrono::steady_clock::now();
-    a.wireframe_stage = wireframe_stage(mesh, a.complex, opt);
+    a.wireframe_stage = wireframe_stage(mesh, a.complex, opt, par);
     a.timings.vsg_wireframe = since(t);
   }
   return a;
@@ -176,21 +191,21 @@ void keep_for_sheets(Mesh& m) {
 }
 
 // The graph and the base complex, counted; only the base complex (all of it) is kept.
-BaseComplex counted_base_complex(const Mesh& mesh, const AnalysisOptions& opt, Stats& s) {
+BaseComplex counted_base_complex(const Mesh& mesh, const LoadOptions& par, Stats& s) {
   auto t = std::chrono::steady_clock::now();
-  SingularityGraph graph = singularity_graph(mesh, LoadOptions{opt.threads});
+  SingularityGraph graph = singularity_graph(mesh, par);
   s.timings.singularity_graph = since(t);
   graph_stats(mesh, graph, s);
   keep_for_base_complex(graph);
   t = std::chrono::steady_clock::now();
-  BaseComplex bc = base_complex(mesh, graph, LoadOptions{opt.threads});
+  BaseComplex bc = base_complex(mesh, graph, par);
   s.timings.base_complex = since(t);
   complex_stats(bc, s);
   return bc;
 }
 
-void counted_sheets(const Mesh& mesh, BaseComplex& bc, const AnalysisOptions& opt, StatsRun& run) {
-  const SheetStage st = sheet_stage(mesh, bc, opt, run.stats.timings, [&] {
+void counted_sheets(const Mesh& mesh, BaseComplex& bc, const AnalysisOptions& opt, const LoadOptions& par, StatsRun& run) {
+  const SheetStage st = sheet_stage(mesh, bc, opt, par, run.stats.timings, [&] {
     drop_domain_only(bc);
     return_freed_memory();
   });
@@ -203,12 +218,14 @@ void counted_sheets(const Mesh& mesh, BaseComplex& bc, const AnalysisOptions& op
 
 // analyze_stats; `owned` is the mesh when the caller gave it up (freed before the view is built).
 StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
+  const StageThreads threads(opt.threads);
+  const LoadOptions& par = threads.par;
   StatsRun run;
   Stats& s = run.stats;
   // Only complex_from_mesh, the mesh-level view, reads what the stages before it do not.
   const bool mesh_view = opt.wireframe && opt.wireframe_level == Level::Mesh;
   if (owned && !mesh_view) release_unanalyzed(*owned);
-  BaseComplex bc = counted_base_complex(mesh, opt, s);
+  BaseComplex bc = counted_base_complex(mesh, par, s);
   drop_unread(bc);
   // The complex-level view is built last, from the base complex alone, so that neither the mesh
   // nor the sheets are alive next to it; what it needs of the mesh is taken now (its time is the
@@ -216,20 +233,20 @@ StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
   std::optional<BaseViewFacts> facts;
   if (opt.wireframe && opt.wireframe_level == Level::Complex) {
     const auto t = std::chrono::steady_clock::now();
-    facts = base_view_facts(mesh, bc, LoadOptions{opt.threads});
+    facts = base_view_facts(mesh, bc, par);
     s.timings.vsg_wireframe = since(t);
   }
   drop_facts_only(bc);
   if (owned && !mesh_view) keep_for_sheets(*owned);
   return_freed_memory();
-  if (opt.sheets) counted_sheets(mesh, bc, opt, run);
+  if (opt.sheets) counted_sheets(mesh, bc, opt, par, run);
   return_freed_memory();
   if (!opt.wireframe) return run;
   const auto t = std::chrono::steady_clock::now();
   WireframeStage st;
   if (facts) {
     if (owned) release(*owned);
-    st.view = complex_from_base(bc, *facts, LoadOptions{opt.threads});
+    st.view = complex_from_base(bc, *facts, par);
     facts.reset();
     release(bc);
   } else {
@@ -240,9 +257,9 @@ StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
   // malloc serves arrays of up to 32 MB from its heaps once such arrays have been freed, and the
   // graph's freed ones there would otherwise stay resident under the style's (on the split grid,
   // 50-60 MB of the analysis's peak).
-  st.wireframe = vsg_wireframe_graph(st.view, opt.wireframe_options, LoadOptions{opt.threads});
+  st.wireframe = vsg_wireframe_graph(st.view, opt.wireframe_options, par);
   return_freed_memory();
-  st.wireframe.style = wireframe_style(st.view, st.wireframe, opt.wireframe_options, LoadOptions{opt.threads});
+  st.wireframe.style = wireframe_style(st.view, st.wireframe, opt.wireframe_options, par);
   s.timings.vsg_wireframe += since(t);
   wireframe_stats(st.wireframe, s);
   return run;
