@@ -266,10 +266,8 @@ void find_components(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
 void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
   const size_t ne = m.num_edges(), nv = m.num_vertices();
   // Complex edges: every face around them separates; corners: every edge at them is complex.
-  // Threads only ever write the same value into a shared flag, through relaxed atomic stores.
-  auto clear = [](std::vector<uint8_t>& v, int32_t i) {
-    std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(0, std::memory_order_relaxed);
-  };
+  // Threads only ever write the same value into a shared flag (detail::set_flag).
+  auto clear = [](std::vector<uint8_t>& v, int32_t i) { detail::set_flag(v, i, 0); };
   resize_touched(bc.edge_complex, ne, par, uint8_t{1});
   parallel_ranges(m.num_faces(), par, [&](size_t b, size_t e, int) {
     for (size_t f = b; f < e; ++f)

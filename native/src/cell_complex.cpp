@@ -12,11 +12,7 @@ namespace hbc {
 namespace {
 
 using detail::parallel_ranges;
-
-// Threads only ever store the same value into a shared flag, through relaxed atomic stores.
-void set_flag(std::vector<uint8_t>& v, size_t i, uint8_t value) {
-  std::atomic_ref<uint8_t>(v[i]).store(value, std::memory_order_relaxed);
-}
+using detail::set_flag;
 
 // Which mesh faces / edges / vertices lie on the boundary of the region of mesh cells flagged in
 // `in_cell`: a face is a boundary face when exactly one of its cells is in the region, so the
@@ -39,8 +35,8 @@ RegionBoundary region_boundary(const Mesh& m, const std::vector<uint8_t>& in_cel
       r.face_in[f] = n > 0;
       if (n != 1) continue;
       r.face_boundary[f] = 1;
-      for (int32_t x : m.face_edges(f)) set_flag(r.edge_boundary, static_cast<size_t>(x), 1);
-      for (int32_t v : m.face_verts[f]) set_flag(r.vert_boundary, static_cast<size_t>(v), 1);
+      for (int32_t x : m.face_edges(f)) set_flag(r.edge_boundary, x);
+      for (int32_t v : m.face_verts[f]) set_flag(r.vert_boundary, v);
     }
   });
   return r;
@@ -326,8 +322,8 @@ void corner_facts(const Mesh& m, const BaseComplex& bc, const RegionBoundary& rb
     for (size_t k = b; k < e; ++k) {
       if (!f.curve_in[k] || bc.curve_closed[k]) continue;
       const auto vs = bc.curve_verts[k];
-      set_flag(corner_in, static_cast<size_t>(vs.front()), 1);
-      set_flag(corner_in, static_cast<size_t>(vs.back()), 1);
+      set_flag(corner_in, vs.front());
+      set_flag(corner_in, vs.back());
     }
   });
   const std::vector<int32_t> vmap = compact(corner_in, f.corners);
@@ -342,7 +338,7 @@ void corner_facts(const Mesh& m, const BaseComplex& bc, const RegionBoundary& rb
     for (size_t x = b; x < e; ++x)
       if (rb.face_in[x] && bc.face_patch[x] >= 0 && !f.patch_quad[bc.face_patch[x]])
         for (int32_t v : m.face_verts[x])
-          if (corner_in[static_cast<size_t>(v)]) set_flag(f.corner_all_quad, static_cast<size_t>(vmap[v]), 0);
+          if (corner_in[static_cast<size_t>(v)]) set_flag(f.corner_all_quad, vmap[v], 0);
   });
 }
 

@@ -3,6 +3,7 @@
 // own outputs, so results do not depend on the number of threads; the caller combines per-range
 // results in range order.
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -19,6 +20,13 @@
 #include "worker_pool.hpp"
 
 namespace hbc::detail {
+
+// Sets flag i of v from any thread: threads only ever store the same value into a shared flag,
+// through relaxed atomic stores, so the result does not depend on which thread wrote it.
+template <class Index>
+void set_flag(std::vector<uint8_t>& v, Index i, uint8_t value = 1) {
+  std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(value, std::memory_order_relaxed);
+}
 
 // Number of ranges parallel_ranges will use for n items: one per thread, each of at least
 // par.grain items.

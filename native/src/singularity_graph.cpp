@@ -167,10 +167,7 @@ void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<i
 
 namespace {
 
-// Threads only ever store 1 into a shared flag, through relaxed atomic stores.
-void set_flag(std::vector<uint8_t>& v, int32_t i) {
-  std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(1, std::memory_order_relaxed);
-}
+using detail::set_flag;
 
 // The ids whose flag `take(i)` holds, in increasing order.
 template <class Take>

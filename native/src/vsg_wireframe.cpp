@@ -118,10 +118,7 @@ struct Chains {
   Csr<int32_t> edges, verts;  // verts: one more than edges; a closed chain repeats its start
 };
 
-// Threads only ever store 1 into a shared flag, through relaxed atomic stores.
-void set_flag(std::vector<uint8_t>& v, int32_t i) {
-  std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(1, std::memory_order_relaxed);
-}
+using detail::set_flag;
 
 template <class Next>
 void walk(const CellComplex& cx, int32_t from, int32_t e, const std::vector<uint8_t>& stop_vert,
