@@ -264,22 +264,39 @@ Csr<int32_t> group_by_key(size_t n, size_t nkeys, const LoadOptions& par, KeyOf&
       [&](size_t u, auto&& emit) { emit(static_cast<int32_t>(key_of(u))); });
 }
 
-// Calls f(row_begin, row_end, r) over ranges of the rows of `rows` holding about as many items
-// each, so that rows of very different lengths (vertex buckets are longest at low ids when the
-// lowest vertex of random ids is taken) still split evenly. Results must not depend on the split.
-template <class Rows, class F>
-void parallel_rows(const Rows& rows, const LoadOptions& par, F&& f) {
-  const size_t nrows = rows.rows(), nitems = static_cast<size_t>(rows.offsets.back());
-  const int nr = range_count(std::max(nrows, nitems), par);
-  std::vector<size_t> start(static_cast<size_t>(nr) + 1, nrows);
-  for (int r = 0; r < nr; ++r) {
-    const auto target = static_cast<int32_t>(nitems * static_cast<size_t>(r) / static_cast<size_t>(nr));
-    start[static_cast<size_t>(r)] = static_cast<size_t>(std::lower_bound(rows.offsets.begin(), rows.offsets.end() - 1, target) - rows.offsets.begin());
-  }
+// Number of ranges weighted_ranges will use for the n = prefix.size() - 1 units of `prefix`.
+template <class Prefix>
+int weighted_range_count(const Prefix& prefix, const LoadOptions& par) {
+  return range_count(std::max(prefix.size() - 1, static_cast<size_t>(prefix.back())), par);
+}
+
+// Calls f(begin, end, r) over ranges r of the units 0 .. n-1 holding about equal weight, where
+// prefix[i] (n + 1 increasing entries) is the weight of the units before i: rows of very
+// different lengths (vertex buckets are longest at low ids when the lowest vertex of random ids
+// is taken; a sheet's class of wires holds thousands) still split evenly. Ranges may be empty.
+// Results must not depend on the split.
+template <class Prefix, class F>
+void weighted_ranges(const Prefix& prefix, const LoadOptions& par, F&& f) {
+  const size_t n = prefix.size() - 1;
+  const auto total = static_cast<uint64_t>(prefix.back());
+  const auto nr = static_cast<size_t>(weighted_range_count(prefix, par));
+  std::vector<size_t> start(nr + 1, n);
   start[0] = 0;
-  parallel_ranges(static_cast<size_t>(nr), with_grain(par, 1), [&](size_t b, size_t e, int) {
+  for (size_t r = 1; r < nr; ++r) {
+    const uint64_t target = total * r / nr;
+    start[r] = static_cast<size_t>(std::lower_bound(prefix.begin(), prefix.end() - 1, target, [](auto w, uint64_t t) {
+                                     return static_cast<uint64_t>(w) < t;
+                                   }) - prefix.begin());
+  }
+  parallel_ranges(nr, with_grain(par, 1), [&](size_t b, size_t e, int) {
     for (size_t r = b; r < e; ++r) f(start[r], start[r + 1], static_cast<int>(r));
   });
+}
+
+// weighted_ranges over the rows of `rows`, each weighing its items.
+template <class Rows, class F>
+void parallel_rows(const Rows& rows, const LoadOptions& par, F&& f) {
+  weighted_ranges(rows.offsets, par, std::forward<F>(f));
 }
 
 // Rows [0, n) built by row(i, out, scratch) (appending row i's items to out.items), ranges of rows
@@ -306,11 +323,12 @@ struct NoBound {
 // grows by doubling copies itself at each step into fresh memory the kernel must zero first (on
 // the split grid's counts, some 100 MB, a quarter of their time); an over-estimate costs nothing,
 // as pages of the reservation that are never written are never touched.
-template <class T, class Scratch, class Row, class Bound = NoBound>
-PartedRows<T> parallel_parted_rows(size_t n, const LoadOptions& par, Row&& row, Bound bound = {}) {
-  const auto nr = static_cast<size_t>(range_count(n, par));
+//
+// `ranges(run)` calls run(b, e, k) for each of its nr ranges k.
+template <class T, class Scratch, class Ranges, class Row, class Bound>
+PartedRows<T> parted_rows_over(size_t nr, Ranges&& ranges, Row&& row, Bound bound) {
   PartedRows<T> rows{std::vector<size_t>(nr, 0), std::vector<Csr<T>>(nr)};
-  parallel_ranges(n, par, [&](size_t b, size_t e, int k) {
+  ranges([&](size_t b, size_t e, int k) {
     rows.first[static_cast<size_t>(k)] = b;
     // Filled on this thread's stack, then moved in: the parts' headers share cache lines, and a
     // push per row there would bounce them between the cores.
@@ -325,6 +343,20 @@ PartedRows<T> parallel_parted_rows(size_t n, const LoadOptions& par, Row&& row, 
     rows.parts[static_cast<size_t>(k)] = std::move(out);
   });
   return rows;
+}
+
+// Ranges of as many rows each.
+template <class T, class Scratch, class Row, class Bound = NoBound>
+PartedRows<T> parallel_parted_rows(size_t n, const LoadOptions& par, Row&& row, Bound bound = {}) {
+  return parted_rows_over<T, Scratch>(
+      static_cast<size_t>(range_count(n, par)), [&](auto&& run) { parallel_ranges(n, par, run); }, row, bound);
+}
+
+// Ranges of about equal weight (weighted_ranges): for rows whose cost is far from even.
+template <class T, class Scratch, class Prefix, class Row, class Bound = NoBound>
+PartedRows<T> weighted_parted_rows(const Prefix& prefix, const LoadOptions& par, Row&& row, Bound bound = {}) {
+  return parted_rows_over<T, Scratch>(
+      static_cast<size_t>(weighted_range_count(prefix, par)), [&](auto&& run) { weighted_ranges(prefix, par, run); }, row, bound);
 }
 
 template <class T, class Scratch, class Row, class Bound = NoBound>

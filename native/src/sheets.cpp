@@ -33,7 +33,8 @@ size_t Sheets::count(SheetType t) const {
 namespace {
 
 using detail::parallel_ranges;
-using detail::range_count;
+using detail::weighted_range_count;
+using detail::weighted_ranges;
 
 bool contains(std::span<const int32_t> sorted, int32_t x) {
   return std::binary_search(sorted.begin(), sorted.end(), x);
@@ -538,17 +539,12 @@ Sheets write_sheets(const SheetDomain& d, size_t nverts, std::vector<Group>& gro
   });
   std::vector<size_t> weight(groups.size() + 1, 0);  // blocks and curves before each sheet
   for (size_t i = 0; i < groups.size(); ++i) weight[i + 1] = weight[i] + groups[i].blocks.size() + groups[i].curves.size();
-  const size_t nr = static_cast<size_t>(range_count(std::max(groups.size(), weight.back()), par));
+  const auto nr = static_cast<size_t>(weighted_range_count(weight, par));
   std::vector<Sheets> parts(nr);
-  parallel_ranges(nr, LoadOptions{par.threads, 1}, [&](size_t b, size_t e, int) {
-    for (size_t r = b; r < e; ++r) {
-      auto at = [&](size_t q) {
-        return static_cast<size_t>(std::lower_bound(weight.begin(), weight.end() - 1, weight.back() * q / nr) - weight.begin());
-      };
-      Sheets own;  // on this thread's stack: neighbouring parts share cache lines
-      sheet_rows(d, nverts, groups, r == 0 ? 0 : at(r), r + 1 == nr ? groups.size() : at(r + 1), own);
-      parts[r] = std::move(own);
-    }
+  weighted_ranges(weight, par, [&](size_t b, size_t e, int r) {
+    Sheets own;  // on this thread's stack: neighbouring parts share cache lines
+    sheet_rows(d, nverts, groups, b, e, own);
+    parts[static_cast<size_t>(r)] = std::move(own);
   });
   // Each table joined at its exact size, each part freed once copied: appending to the first
   // part would grow it by doubling, with the old copy alive while the new one fills (the peak of

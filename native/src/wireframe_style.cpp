@@ -16,9 +16,9 @@ namespace hbc {
 
 namespace {
 
-using detail::parallel_parted_rows;
 using detail::parallel_rows_of;
 using detail::PartedRows;
+using detail::weighted_parted_rows;
 
 bool share_vertex(const CellComplex& cx, int32_t e, int32_t f) {
   const auto a = cx.edge_verts[e], b = cx.edge_verts[f];
@@ -220,7 +220,9 @@ ClassPoints class_points(const Csr<int32_t>& class_wires, const std::vector<int3
 PartedRows<std::array<int32_t, 2>> parallel_counts(const CellComplex& cx, const Index& ix, const VsgWireframe& wf,
                                                   const LoadOptions& threads) {
   using Pairs = std::vector<std::array<int32_t, 2>>;  // (w', e) for the current wire
-  return parallel_parted_rows<std::array<int32_t, 2>, Pairs>(wf.size(), threads, [&](size_t w, Csr<std::array<int32_t, 2>>& counts, Pairs& par) {
+  // Ranges of about as many wire edges each: a few long wires (a singular curve's) take most of
+  // the work on some meshes.
+  return weighted_parted_rows<std::array<int32_t, 2>, Pairs>(wf.edges.offsets, threads, [&](size_t w, Csr<std::array<int32_t, 2>>& counts, Pairs& par) {
     par.clear();
     for (int32_t e : wf.edges[w])
       for (int32_t f : cx.edge_faces[e]) {
@@ -255,8 +257,10 @@ PartedRows<std::array<int32_t, 2>> parallel_counts(const CellComplex& cx, const 
 Csr<int32_t> earlier_neighbours(const ClassPoints& cp, const Index& ix, const std::vector<int32_t>& wire_class,
                                 const LoadOptions& par) {
   const size_t nw = wire_class.size();
-  std::vector<Csr<int32_t>> parts(static_cast<size_t>(detail::range_count(nw, par)));
-  detail::parallel_ranges(nw, par, [&](size_t begin, size_t end, int k) {
+  // Ranges of classes holding about as many wires each: the classes along a split grid's sheets
+  // are few, low-numbered and hold most of the wires.
+  std::vector<Csr<int32_t>> parts(static_cast<size_t>(detail::weighted_range_count(cp.class_wires.offsets, par)));
+  detail::weighted_ranges(cp.class_wires.offsets, par, [&](size_t begin, size_t end, int k) {
     Csr<int32_t> out;  // on this thread's stack: the parts' headers share cache lines
     out.offsets.reserve(end - begin + 1);
     std::vector<int32_t> stamp(nw, -1);
