@@ -64,9 +64,9 @@ void BM_LoadSteps(benchmark::State& state) {
     lap("s1_validate");
     hbc::Mesh m;
     m.points = std::move(in.points);
-    merge_faces(in, m, par);
+    std::vector<int32_t> rank = merge_faces(in, m, par);
     lap("s2_merge_faces");
-    EdgeFaceCounts counts = build_edges(m, par);
+    EdgeFaceCounts counts = build_edges(m, std::move(rank), par);
     lap("s3_build_edges");
     CellCheck cells = check_cells(m, in, par);
     lap("s4_check_cells");

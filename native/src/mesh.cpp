@@ -61,8 +61,7 @@ Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   m.source = in.source;
   m.points = std::move(in.points);
   m.warnings = std::move(in.warnings);  // what the reader skipped (lower-dimensional elements, ...)
-  merge_faces(in, m, par);
-  EdgeFaceCounts counts = build_edges(m, par);
+  EdgeFaceCounts counts = build_edges(m, merge_faces(in, m, par), par);
   CellCheck cells = check_cells(m, in, par);
   orient_groups(m, cells.volume, par);
   std::vector<double>().swap(cells.volume);

@@ -328,13 +328,11 @@ void group_bucket(const FaceItems& items, std::span<const int32_t> bucket, int32
 }
 
 // rep[item] = the lowest item with the same vertex set (see FaceItems).
-std::vector<int32_t> face_representatives(const FaceItems& items, size_t nv, const LoadOptions& par) {
-  const size_t n = items.size();
+// `ranks` is build_edges' grouping too.
+std::vector<int32_t> face_representatives(const FaceItems& items, const VertexRanks& ranks, const LoadOptions& par) {
+  const size_t n = items.size(), nv = ranks.rank.size();
   // Units: the cells (their slots), then the unused soup faces.
   const size_t nc = items.slot_offsets.size() - 1;
-  const VertexRanks ranks(nv, [&](auto&& use) {
-    for (size_t c = 0; c < nc; ++c) items.loops.each_vertex(c, use);
-  });
   const std::span<const int32_t> rank = ranks.rank;
   const detail::RawRows by_lowest = detail::group_units_by_key<detail::RawRows>(
       nc + items.unused.size(), nv, par,
@@ -476,11 +474,15 @@ void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, c
 
 }  // namespace
 
-void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
+std::vector<int32_t> merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   const SlotLoops loops(in);
   std::vector<int32_t> slot_offsets;
   FaceItems items = face_items(in, loops, slot_offsets, par);
-  std::vector<int32_t> rep = face_representatives(items, m.num_vertices(), par);
+  VertexRanks ranks(m.num_vertices(), [&](auto&& use) {
+    for (size_t c = 0; c + 1 < slot_offsets.size(); ++c) items.loops.each_vertex(c, use);
+  });
+  std::vector<int32_t> rep = face_representatives(items, ranks, par);
+  std::vector<int32_t>().swap(ranks.vertex);  // build_edges finds it again from the ranks
   for (size_t i = items.nslots(); i < items.size(); ++i) m.dropped_faces += rep[i] >= static_cast<int32_t>(items.nslots());
   if (m.dropped_faces > 0) m.warnings.push_back(std::to_string(m.dropped_faces) + " face(s) used by no cell dropped");
   number_faces(items, std::move(rep), m, par);
@@ -502,6 +504,7 @@ void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par) {
   in.faces = Csr<int32_t>{};
   in.cells = Csr<int32_t>{};
   fill_face_cells(in, m, par);
+  return std::move(ranks.rank);
 }
 
 namespace {
@@ -652,14 +655,22 @@ EdgeFaceCounts count_edge_faces(Mesh& m, const detail::RawRows& by_lo, const Loa
 
 }  // namespace
 
-EdgeFaceCounts build_edges(Mesh& m, const LoadOptions& par) {
+EdgeFaceCounts build_edges(Mesh& m, std::vector<int32_t>&& rank, const LoadOptions& par) {
   std::vector<int32_t>& rep = m.face_edge_ids;
   prefill_next(m, rep, par);
   detail::RawRows by_lo;
   {
-    const VertexRanks ranks(m.num_vertices(), [&](auto&& use) { std::for_each(m.face_verts.items.begin(), m.face_verts.items.end(), use); });
-    by_lo = corners_by_lower_end(m, ranks.rank, par);
-    edge_representatives(m, by_lo, ranks.vertex, rep, par);
+    // The faces' ranks serve: a face's loop lists vertices of its first cell, so ranking them by
+    // first use along the loops would give about the same order again, in a serial pass over
+    // every corner.
+    const std::vector<int32_t> vertex_ranks = std::move(rank);
+    std::vector<int32_t> vertex;
+    detail::resize_touched(vertex, vertex_ranks.size(), par);
+    detail::parallel_ranges(vertex.size(), par, [&](size_t b, size_t e, int) {
+      for (size_t v = b; v < e; ++v) vertex[static_cast<size_t>(vertex_ranks[v])] = static_cast<int32_t>(v);
+    });
+    by_lo = corners_by_lower_end(m, vertex_ranks, par);
+    edge_representatives(m, by_lo, vertex, rep, par);
   }
   number_edges(m, rep, par);
   return count_edge_faces(m, by_lo, par);

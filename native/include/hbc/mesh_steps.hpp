@@ -31,12 +31,15 @@ void validate_input(const MeshInput& in, const LoadOptions& par);
 // face_verts, cell_faces, cell_face_flip, face_cells, dropped_faces (+ warning). Slots with the
 // same vertex set become one face, numbered in order of first use by a cell (slot order) and
 // keeping the loop of that first use. Throws for a cell listing a face twice or a face in 3+
-// cells. Consumes in.faces and in.cells.
-void merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par);
+// cells. Consumes in.faces and in.cells. Returns the rank of each vertex in order of first use
+// by the cells, which build_edges takes over.
+[[nodiscard]] std::vector<int32_t> merge_faces(MeshInput& in, Mesh& m, const LoadOptions& par);
 
 // edge_verts, face_edge_ids: edges numbered in order of first appearance along the face loops
 // (corner order). fan_start[e] = the lowest boundary face at e where there is one, else the
-// lowest face at e. Returns how many faces, and boundary faces, each edge is in.
+// lowest face at e. Returns how many faces, and boundary faces, each edge is in. `rank` is
+// merge_faces' result (any order of the vertices would give the same edges; this one keeps the
+// grouping's memory accesses near each other) and is consumed.
 struct EdgeFaceCount {
   int32_t faces;
   uint8_t boundary_faces;  // up to 255 counted; more make the fan odd anyway
@@ -58,7 +61,7 @@ class EdgeFaceCounts {
   std::unique_ptr<EdgeFaceCount[]> data_;
   size_t size_ = 0;
 };
-EdgeFaceCounts build_edges(Mesh& m, const LoadOptions& par);
+EdgeFaceCounts build_edges(Mesh& m, std::vector<int32_t>&& rank, const LoadOptions& par);
 
 // One pass over the cells. Checks that each is closed (each of its edges in exactly two of its
 // faces); makes its loops agree (neighbouring faces walk their shared edge in opposite
