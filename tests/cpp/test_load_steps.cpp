@@ -503,6 +503,40 @@ TEST(LoadParallel, APoolRunsEveryRangeOnceAndSplitsNestedCallsOnItsOwn) {
   }
 }
 
+TEST(LoadParallel, WeightedRangesSplitByWeightAndPartedRowsFindRowsPastEmptyRanges) {
+  std::optional<detail::WorkerPool> own;
+  // One unit of weight 1000, then 999 of weight 1 (prefix 0, 1000, 1001, ..., 1999), two ranges:
+  // the first unit whose prefix reaches half the total (999.5 rounded down) is unit 1, so the
+  // heavy unit is a range alone, where ranges of as many units would cut at 500.
+  {
+    const LoadOptions par = detail::with_pool(LoadOptions{2, 8}, own);
+    std::vector<int32_t> prefix(1001);
+    for (size_t i = 1; i <= 1000; ++i) prefix[i] = 1000 + static_cast<int32_t>(i) - 1;
+    ASSERT_EQ(detail::weighted_range_count(prefix, par), 2);
+    std::vector<std::array<size_t, 2>> seen(2);
+    detail::weighted_ranges(prefix, par, [&](size_t b, size_t e, int r) { seen[static_cast<size_t>(r)] = {b, e}; });
+    EXPECT_EQ(seen[0], (std::array<size_t, 2>{0, 1}));
+    EXPECT_EQ(seen[1], (std::array<size_t, 2>{1, 1000}));
+  }
+  // Weights 100, 0, 0 in three ranges: cuts at the first prefix reaching 33 and 66, both unit 1,
+  // so the middle range is empty. Parted rows built over these ranges still find each row
+  // (row r holds r), the empty part sharing its first row with the part after it.
+  {
+    const LoadOptions par{3, 1};
+    const std::vector<int32_t> prefix{0, 100, 100, 100};
+    std::vector<std::array<size_t, 2>> seen(3);
+    detail::weighted_ranges(prefix, par, [&](size_t b, size_t e, int r) { seen[static_cast<size_t>(r)] = {b, e}; });
+    EXPECT_EQ(seen, (std::vector<std::array<size_t, 2>>{{0, 1}, {1, 1}, {1, 3}}));
+    const auto rows = detail::weighted_parted_rows<int32_t, int>(
+        prefix, par, [](size_t i, Csr<int32_t>& out, int&) { out.items.push_back(static_cast<int32_t>(i)); });
+    ASSERT_EQ(rows.parts.size(), 3u);
+    for (size_t r = 0; r < 3; ++r) {
+      ASSERT_EQ(rows[r].size(), 1u) << "row " << r;
+      EXPECT_EQ(rows[r][0], static_cast<int32_t>(r)) << "row " << r;
+    }
+  }
+}
+
 TEST(LoadParallel, ErrorsNameTheFirstBadCellForAnyThreadCount) {
   // Two open cells, far apart in the cell order: every thread count reports the first one.
   const MeshInput base = generate_grid(20, 20, 20);
