@@ -591,32 +591,25 @@ std::vector<uint8_t> reactivate(const Csr<int32_t>& next, size_t chains, const s
 
 // Resolved chain pairs at each singular, non-redundant vertex, and which singular vertices are
 // redundant: ranges of vertices in parallel, each into rows of its own, joined in order.
+struct PairScratch {
+  std::vector<int32_t> cand;
+  std::vector<std::array<int32_t, 2>> pairs, kept;
+};
 PairTable pair_table(const Region& r, const ChainIndex& ix, const std::vector<uint8_t>& singular,
                      const LoadOptions& par, std::vector<uint8_t>& redundant) {
   const size_t nv = r.cx.num_vertices();
   redundant.assign(nv, 0);
-  std::vector<Csr<ChainPair>> parts(static_cast<size_t>(detail::range_count(nv, par)));
-  detail::parallel_ranges(nv, par, [&](size_t b, size_t e, int k) {
-    Csr<ChainPair> out;  // on this thread's stack: the parts' headers share cache lines
-    out.offsets.reserve(e - b + 1);
-    std::vector<int32_t> cand;
-    std::vector<std::array<int32_t, 2>> pairs, kept;
-    for (size_t v = b; v < e; ++v) {
-      const int32_t vi = static_cast<int32_t>(v);
-      redundant[v] = singular[v] && redundant_vertex(r, ix, vi);
-      if (singular[v] && !redundant[v]) {
-        candidate_pairs(r, ix, vi, cand, pairs);
-        resolve_pairs(r, pairs, kept);
-        for (const auto& p : kept) {
-          const ChainPair cp = chain_pair(ix, p);
-          if (cp[0] >= 0) out.items.push_back(cp);
-        }
-      }
-      out.offsets.push_back(static_cast<int32_t>(out.items.size()));
+  return PairTable{detail::parallel_rows_of<ChainPair, PairScratch>(nv, par, [&](size_t v, Csr<ChainPair>& out, PairScratch& s) {
+    const int32_t vi = static_cast<int32_t>(v);
+    redundant[v] = singular[v] && redundant_vertex(r, ix, vi);
+    if (!singular[v] || redundant[v]) return;
+    candidate_pairs(r, ix, vi, s.cand, s.pairs);
+    resolve_pairs(r, s.pairs, s.kept);
+    for (const auto& p : s.kept) {
+      const ChainPair cp = chain_pair(ix, p);
+      if (cp[0] >= 0) out.items.push_back(cp);
     }
-    parts[static_cast<size_t>(k)] = std::move(out);
-  });
-  return PairTable{concat(std::move(parts))};
+  })};
 }
 
 Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8_t>& singular,

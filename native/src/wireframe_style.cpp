@@ -257,36 +257,29 @@ PartedRows<std::array<int32_t, 2>> parallel_counts(const CellComplex& cx, const 
 Csr<int32_t> earlier_neighbours(const ClassPoints& cp, const Index& ix, const std::vector<int32_t>& wire_class,
                                 const LoadOptions& par) {
   const size_t nw = wire_class.size();
-  // Ranges of classes holding about as many wires each: the classes along a split grid's sheets
-  // are few, low-numbered and hold most of the wires.
-  std::vector<Csr<int32_t>> parts(static_cast<size_t>(detail::weighted_range_count(cp.class_wires.offsets, par)));
-  detail::weighted_ranges(cp.class_wires.offsets, par, [&](size_t begin, size_t end, int k) {
-    Csr<int32_t> out;  // on this thread's stack: the parts' headers share cache lines
-    out.offsets.reserve(end - begin + 1);
-    std::vector<int32_t> stamp(nw, -1);
-    for (size_t c = begin; c < end; ++c) {
-      const auto ci = static_cast<int32_t>(c);
-      if (wire_class[c] == ci) {
-        const auto crowded = cp.crowded[c];
-        const bool by_count = crowded.size() == 1;  // more crowded points: visited, to count each class once
-        for (int32_t p : cp.points(c)) {
-          if (by_count && p == cp.crowded_point[static_cast<size_t>(crowded[0])]) continue;
-          for (int32_t w2 : ix.point_wires[static_cast<size_t>(p)]) {
-            const int32_t b = wire_class[static_cast<size_t>(w2)];
-            if (b >= ci || stamp[static_cast<size_t>(b)] == ci) continue;
-            stamp[static_cast<size_t>(b)] = ci;
-            // A class at the crowded point is in its count already.
-            const auto bc = cp.crowded[static_cast<size_t>(b)];
-            if (by_count && std::binary_search(bc.begin(), bc.end(), crowded[0])) continue;
-            out.items.push_back(b);
-          }
-        }
-      }
-      out.offsets.push_back(static_cast<int32_t>(out.items.size()));
-    }
-    parts[static_cast<size_t>(k)] = std::move(out);
-  });
-  return concat(std::move(parts));
+  // Ranges of classes holding about as many wires each (the classes along a split grid's sheets
+  // are few, low-numbered and hold most of the wires), each range with the stamps of its own,
+  // made at its first class root.
+  using Stamps = std::vector<int32_t>;
+  return concat(weighted_parted_rows<int32_t, Stamps>(cp.class_wires.offsets, par, [&](size_t c, Csr<int32_t>& out, Stamps& stamp) {
+                  const auto ci = static_cast<int32_t>(c);
+                  if (wire_class[c] != ci) return;
+                  if (stamp.empty()) stamp.assign(nw, -1);
+                  const auto crowded = cp.crowded[c];
+                  const bool by_count = crowded.size() == 1;  // more crowded points: visited, to count each class once
+                  for (int32_t p : cp.points(c)) {
+                    if (by_count && p == cp.crowded_point[static_cast<size_t>(crowded[0])]) continue;
+                    for (int32_t w2 : ix.point_wires[static_cast<size_t>(p)]) {
+                      const int32_t b = wire_class[static_cast<size_t>(w2)];
+                      if (b >= ci || stamp[static_cast<size_t>(b)] == ci) continue;
+                      stamp[static_cast<size_t>(b)] = ci;
+                      // A class at the crowded point is in its count already.
+                      const auto bc = cp.crowded[static_cast<size_t>(b)];
+                      if (by_count && std::binary_search(bc.begin(), bc.end(), crowded[0])) continue;
+                      out.items.push_back(b);
+                    }
+                  }
+                }).parts);
 }
 
 // The class (lowest wire) of each wire: wires whose parallel edge counts reach rho both ways are
