@@ -40,8 +40,8 @@ void BM_LoadSteps(benchmark::State& state) {
   using namespace hbc::mesh_steps;
   // As load_mesh, one worker pool for all the steps; HBC_BENCH_NO_POOL=1: a thread per range, as
   // before the pool, to compare.
-  std::optional<hbc::detail::WorkerPool> pool;
-  const hbc::LoadOptions par = std::getenv("HBC_BENCH_NO_POOL") ? hbc::resolved({}) : hbc::detail::with_pool(hbc::resolved({}), pool);
+  const hbc::detail::RunOptions run(hbc::LoadOptions{});
+  const hbc::LoadOptions par = std::getenv("HBC_BENCH_NO_POOL") ? hbc::resolved({}) : run.get();
   const bool with_usage = std::getenv("HBC_BENCH_RUSAGE") != nullptr;
   std::map<std::string, double> total;
   for (auto _ : state) {

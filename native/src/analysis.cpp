@@ -24,15 +24,6 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The stages' threads: one worker pool for all of them, as for the load, so that no thread is
-// started per parallel pass (some fifty per analysis, each a few milliseconds of work on a mesh
-// of tens of thousands of cells).
-struct StageThreads {
-  std::optional<detail::WorkerPool> pool;
-  LoadOptions par;
-  explicit StageThreads(int threads) : par(detail::with_pool(resolved(LoadOptions{threads}), pool)) {}
-};
-
 // `after_domain` runs once the domain is built (analyze_stats frees what only the domain read).
 SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const AnalysisOptions& opt, const LoadOptions& par,
                        Timings& timings, const std::function<void()>& after_domain = {}) {
@@ -64,8 +55,11 @@ WireframeStage wireframe_stage(const Mesh& mesh, const BaseComplex& complex, con
 }  // namespace
 
 Analysis analyze(const Mesh& mesh, const AnalysisOptions& opt) {
-  const StageThreads threads(opt.threads);
-  const LoadOptions& par = threads.par;
+  // One worker pool for all the stages, as for the load: no thread started per parallel pass
+  // (some fifty per analysis, each a few milliseconds of work on a mesh of tens of thousands of
+  // cells).
+  const detail::RunOptions run(LoadOptions{opt.threads});
+  const LoadOptions& par = run.get();
   Analysis a;
   auto t = std::chrono::steady_clock::now();
   a.graph = singularity_graph(mesh, par);
@@ -218,8 +212,8 @@ void counted_sheets(const Mesh& mesh, BaseComplex& bc, const AnalysisOptions& op
 
 // analyze_stats; `owned` is the mesh when the caller gave it up (freed before the view is built).
 StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
-  const StageThreads threads(opt.threads);
-  const LoadOptions& par = threads.par;
+  const detail::RunOptions threads(LoadOptions{opt.threads});
+  const LoadOptions& par = threads.get();
   StatsRun run;
   Stats& s = run.stats;
   // Only complex_from_mesh, the mesh-level view, reads what the stages before it do not.

@@ -142,8 +142,8 @@ MeshInput read_input(const std::string& path, Format format, const LoadOptions& 
 }
 
 Mesh load_mesh(const std::string& path, Format format, const LoadOptions& options) {
-  std::optional<detail::WorkerPool> pool;  // one for the reading and the building
-  const LoadOptions par = detail::with_pool(resolved(options), pool);
+  const detail::RunOptions run(options);  // one pool for the reading and the building
+  const LoadOptions& par = run.get();
   return build_mesh(read_input(path, format, par), par);
 }
 

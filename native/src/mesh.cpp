@@ -53,8 +53,8 @@ LoadOptions resolved(const LoadOptions& options) {
 
 Mesh build_mesh(MeshInput in, const LoadOptions& options) {
   using namespace mesh_steps;
-  std::optional<detail::WorkerPool> pool;
-  const LoadOptions par = detail::with_pool(resolved(options), pool);
+  const detail::RunOptions run(options);
+  const LoadOptions& par = run.get();
   validate_input(in, par);
   std::vector<int64_t>().swap(in.vertex_loc);  // only validate_input names vertices
   Mesh m;

@@ -135,8 +135,8 @@ bool cells_as_read(RawElements& raw, int64_t nv, MeshInput& in, const LoadOption
 }  // namespace
 
 MeshInput read_medit(std::string_view text, const std::string& source, const LoadOptions& options) {
-  std::optional<detail::WorkerPool> pool;
-  const LoadOptions par = detail::with_pool(resolved(options), pool);
+  const detail::RunOptions run(options);
+  const LoadOptions& par = run.get();
   detail::TextScanner s(text, source, true);
   MeshInput in;
   in.source = source;

@@ -82,10 +82,21 @@ class WorkerPool {
   bool busy_ = false, stop_ = false;
 };
 
-// par (resolved) with a pool: its own when it has none and more than one thread, kept in `own`.
-inline LoadOptions with_pool(LoadOptions par, std::optional<WorkerPool>& own) {
-  if (!par.pool && par.threads > 1) par.pool = &own.emplace(par.threads - 1);
-  return par;
-}
+// The options of one run (a load, an analysis, a test): resolved, with the caller's pool when it
+// handed one down, else a pool of the run's own while more than one thread works. Not copyable:
+// the options point at the pool, which lives as long as this object.
+class RunOptions {
+ public:
+  explicit RunOptions(const LoadOptions& options) : par_(resolved(options)) {
+    if (!par_.pool && par_.threads > 1) par_.pool = &own_.emplace(par_.threads - 1);
+  }
+  RunOptions(const RunOptions&) = delete;
+  RunOptions& operator=(const RunOptions&) = delete;
+  const LoadOptions& get() const { return par_; }
+
+ private:
+  std::optional<WorkerPool> own_;
+  LoadOptions par_;
+};
 
 }  // namespace hbc::detail

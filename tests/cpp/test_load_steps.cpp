@@ -479,8 +479,8 @@ TEST(LoadParallel, FacesAndEdgesDoNotDependOnTheVertexNumbering) {
 TEST(LoadParallel, APoolRunsEveryRangeOnceAndSplitsNestedCallsOnItsOwn) {
   // Many short steps in a row (as a load runs them), a range that splits its own work while the
   // pool is busy, and an exception: the same ranges and the same first error as without a pool.
-  std::optional<detail::WorkerPool> own;
-  const LoadOptions par = detail::with_pool(LoadOptions{3, 8}, own);
+  const detail::RunOptions run(LoadOptions{3, 8});
+  const LoadOptions& par = run.get();
   ASSERT_NE(par.pool, nullptr);
   for (int step = 0; step < 200; ++step) {
     const size_t n = 1 + static_cast<size_t>(step) * 7 % 100;
@@ -504,12 +504,12 @@ TEST(LoadParallel, APoolRunsEveryRangeOnceAndSplitsNestedCallsOnItsOwn) {
 }
 
 TEST(LoadParallel, WeightedRangesSplitByWeightAndPartedRowsFindRowsPastEmptyRanges) {
-  std::optional<detail::WorkerPool> own;
+  const detail::RunOptions run(LoadOptions{2, 8});
   // One unit of weight 1000, then 999 of weight 1 (prefix 0, 1000, 1001, ..., 1999), two ranges:
   // the first unit whose prefix reaches half the total (999.5 rounded down) is unit 1, so the
   // heavy unit is a range alone, where ranges of as many units would cut at 500.
   {
-    const LoadOptions par = detail::with_pool(LoadOptions{2, 8}, own);
+    const LoadOptions& par = run.get();
     std::vector<int32_t> prefix(1001);
     for (size_t i = 1; i <= 1000; ++i) prefix[i] = 1000 + static_cast<int32_t>(i) - 1;
     ASSERT_EQ(detail::weighted_range_count(prefix, par), 2);
