@@ -120,12 +120,11 @@ struct Chains {
 
 using detail::set_flag;
 
+// Appends to vs / es the walk from vertex v along edge e and on through next, taking each edge not
+// yet used, up to a stop vertex, an edge already used or no continuation.
 template <class Next>
-void walk(const CellComplex& cx, int32_t from, int32_t e, const std::vector<uint8_t>& stop_vert,
-          std::vector<uint8_t>& used, const Next& next, std::vector<int32_t>& vs, std::vector<int32_t>& es) {
-  vs.assign(1, from);
-  es.clear();
-  int32_t v = from;
+void walk_on(const CellComplex& cx, int32_t v, int32_t e, const std::vector<uint8_t>& stop_vert, std::vector<uint8_t>& used,
+             const Next& next, std::vector<int32_t>& vs, std::vector<int32_t>& es) {
   while (e >= 0 && !used[e]) {
     used[e] = 1;
     es.push_back(e);
@@ -137,7 +136,8 @@ void walk(const CellComplex& cx, int32_t from, int32_t e, const std::vector<uint
 }
 
 // Chains through every seed edge (in increasing id order), traced first from the seed's second end
-// through it, then from its first end: the two walks are joined at the seed.
+// through it, then from its first end: the two walks are joined at the seed. The second walk
+// is written straight into the chain's row, after the first one reversed.
 template <class Next>
 Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
                     const Next& next) {
@@ -147,24 +147,31 @@ Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, con
   const size_t seeds = static_cast<size_t>(std::count(seed.begin(), seed.end(), uint8_t{1}));
   out.edges.reserve(seeds, cx.num_edges());
   out.verts.reserve(seeds, cx.num_edges() + seeds);
+  std::vector<int32_t>& ov = out.verts.items;
+  std::vector<int32_t>& oe = out.edges.items;
   std::vector<uint8_t> used(cx.num_edges(), 0);
-  std::vector<int32_t> lv, le, rv, re;
+  std::vector<int32_t> lv, le;
   for (size_t s = 0; s < seed.size(); ++s) {
     const int32_t e = static_cast<int32_t>(s);
     if (!seed[e] || used[e] || cx.closed(e)) continue;
-    walk(cx, cx.edge_verts[e][1], e, stop_vert, used, next, lv, le);
-    if (lv.front() != lv.back()) {
+    const auto [v0, v1] = cx.edge_verts[e];
+    lv.assign(1, v1);
+    le.clear();
+    walk_on(cx, v1, e, stop_vert, used, next, lv, le);
+    if (lv.front() == lv.back()) {
+      ov.insert(ov.end(), lv.begin(), lv.end());
+      oe.insert(oe.end(), le.begin(), le.end());
+    } else {
+      // The first walk ran v1, v0, ... over e, ...: reversed, without its first two vertices and
+      // first edge, it leads up to v0, where the second walk (v0, v1, ... over e, ...) goes on.
       used[e] = 0;
-      walk(cx, cx.edge_verts[e][0], e, stop_vert, used, next, rv, re);
-      std::reverse(lv.begin(), lv.end());
-      std::reverse(le.begin(), le.end());
-      lv.resize(lv.size() - 2);
-      le.pop_back();
-      lv.insert(lv.end(), rv.begin(), rv.end());
-      le.insert(le.end(), re.begin(), re.end());
+      ov.insert(ov.end(), lv.rbegin(), lv.rend() - 2);
+      oe.insert(oe.end(), le.rbegin(), le.rend() - 1);
+      ov.push_back(v0);
+      walk_on(cx, v0, e, stop_vert, used, next, ov, oe);
     }
-    out.edges.push_row(le.begin(), le.end());
-    out.verts.push_row(lv.begin(), lv.end());
+    out.verts.offsets.push_back(static_cast<int32_t>(ov.size()));
+    out.edges.offsets.push_back(static_cast<int32_t>(oe.size()));
   }
   return out;
 }
