@@ -135,25 +135,27 @@ void walk_on(const CellComplex& cx, int32_t v, int32_t e, const std::vector<uint
   }
 }
 
-// Chains through every seed edge (in increasing id order), traced first from the seed's second end
-// through it, then from its first end: the two walks are joined at the seed. The second walk
-// is written straight into the chain's row, after the first one reversed.
-template <class Next>
-Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
-                    const Next& next) {
+// Chains through the seed edges that `take` accepts (in increasing id order), traced first from
+// the seed's second end through it, then from its first end: the two walks are joined at the
+// seed. The second walk is written straight into the chain's row, after the first one reversed.
+// `from` receives each chain's seed.
+template <class Next, class Take>
+Chains trace_in_order(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
+                      const Next& next, const Take& take, std::vector<int32_t>& from) {
   Chains out;
   // Room for the most there can be (a chain per seed, each edge on one chain at most), reserved
   // rather than grown: millions of rows would otherwise be copied at every doubling.
   const size_t seeds = static_cast<size_t>(std::count(seed.begin(), seed.end(), uint8_t{1}));
   out.edges.reserve(seeds, cx.num_edges());
   out.verts.reserve(seeds, cx.num_edges() + seeds);
+  from.reserve(seeds);
   std::vector<int32_t>& ov = out.verts.items;
   std::vector<int32_t>& oe = out.edges.items;
   std::vector<uint8_t> used(cx.num_edges(), 0);
   std::vector<int32_t> lv, le;
   for (size_t s = 0; s < seed.size(); ++s) {
     const int32_t e = static_cast<int32_t>(s);
-    if (!seed[e] || used[e] || cx.closed(e)) continue;
+    if (!seed[e] || used[e] || cx.closed(e) || !take(s)) continue;
     const auto [v0, v1] = cx.edge_verts[e];
     lv.assign(1, v1);
     le.clear();
@@ -172,7 +174,77 @@ Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, con
     }
     out.verts.offsets.push_back(static_cast<int32_t>(ov.size()));
     out.edges.offsets.push_back(static_cast<int32_t>(oe.size()));
+    from.push_back(e);
   }
+  return out;
+}
+
+// Rows, edges and lone seeds of one range of seed ids (see trace_chains).
+struct ChainCount {
+  int64_t rows = 0, edges = 0, lone = 0;
+};
+
+// trace_in_order over every seed, the same chains in the same order, with the seeds whose ends
+// are both stop vertices left out of the ordered trace: such a seed is a chain of its own, v0, v1
+// over it, whatever the order (its walks stop at once, and no other walk goes on into it, as a
+// walk goes on only at a vertex that is not a stop). Those chains are written by ranges of seed
+// ids, between the traced ones; on the split grid nearly every seed is one.
+template <class Next>
+Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
+                    const Next& next, const LoadOptions& par) {
+  const size_t n = seed.size();
+  const int nr = detail::range_count(n, par);
+  auto lone = [&](size_t e) { return stop_vert[cx.edge_verts[e][0]] && stop_vert[cx.edge_verts[e][1]]; };
+  std::vector<int32_t> from;
+  Chains traced = trace_in_order(cx, seed, stop_vert, next, [&](size_t e) { return nr == 1 || !lone(e); }, from);
+  if (nr == 1) return traced;
+  auto lone_chain = [&](size_t e) { return seed[e] && !cx.closed(static_cast<int32_t>(e)) && lone(e); };
+  auto traced_at = [&](size_t e) {
+    return static_cast<size_t>(std::lower_bound(from.begin(), from.end(), static_cast<int32_t>(e)) - from.begin());
+  };
+  std::vector<ChainCount> first(static_cast<size_t>(nr) + 1);
+  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    ChainCount c;  // local: the ranges' counts share cache lines
+    for (size_t s = b; s < e; ++s) c.lone += lone_chain(s);
+    const size_t t0 = traced_at(b), t1 = traced_at(e);
+    c.rows = c.lone + static_cast<int64_t>(t1 - t0);
+    c.edges = c.lone + traced.edges.offsets[t1] - traced.edges.offsets[t0];
+    first[static_cast<size_t>(r) + 1] = c;
+  });
+  int64_t lone_total = 0;
+  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) {
+    lone_total += first[r + 1].lone;
+    first[r + 1].rows += first[r].rows;
+    first[r + 1].edges += first[r].edges;
+  }
+  if (lone_total == 0) return traced;
+  Chains out;
+  const ChainCount& all = first.back();
+  out.edges.offsets.resize(static_cast<size_t>(all.rows) + 1);
+  out.verts.offsets.resize(static_cast<size_t>(all.rows) + 1);
+  out.edges.items.resize(static_cast<size_t>(all.edges));
+  out.verts.items.resize(static_cast<size_t>(all.edges + all.rows));  // a vertex more than edges each
+  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    auto row = static_cast<size_t>(first[static_cast<size_t>(r)].rows);
+    auto ke = static_cast<size_t>(first[static_cast<size_t>(r)].edges), kv = ke + row;
+    size_t t = traced_at(b);
+    for (size_t s = b; s < e; ++s) {
+      if (lone_chain(s)) {
+        out.edges.items[ke++] = static_cast<int32_t>(s);
+        out.verts.items[kv++] = cx.edge_verts[s][0];
+        out.verts.items[kv++] = cx.edge_verts[s][1];
+      } else if (t < from.size() && from[t] == static_cast<int32_t>(s)) {
+        for (int32_t x : traced.edges[t]) out.edges.items[ke++] = x;
+        for (int32_t x : traced.verts[t]) out.verts.items[kv++] = x;
+        ++t;
+      } else {
+        continue;
+      }
+      ++row;
+      out.edges.offsets[row] = static_cast<int32_t>(ke);
+      out.verts.offsets[row] = static_cast<int32_t>(kv);
+    }
+  });
   return out;
 }
 
@@ -190,11 +262,12 @@ int32_t straight_next(const Region& r, int32_t v, int32_t e, const Allow& allow)
 }
 
 // Chains of the VSG rule: the unique straight continuation, when it has the same valence.
-Chains valence_chains(const Region& r, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert) {
+Chains valence_chains(const Region& r, const std::vector<uint8_t>& seed, const std::vector<uint8_t>& stop_vert,
+                      const LoadOptions& par) {
   return trace_chains(r.cx, seed, stop_vert, [&](int32_t v, int32_t e) {
     const int32_t f = straight_next(r, v, e, [](int32_t) { return true; });
     return f >= 0 && r.valence(f) == r.valence(e) ? f : -1;
-  });
+  }, par);
 }
 
 std::vector<uint8_t> chain_end_flags(const CellComplex& cx, const Chains& ch) {
@@ -689,7 +762,7 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
   });
   return trace_chains(cx, seeds, singular, [&](int32_t v, int32_t e) {
     return straight_next(r, v, e, [&](int32_t f) { return on(f); });
-  });
+  }, par);
 }
 
 void fill_complete(const Region& r, const Chains& ch, const LoadOptions& par, VsgWireframe& w) {
@@ -770,7 +843,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   w.vsg_edges = std::count(w.edge_vsg.begin(), w.edge_vsg.end(), uint8_t{1});
 
   // VSG: chains of seeds, broken only where the continuation is not unique or changes valence.
-  Chains vsg = valence_chains(r, w.edge_vsg, std::vector<uint8_t>(nv, 0));
+  Chains vsg = valence_chains(r, w.edge_vsg, std::vector<uint8_t>(nv, 0), par);
   add_closed(cx, w.edge_vsg, vsg);
   w.vsg_chain_edges = vsg.edges;
   w.vsg_chains = static_cast<int64_t>(vsg.edges.rows());
@@ -788,7 +861,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   std::vector<uint8_t> seeds(ne, 0);
   for (int32_t v : w.singular_vertices)
     for (int32_t e : cx.vert_edges[v]) seeds[e] = 1;
-  const Chains complete = valence_chains(r, seeds, w.vert_singular);
+  const Chains complete = valence_chains(r, seeds, w.vert_singular, par);
   fill_complete(r, complete, par, w);
 
   // Simplification.
