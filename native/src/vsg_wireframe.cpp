@@ -724,6 +724,19 @@ Cleaning clean_chains(const Region& r, const Chains& ch, const std::vector<uint8
   return cl;
 }
 
+// Sets edge[x] for every edge x that take(x) accepts at a vertex v with vert[v] set, by ranges of
+// vertices: threads only ever store 1 into a shared flag.
+template <class Take>
+void flag_edges_at(const CellComplex& cx, const std::vector<uint8_t>& vert, std::vector<uint8_t>& edge, const LoadOptions& par,
+                   const Take& take) {
+  detail::parallel_ranges(vert.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t v = b; v < e; ++v)
+      if (vert[v])
+        for (int32_t x : cx.vert_edges[v])
+          if (take(x)) set_flag(edge, x);
+  });
+}
+
 // The kept chains re-chained: a kept chain end stays singular unless exactly two kept chains pass
 // through it with no two of its wireframe edges in one cell; chains are then traced from the edges
 // at the remaining singular vertices along the unique kept straight continuation. (Chains that
@@ -754,12 +767,7 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
     }
   });
   std::vector<uint8_t> seeds(cx.num_edges(), 0);
-  detail::parallel_ranges(singular.size(), par, [&](size_t b, size_t end_v, int) {
-    for (size_t v = b; v < end_v; ++v)
-      if (singular[v])
-        for (int32_t e : cx.vert_edges[v])
-          if (on(e)) set_flag(seeds, e);
-  });
+  flag_edges_at(cx, singular, seeds, par, on);
   return trace_chains(cx, seeds, singular, [&](int32_t v, int32_t e) {
     return straight_next(r, v, e, [&](int32_t f) { return on(f); });
   }, par);
@@ -851,16 +859,14 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
 
   // Complete wireframe: flood from the VSG's edges and from every edge at a VSG vertex.
   std::vector<uint8_t> start = edge_flags(cx, vsg.edges);
-  for (size_t v = 0; v < nv; ++v)
-    if (w.vert_vsg[v])
-      for (int32_t e : cx.vert_edges[v]) start[e] = 1;
+  const auto any = [](int32_t) { return true; };
+  flag_edges_at(cx, w.vert_vsg, start, par, any);
   const std::vector<uint8_t> flooded = flood_faces(r, start, par);
   w.vert_singular = patch_singular_vertices(r, flooded, par);
   for (size_t v = 0; v < nv; ++v)
     if (w.vert_singular[v]) w.singular_vertices.push_back(static_cast<int32_t>(v));
   std::vector<uint8_t> seeds(ne, 0);
-  for (int32_t v : w.singular_vertices)
-    for (int32_t e : cx.vert_edges[v]) seeds[e] = 1;
+  flag_edges_at(cx, w.vert_singular, seeds, par, any);
   const Chains complete = valence_chains(r, seeds, w.vert_singular, par);
   fill_complete(r, complete, par, w);
 
