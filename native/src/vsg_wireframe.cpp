@@ -270,12 +270,17 @@ Chains valence_chains(const Region& r, const std::vector<uint8_t>& seed, const s
   }, par);
 }
 
-std::vector<uint8_t> chain_end_flags(const CellComplex& cx, const Chains& ch) {
+// The two ends of every open chain c that take(c) accepts, flagged by ranges of chains: threads
+// only ever store 1 into a shared flag.
+template <class Take>
+std::vector<uint8_t> chain_end_flags(const CellComplex& cx, const Chains& ch, const LoadOptions& par, const Take& take) {
   std::vector<uint8_t> out(cx.num_vertices(), 0);
-  for (size_t c = 0; c < ch.verts.rows(); ++c) {
-    const auto vs = ch.verts[c];
-    if (vs.front() != vs.back()) out[vs.front()] = out[vs.back()] = 1;
-  }
+  detail::parallel_ranges(ch.verts.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) {
+      const auto vs = ch.verts[c];
+      if (take(c) && vs.front() != vs.back()) set_flag(out, vs.front()), set_flag(out, vs.back());
+    }
+  });
   return out;
 }
 
@@ -745,13 +750,8 @@ Chains final_chains(const Region& r, const Chains& ch, const std::vector<uint8_t
   const CellComplex& cx = r.cx;
   const ChainIndex ix = index_chains(cx, ch, kept, par);
   const auto on = [&](int32_t e) { return ix.edge_chain[e] >= 0; };
-  std::vector<uint8_t> end(cx.num_vertices(), 0), singular(cx.num_vertices(), 0);
-  detail::parallel_ranges(ch.edges.rows(), par, [&](size_t b, size_t e, int) {
-    for (size_t c = b; c < e; ++c) {
-      const auto vs = ch.verts[c];
-      if (kept[c] && vs.front() != vs.back()) set_flag(end, vs.front()), set_flag(end, vs.back());
-    }
-  });
+  const std::vector<uint8_t> end = chain_end_flags(cx, ch, par, [&](size_t c) { return kept[c] != 0; });
+  std::vector<uint8_t> singular(cx.num_vertices(), 0);
   detail::parallel_ranges(end.size(), par, [&](size_t b, size_t e, int) {
     std::vector<int32_t> at;
     for (size_t v = b; v < e; ++v) {
@@ -855,7 +855,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   add_closed(cx, w.edge_vsg, vsg);
   w.vsg_chain_edges = vsg.edges;
   w.vsg_chains = static_cast<int64_t>(vsg.edges.rows());
-  w.vert_vsg = chain_end_flags(cx, vsg);
+  w.vert_vsg = chain_end_flags(cx, vsg, par, [](size_t) { return true; });
 
   // Complete wireframe: flood from the VSG's edges and from every edge at a VSG vertex.
   std::vector<uint8_t> start = edge_flags(cx, vsg.edges);
