@@ -67,6 +67,22 @@ void parallel_ranges(size_t n, const LoadOptions& par, F&& f) {
     if (e) std::rethrow_exception(e);
 }
 
+// Where each of parallel_ranges' ranges of [0, n) starts writing when the ranges write their
+// outputs one after another: count(b, e) returns a range's totals, and entry r of the result sums
+// those of the ranges before r (range_count(n, par) + 1 entries, the last being the total). The
+// caller sizes its outputs from the total, then fills them by parallel_ranges over the same n
+// and par, range r from entry r. T is a number or a struct of them with +=.
+template <class T, class Count>
+std::vector<T> range_starts(size_t n, const LoadOptions& par, Count&& count) {
+  const auto nr = static_cast<size_t>(range_count(n, par));
+  std::vector<T> at(nr + 1, T{});
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    at[static_cast<size_t>(r) + 1] = count(b, e);  // counted locally by count: the entries share cache lines
+  });
+  for (size_t r = 0; r < nr; ++r) at[r + 1] += at[r];
+  return at;
+}
+
 // par with another grain (and the same threads and pool).
 inline LoadOptions with_grain(const LoadOptions& par, int grain) {
   LoadOptions p = par;

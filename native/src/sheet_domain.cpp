@@ -33,23 +33,31 @@ Csr<int32_t> parallels_from_quads(const Csr<int32_t>& quads, const std::vector<s
         emit(c[j], c[i]);
       }
   });
-  // Sort and dedupe rows in place (in parallel ranges), then compact.
+  // Rows sorted and deduped in place by ranges of curves. Two quads rarely share two curves, so
+  // the rows mostly keep every entry (all of them on the split grid's 12M): they are then left as
+  // they are, and otherwise compacted in place, without a second table of as many fresh pages.
   std::vector<int32_t> kept(ncurves);
-  detail::parallel_ranges(ncurves, par, [&](size_t b, size_t e, int) {
+  const std::vector<int64_t> at = detail::range_starts<int64_t>(ncurves, par, [&](size_t b, size_t e) {
+    int64_t n = 0;
     for (size_t k = b; k < e; ++k) {
       auto r = out.row(k);
       std::sort(r.begin(), r.end());
       kept[k] = static_cast<int32_t>(std::unique(r.begin(), r.end()) - r.begin());
+      n += kept[k];
     }
+    return n;
   });
-  Csr<int32_t> packed;
-  packed.offsets.reserve(ncurves + 1);
-  packed.items.reserve(out.items.size());
+  if (at.back() == static_cast<int64_t>(out.items.size())) return out;
+  int32_t to = 0, from = 0;
   for (size_t k = 0; k < ncurves; ++k) {
-    const int32_t* r = out.items.data() + out.offsets[k];
-    packed.push_row(r, r + kept[k]);
+    const int32_t row = from;
+    from = out.offsets[k + 1];
+    std::copy(out.items.begin() + row, out.items.begin() + row + kept[k], out.items.begin() + to);
+    to += kept[k];
+    out.offsets[k + 1] = to;
   }
-  return packed;
+  out.items.resize(static_cast<size_t>(to));
+  return out;
 }
 
 // Row per curve listing map[o] for each owner o whose row of `owner_curves` (sorted, distinct)
