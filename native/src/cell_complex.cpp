@@ -53,15 +53,23 @@ std::vector<uint8_t> flags_of(std::span<const int32_t> ids, size_t n, const char
   return in;
 }
 
-// Compact ids for the flagged entries, in increasing order of the original ids.
-std::vector<int32_t> compact(const std::vector<uint8_t>& keep, std::vector<int32_t>& source) {
-  std::vector<int32_t> map(keep.size(), -1);
-  source.clear();
-  for (size_t i = 0; i < keep.size(); ++i)
-    if (keep[i]) {
-      map[i] = static_cast<int32_t>(source.size());
-      source.push_back(static_cast<int32_t>(i));
+// Compact ids for the flagged entries, in increasing order of the original ids, by ranges of
+// entries: each numbers its own from where the earlier ranges' end.
+std::vector<int32_t> compact(const std::vector<uint8_t>& keep, std::vector<int32_t>& source, const LoadOptions& par) {
+  const size_t n = keep.size();
+  const std::vector<int64_t> at = detail::range_starts<int64_t>(n, par, [&](size_t b, size_t e) {
+    return static_cast<int64_t>(std::count_if(keep.begin() + static_cast<ptrdiff_t>(b), keep.begin() + static_cast<ptrdiff_t>(e),
+                                              [](uint8_t k) { return k != 0; }));
+  });
+  std::vector<int32_t> map(n);
+  source.resize(static_cast<size_t>(at.back()));
+  parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
+    auto id = static_cast<int32_t>(at[static_cast<size_t>(r)]);
+    for (size_t i = b; i < e; ++i) {
+      map[i] = keep[i] ? id : -1;
+      if (keep[i]) source[static_cast<size_t>(id++)] = static_cast<int32_t>(i);
     }
+  });
   return map;
 }
 
@@ -154,8 +162,8 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
   const RegionBoundary rb = region_boundary(m, in_cell, serial);
   const size_t ne = m.num_edges(), nv = m.num_vertices();
 
-  const std::vector<int32_t> cmap = compact(in_cell, cx.cell_source);
-  const std::vector<int32_t> fmap = compact(rb.face_in, cx.face_source);
+  const std::vector<int32_t> cmap = compact(in_cell, cx.cell_source, serial);
+  const std::vector<int32_t> fmap = compact(rb.face_in, cx.face_source, serial);
   // Edges and vertices of the region's cells (those of their faces).
   std::vector<uint8_t> edge_in(ne, 0), vert_in(nv, 0);
   for (size_t c = 0; c < m.num_cells(); ++c)
@@ -164,8 +172,8 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
         for (int32_t e : m.face_edges(static_cast<size_t>(f))) edge_in[static_cast<size_t>(e)] = 1;
   for (size_t e = 0; e < ne; ++e)
     if (edge_in[e]) vert_in[m.edge_verts[e][0]] = vert_in[m.edge_verts[e][1]] = 1;
-  const std::vector<int32_t> emap = compact(edge_in, cx.edge_source);
-  const std::vector<int32_t> vmap = compact(vert_in, cx.vert_mesh);
+  const std::vector<int32_t> emap = compact(edge_in, cx.edge_source, serial);
+  const std::vector<int32_t> vmap = compact(vert_in, cx.vert_mesh, serial);
 
   cx.cell_non_hex.resize(cx.num_cells());
   for (size_t i = 0; i < cx.num_cells(); ++i) cx.cell_non_hex[i] = !m.is_hex(cx.cell_source[i]);
@@ -326,7 +334,7 @@ void corner_facts(const Mesh& m, const BaseComplex& bc, const RegionBoundary& rb
       set_flag(corner_in, vs.back());
     }
   });
-  const std::vector<int32_t> vmap = compact(corner_in, f.corners);
+  const std::vector<int32_t> vmap = compact(corner_in, f.corners, par);
   const size_t n = f.corners.size();
   f.corner_boundary.resize(n);
   for (size_t i = 0; i < n; ++i) f.corner_boundary[i] = rb.vert_boundary[f.corners[i]];
@@ -401,12 +409,12 @@ void curve_edges_of_view(const BaseComplex& bc, const BaseViewFacts& f, const st
 CellComplex view_from_facts(const BaseComplex& bc, const BaseViewFacts& f, const LoadOptions& par) {
   CellComplex cx;
   cx.level = Level::Complex;
-  const std::vector<int32_t> kmap = compact(f.component_in, cx.cell_source);
+  const std::vector<int32_t> kmap = compact(f.component_in, cx.cell_source, par);
   cx.cell_non_hex.resize(cx.num_cells());
   for (size_t i = 0; i < cx.num_cells(); ++i)
     cx.cell_non_hex[i] = bc.component_kind[cx.cell_source[i]] == ComponentKind::NonHex;
-  const std::vector<int32_t> pmap = compact(f.patch_in, cx.face_source);
-  const std::vector<int32_t> emap = compact(f.curve_in, cx.edge_source);
+  const std::vector<int32_t> pmap = compact(f.patch_in, cx.face_source, par);
+  const std::vector<int32_t> emap = compact(f.curve_in, cx.edge_source, par);
   cx.vert_mesh = f.corners;
   std::vector<int32_t> vmap(f.num_mesh_vertices, -1);
   for (size_t i = 0; i < f.corners.size(); ++i) vmap[static_cast<size_t>(f.corners[i])] = static_cast<int32_t>(i);
