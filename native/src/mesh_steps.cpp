@@ -416,13 +416,20 @@ FaceItems face_items(const MeshInput& in, const SlotLoops& loops, std::vector<in
   return items;
 }
 
+// New faces and their corners, counted by a range of cells.
+struct FaceCount {
+  int64_t faces = 0, corners = 0;
+  FaceCount& operator+=(const FaceCount& o) {
+    faces += o.faces, corners += o.corners;
+    return *this;
+  }
+};
+
 // Faces numbered in slot order from rep (consumed: it becomes cell_faces.items). Ranges of slots
 // count their new faces first, so that each then numbers its own from the right place; a face id
 // is kept as -1 - id until every slot has one.
 void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, const LoadOptions& par) {
   const size_t nslots = items.nslots(), nc = items.slot_offsets.size() - 1;
-  const int nr = detail::range_count(nc, par);
-  std::vector<int64_t> first_face(static_cast<size_t>(nr) + 1, 0), first_corner(static_cast<size_t>(nr) + 1, 0);
   // Ranges of cells (their slots in order), which know their slots' loops without a lookup.
   auto each_new_face = [&](size_t cb, size_t ce, auto&& f) {
     for (size_t c = cb; c < ce; ++c)
@@ -431,25 +438,19 @@ void number_faces(const FaceItems& items, std::vector<int32_t>&& rep, Mesh& m, c
         if (rep[s] == static_cast<int32_t>(s)) f(s, c, j);
       }
   };
-  detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int r) {
-    // Counted locally: the ranges' totals share a cache line.
-    int64_t faces = 0, corners = 0;
+  const std::vector<FaceCount> first = detail::range_starts<FaceCount>(nc, par, [&](size_t b, size_t e) {
+    FaceCount n;
     each_new_face(b, e, [&](size_t, size_t c, int j) {
-      ++faces;
-      corners += items.loops.size(c, j);
+      ++n.faces;
+      n.corners += items.loops.size(c, j);
     });
-    first_face[static_cast<size_t>(r) + 1] = faces;
-    first_corner[static_cast<size_t>(r) + 1] = corners;
+    return n;
   });
-  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) {
-    first_face[r + 1] += first_face[r];
-    first_corner[r + 1] += first_corner[r];
-  }
-  detail::assign_touched(m.face_verts.offsets, static_cast<size_t>(first_face.back()) + 1, 0, par);
-  detail::resize_touched(m.face_verts.items, static_cast<size_t>(first_corner.back()), par);
+  detail::assign_touched(m.face_verts.offsets, static_cast<size_t>(first.back().faces) + 1, 0, par);
+  detail::resize_touched(m.face_verts.items, static_cast<size_t>(first.back().corners), par);
   detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int r) {
-    auto face = first_face[static_cast<size_t>(r)];
-    auto at = first_corner[static_cast<size_t>(r)];
+    auto face = first[static_cast<size_t>(r)].faces;
+    auto at = first[static_cast<size_t>(r)].corners;
     std::array<int32_t, 4> buf;
     each_new_face(b, e, [&](size_t s, size_t c, int j) {
       const auto loop = items.loops.loop(c, j, buf);
@@ -593,18 +594,15 @@ void edge_representatives(const Mesh& m, const detail::RawRows& by_lo, std::span
 void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
   const size_t nf = m.num_faces();
   const std::vector<int32_t>& loops = m.face_verts.items;
-  const int nr = detail::range_count(nf, par);
-  std::vector<int64_t> first(static_cast<size_t>(nr) + 1, 0);
   auto corners = [&](size_t f) {
     return std::pair{static_cast<size_t>(m.face_verts.offsets[f]), static_cast<size_t>(m.face_verts.offsets[f + 1])};
   };
-  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {
-    int64_t count = 0;  // local: the ranges' totals share a cache line
+  const std::vector<int64_t> first = detail::range_starts<int64_t>(nf, par, [&](size_t b, size_t e) {
+    int64_t count = 0;
     for (size_t f = b; f < e; ++f)
       for (auto [k, k1] = corners(f); k < k1; ++k) count += rep[k] == static_cast<int32_t>(k);
-    first[static_cast<size_t>(r) + 1] = count;
+    return count;
   });
-  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) first[r + 1] += first[r];
   detail::resize_touched(m.edge_verts, static_cast<size_t>(first.back()), par);
   detail::resize_touched(m.fan_start, static_cast<size_t>(first.back()), par);
   detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int r) {

@@ -182,6 +182,10 @@ Chains trace_in_order(const CellComplex& cx, const std::vector<uint8_t>& seed, c
 // Rows, edges and lone seeds of one range of seed ids (see trace_chains).
 struct ChainCount {
   int64_t rows = 0, edges = 0, lone = 0;
+  ChainCount& operator+=(const ChainCount& o) {
+    rows += o.rows, edges += o.edges, lone += o.lone;
+    return *this;
+  }
 };
 
 // trace_in_order over every seed, the same chains in the same order, with the seeds whose ends
@@ -202,24 +206,17 @@ Chains trace_chains(const CellComplex& cx, const std::vector<uint8_t>& seed, con
   auto traced_at = [&](size_t e) {
     return static_cast<size_t>(std::lower_bound(from.begin(), from.end(), static_cast<int32_t>(e)) - from.begin());
   };
-  std::vector<ChainCount> first(static_cast<size_t>(nr) + 1);
-  detail::parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
-    ChainCount c;  // local: the ranges' counts share cache lines
+  const std::vector<ChainCount> first = detail::range_starts<ChainCount>(n, par, [&](size_t b, size_t e) {
+    ChainCount c;
     for (size_t s = b; s < e; ++s) c.lone += lone_chain(s);
     const size_t t0 = traced_at(b), t1 = traced_at(e);
     c.rows = c.lone + static_cast<int64_t>(t1 - t0);
     c.edges = c.lone + traced.edges.offsets[t1] - traced.edges.offsets[t0];
-    first[static_cast<size_t>(r) + 1] = c;
+    return c;
   });
-  int64_t lone_total = 0;
-  for (size_t r = 0; r < static_cast<size_t>(nr); ++r) {
-    lone_total += first[r + 1].lone;
-    first[r + 1].rows += first[r].rows;
-    first[r + 1].edges += first[r].edges;
-  }
-  if (lone_total == 0) return traced;
-  Chains out;
   const ChainCount& all = first.back();
+  if (all.lone == 0) return traced;
+  Chains out;
   out.edges.offsets.resize(static_cast<size_t>(all.rows) + 1);
   out.verts.offsets.resize(static_cast<size_t>(all.rows) + 1);
   out.edges.items.resize(static_cast<size_t>(all.edges));
