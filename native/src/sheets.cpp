@@ -1,6 +1,8 @@
 #include "hbc/sheets.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
 #include <cstdlib>
@@ -353,60 +355,79 @@ class EdgeClasses {
     const int32_t r = root(x);
     return parent_[static_cast<size_t>(r)] < 0 ? -1 - parent_[static_cast<size_t>(r)] : -1;
   }
-
- private:
   int32_t root(int32_t x) const {
     while (parent_[static_cast<size_t>(x)] >= 0 && parent_[static_cast<size_t>(x)] != x) x = parent_[static_cast<size_t>(x)];
     return x;
   }
+
+ private:
   std::vector<int32_t> parent_;
 };
 
-// The first cell of each block with a direction in each class, as (class, first cell, block):
-// a block has its three classes in every cell (neighbours in a block share them), so a handful
-// per block; more are kept too, in case.
-struct BlockClasses {
-  std::vector<std::array<int32_t, 3>> entries;  // (class, first cell, block)
-  std::vector<std::array<int32_t, 3>> seen;     // per block: its first three classes (-1 = none yet)
-  explicit BlockClasses(size_t nblocks) : seen(nblocks, {-1, -1, -1}) {}
-  void add(int32_t block, int32_t cls, int32_t cell) {
-    auto& s = seen[static_cast<size_t>(block)];
-    for (int32_t& k : s) {
-      if (k == cls) return;
-      if (k < 0) {
-        k = cls;
-        entries.push_back({cls, cell, block});
-        return;
+// The edges a hex cell's three directions are read from: its first face's first two edges and the
+// edge across that face.
+std::array<int32_t, 3> direction_edges(const Mesh& m, int32_t c) {
+  const int32_t f = m.cell_faces[static_cast<size_t>(c)][0];
+  const auto fe = m.face_edges(static_cast<size_t>(f));
+  return {fe[0], fe[1], orthogonal_edge(m, c, f)};
+}
+
+// Per cell, the bits of its direction slots (0-2) where its block meets a class first, the block's
+// cells taken in increasing order (as number_classes lists them). A cell is in one block, so
+// ranges of blocks write their cells' bits alone.
+std::vector<uint8_t> first_meetings(const Mesh& m, const SheetDomain& d, const EdgeClasses& classes,
+                                    const LoadOptions& par) {
+  std::vector<uint8_t> bits(m.num_cells(), 0);
+  detail::weighted_ranges(d.block_cells.offsets, par, [&](size_t b, size_t e, int) {
+    std::vector<int32_t> seen;  // roots met in the block so far: three, or a few more
+    for (size_t u = b; u < e; ++u) {
+      seen.clear();
+      for (int32_t c : d.block_cells[u]) {
+        const auto dirs = direction_edges(m, c);
+        for (size_t s = 0; s < 3; ++s) {
+          const int32_t r = classes.root(dirs[s]);
+          if (std::find(seen.begin(), seen.end(), r) != seen.end()) continue;
+          seen.push_back(r);
+          bits[static_cast<size_t>(c)] |= static_cast<uint8_t>(1u << s);
+        }
       }
     }
-    for (const auto& e : entries)  // a fourth class: look it up the slow way
-      if (e[2] == block && e[0] == cls) return;
-    entries.push_back({cls, cell, block});
-  }
-};
+  });
+  return bits;
+}
 
 }  // namespace
 
+// Dense class ids in order of first appearance over the cells' direction slots, (cell, slot) in
+// increasing order; entries in the same order. A class appears first where some block meets it
+// first, so numbering the entries in order numbers the classes as a walk over every cell would.
+// The entries are found by ranges (of blocks, then of cells); only the numbering, a pass over
+// the entries, stays serial.
 ParallelClasses parallel_classes(const Mesh& m, const SheetDomain& d, const LoadOptions& par) {
   EdgeClasses classes(join_parallel_edges(m, d, par));
+  const std::vector<uint8_t> bits = first_meetings(m, d, classes, par);
   const size_t nc = m.num_cells();
+  const std::vector<int64_t> at = detail::range_starts<int64_t>(nc, par, [&](size_t b, size_t e) {
+    int64_t n = 0;
+    for (size_t c = b; c < e; ++c) n += std::popcount(bits[c]);
+    return n;
+  });
   ParallelClasses pc;
-  BlockClasses bc(d.block_cells.rows());
-  // Dense class ids in order of first appearance over the cells; a hex cell's three directions
-  // are the classes of its first face's two edge directions and of the edge across that face.
-  for (size_t c = 0; c < nc; ++c) {
-    if (d.cell_block[c] < 0) continue;
-    const int32_t f = m.cell_faces[c][0];
-    const int32_t reps[3] = {m.face_edges(static_cast<size_t>(f))[0], m.face_edges(static_cast<size_t>(f))[1],
-                             orthogonal_edge(m, static_cast<int32_t>(c), f)};
-    for (int32_t r : reps) bc.add(d.cell_block[c], classes.number(r, pc.count), static_cast<int32_t>(c));
-  }
-  pc.entry_class.resize(bc.entries.size());
-  pc.entry_block.resize(bc.entries.size());
-  for (size_t i = 0; i < bc.entries.size(); ++i) {
-    pc.entry_class[i] = bc.entries[i][0];
-    pc.entry_block[i] = bc.entries[i][2];
-  }
+  pc.entry_class.resize(static_cast<size_t>(at.back()));
+  pc.entry_block.resize(static_cast<size_t>(at.back()));
+  parallel_ranges(nc, par, [&](size_t b, size_t e, int r) {
+    auto k = static_cast<size_t>(at[static_cast<size_t>(r)]);
+    for (size_t c = b; c < e; ++c) {
+      if (!bits[c]) continue;
+      const auto dirs = direction_edges(m, static_cast<int32_t>(c));
+      for (size_t s = 0; s < 3; ++s)
+        if (bits[c] >> s & 1u) {
+          pc.entry_class[k] = classes.root(dirs[s]);  // numbered below
+          pc.entry_block[k++] = d.cell_block[c];
+        }
+    }
+  });
+  for (int32_t& x : pc.entry_class) x = classes.number(x, pc.count);
   pc.curve_class.resize(d.curve_edges.rows());
   parallel_ranges(pc.curve_class.size(), par, [&](size_t b, size_t e, int) {
     for (size_t k = b; k < e; ++k) pc.curve_class[k] = classes.of(d.curve_edges[k][0]);
