@@ -338,7 +338,8 @@ struct ParallelClasses {
 
 namespace {
 
-// The classes of edges once every root has a dense class id: the union-find's table then holds
+// The classes of edges, over the union-find's table: root() reads it as it comes (any thread, while
+// nothing is numbered), and number() then gives roots dense class ids in place, the table holding
 // for a root -1 - its class (or itself when no cell has that class) and for any other edge its
 // root, so no second per-edge table is needed.
 class EdgeClasses {
