@@ -12,10 +12,13 @@ namespace {
 // The member edges as a graph of chains: a chain passes a vertex between its two member edges
 // when the vertex is not a stop and their values agree. pass() is symmetric, so every chain is a
 // path or a cycle, and the edge a chain reaches a vertex by is the one it leaves it by, backwards.
+// VertexEdges: rows of the member edges at each vertex (a Csr over every vertex, or
+// SparseVertexEdges).
+template <class VertexEdges>
 struct ChainGraph {
   std::span<const std::array<int32_t, 2>> edge_verts;
-  const Csr<int32_t>& vert_edges;
-  const std::vector<uint8_t>& member;
+  const VertexEdges& vert_edges;
+  std::span<const uint8_t> member;
   std::span<const int32_t> value;
   const std::vector<uint8_t>& stop;
   int32_t other_vertex(int32_t e, int32_t v) const { return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0]; }
@@ -23,7 +26,7 @@ struct ChainGraph {
   int32_t pass(int32_t v, int32_t e) const {
     if (stop[v]) return -1;
     int32_t other = -1, count = 0;
-    for (int32_t f : vert_edges[v]) {
+    for (int32_t f : vert_edges[static_cast<size_t>(v)]) {
       if (!member[f]) continue;
       ++count;
       if (f != e) other = f;
@@ -32,6 +35,38 @@ struct ChainGraph {
     return other;
   }
 };
+
+// The member edges at each vertex that has some, for few members (a grid's singular edges, along
+// its box's edges): rows of those vertices only, found by binary search. A table of every vertex
+// costs an offset per vertex and a count per vertex and thread, some 120 MB of fresh memory at
+// 10^7 cells, for a few thousand edges.
+struct SparseVertexEdges {
+  std::vector<int32_t> verts;  // sorted, each once
+  Csr<int32_t> rows;           // row i: the members at verts[i], in increasing order
+  std::span<const int32_t> operator[](size_t v) const {
+    const auto it = std::lower_bound(verts.begin(), verts.end(), static_cast<int32_t>(v));
+    if (it == verts.end() || *it != static_cast<int32_t>(v)) return {};
+    return rows[static_cast<size_t>(it - verts.begin())];
+  }
+};
+
+SparseVertexEdges sparse_vertex_edges(std::span<const std::array<int32_t, 2>> edge_verts, std::span<const int32_t> members) {
+  std::vector<std::array<int32_t, 2>> at;  // (vertex, edge)
+  at.reserve(2 * members.size());
+  for (int32_t e : members)
+    for (int32_t v : edge_verts[static_cast<size_t>(e)]) at.push_back({v, e});
+  std::sort(at.begin(), at.end());
+  SparseVertexEdges out;
+  for (size_t i = 0; i < at.size(); ++i) {
+    if (i == 0 || at[i][0] != at[i - 1][0]) {
+      if (i > 0) out.rows.offsets.push_back(static_cast<int32_t>(i));
+      out.verts.push_back(at[i][0]);
+    }
+    out.rows.items.push_back(at[i][1]);
+  }
+  if (!at.empty()) out.rows.offsets.push_back(static_cast<int32_t>(at.size()));
+  return out;
+}
 
 // One chain, as chain_edges gives it.
 struct Chain {
@@ -42,8 +77,8 @@ struct Chain {
 
 // The chain through `start`: forward from its hi end, then backward from its lo end, calling
 // reached(edge) for every other edge on it.
-template <class Reached>
-void walk_chain(const ChainGraph& g, int32_t start, Chain& ch, Reached&& reached) {
+template <class G, class Reached>
+void walk_chain(const G& g, int32_t start, Chain& ch, Reached&& reached) {
   ch.fwd.clear();
   ch.bwd.clear();
   ch.loop = false;
@@ -69,7 +104,8 @@ void walk_chain(const ChainGraph& g, int32_t start, Chain& ch, Reached&& reached
 
 // The walked chain's vertices and edges from its start in canonical orientation (see
 // chain_edges in the header).
-void orient_chain(const ChainGraph& g, int32_t start, Chain& ch) {
+template <class G>
+void orient_chain(const G& g, int32_t start, Chain& ch) {
   auto& vs = ch.vs;
   auto& es = ch.es;
   es.assign(ch.bwd.rbegin(), ch.bwd.rend());
@@ -111,40 +147,29 @@ struct ChainRows {
   std::vector<uint8_t> closed;
 };
 
-}  // namespace
-
-void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, std::span<const int32_t> value,
-                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
-                 std::vector<uint8_t>& closed, const LoadOptions& threads) {
-  // The walk only ever looks at member edges, so the vertex table needs only them.
-  const LoadOptions par = resolved(threads);
-  chain_edges(m.edge_verts, vertex_edges(m, member, par), member, value, stop, verts, edges, closed, par);
-}
-
 // Each chain is written by the range holding its lowest edge, which is where a walk in increasing
 // edge order starts it, so the chains come out in that order for any number of ranges. A range
-// walks each chain with an edge in it once (it marks the chain's edges in its own slice of
-// `seen`, the only part it reads or writes), and skips the chains whose lowest edge lies before it.
-void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
-                 const std::vector<uint8_t>& member, std::span<const int32_t> value,
-                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
-                 std::vector<uint8_t>& closed, const LoadOptions& threads) {
-  const LoadOptions par = resolved(threads);
-  const ChainGraph g{edge_verts, vert_edges, member, value, stop};
+// walks each chain with an edge in it once (it marks the chain's edges in `seen`, its own slice of
+// the edges), and skips the chains whose lowest edge lies before it.
+template <class VertexEdges>
+void chain_rows(std::span<const std::array<int32_t, 2>> edge_verts, const VertexEdges& vert_edges,
+                std::span<const uint8_t> member, std::span<const int32_t> value, const std::vector<uint8_t>& stop,
+                Csr<int32_t>& verts, Csr<int32_t>& edges, std::vector<uint8_t>& closed, const LoadOptions& par) {
+  const ChainGraph<VertexEdges> g{edge_verts, vert_edges, member, value, stop};
   const size_t ne = edge_verts.size();
-  std::vector<uint8_t> seen(ne, 0);
   std::vector<ChainRows> parts(static_cast<size_t>(detail::range_count(ne, par)));
   detail::parallel_ranges(ne, par, [&](size_t b, size_t e, int r) {
     ChainRows out;  // on this thread's stack: the parts' headers share cache lines
     Chain ch;
+    std::vector<uint8_t> seen(e - b, 0);  // zeroed by the range's own thread
     for (size_t e0 = b; e0 < e; ++e0) {
-      if (!member[e0] || seen[e0]) continue;
+      if (!member[e0] || seen[e0 - b]) continue;
       const auto start = static_cast<int32_t>(e0);
-      seen[e0] = 1;
+      seen[e0 - b] = 1;
       bool first = true;  // the start is the chain's lowest edge
       walk_chain(g, start, ch, [&](int32_t n) {
         first = first && n > start;
-        if (static_cast<size_t>(n) >= b && static_cast<size_t>(n) < e) seen[static_cast<size_t>(n)] = 1;
+        if (static_cast<size_t>(n) >= b && static_cast<size_t>(n) < e) seen[static_cast<size_t>(n) - b] = 1;
       });
       if (!first) continue;
       orient_chain(g, start, ch);
@@ -165,27 +190,41 @@ void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<i
   edges = concat(std::move(eparts));
 }
 
+}  // namespace
+
+void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, std::span<const int32_t> value,
+                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
+                 std::vector<uint8_t>& closed, const LoadOptions& threads) {
+  // The walk only ever looks at member edges, so the vertex table needs only them; when they are
+  // few, only their vertices get rows (the chains are the same either way).
+  const LoadOptions par = resolved(threads);
+  const std::vector<int32_t> members = detail::ids_where(m.num_edges(), par, [&](size_t e) { return member[e] != 0; });
+  if (members.size() * 64 < m.num_vertices())
+    chain_rows(m.edge_verts, sparse_vertex_edges(m.edge_verts, members), member, value, stop, verts, edges, closed, par);
+  else
+    chain_rows(m.edge_verts, vertex_edges(m, member, par), member, value, stop, verts, edges, closed, par);
+}
+
+void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
+                 const std::vector<uint8_t>& member, std::span<const int32_t> value,
+                 const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
+                 std::vector<uint8_t>& closed, const LoadOptions& threads) {
+  chain_rows(edge_verts, vert_edges, member, value, stop, verts, edges, closed, resolved(threads));
+}
+
 namespace {
 
 using detail::set_flag;
 
-// The ids whose flag `take(i)` holds, in increasing order.
-template <class Take>
-std::vector<int32_t> ids_where(size_t n, Take&& take) {
-  std::vector<int32_t> out;
-  for (size_t i = 0; i < n; ++i)
-    if (take(i)) out.push_back(static_cast<int32_t>(i));
-  return out;
-}
-
 // Each chain's valence and boundary flag, the chain of each edge, and the chains' ends that are
 // not pseudo-singular (the singular vertices), by ranges of chains.
-void chain_facts(const Mesh& m, const std::vector<int32_t>& valence, SingularityGraph& g, const LoadOptions& par) {
+void chain_facts(const Mesh& m, std::span<const int32_t> valence, SingularityGraph& g, const LoadOptions& par) {
   const size_t ns = g.chain_closed.size();
-  g.edge_chain.assign(m.num_edges(), -1);
+  detail::assign_touched(g.edge_chain, m.num_edges(), int32_t{-1}, par);
   g.chain_valence.resize(ns);
   g.chain_boundary.resize(ns);
-  std::vector<uint8_t> end(m.num_vertices(), 0);
+  std::vector<uint8_t> end;
+  detail::assign_touched(end, m.num_vertices(), uint8_t{0}, par);
   detail::parallel_ranges(ns, par, [&](size_t b, size_t e, int) {
     for (size_t s = b; s < e; ++s) {
       const auto es = g.chain_edges[s];
@@ -202,7 +241,7 @@ void chain_facts(const Mesh& m, const std::vector<int32_t>& valence, Singularity
         if (!g.vert_pseudo_singular[v]) set_flag(end, v);
     }
   });
-  g.singular_vertices = ids_where(end.size(), [&](size_t v) { return end[v] != 0; });
+  g.singular_vertices = detail::ids_where(end.size(), par, [&](size_t v) { return end[v] != 0; });
 }
 
 }  // namespace
@@ -211,19 +250,23 @@ SingularityGraph singularity_graph(const Mesh& m, const LoadOptions& threads) {
   const LoadOptions par = resolved(threads);
   SingularityGraph g;
   const size_t ne = m.num_edges(), nv = m.num_vertices();
-  g.edge_class.assign(ne, EdgeClass::Regular);
-  g.edge_irregular.assign(ne, 0);
-  std::vector<uint8_t> singular(ne, 0);
-  std::vector<int32_t> valence(ne, 0);
+  // The edges' tables are fresh memory at 10^7 cells (hundreds of MB): their pages are first
+  // touched by every thread, and the valences, which the pass below writes whole, are not zeroed.
+  detail::resize_touched(g.edge_class, ne, par, EdgeClass::Regular);
+  detail::resize_touched(g.edge_irregular, ne, par);
+  std::vector<uint8_t> singular;
+  detail::resize_touched(singular, ne, par);
+  detail::RawArray<int32_t> valence(ne, par);
   // Edges of non-hex cells (the cells around an edge are those having it).
-  std::vector<uint8_t> non_hex_edge(ne, 0);
+  std::vector<uint8_t> non_hex_edge;
+  detail::assign_touched(non_hex_edge, ne, uint8_t{0}, par);
   detail::parallel_ranges(m.num_cells(), par, [&](size_t b, size_t e, int) {
     for (size_t c = b; c < e; ++c)
       if (!m.is_hex(c))
         for (int32_t f : m.cell_faces[c])
           for (int32_t x : m.face_edges(static_cast<size_t>(f))) set_flag(non_hex_edge, x);
   });
-  g.vert_pseudo_singular.assign(nv, 0);
+  detail::assign_touched(g.vert_pseudo_singular, nv, uint8_t{0}, par);
   detail::parallel_ranges(ne, par, [&](size_t b, size_t end, int) {
     for (size_t e = b; e < end; ++e) {
       valence[e] = m.edge_valence(e);
@@ -237,11 +280,12 @@ SingularityGraph singularity_graph(const Mesh& m, const LoadOptions& threads) {
         set_flag(g.vert_pseudo_singular, v0), set_flag(g.vert_pseudo_singular, v1);
     }
   });
-  g.pseudo_singular_edges = ids_where(ne, [&](size_t e) { return g.edge_class[e] == EdgeClass::PseudoSingular; });
-  g.non_manifold_edges = ids_where(ne, [&](size_t e) { return g.edge_class[e] == EdgeClass::NonManifold; });
-  g.pseudo_singular_vertices = ids_where(nv, [&](size_t v) { return g.vert_pseudo_singular[v] != 0; });
-  chain_edges(m, singular, valence, g.vert_pseudo_singular, g.chain_verts, g.chain_edges, g.chain_closed, par);
-  chain_facts(m, valence, g, par);
+  g.pseudo_singular_edges = detail::ids_where(ne, par, [&](size_t e) { return g.edge_class[e] == EdgeClass::PseudoSingular; });
+  g.non_manifold_edges = detail::ids_where(ne, par, [&](size_t e) { return g.edge_class[e] == EdgeClass::NonManifold; });
+  g.pseudo_singular_vertices = detail::ids_where(nv, par, [&](size_t v) { return g.vert_pseudo_singular[v] != 0; });
+  const std::span<const int32_t> valences(valence.data(), ne);
+  chain_edges(m, singular, valences, g.vert_pseudo_singular, g.chain_verts, g.chain_edges, g.chain_closed, par);
+  chain_facts(m, valences, g, par);
   return g;
 }
 

@@ -182,6 +182,33 @@ TEST(ComplexThreads, ChainsAreTheSameForAnyThreadCount) {
   }
 }
 
+// With few member edges (under one per 64 vertices) chain_edges gives rows to their vertices only:
+// a grid's singular edges run along its box's 12 edges (12 * 40 of them, 68,921 vertices), 12
+// chains cut at the corners. The chains equal those walked with a row for every vertex.
+TEST(ComplexThreads, ChainsOfFewMembersEqualThoseOverEveryVertex) {
+  const Mesh m = build_mesh(generate_grid(40, 40, 40));
+  const SingularityGraph g = singularity_graph(m, LoadOptions{1});
+  ASSERT_EQ(g.num_singularities(), 12u);
+  ASSERT_LT(g.num_singular_edges() * 64, m.num_vertices());  // the rows of few vertices
+  std::vector<uint8_t> singular(m.num_edges());
+  std::vector<int32_t> valence(m.num_edges());
+  for (size_t e = 0; e < m.num_edges(); ++e) {
+    singular[e] = g.edge_class[e] == EdgeClass::Singular;
+    valence[e] = m.edge_valence(e);
+  }
+  const Csr<int32_t> every_vertex = vertex_edges(m, singular);
+  for (int threads : {1, 2, 3}) {
+    SCOPED_TRACE(threads);
+    Csr<int32_t> verts, edges;
+    std::vector<uint8_t> closed;
+    chain_edges(m.edge_verts, every_vertex, singular, valence, g.vert_pseudo_singular, verts, edges, closed,
+                LoadOptions{threads, 8});
+    test::expect_same_csr(verts, g.chain_verts, "chain_verts");
+    test::expect_same_csr(edges, g.chain_edges, "chain_edges");
+    EXPECT_EQ(closed, g.chain_closed);
+  }
+}
+
 TEST(ComplexThreads, GeneratedMeshesGiveTheSameArraysForAnyThreadCount) {
   // The all-singleton worst case (a grid with about 1 % of its cells split into pyramids) and a
   // hex-dominant cylinder with large components.
