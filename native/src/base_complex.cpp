@@ -31,6 +31,7 @@ namespace {
 using detail::append_rows;
 using detail::ConcurrentUnionFind;
 using detail::number_classes;
+using detail::ids_where;
 using detail::parallel_ranges;
 using detail::assign_touched;
 using detail::resize_huge;
@@ -284,10 +285,10 @@ void find_curves(const Mesh& m, BaseComplex& bc, const LoadOptions& par) {
         if (!bc.edge_complex[x]) clear(bc.vert_corner, v);
       }
   });
-  for (size_t v = 0; v < nv; ++v) {
-    bc.vert_corner[v] &= !no_edge[v];
-    if (bc.vert_corner[v]) bc.corners.push_back(static_cast<int32_t>(v));
-  }
+  parallel_ranges(nv, par, [&](size_t b, size_t e, int) {
+    for (size_t v = b; v < e; ++v) bc.vert_corner[v] &= !no_edge[v];
+  });
+  bc.corners = ids_where(nv, par, [&](size_t v) { return bc.vert_corner[v] != 0; });
   chain_edges(m, bc.edge_complex, {}, bc.vert_corner, bc.curve_verts, bc.curve_edges, bc.curve_closed, par);
   assign_touched(bc.edge_curve, ne, int32_t{-1}, par);
   // A mesh edge is on one curve at most: ranges of curves write disjoint entries.
