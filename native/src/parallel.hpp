@@ -83,16 +83,26 @@ std::vector<T> range_starts(size_t n, const LoadOptions& par, Count&& count) {
   return at;
 }
 
+// How many i in [b, e) satisfy take(i).
+template <class Take>
+size_t count_in(size_t b, size_t e, Take& take) {
+  size_t k = 0;
+  for (size_t i = b; i < e; ++i) k += take(i) ? 1 : 0;
+  return k;
+}
+
+// How many i < n satisfy take(i), counted by ranges.
+template <class Take>
+size_t count_where(size_t n, const LoadOptions& par, Take&& take) {
+  return range_starts<size_t>(n, par, [&](size_t b, size_t e) { return count_in(b, e, take); }).back();
+}
+
 // The ids i < n for which take(i) holds, in increasing order: ranges count theirs, then write them
 // from where range_starts puts them (a serial scan over the tens of MB of a 10^7-cell mesh's
 // edge flags took longer than the pass that set them).
 template <class Take>
 std::vector<int32_t> ids_where(size_t n, const LoadOptions& par, Take&& take) {
-  const std::vector<size_t> at = range_starts<size_t>(n, par, [&](size_t b, size_t e) {
-    size_t k = 0;
-    for (size_t i = b; i < e; ++i) k += take(i) ? 1 : 0;
-    return k;
-  });
+  const std::vector<size_t> at = range_starts<size_t>(n, par, [&](size_t b, size_t e) { return count_in(b, e, take); });
   std::vector<int32_t> out(at.back());
   parallel_ranges(n, par, [&](size_t b, size_t e, int r) {
     size_t k = at[static_cast<size_t>(r)];

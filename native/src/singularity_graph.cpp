@@ -198,9 +198,10 @@ void chain_edges(const Mesh& m, const std::vector<uint8_t>& member, std::span<co
   // The walk only ever looks at member edges, so the vertex table needs only them; when they are
   // few, only their vertices get rows (the chains are the same either way).
   const LoadOptions par = resolved(threads);
-  const std::vector<int32_t> members = detail::ids_where(m.num_edges(), par, [&](size_t e) { return member[e] != 0; });
-  if (members.size() * 64 < m.num_vertices())
-    chain_rows(m.edge_verts, sparse_vertex_edges(m.edge_verts, members), member, value, stop, verts, edges, closed, par);
+  const auto is_member = [&](size_t e) { return member[e] != 0; };
+  if (detail::count_where(m.num_edges(), par, is_member) * 64 < m.num_vertices())
+    chain_rows(m.edge_verts, sparse_vertex_edges(m.edge_verts, detail::ids_where(m.num_edges(), par, is_member)),
+               member, value, stop, verts, edges, closed, par);
   else
     chain_rows(m.edge_verts, vertex_edges(m, member, par), member, value, stop, verts, edges, closed, par);
 }

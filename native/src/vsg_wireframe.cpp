@@ -860,8 +860,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   flag_edges_at(cx, w.vert_vsg, start, par, any);
   const std::vector<uint8_t> flooded = flood_faces(r, start, par);
   w.vert_singular = patch_singular_vertices(r, flooded, par);
-  for (size_t v = 0; v < nv; ++v)
-    if (w.vert_singular[v]) w.singular_vertices.push_back(static_cast<int32_t>(v));
+  w.singular_vertices = detail::ids_where(nv, par, [&](size_t v) { return w.vert_singular[v] != 0; });
   std::vector<uint8_t> seeds(ne, 0);
   flag_edges_at(cx, w.vert_singular, seeds, par, any);
   const Chains complete = valence_chains(r, seeds, w.vert_singular, par);
@@ -873,7 +872,9 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
     if (e >= 0 && static_cast<size_t>(e) < ne) parallel[e] = 1;
   const Cleaning cl = clean_chains(r, complete, w.vert_singular, parallel, par);
   w.vert_non_important.resize(nv);
-  for (size_t v = 0; v < nv; ++v) w.vert_non_important[v] = !w.vert_singular[v] || cl.redundant_vert[v];
+  detail::parallel_ranges(nv, par, [&](size_t b, size_t end, int) {
+    for (size_t v = b; v < end; ++v) w.vert_non_important[v] = !w.vert_singular[v] || cl.redundant_vert[v];
+  });
   w.non_important = cl.non_important;
   w.reactivated = cl.reactivated;
   const Chains simple = final_chains(r, complete, cl.kept, par);
