@@ -627,6 +627,19 @@ void number_edges(Mesh& m, std::vector<int32_t>& rep, const LoadOptions& par) {
   });
 }
 
+// The face whose loop holds corner k (offsets off: strictly increasing, from 0). A search over all
+// faces per boundary edge cost more than the rest of count_edge_faces, and unevenly between threads
+// (boundary faces crowd in some ranges); here it starts where an even spread of corners over faces
+// puts k, which is the face itself when all faces have one size, and widens by doubling.
+int32_t face_of_corner(const std::vector<int32_t>& off, int32_t k) {
+  const size_t nf = off.size() - 1;
+  size_t lo = std::min(nf - 1, static_cast<size_t>(int64_t{k} * static_cast<int64_t>(nf) / off.back()));
+  size_t hi = lo + 1;  // until off[lo] <= k < off[hi]
+  for (size_t step = 1; off[lo] > k; step *= 2) hi = lo, lo = lo > step ? lo - step : 0;
+  for (size_t step = 1; off[hi] <= k; step *= 2) lo = hi, hi = std::min(nf, hi + step);
+  return static_cast<int32_t>(std::upper_bound(off.begin() + static_cast<std::ptrdiff_t>(lo), off.begin() + static_cast<std::ptrdiff_t>(hi), k) - off.begin() - 1);
+}
+
 // Faces and boundary faces at each edge, and fan_start moved to the lowest boundary face at the
 // edge where there is one. Each edge's corners are all in the bucket of its lower-ranked end, in
 // increasing order, so a range of buckets counts its edges alone and meets each edge's lowest
@@ -644,7 +657,7 @@ EdgeFaceCounts count_edge_faces(Mesh& m, const detail::RawRows& by_lo, const Loa
         ++count[e].faces;
         if (!(static_cast<uint32_t>(item) & kBoundary)) continue;
         uint8_t& nb = count[e].boundary_faces;
-        if (nb == 0) m.fan_start[e] = static_cast<int32_t>(std::upper_bound(off.begin(), off.end(), static_cast<int32_t>(k)) - off.begin() - 1);
+        if (nb == 0) m.fan_start[e] = face_of_corner(off, static_cast<int32_t>(k));
         if (nb < 255) ++nb;
       }
   });

@@ -225,6 +225,33 @@ TEST(LoadSteps, EdgeFansRunThroughTheCellsInOrder) {
   EXPECT_EQ(fan.faces[0], b.m.fan_start[e45]) << "the walk starts at the lowest boundary face";
 }
 
+TEST(LoadSteps, EveryBoundaryEdgeStartsItsFanAtItsLowestBoundaryFace) {
+  // count_edge_faces finds the face of an edge's first boundary corner by searching the face
+  // offsets from an estimate; here the lowest boundary face at each edge is found by a plain scan
+  // over the faces in order (edges whose fan is not a path keep a row of odd_fan_faces instead).
+  // The meshes mix face sizes (prisms, polyhedra of up to a dozen
+  // sides), where the estimate misses, and have all-quad ones (armadillo), where it is exact.
+  for (const char* rel : test::kVariedMeshes) {
+    SCOPED_TRACE(rel);
+    HBC_REQUIRE_DATA(rel);
+    for (int threads : {1, 2}) {
+      const Mesh m = load_mesh(test::data_path(rel), Format::Auto, LoadOptions{threads, 64});
+      std::vector<int32_t> lowest(m.num_edges(), -1);
+      for (size_t f = 0; f < m.num_faces(); ++f)
+        if (m.face_cells[f][1] < 0)
+          for (int32_t e : m.face_edges(f))
+            if (lowest[static_cast<size_t>(e)] < 0) lowest[static_cast<size_t>(e)] = static_cast<int32_t>(f);
+      size_t boundary_edges = 0;
+      for (size_t e = 0; e < m.num_edges(); ++e) {
+        if (lowest[e] < 0 || !m.edge_fan_ok(e)) continue;
+        ++boundary_edges;
+        ASSERT_EQ(m.fan_start[e], lowest[e]) << "edge " << e << ", " << threads << " thread(s)";
+      }
+      EXPECT_GT(boundary_edges, 0u);
+    }
+  }
+}
+
 TEST(LoadSteps, TwoCubesOnOneEdgeHaveNoCyclicFan) {
   // Cubes 0 and 1 meet along the edge 2-6 only (the second one diagonally above the first's
   // corner): four boundary faces around it, two paths, so no cyclic order, and the ends of that
