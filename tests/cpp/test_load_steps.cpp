@@ -229,8 +229,8 @@ TEST(LoadSteps, EveryBoundaryEdgeStartsItsFanAtItsLowestBoundaryFace) {
   // count_edge_faces finds the face of an edge's first boundary corner by searching the face
   // offsets from an estimate; here the lowest boundary face at each edge is found by a plain scan
   // over the faces in order (edges whose fan is not a path keep a row of odd_fan_faces instead).
-  // The meshes mix face sizes (prisms, polyhedra of up to a dozen
-  // sides), where the estimate misses, and have all-quad ones (armadillo), where it is exact.
+  // The meshes mix face sizes (prisms, polyhedra of up to a dozen sides), where the estimate
+  // misses, and include all-quad ones (armadillo), where it is exact.
   for (const char* rel : test::kVariedMeshes) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
