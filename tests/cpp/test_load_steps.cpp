@@ -1,6 +1,7 @@
 // The steps of build_mesh on hand-built cells, the fast MEDIT section parser against the token
 // scanner, and parallel loads against single-threaded ones (every array of the Mesh).
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <numeric>
 #include <optional>
@@ -528,6 +529,18 @@ TEST(LoadParallel, APoolRunsEveryRangeOnceAndSplitsNestedCallsOnItsOwn) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "range 1 from 33");
   }
+}
+
+TEST(LoadParallel, APoolRunsMoreJobsThanItHasWorkersEachOnce) {
+  // The calling thread and the one worker claim jobs until none is left, so a call may hand the
+  // pool more jobs than threads; each job runs exactly once, and run() returns after all of them.
+  detail::WorkerPool pool(1);
+  for (int n : {1, 2, 5, 17})
+    for (int call = 0; call < 50; ++call) {
+      std::vector<std::atomic<int>> hits(static_cast<size_t>(n));
+      ASSERT_TRUE(pool.run(n, [&](int i) { hits[static_cast<size_t>(i)].fetch_add(1); }));
+      for (int i = 0; i < n; ++i) ASSERT_EQ(hits[static_cast<size_t>(i)].load(), 1) << "job " << i << " of " << n;
+    }
 }
 
 TEST(LoadParallel, WeightedRangesSplitByWeightAndPartedRowsFindRowsPastEmptyRanges) {
