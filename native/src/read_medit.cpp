@@ -164,8 +164,7 @@ MeshInput read_medit(std::string_view text, const std::string& source, const Loa
       break;
     } else {
       // Surface elements and other data are read past: everything up to the next keyword.
-      while ((have_tok = s.next(tok)) && !looks_like_keyword(tok)) {
-      }
+      have_tok = s.next_word(tok);
       continue;
     }
     have_tok = s.next(tok);

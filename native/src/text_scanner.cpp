@@ -1,8 +1,10 @@
 #include "text_scanner.hpp"
 
+#include <bit>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 namespace hbc::detail {
 
@@ -46,6 +48,34 @@ bool TextScanner::next(std::string_view& tok) {
   tok = text_.substr(start, pos_ - start);
   last_ = tok;
   return true;
+}
+
+void TextScanner::skip_numbers() {
+  // Digits, signs, points and whitespace are all below 0x40, where no letter (nor any byte that
+  // could start one) is; '#' too, but comments may hold words. Eight bytes at a time pass while
+  // none is 0x40 or above or a '#', their newlines counted at once: reading past armadillo's
+  // 9,034 boundary quadrangles token by token took 0.4 ms of its 16 ms load.
+  constexpr uint64_t kOnes = 0x0101010101010101u, kLow7 = 0x7f7f7f7f7f7f7f7fu;
+  auto zero_bytes = [](uint64_t x) { return ~(((x & kLow7) + kLow7) | x | kLow7); };  // high bit of each zero byte
+  const size_t start = pos_;
+  size_t p = pos_;
+  for (uint64_t w; p + 8 <= text_.size(); p += 8) {
+    std::memcpy(&w, text_.data() + p, 8);
+    if ((w & (0xc0 * kOnes)) != 0 || zero_bytes(w ^ ('#' * kOnes)) != 0) break;
+    line_ += std::popcount(zero_bytes(w ^ ('\n' * kOnes)));
+  }
+  // Back to the start of the token p may have stopped in (no newline lies between), so that
+  // next() does not take the end of 123Tetrahedra for a word.
+  while (p > start && !std::isspace(static_cast<unsigned char>(text_[p - 1]))) --p;
+  pos_ = p;
+}
+
+bool TextScanner::next_word(std::string_view& tok) {
+  for (;;) {
+    skip_numbers();
+    if (!next(tok)) return false;
+    if (std::isalpha(static_cast<unsigned char>(tok[0]))) return true;
+  }
 }
 
 bool TextScanner::at_end() {

@@ -337,6 +337,35 @@ TEST(IoReaders, OvmAcceptsCommentsCaseAndPropertyBlocks) {
             (std::vector<int32_t>{0, 1, 3}));
 }
 
+TEST(IoReaders, MeditReadsPastOtherSectionsKeepingLinesAndTokens) {
+  // A section we do not read (quadrangles here) is passed token by token up to the next token
+  // that starts with a letter, eight bytes at a time where no letter or '#' is. Shifting it by
+  // 0-16 bytes puts every part of it at every place in those eight. "777...Tetrahedra" is one
+  // token, not a keyword (taken for one, the section after would read tetrahedra from the
+  // comment's line and fail); a word in a comment after numbers is no keyword; one after numbers
+  // on a line is. The tetrahedron is on line 16 whatever the shift: 1-2 header, 3-8 vertices,
+  // 9-10 the section and its count, 11-14 its lines, 15 the count of tetrahedra.
+  for (int shift = 0; shift <= 16; ++shift) {
+    SCOPED_TRACE("shift " + std::to_string(shift));
+    const std::string head =
+        "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+        "Quadrilaterals\n2\n" + std::string(static_cast<size_t>(shift), ' ') +
+        "1 2 3 4 0\n"
+        "2 3 4 1 1e-5 " + std::string(static_cast<size_t>(8 + shift), '7') + "Tetrahedra 0\n"
+        "#" + std::string(static_cast<size_t>(shift), ' ') + "1 2 3 4 5 6 7 8 9 Hexahedra\n"
+        "3 4 1 2 0 Tetrahedra\n1\n";
+    const MeshInput in = read_medit(head + "1 2 3 4 0\nEnd\n", "past.mesh");
+    EXPECT_EQ(in.cell_loc, (std::vector<int64_t>{16}));
+    EXPECT_EQ(build_mesh(in).num_cells(), 1u);
+    try {
+      build_mesh(read_medit(head + "1 2 3 9 0\nEnd\n", "past.mesh"));
+      ADD_FAILURE() << "accepted vertex 9 of 4";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.loc().line, 16) << e.what();
+    }
+  }
+}
+
 TEST(IoFormats, FromPathAndName) {
   const std::pair<const char*, Format> by_path[] = {
       {"a/b/c.ovm", Format::Ovm},   {"c.OVMB", Format::Ovmb},   {"x.mesh", Format::Medit},
