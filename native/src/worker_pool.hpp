@@ -4,6 +4,8 @@
 // The pool is an object of the load (see build_mesh, read_input), handed to the steps through
 // LoadOptions::pool; nothing outlives it. A call made while the pool is busy (a range that itself
 // splits its work) gets false and starts threads of its own, as without a pool.
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -34,13 +36,13 @@ class WorkerPool {
   }
 
   // Runs job(i) for i in [0, n) and returns once all have ended: the calling thread runs job(0),
-  // then it and the woken workers each claim the next job not yet claimed. A worker here takes
-  // 25-50 µs to wake, as long as many steps' ranges take on a mesh of some 10^4 cells: the
-  // caller, rather than sleep until a late worker has run its range and woken it in turn, runs
+  // then it and the workers each claim the next job not yet claimed. A worker may be late (see
+  // kPoll): the caller, rather than sleep until it has run its range and woken it in turn, runs
   // that range itself. Which thread runs a job does not change what it writes, and n may exceed
   // the threads. False (nothing run) when the pool is busy. job must not throw (parallel_ranges
   // catches per range).
   bool run(int n, const std::function<void(int)>& job) {
+    bool wake = false;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (busy_) return false;
@@ -48,9 +50,10 @@ class WorkerPool {
       job_ = &job;
       count_ = n;
       next_ = 1;
-      ++generation_;
+      generation_.fetch_add(1, std::memory_order_release);
+      wake = sleepers_ > 0;
     }
-    if (n > 1) wake_.notify_all();
+    if (n > 1 && wake) wake_.notify_all();
     job(0);
     std::unique_lock<std::mutex> lock(mutex_);
     for (int i; (i = claim()) >= 0;) {
@@ -58,31 +61,53 @@ class WorkerPool {
       job(i);
       lock.lock();
     }
-    done_.wait(lock, [&] { return running_ == 0; });
+    lock.unlock();
+    poll_until([&] { return running_.load(std::memory_order_acquire) == 0; });
+    lock.lock();
+    waiting_ = true;
+    done_.wait(lock, [&] { return running_.load(std::memory_order_acquire) == 0; });
+    waiting_ = false;
     busy_ = false;
     job_ = nullptr;
     return true;
   }
 
  private:
+  // A sleeping thread is woken here only once the hypervisor runs its idle virtual CPU again,
+  // 25 µs to a millisecond later: on armadillo's load (some 70 calls) the caller often ran a
+  // worker's range of several hundred µs itself before the worker had started. The steps follow
+  // each other within microseconds, so a worker that has ended a job, and a caller waiting for
+  // one, poll this long before they sleep. They poll by yielding: the scheduler at times puts
+  // both threads on one CPU, where a busy poll would hold it from the thread it waits for.
+  static constexpr auto kPoll = std::chrono::microseconds(200);
+
+  template <class Ready>
+  static void poll_until(Ready&& ready) {
+    const auto until = std::chrono::steady_clock::now() + kPoll;
+    while (!ready() && std::chrono::steady_clock::now() < until) std::this_thread::yield();
+  }
+
   // The next unclaimed job, or -1 when all are claimed; under mutex_.
   int claim() { return job_ && next_ < count_ ? next_++ : -1; }
 
   void work() {
     uint64_t seen = 0;
-    std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
+      poll_until([&] { return generation_.load(std::memory_order_acquire) != seen || stop_.load(std::memory_order_relaxed); });
+      std::unique_lock<std::mutex> lock(mutex_);
+      ++sleepers_;
       wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      --sleepers_;
       if (stop_) return;
       seen = generation_;
       for (int i; (i = claim()) >= 0;) {
         // job_ stays valid until run() has seen running_ fall back to 0.
         const std::function<void(int)>* job = job_;
-        ++running_;
+        running_.fetch_add(1, std::memory_order_relaxed);
         lock.unlock();
         (*job)(i);
         lock.lock();
-        if (--running_ == 0 && next_ >= count_) done_.notify_one();
+        if (running_.fetch_sub(1, std::memory_order_release) == 1 && next_ >= count_ && waiting_) done_.notify_one();
       }
     }
   }
@@ -91,9 +116,12 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable wake_, done_;
   const std::function<void(int)>* job_ = nullptr;
-  uint64_t generation_ = 0;
-  int count_ = 0, next_ = 0, running_ = 0;
-  bool busy_ = false, stop_ = false;
+  // Changed under mutex_, read also while polling.
+  std::atomic<uint64_t> generation_{0};
+  std::atomic<int> running_{0};
+  std::atomic<bool> stop_{false};
+  int count_ = 0, next_ = 0, sleepers_ = 0;
+  bool busy_ = false, waiting_ = false;
 };
 
 // The options of one run (a load, an analysis, a test): resolved, with the caller's pool when it

@@ -2,11 +2,13 @@
 // scanner, and parallel loads against single-threaded ones (every array of the Mesh).
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "hbc/generate.hpp"
 #include "hbc/mesh_steps.hpp"
@@ -541,6 +543,31 @@ TEST(LoadParallel, APoolRunsMoreJobsThanItHasWorkersEachOnce) {
       ASSERT_TRUE(pool.run(n, [&](int i) { hits[static_cast<size_t>(i)].fetch_add(1); }));
       for (int i = 0; i < n; ++i) ASSERT_EQ(hits[static_cast<size_t>(i)].load(), 1) << "job " << i << " of " << n;
     }
+}
+
+TEST(LoadParallel, APoolWorkerTakesJobsWhetherPollingOrAsleep) {
+  // Job 0 waits (up to 5 s) until job 1 has started, so with one worker job 1 must run on the
+  // worker: the caller is held in job 0. Calls follow each other at once (the worker is still
+  // polling) or after 5 ms (past kPoll's 200 µs: the worker sleeps and must be woken). Job 1
+  // sometimes lasts 5 ms, so the caller too stops polling and sleeps until the worker wakes it;
+  // without that wake-up run() would never return.
+  detail::WorkerPool pool(1);
+  for (int call = 0; call < 40; ++call) {
+    if (call % 2 == 1) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::atomic<bool> started{false};
+    bool met = false;
+    ASSERT_TRUE(pool.run(2, [&](int i) {
+      if (i == 1) {
+        started = true;
+        if (call % 4 >= 2) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        return;
+      }
+      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+      while (!started && std::chrono::steady_clock::now() < until) std::this_thread::yield();
+      met = started;
+    }));
+    ASSERT_TRUE(met) << "call " << call << ": job 1 did not start on the worker while job 0 ran";
+  }
 }
 
 TEST(LoadParallel, WeightedRangesSplitByWeightAndPartedRowsFindRowsPastEmptyRanges) {
