@@ -164,7 +164,7 @@ template <class T>
 void resize_touched(std::vector<T>& v, size_t n, const LoadOptions& par, const T& value = T()) {
   reserve_huge(v, n);
   if (n > v.size()) touch_pages(v.data() + v.size(), (n - v.size()) * sizeof(T), par);
-  v.resize(n, value);
+  resize_with(v, n, value);
 }
 template <class T>
 void assign_touched(std::vector<T>& v, size_t n, const T& value, const LoadOptions& par) {
