@@ -570,6 +570,24 @@ TEST(LoadParallel, APoolWorkerTakesJobsWhetherPollingOrAsleep) {
   }
 }
 
+TEST(LoadParallel, ResizeTouchedKeepsTheOldEntriesAndFillsOnlyTheNewOnes) {
+  // resize_with leaves T() to the plain resize and fills with any other value itself: both must
+  // give what vector::resize(n, value) gives, the old entries kept, shrinking only cutting.
+  const LoadOptions par{2, 1};
+  std::vector<std::array<int32_t, 2>> pairs{{7, 8}};
+  detail::resize_touched(pairs, 3, par);
+  EXPECT_EQ(pairs, (std::vector<std::array<int32_t, 2>>{{7, 8}, {0, 0}, {0, 0}}));
+  detail::resize_touched(pairs, 5, par, std::array<int32_t, 2>{-1, -1});
+  EXPECT_EQ(pairs, (std::vector<std::array<int32_t, 2>>{{7, 8}, {0, 0}, {0, 0}, {-1, -1}, {-1, -1}}));
+  detail::resize_touched(pairs, 2, par, std::array<int32_t, 2>{5, 5});
+  EXPECT_EQ(pairs, (std::vector<std::array<int32_t, 2>>{{7, 8}, {0, 0}}));
+  // Past the size where touch_pages faults the pages in from both threads (4 MiB).
+  std::vector<uint8_t> flags(3, 9);
+  detail::resize_touched(flags, size_t{5} << 20, par, uint8_t{1});
+  EXPECT_EQ(std::count(flags.begin(), flags.end(), uint8_t{9}), 3);
+  EXPECT_EQ(std::count(flags.begin(), flags.end(), uint8_t{1}), (ptrdiff_t{5} << 20) - 3);
+}
+
 TEST(LoadParallel, WeightedRangesSplitByWeightAndPartedRowsFindRowsPastEmptyRanges) {
   const detail::RunOptions run(LoadOptions{2, 8});
   // One unit of weight 1000, then 999 of weight 1 (prefix 0, 1000, 1001, ..., 1999), two ranges:
