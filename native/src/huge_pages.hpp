@@ -4,7 +4,6 @@
 // page; asking the kernel for 2 MiB pages where it grants them (transparent huge pages in
 // "madvise" mode, Linux's usual setting) takes 512 times fewer. The advice changes nothing else:
 // contents, sizes and results are the same with or without it, and it is ignored elsewhere.
-#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -21,16 +20,15 @@ void reserve_huge(std::vector<T>& v, size_t n) {
   advise_huge_pages(v.data(), n * sizeof(T));
 }
 
-// v.resize(n, value), the value-initialised growth left as it is when value is T(). GCC compiles
-// vector::resize(n, T()) of a small aggregate (std::array<int32_t, 2>) into a loop that rebuilds
-// the value on the stack with two narrow stores and reads it back as one wide load, a failed
-// store forwarding per element: the 100k edges of armadillo's edge_verts took 0.55 ms that way
-// and 0.03 ms by plain resize.
+// v.resize(n, value), by the plain resize when value is T(). GCC compiles vector::resize(n, T())
+// of a small aggregate (std::array<int32_t, 2>) into a loop that rebuilds the value on the stack
+// with two narrow stores and reads it back as one wide load, a failed store forwarding per
+// element: the 100k edges of armadillo's edge_verts took 0.55 ms that way and 0.03 ms by plain
+// resize.
 template <class T>
 void resize_with(std::vector<T>& v, size_t n, const T& value) {
-  const size_t old = v.size();
-  v.resize(n);
-  if (n > old && !(value == T())) std::fill(v.begin() + static_cast<std::ptrdiff_t>(old), v.end(), value);
+  if (value == T()) v.resize(n);
+  else v.resize(n, value);
 }
 
 // v.resize(n, value) into advised room.

@@ -571,8 +571,8 @@ TEST(LoadParallel, APoolWorkerTakesJobsWhetherPollingOrAsleep) {
 }
 
 TEST(LoadParallel, ResizeTouchedKeepsTheOldEntriesAndFillsOnlyTheNewOnes) {
-  // resize_with leaves T() to the plain resize and fills with any other value itself: both must
-  // give what vector::resize(n, value) gives, the old entries kept, shrinking only cutting.
+  // resize_with takes the plain resize for T() and resize(n, value) for any other value: both
+  // must give what vector::resize(n, value) gives, the old entries kept, shrinking only cutting.
   const LoadOptions par{2, 1};
   std::vector<std::array<int32_t, 2>> pairs{{7, 8}};
   detail::resize_touched(pairs, 3, par);
