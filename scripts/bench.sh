@@ -103,6 +103,32 @@ for r in rows:
           f"{t['sheets'] + t['subsheets']:.3f} | {t['vsg_wireframe']:.3f} | {stages / t['load']:.2f} | "
           f"{r['wall']:.2f} / {r['cpu']:.2f} | {r['rss'] / 2**20:.0f} | {rss_ratio} | {r['rss'] / cells:.0f} |")
 print()
+# Linear growth: each figure per cell at 10^7 over the same figure per cell at 10^6, row against
+# row of the same code and threads. The load's user and system CPU are shown apart: user time is
+# the code's work, system time mostly the kernel zeroing fresh pages at a cost per page that the
+# host sets (and that is not constant: see the README).
+pairs = [("grid_1000000.mesh", "grid_10077696.mesh"), ("cylinder_988240.mesh", "cylinder_10m.mesh")]
+find = {(r["mesh"], r["code"], r["threads"]): r for r in rows}
+grow = []
+for small, large in pairs:
+    for (mesh, code, threads), s in find.items():
+        l = find.get((large, code, threads))
+        if mesh != small or l is None:
+            continue
+        per = lambda r, v: v / r["b"]["cells"]
+        ratio = lambda f: f"{per(l, f(l)) / per(s, f(s)):.2f}"
+        stage = lambda key: ratio(lambda r: r["t"][key])
+        grow.append(f"| {small.split('_')[0]} | {code} | {threads} | {ratio(lambda r: r['b']['parse_s'] + r['b']['build_s'])} | "
+                    f"{ratio(lambda r: r['b']['load_user_s'])} | {ratio(lambda r: r['b']['load_sys_s'])} | "
+                    f"{ratio(lambda r: r['b']['load_faults'])} | {stage('load')} | {stage('singularity_graph')} | "
+                    f"{stage('base_complex')} | {ratio(lambda r: r['t']['sheets'] + r['t']['subsheets'])} | {stage('vsg_wireframe')} |")
+if grow:
+    print("Linear growth, 10^6 -> 10^7 cells: per cell at 10^7 over per cell at 10^6 (1.00 = linear).")
+    print()
+    print("| mesh | code | threads | load | load user CPU | load system CPU | load page faults | analyze's load | singularity graph | base complex | sheets | VSG wireframe |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("\n".join(grow))
+    print()
 print(f"{os.cpu_count()} CPUs, load average {' '.join(open('/proc/loadavg').read().split()[:3])} at the end. Wall times come from one "
       "process per row, and other processes on the machine inflate them. load = read+parse + topology (BM_LoadFile, warm: the "
       "process has loaded the file before), the fastest of " + os.environ.get("HBC_BENCH_REPS", "5") + " loads; analyze's load = the load inside the single "

@@ -1,6 +1,9 @@
 // Load + topology build (read_input + build_mesh) of real and generated MEDIT files.
 // Counters: cells, cells_per_second, parse_s / build_s (mean wall time per iteration),
-// parse_cpu_s / build_cpu_s (CPU time of every thread, which a busy machine does not inflate), peak_rss_MB
+// parse_cpu_s / build_cpu_s (CPU time of every thread, which a busy machine does not inflate),
+// load_user_s / load_sys_s / load_faults (the load's user and kernel CPU seconds and minor page
+// faults: the kernel's share is mostly the zeroing of fresh pages, whose cost per page varies with
+// the host, so a growth in it is the machine's and a growth in user time the code's), peak_rss_MB
 // (getrusage ru_maxrss of the whole process: run one benchmark per process, as scripts/bench.sh
 // does, and have the grid files written beforehand, or the peak includes writing them:
 // grid_written_here = 1 says so).
@@ -26,12 +29,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// CPU seconds (user + system, every thread) of the process so far.
-double cpu_seconds() {
+// The process's CPU seconds so far (every thread), user and system, and its minor page faults.
+struct Usage {
+  double user = 0, sys = 0, faults = 0;
+  double cpu() const { return user + sys; }
+};
+Usage usage() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   auto sec = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
-  return sec(u.ru_utime) + sec(u.ru_stime);
+  return {sec(u.ru_utime), sec(u.ru_stime), static_cast<double>(u.ru_minflt)};
 }
 
 double peak_rss_mb() {
@@ -51,17 +58,22 @@ void load_file(benchmark::State& state, const std::string& path, bool written_he
     return;
   }
   double parse_s = 0, build_s = 0, parse_cpu = 0, build_cpu = 0;
+  Usage load;  // summed over the loads
   size_t cells = 0;
   for (auto _ : state) {
-    const double c0 = cpu_seconds();
+    const Usage u0 = usage();
     const auto t0 = std::chrono::steady_clock::now();
     hbc::MeshInput in = hbc::read_input(path);
     const auto t1 = std::chrono::steady_clock::now();
-    const double c1 = cpu_seconds();
+    const Usage u1 = usage();
     hbc::Mesh m = hbc::build_mesh(std::move(in));
     const auto t2 = std::chrono::steady_clock::now();
-    build_cpu += cpu_seconds() - c1;
-    parse_cpu += c1 - c0;
+    const Usage u2 = usage();
+    build_cpu += u2.cpu() - u1.cpu();
+    parse_cpu += u1.cpu() - u0.cpu();
+    load.user += u2.user - u0.user;
+    load.sys += u2.sys - u0.sys;
+    load.faults += u2.faults - u0.faults;
     parse_s += std::chrono::duration<double>(t1 - t0).count();
     build_s += std::chrono::duration<double>(t2 - t1).count();
     cells = m.num_cells();
@@ -75,6 +87,9 @@ void load_file(benchmark::State& state, const std::string& path, bool written_he
   state.counters["build_s"] = build_s / n;
   state.counters["parse_cpu_s"] = parse_cpu / n;
   state.counters["build_cpu_s"] = build_cpu / n;
+  state.counters["load_user_s"] = load.user / n;
+  state.counters["load_sys_s"] = load.sys / n;
+  state.counters["load_faults"] = load.faults / n;
   state.counters["file_MB"] = static_cast<double>(fs::file_size(path)) / (1024.0 * 1024.0);
   state.counters["peak_rss_MB"] = peak_rss_mb();
   state.counters["grid_written_here"] = written_here ? 1 : 0;
