@@ -5,7 +5,7 @@
 #   - hbc_bench_load (BM_LoadFile, one process per case and variant): the time to read the file
 #     into memory (read_file_bytes: the hardware's pace), read+parse (read_input) and topology
 #     (build_mesh) wall times of the fastest of HBC_BENCH_REPS (default 5) loads, from which parse
-#     MB/s, load cells/s and load / read;
+#     MB/s, load cells/s and load / read (and the fastest load's user and system CPU and faults);
 #   - `hbc analyze --json` under /usr/bin/time: the stage times, the stages' sum against the load,
 #     and the peak RSS of load + analysis (and bytes per cell).
 # With a baseline, the load speed-up and the peak-memory ratio against it, case by case.
@@ -18,7 +18,9 @@
 # HBC_BENCH_BASELINE=DIR compares with the build folder DIR of an earlier commit whose source tree
 # is DIR/.. (its bench_load is compiled here from this tree's source against its library);
 # HBC_BENCH_LARGE=1 adds the 10^7-cell cases: the 216^3 grid (10,077,696 hexes) and a
-# hex-dominant cylinder of about 10^7 cells (minutes per variant).
+# hex-dominant cylinder of about 10^7 cells (minutes per variant), and a second table of linear
+# growth (each figure per cell at 10^7 over per cell at 10^6, the load's user and system CPU and
+# page faults apart).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
