@@ -24,22 +24,14 @@
 
 #include "hbc/generate.hpp"
 #include "hbc/io.hpp"
+#include "process_usage.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// The process's CPU seconds so far (every thread), user and system, and its minor page faults.
-struct Usage {
-  double user = 0, sys = 0, faults = 0;
-  double cpu() const { return user + sys; }
-};
-Usage usage() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  auto sec = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
-  return {sec(u.ru_utime), sec(u.ru_stime), static_cast<double>(u.ru_minflt)};
-}
+using hbc_bench::Usage;
+using hbc_bench::usage_now;
 
 double peak_rss_mb() {
   rusage u{};
@@ -61,14 +53,14 @@ void load_file(benchmark::State& state, const std::string& path, bool written_he
   Usage load;  // summed over the loads
   size_t cells = 0;
   for (auto _ : state) {
-    const Usage u0 = usage();
+    const Usage u0 = usage_now();
     const auto t0 = std::chrono::steady_clock::now();
     hbc::MeshInput in = hbc::read_input(path);
     const auto t1 = std::chrono::steady_clock::now();
-    const Usage u1 = usage();
+    const Usage u1 = usage_now();
     hbc::Mesh m = hbc::build_mesh(std::move(in));
     const auto t2 = std::chrono::steady_clock::now();
-    const Usage u2 = usage();
+    const Usage u2 = usage_now();
     build_cpu += u2.cpu() - u1.cpu();
     parse_cpu += u1.cpu() - u0.cpu();
     load.user += u2.user - u0.user;

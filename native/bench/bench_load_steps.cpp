@@ -6,8 +6,6 @@
 // pages can cost more than the step's own work, and grows with the memory a step first touches.
 #include <benchmark/benchmark.h>
 
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cstdlib>
 #include <map>
@@ -15,21 +13,15 @@
 
 #include "hbc/io.hpp"
 #include "hbc/mesh_steps.hpp"
+#include "process_usage.hpp"
 #include "worker_pool.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Usage {
-  double usr = 0, sys = 0, faults = 0;
-};
-Usage usage_now() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  auto secs = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
-  return {secs(u.ru_utime), secs(u.ru_stime), static_cast<double>(u.ru_minflt)};
-}
+using hbc_bench::Usage;
+using hbc_bench::usage_now;
 
 void BM_LoadSteps(benchmark::State& state) {
   const char* file = std::getenv("HBC_BENCH_FILE");
@@ -53,7 +45,7 @@ void BM_LoadSteps(benchmark::State& state) {
       t = now;
       if (!with_usage) return;
       const Usage v = usage_now();
-      total[step + "_usr"] += v.usr - u.usr;
+      total[step + "_usr"] += v.user - u.user;
       total[step + "_sys"] += v.sys - u.sys;
       total[step + "_flt"] += v.faults - u.faults;
       u = v;
