@@ -67,7 +67,7 @@ fi
 
 # A one-hex mesh: what `hbc analyze` holds before any real mesh is (about 5-7 MB), which is most of
 # armadillo's peak (16 MB) and would hide its load + analysis in the ratio. The smallest of three
-# runs per variant.
+# runs, once per variant.
 printf 'MeshVersionFormatted 1\nDimension 3\nVertices\n8\n0 0 0 0\n1 0 0 0\n1 1 0 0\n0 1 0 0\n0 0 1 0\n1 0 1 0\n1 1 1 0\n0 1 1 0\nHexahedra\n1\n1 2 3 4 5 6 7 8 0\nEnd\n' >"$D/one_hex.mesh"
 own_rss() {  # CLI THREADS: peak RSS in KB of `hbc analyze` on the one-hex mesh
   for _ in 1 2 3; do
@@ -75,6 +75,11 @@ own_rss() {  # CLI THREADS: peak RSS in KB of `hbc analyze` on the one-hex mesh
     tail -1 "$D/own.rss"
   done | sort -n | head -1
 }
+declare -A own
+for v in "${variants[@]}"; do
+  IFS=: read -r name threads bench cli <<<"$v"
+  own[$name.$threads]=$(own_rss "$cli" "$threads")
+done
 
 rows=()
 for f in "${cases[@]}"; do
@@ -84,7 +89,7 @@ for f in "${cases[@]}"; do
     HBC_THREADS=$threads HBC_BENCH_FILE=$f "$bench" --benchmark_filter='^BM_LoadFile$' --benchmark_min_time=0.01 \
       --benchmark_repetitions="${HBC_BENCH_REPS:-5}" --benchmark_format=json >"$tag.load.json"
     HBC_THREADS=$threads /usr/bin/time -f '%M %U %S %e' -o "$tag.rss" "$cli" analyze "$f" --json >"$tag.analyze.json"
-    own_rss "$cli" "$threads" >"$tag.own"
+    echo "${own[$name.$threads]}" >"$tag.own"
     rows+=("$f|$name|$threads|$tag")
   done
 done
