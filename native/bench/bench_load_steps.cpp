@@ -12,9 +12,9 @@
 #include <string>
 
 #include "hbc/io.hpp"
-#include "hbc/mesh_steps.hpp"
+#include "mesh/mesh_steps.hpp"
 #include "process_usage.hpp"
-#include "worker_pool.hpp"
+#include "platform/worker_pool.hpp"
 
 namespace {
 
@@ -32,8 +32,8 @@ void BM_LoadSteps(benchmark::State& state) {
   using namespace hbc::mesh_steps;
   // As load_mesh, one worker pool for all the steps; HBC_BENCH_NO_POOL=1: a thread per range, as
   // before the pool, to compare.
-  const hbc::detail::RunOptions run(hbc::LoadOptions{});
-  const hbc::LoadOptions par = std::getenv("HBC_BENCH_NO_POOL") ? hbc::resolved({}) : run.get();
+  const hbc::detail::RunOptions run(hbc::Threads{});
+  const hbc::Threads par = std::getenv("HBC_BENCH_NO_POOL") ? hbc::resolved({}) : run.get();
   const bool with_usage = std::getenv("HBC_BENCH_RUSAGE") != nullptr;
   std::map<std::string, double> total;
   for (auto _ : state) {
@@ -73,7 +73,7 @@ void BM_LoadSteps(benchmark::State& state) {
     benchmark::DoNotOptimize(m.cell_faces.items.data());
   }
   for (const auto& [step, s] : total) state.counters[step] = s / static_cast<double>(state.iterations());
-  state.counters["threads"] = par.threads;
+  state.counters["threads"] = par.count;
 }
 BENCHMARK(BM_LoadSteps)->Unit(benchmark::kMillisecond)->UseRealTime();
 

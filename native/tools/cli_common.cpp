@@ -76,7 +76,7 @@ CLI::Range at_least(int min) { return CLI::Range(min, std::numeric_limits<int32_
 
 Mesh load_for_cli(const InputArgs& in, double* seconds) {
   auto t0 = std::chrono::steady_clock::now();
-  Mesh m = load_mesh(in.file, in.parsed_format(), in.load_options());
+  Mesh m = load_mesh(in.file, in.parsed_format(), in.load_threads());
   auto t1 = std::chrono::steady_clock::now();
   if (seconds) *seconds = std::chrono::duration<double>(t1 - t0).count();
   for (const auto& w : m.warnings) std::fprintf(stderr, "hbc: warning: %s: %s\n", in.file.c_str(), w.c_str());

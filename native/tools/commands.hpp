@@ -30,11 +30,11 @@ void add_quality(CLI::App& app);
 struct InputArgs {
   std::string file;
   std::string format;  // empty: by extension; else a name format_from_name accepts
-  int threads = 0;     // 0: LoadOptions' default
+  int threads = 0;     // 0: HBC_THREADS, else every core (Threads::count)
   Format parsed_format() const { return format.empty() ? Format::Auto : format_from_name(format); }
-  LoadOptions load_options() const {
-    LoadOptions o;
-    if (threads > 0) o.threads = threads;
+  Threads load_threads() const {
+    Threads o;
+    if (threads > 0) o.count = threads;
     return o;
   }
 };

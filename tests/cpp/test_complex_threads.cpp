@@ -116,17 +116,17 @@ void expect_component_rows_from_faces(const Mesh& m, const BaseComplex& bc) {
 // One thread against 2 and 3 (3 threads on 2 cores still run the ranges concurrently), at both
 // sheet levels.
 void expect_thread_independent(const Mesh& m) {
-  const LoadOptions one{1, 8};
+  const Threads one{1, 8};
   const SingularityGraph g = singularity_graph(m, one);
   for (int threads : {2, 3}) {
     SCOPED_TRACE(threads);
-    expect_same_graph(g, singularity_graph(m, LoadOptions{threads, 8}));
+    expect_same_graph(g, singularity_graph(m, Threads{threads, 8}));
   }
   const BaseComplex bc = base_complex(m, g, one);
   expect_component_rows_from_faces(m, bc);
   for (int threads : {2, 3}) {
     SCOPED_TRACE(threads);
-    const LoadOptions par{threads, 8};
+    const Threads par{threads, 8};
     const BaseComplex other = base_complex(m, g, par);
     expect_same_complex(bc, other);
     {
@@ -163,7 +163,7 @@ TEST(ComplexThreads, ChainsAreTheSameForAnyThreadCount) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
     const Mesh m = load_mesh(test::data_path(rel));
-    const SingularityGraph g = singularity_graph(m, LoadOptions{1});
+    const SingularityGraph g = singularity_graph(m, Threads{1});
     std::vector<uint8_t> singular(m.num_edges());
     std::vector<int32_t> valence(m.num_edges());
     for (size_t e = 0; e < m.num_edges(); ++e) {
@@ -174,7 +174,7 @@ TEST(ComplexThreads, ChainsAreTheSameForAnyThreadCount) {
       SCOPED_TRACE(threads);
       Csr<int32_t> verts, edges;
       std::vector<uint8_t> closed;
-      chain_edges(m, singular, valence, g.vert_pseudo_singular, verts, edges, closed, LoadOptions{threads, 8});
+      chain_edges(m, singular, valence, g.vert_pseudo_singular, verts, edges, closed, Threads{threads, 8});
       test::expect_same_csr(verts, g.chain_verts, "chain_verts");
       test::expect_same_csr(edges, g.chain_edges, "chain_edges");
       EXPECT_EQ(closed, g.chain_closed);
@@ -188,7 +188,7 @@ TEST(ComplexThreads, ChainsAreTheSameForAnyThreadCount) {
 // for every vertex.
 TEST(ComplexThreads, ChainsOfFewMembersEqualThoseOverEveryVertex) {
   const Mesh m = build_mesh(generate_grid(40, 40, 40));
-  const SingularityGraph g = singularity_graph(m, LoadOptions{1});
+  const SingularityGraph g = singularity_graph(m, Threads{1});
   ASSERT_EQ(g.num_singularities(), 12u);
   ASSERT_LT(g.num_singular_edges() * 64, m.num_vertices());  // the rows of few vertices
   std::vector<uint8_t> singular(m.num_edges());
@@ -203,8 +203,8 @@ TEST(ComplexThreads, ChainsOfFewMembersEqualThoseOverEveryVertex) {
     Csr<int32_t> verts, edges;
     std::vector<uint8_t> closed;
     chain_edges(m.edge_verts, every_vertex, singular, valence, g.vert_pseudo_singular, verts, edges, closed,
-                LoadOptions{threads, 8});
-    const SingularityGraph sparse = singularity_graph(m, LoadOptions{threads, 8});
+                Threads{threads, 8});
+    const SingularityGraph sparse = singularity_graph(m, Threads{threads, 8});
     test::expect_same_csr(verts, sparse.chain_verts, "chain_verts");
     test::expect_same_csr(edges, sparse.chain_edges, "chain_edges");
     EXPECT_EQ(closed, sparse.chain_closed);

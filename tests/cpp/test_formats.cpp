@@ -11,7 +11,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/vtu_export.hpp"
-#include "base64.hpp"
+#include "io/detail/base64.hpp"
 #include "format_samples.hpp"
 #include "test_support.hpp"
 

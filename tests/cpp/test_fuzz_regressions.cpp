@@ -156,7 +156,7 @@ constexpr double kLinearGrowthBound = 8.0;
 // axis scanned all of them (k = 20000: 10 s; a 8 MB file would take a quarter of an hour). One
 // thread, so that the thread's clock sees all the work.
 TEST(ResourceBounds, TetFanBuildMesh) {
-  const LoadOptions one{1, 4096};
+  const Threads one{1, 4096};
   const Mesh m = build_mesh(tet_fan(20000), one);
   EXPECT_EQ(m.num_cells(), 20000u);
   EXPECT_EQ(m.num_faces(), 60000u);

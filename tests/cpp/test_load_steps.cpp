@@ -11,8 +11,8 @@
 #include <thread>
 
 #include "hbc/generate.hpp"
-#include "hbc/mesh_steps.hpp"
-#include "parallel.hpp"
+#include "mesh/mesh_steps.hpp"
+#include "parallel/parallel.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -20,7 +20,7 @@ namespace {
 
 using namespace mesh_steps;
 
-const LoadOptions kOne{1, 1};
+const Threads kOne{1, 1};
 
 // A MeshInput from vertex positions and cells given as lists of face loops (each cell its own
 // copy of a shared face, as .HYBRID files do; flips all 0).
@@ -238,7 +238,7 @@ TEST(LoadSteps, EveryBoundaryEdgeStartsItsFanAtItsLowestBoundaryFace) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
     for (int threads : {1, 2}) {
-      const Mesh m = load_mesh(test::data_path(rel), Format::Auto, LoadOptions{threads, 64});
+      const Mesh m = load_mesh(test::data_path(rel), Format::Auto, Threads{threads, 64});
       std::vector<int32_t> lowest(m.num_edges(), -1);
       for (size_t f = 0; f < m.num_faces(); ++f)
         if (m.face_cells[f][1] < 0)
@@ -383,7 +383,7 @@ TEST(LoadParse, FastSectionsEqualTheTokenScanner) {
   ASSERT_NE(slow, fast);
   for (int threads : {1, 2, 3}) {
     SCOPED_TRACE(threads);
-    const LoadOptions par{threads, 64};
+    const Threads par{threads, 64};
     expect_same_input(read_medit(fast, "fast.mesh", par), read_medit(slow, "slow.mesh", par));
   }
 }
@@ -405,7 +405,7 @@ TEST(LoadParse, IntegersOfEveryWidthReadAsTheTokenScannerReadsThem) {
   slow.insert(count_end, " # slow path");
   for (int threads : {1, 2}) {
     SCOPED_TRACE(threads);
-    const LoadOptions par{threads, 16};
+    const Threads par{threads, 16};
     expect_same_input(read_medit(text, "fast.mesh", par), read_medit(slow, "slow.mesh", par));
   }
   test::expect_same_mesh(build_mesh(read_medit(text, "fast.mesh", kOne), kOne),
@@ -438,14 +438,14 @@ TEST(LoadParallel, EveryArrayEqualsTheSingleThreadedLoad) {
   for (const char* rel : test::kVariedMeshes) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
-    const Mesh one = load_mesh(test::data_path(rel), Format::Auto, LoadOptions{1, 64});
-    for (int threads : {2, 3}) expect_same_mesh(one, load_mesh(test::data_path(rel), Format::Auto, LoadOptions{threads, 64}));
+    const Mesh one = load_mesh(test::data_path(rel), Format::Auto, Threads{1, 64});
+    for (int threads : {2, 3}) expect_same_mesh(one, load_mesh(test::data_path(rel), Format::Auto, Threads{threads, 64}));
   }
   // The all-singleton worst case: a grid with about 1 % of its cells split into pyramids.
   std::vector<std::array<int, 3>> split;
   for (int i = 0; i < 12 * 12 * 12; i += 97) split.push_back({i % 12, i / 12 % 12, i / 144});
-  const Mesh one = build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), LoadOptions{1, 64});
-  expect_same_mesh(one, build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), LoadOptions{2, 64}));
+  const Mesh one = build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), Threads{1, 64});
+  expect_same_mesh(one, build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), Threads{2, 64}));
 }
 
 // `in` with vertex v renumbered p[v]: points moved, face loops and element corners mapped.
@@ -484,7 +484,7 @@ TEST(LoadParallel, FacesAndEdgesDoNotDependOnTheVertexNumbering) {
     std::iota(p.begin(), p.end(), 0);
     std::shuffle(p.begin(), p.end(), rng);
     for (int threads : {1, 2}) {
-      const Mesh b = build_mesh(with_vertices_renumbered(in, p), LoadOptions{threads, 64});
+      const Mesh b = build_mesh(with_vertices_renumbered(in, p), Threads{threads, 64});
       EXPECT_EQ(a.face_verts.offsets, b.face_verts.offsets);
       std::vector<int32_t> loops = a.face_verts.items;
       for (int32_t& v : loops) v = p[static_cast<size_t>(v)];
@@ -509,8 +509,8 @@ TEST(LoadParallel, FacesAndEdgesDoNotDependOnTheVertexNumbering) {
 TEST(LoadParallel, APoolRunsEveryRangeOnceAndSplitsNestedCallsOnItsOwn) {
   // Many short steps in a row (as a load runs them), a range that splits its own work while the
   // pool is busy, and an exception: the same ranges and the same first error as without a pool.
-  const detail::RunOptions run(LoadOptions{3, 8});
-  const LoadOptions& par = run.get();
+  const detail::RunOptions run(Threads{3, 8});
+  const Threads& par = run.get();
   ASSERT_NE(par.pool, nullptr);
   for (int step = 0; step < 200; ++step) {
     const size_t n = 1 + static_cast<size_t>(step) * 7 % 100;
@@ -573,7 +573,7 @@ TEST(LoadParallel, APoolWorkerTakesJobsWhetherPollingOrAsleep) {
 TEST(LoadParallel, ResizeTouchedKeepsTheOldEntriesAndFillsOnlyTheNewOnes) {
   // resize_with takes the plain resize for T() and resize(n, value) for any other value: both
   // must give what vector::resize(n, value) gives, the old entries kept, shrinking only cutting.
-  const LoadOptions par{2, 1};
+  const Threads par{2, 1};
   std::vector<std::array<int32_t, 2>> pairs{{7, 8}};
   detail::resize_touched(pairs, 3, par);
   EXPECT_EQ(pairs, (std::vector<std::array<int32_t, 2>>{{7, 8}, {0, 0}, {0, 0}}));
@@ -589,12 +589,12 @@ TEST(LoadParallel, ResizeTouchedKeepsTheOldEntriesAndFillsOnlyTheNewOnes) {
 }
 
 TEST(LoadParallel, WeightedRangesSplitByWeightAndPartedRowsFindRowsPastEmptyRanges) {
-  const detail::RunOptions run(LoadOptions{2, 8});
+  const detail::RunOptions run(Threads{2, 8});
   // One unit of weight 1000, then 999 of weight 1 (prefix 0, 1000, 1001, ..., 1999), two ranges:
   // the first unit whose prefix reaches half the total (999.5 rounded down) is unit 1, so the
   // heavy unit is a range alone, where ranges of as many units would cut at 500.
   {
-    const LoadOptions& par = run.get();
+    const Threads& par = run.get();
     std::vector<int32_t> prefix(1001);
     for (size_t i = 1; i <= 1000; ++i) prefix[i] = 1000 + static_cast<int32_t>(i) - 1;
     ASSERT_EQ(detail::weighted_range_count(prefix, par), 2);
@@ -607,7 +607,7 @@ TEST(LoadParallel, WeightedRangesSplitByWeightAndPartedRowsFindRowsPastEmptyRang
   // so the middle range is empty. Parted rows built over these ranges still find each row
   // (row r holds r), the empty part sharing its first row with the part after it.
   {
-    const LoadOptions par{3, 1};
+    const Threads par{3, 1};
     const std::vector<int32_t> prefix{0, 100, 100, 100};
     std::vector<std::array<size_t, 2>> seen(3);
     detail::weighted_ranges(prefix, par, [&](size_t b, size_t e, int r) { seen[static_cast<size_t>(r)] = {b, e}; });
@@ -636,7 +636,7 @@ TEST(LoadParallel, ErrorsNameTheFirstBadCellForAnyThreadCount) {
     }
     in.cells = cells;
     try {
-      build_mesh(std::move(in), LoadOptions{threads, 64});
+      build_mesh(std::move(in), Threads{threads, 64});
       FAIL() << "open cells accepted";
     } catch (const InputError& e) {
       if (first.empty()) first = e.what();

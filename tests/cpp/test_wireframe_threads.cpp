@@ -49,11 +49,11 @@ void expect_same_wireframe(const VsgWireframe& a, const VsgWireframe& b) {
 // A grain of 16 splits even small complexes into ranges, so range boundaries fall inside every
 // pass; 3 threads on 2 cores still run the ranges concurrently.
 void expect_thread_independent(const CellComplex& cx) {
-  const VsgWireframe one = vsg_wireframe(cx, {}, LoadOptions{1, 16});
+  const VsgWireframe one = vsg_wireframe(cx, {}, Threads{1, 16});
   EXPECT_GT(one.size(), 0u);
   for (int threads : {2, 3}) {
     SCOPED_TRACE(threads);
-    expect_same_wireframe(one, vsg_wireframe(cx, {}, LoadOptions{threads, 16}));
+    expect_same_wireframe(one, vsg_wireframe(cx, {}, Threads{threads, 16}));
   }
 }
 

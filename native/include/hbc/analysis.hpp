@@ -22,7 +22,7 @@ struct AnalysisOptions {
   Level wireframe_level = Level::Complex;
   WireframeOptions wireframe_options;
   // Threads the stages may split their work over (results are identical for any number); 0: as
-  // LoadOptions::threads = 0 (HBC_THREADS, else every core).
+  // Threads::count = 0 (HBC_THREADS, else every core).
   int threads = 0;
 };
 

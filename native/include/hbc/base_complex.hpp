@@ -60,9 +60,8 @@ struct BaseComplex {
   size_t num_curves() const { return curve_edges.rows(); }
 };
 
-// `par` splits the work over threads (LoadOptions::threads, 0: HBC_THREADS else every core); the
-// result is the same for any number.
-BaseComplex base_complex(const Mesh& mesh, const SingularityGraph& graph, const LoadOptions& par = {});
+// `threads`: see threads.hpp; the result is the same for any thread count.
+BaseComplex base_complex(const Mesh& mesh, const SingularityGraph& graph, const Threads& threads = {});
 
 // The straight continuation of face f across edge e: the face around e sharing no cell with f,
 // defined when e's fan is manifold, all-hex and regular (4 faces inside, 3 on the boundary).

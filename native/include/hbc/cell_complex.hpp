@@ -82,16 +82,15 @@ struct CellComplex {
 };
 
 // The fine mesh. `region_cells` (mesh cell ids, any order, repeats ignored) restricts the view;
-// without it every cell is in.
-CellComplex complex_from_mesh(const Mesh& mesh);
-CellComplex complex_from_mesh(const Mesh& mesh, std::span<const int32_t> region_cells);
+// without it every cell is in. `threads`: see threads.hpp; the view is the same for any number.
+CellComplex complex_from_mesh(const Mesh& mesh, const Threads& threads = {});
+CellComplex complex_from_mesh(const Mesh& mesh, std::span<const int32_t> region_cells, const Threads& threads = {});
 
 // The base complex as a coarse mesh. `region_components` (component ids) restricts the view.
-// `threads` as for the stages (threads 0: HBC_THREADS, else every core); the view is the same for
-// any number.
-CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc, const LoadOptions& threads = {});
+// `threads`: see threads.hpp; the view is the same for any number.
+CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc, const Threads& threads = {});
 CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc, std::span<const int32_t> region_components,
-                              const LoadOptions& threads = {});
+                              const Threads& threads = {});
 
 // What the complex-level view takes from the mesh, per base complex element (patch, curve) and per
 // vertex of the view (corner), so that the view can be built once the mesh is gone: analyze_stats
@@ -110,15 +109,15 @@ struct BaseViewFacts {
   std::vector<uint8_t> corner_all_quad;   // per corner: every region patch there is a quad
   bool whole() const;
 };
-BaseViewFacts base_view_facts(const Mesh& mesh, const BaseComplex& bc, const LoadOptions& threads = {});
+BaseViewFacts base_view_facts(const Mesh& mesh, const BaseComplex& bc, const Threads& threads = {});
 BaseViewFacts base_view_facts(const Mesh& mesh, const BaseComplex& bc, std::span<const int32_t> region_components,
-                              const LoadOptions& threads = {});
+                              const Threads& threads = {});
 
 // complex_from_base(mesh, bc) from the facts of the whole base complex and these arrays of `bc`
 // alone: component_kind, patch_curves, patch_components, curve_verts, curve_closed,
 // component_curves (the others may have been released). Throws for the facts of a proper region
 // (their view needs the mesh for the whole-mesh adjacency).
-CellComplex complex_from_base(const BaseComplex& bc, const BaseViewFacts& facts, const LoadOptions& threads = {});
+CellComplex complex_from_base(const BaseComplex& bc, const BaseViewFacts& facts, const Threads& threads = {});
 
 // The complex edges (ids of `cx`) holding the given mesh edges, sorted and distinct; mesh edges
 // off the view (or, at the complex level, on no curve) are skipped. `bc` is read at the complex

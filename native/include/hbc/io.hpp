@@ -22,7 +22,7 @@ const char* format_name(Format f);
 MeshInput read_ovm(std::string_view text, const std::string& source);     // OpenVolumeMesh ASCII
 MeshInput read_ovmb(std::string_view bytes, const std::string& source);   // OpenVolumeMesh binary
 MeshInput read_medit(std::string_view text, const std::string& source,
-                     const LoadOptions& options = {});                   // MEDIT .mesh
+                     const Threads& threads = {});                   // MEDIT .mesh
 MeshInput read_hybrid(std::string_view text, const std::string& source);  // Robust Hex-Dominant .HYBRID
 MeshInput read_hedra(std::string_view text, const std::string& source);   // LoopyCuts / cinolib .hedra
 // Element-list formats: volume elements become cells (a hexahedron with repeated corners the
@@ -34,9 +34,9 @@ MeshInput read_vtu(std::string_view bytes, const std::string& source);    // VTK
 
 // Reads a whole file; throws InputError when it cannot be opened.
 std::string read_file_bytes(const std::string& path);
-MeshInput read_input(const std::string& path, Format format = Format::Auto, const LoadOptions& options = {});
+MeshInput read_input(const std::string& path, Format format = Format::Auto, const Threads& threads = {});
 // read_input + build_mesh.
-Mesh load_mesh(const std::string& path, Format format = Format::Auto, const LoadOptions& options = {});
+Mesh load_mesh(const std::string& path, Format format = Format::Auto, const Threads& threads = {});
 
 // Writers. ovm_text keeps the mesh's numbering and each cell's view of its faces (read_ovm +
 // build_mesh give back the same arrays). medit_text writes Hexahedra, Tetrahedra, Prisms and

@@ -9,6 +9,7 @@
 
 #include "hbc/csr.hpp"
 #include "hbc/error.hpp"
+#include "hbc/threads.hpp"
 
 namespace hbc {
 
@@ -125,34 +126,16 @@ void cell_vertices(const Mesh& m, size_t c, std::vector<int32_t>& out);
 void cell_edges(const Mesh& m, size_t c, std::vector<int32_t>& out);
 
 
-// How to load: threads = how many threads may split the work (results are identical for any
-// number); 0 means the environment variable HBC_THREADS when it holds a positive number, else
-// every core of the machine. grain = the fewest elements worth a thread of their own (tests lower
-// it to split small meshes into many ranges). pool: worker threads the load keeps for its steps
-// (set by the load itself; leave it null).
-namespace detail {
-class WorkerPool;
-}
-struct LoadOptions {
-  int threads = 0;
-  int grain = 4096;
-  detail::WorkerPool* pool = nullptr;
-};
-// The thread count `options` asks for, resolved as described above (always >= 1).
-int resolve_threads(const LoadOptions& options);
-// options with threads resolved and grain at least 1.
-LoadOptions resolved(const LoadOptions& options);
-
 // Edges at each vertex (sorted ids): the transpose of edge_verts, built for the stages that walk
 // from vertex to vertex. `keep` (ne flags, or empty for every edge) restricts it to some edges.
 // The same rows for any number of threads.
-Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep = {}, const LoadOptions& threads = {});
+Csr<int32_t> vertex_edges(const Mesh& m, std::span<const uint8_t> keep = {}, const Threads& threads = {});
 
 // Builds the topology and checks conformity. Throws InputError (naming input.source and the line
 // of the offending element) for: an index out of range, a face with fewer than 3 distinct vertices
 // or a repeated vertex, a face shared by 3+ cells, a cell listing a face twice, a cell that is not
 // closed, a non-finite coordinate.
-Mesh build_mesh(MeshInput input, const LoadOptions& options = {});
+Mesh build_mesh(MeshInput input, const Threads& threads = {});
 
 // The mesh with vertices and cells renumbered (vertex v becomes vperm[v], cell c becomes
 // cperm[c]); used to check that results do not depend on numbering.

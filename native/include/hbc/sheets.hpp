@@ -51,8 +51,8 @@ struct SheetDomain {
   std::vector<uint8_t> face_joins;
 };
 
-// `par` splits the work over threads (as in base_complex); the result is the same for any number.
-SheetDomain sheet_domain(const Mesh& mesh, const BaseComplex& bc, Level level, const LoadOptions& par = {});
+// `threads`: see threads.hpp; the result is the same for any thread count.
+SheetDomain sheet_domain(const Mesh& mesh, const BaseComplex& bc, Level level, const Threads& threads = {});
 
 struct Sheets {
   Level level = Level::Complex;
@@ -68,7 +68,7 @@ struct Sheets {
   size_t count(SheetType t) const;
 };
 
-Sheets extract_sheets(const Mesh& mesh, const SheetDomain& domain, const LoadOptions& par = {});
+Sheets extract_sheets(const Mesh& mesh, const SheetDomain& domain, const Threads& threads = {});
 
 // Classifies the curves `curves` (sorted) of a sheet or subsheet over the blocks `blocks` (sorted).
 SheetClass classify_sheet(const SheetDomain& domain, const std::vector<int32_t>& curves,

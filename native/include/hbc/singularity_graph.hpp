@@ -45,9 +45,9 @@ struct SingularityGraph {
   bool is_structural(int32_t e) const { return edge_class[e] != EdgeClass::Regular; }
 };
 
-// `threads` as for the stages (threads 0: HBC_THREADS, else every core); the graph is the same
-// for any number.
-SingularityGraph singularity_graph(const Mesh& mesh, const LoadOptions& threads = {});
+// `threads`: see threads.hpp; the graph is the same for any
+// number.
+SingularityGraph singularity_graph(const Mesh& mesh, const Threads& threads = {});
 
 // Chains the edges marked in `member` (ne flags) into maximal chains of equal `edge_value`
 // (ne values, or empty for one value everywhere), cut at vertices marked in `stop` (nv flags), at
@@ -59,12 +59,12 @@ SingularityGraph singularity_graph(const Mesh& mesh, const LoadOptions& threads 
 void chain_edges(const Mesh& mesh, const std::vector<uint8_t>& member,
                  std::span<const int32_t> edge_value, const std::vector<uint8_t>& stop,
                  Csr<int32_t>& verts, Csr<int32_t>& edges, std::vector<uint8_t>& closed,
-                 const LoadOptions& threads = {});
+                 const Threads& threads = {});
 // The same on any edge graph given by its end vertices (ne pairs) and the edges at each vertex
 // (nv rows) in which no edge joins a vertex to itself (mesh edges never do).
 void chain_edges(std::span<const std::array<int32_t, 2>> edge_verts, const Csr<int32_t>& vert_edges,
                  const std::vector<uint8_t>& member, std::span<const int32_t> edge_value,
                  const std::vector<uint8_t>& stop, Csr<int32_t>& verts, Csr<int32_t>& edges,
-                 std::vector<uint8_t>& closed, const LoadOptions& threads = {});
+                 std::vector<uint8_t>& closed, const Threads& threads = {});
 
 }  // namespace hbc

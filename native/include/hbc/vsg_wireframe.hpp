@@ -94,12 +94,12 @@ struct VsgWireframe {
 // covers k mesh edges).
 int64_t covered_mesh_edges(const CellComplex& complex, const Csr<int32_t>& chains);
 
-// The graph only (no presentation arrays). `threads` splits the work as LoadOptions splits a load
-// (threads 0: HBC_THREADS, else every core); results are the same for any thread count.
+// The graph only (no presentation arrays). `threads`: see threads.hpp; results are the same for any thread
+// count.
 VsgWireframe vsg_wireframe_graph(const CellComplex& complex, const WireframeOptions& options = {},
-                                 const LoadOptions& threads = {});
+                                 const Threads& threads = {});
 // vsg_wireframe_graph, then wireframe_style into `style`.
 VsgWireframe vsg_wireframe(const CellComplex& complex, const WireframeOptions& options = {},
-                           const LoadOptions& threads = {});
+                           const Threads& threads = {});
 
 }  // namespace hbc

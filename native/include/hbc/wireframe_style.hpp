@@ -17,7 +17,7 @@ namespace hbc {
 struct CellComplex;
 struct VsgWireframe;
 struct WireframeOptions;
-struct LoadOptions;
+struct Threads;
 
 struct WireframeStyle {
   std::vector<float> point_opacity;  // aligned with the wireframe's polylines.items
@@ -25,8 +25,8 @@ struct WireframeStyle {
   std::vector<int32_t> color;        // per chain, in [0, palette_size)
 };
 
-// `threads` as for vsg_wireframe_graph (resolved there: threads 0 means HBC_THREADS, else every core).
+// `threads`: see threads.hpp.
 WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options,
-                               const LoadOptions& threads);
+                               const Threads& threads);
 
 }  // namespace hbc

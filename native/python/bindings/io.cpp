@@ -14,16 +14,16 @@ PyMeshPtr load(const py::object& path, const py::object& format, const py::objec
   // os.fspath accepts str, bytes and path-likes (pathlib.Path) and raises TypeError for the rest.
   const std::string file = py::module_::import("os").attr("fspath")(path).cast<std::string>();
   const Format fmt = format.is_none() ? Format::Auto : format_from_name(format.cast<std::string>());
-  LoadOptions options;
+  Threads split;
   if (!threads.is_none()) {
-    options.threads = threads.cast<int>();
-    if (options.threads < 1) throw py::value_error("threads must be a positive number or None");
+    split.count = threads.cast<int>();
+    if (split.count < 1) throw py::value_error("threads must be a positive number or None");
   }
   auto out = std::make_shared<PyMesh>();
   {
     py::gil_scoped_release unlocked;  // reading and building touch no Python objects
     const auto t0 = std::chrono::steady_clock::now();
-    out->mesh = load_mesh(file, fmt, options);
+    out->mesh = load_mesh(file, fmt, split);
     out->load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   return out;

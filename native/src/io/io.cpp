@@ -1,0 +1,139 @@
+#include "hbc/io.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/detail/text_scanner.hpp"
+#include "platform/file_map.hpp"
+#include "platform/worker_pool.hpp"
+
+namespace hbc {
+
+Format format_from_name(std::string_view name) {
+  const std::string n = detail::lower(name);
+  if (n == "ovm") return Format::Ovm;
+  if (n == "ovmb") return Format::Ovmb;
+  if (n == "mesh" || n == "medit") return Format::Medit;
+  if (n == "hybrid") return Format::Hybrid;
+  if (n == "hedra") return Format::Hedra;
+  if (n == "msh") return Format::Msh;
+  if (n == "vtk") return Format::Vtk;
+  if (n == "vtu") return Format::Vtu;
+  throw std::invalid_argument("unknown format '" + std::string(name) +
+                              "' (expected ovm, ovmb, mesh, hybrid, hedra, msh, vtk or vtu)");
+}
+
+static const char* kExtensions =
+    "a file name ending in .ovm, .ovmb, .mesh, .HYBRID, .hedra, .msh, .vtk or .vtu (or --format)";
+
+Format format_from_path(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    throw InputError(path, {}, kExtensions);
+  try {
+    return format_from_name(std::string_view(path).substr(dot + 1));
+  } catch (const std::invalid_argument&) {
+    throw InputError(path, {}, kExtensions);
+  }
+}
+
+const char* format_name(Format f) {
+  switch (f) {
+    case Format::Ovm: return "ovm";
+    case Format::Ovmb: return "ovmb";
+    case Format::Medit: return "mesh";
+    case Format::Hybrid: return "hybrid";
+    case Format::Hedra: return "hedra";
+    case Format::Msh: return "msh";
+    case Format::Vtk: return "vtk";
+    case Format::Vtu: return "vtu";
+    case Format::Auto: return "auto";
+  }
+  return "?";
+}
+
+std::string read_file_bytes(const std::string& path) {
+  // One read into a buffer of the file's size: no stream buffering, no copy of the text.
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  if (!f) throw InputError(path, {}, "a readable file (cannot open it)");
+  const std::streamoff size = f.tellg();
+  std::string bytes;
+  if (size > 0) {
+    bytes.resize(static_cast<size_t>(size));
+    f.seekg(0);
+    f.read(bytes.data(), size);
+    if (f.gcount() != size) throw InputError(path, {}, "a readable file (read failed)");
+  } else {
+    // Sizes unknown up front (pipes, /proc): read what there is.
+    f.clear();
+    f.seekg(0);
+    bytes.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  }
+  if (f.bad()) throw InputError(path, {}, "a readable file (read failed)");
+  return bytes;
+}
+
+namespace {
+
+// A file's bytes for parsing: a regular file mapped where the platform maps files, anything else
+// (a pipe) read.
+class FileBytes {
+ public:
+  explicit FileBytes(const std::string& path) : map_(path) {
+    if (map_.mapped()) {
+      view_ = map_.view();
+    } else {
+      copy_ = read_file_bytes(path);
+      view_ = copy_;
+    }
+  }
+  std::string_view view() const { return view_; }
+
+ private:
+  detail::FileMap map_;
+  std::string copy_;
+  std::string_view view_;
+};
+
+}  // namespace
+
+MeshInput read_input(const std::string& path, Format format, const Threads& threads) {
+  if (format == Format::Auto) format = format_from_path(path);
+  const FileBytes file(path);
+  const std::string_view bytes = file.view();
+  switch (format) {
+    case Format::Ovm: return read_ovm(bytes, path);
+    case Format::Ovmb: return read_ovmb(bytes, path);
+    case Format::Medit: return read_medit(bytes, path, threads);
+    case Format::Hybrid: return read_hybrid(bytes, path);
+    case Format::Hedra: return read_hedra(bytes, path);
+    case Format::Msh: return read_msh(bytes, path);
+    case Format::Vtk: return read_vtk(bytes, path);
+    case Format::Vtu: return read_vtu(bytes, path);
+    case Format::Auto: break;
+  }
+  throw InputError(path, {}, "a known format");
+}
+
+Mesh load_mesh(const std::string& path, Format format, const Threads& threads) {
+  const detail::RunOptions run(threads);  // one pool for the reading and the building
+  const Threads& par = run.get();
+  return build_mesh(read_input(path, format, par), par);
+}
+
+void write_mesh(const Mesh& mesh, const std::string& path, Format format) {
+  if (format == Format::Auto) format = format_from_path(path);
+  std::string text;
+  if (format == Format::Ovm) text = ovm_text(mesh);
+  else if (format == Format::Medit) text = medit_text(mesh);
+  else throw std::invalid_argument(std::string("writing ") + format_name(format) + " is not supported (use .ovm or .mesh)");
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f << text;
+  if (!f) throw std::runtime_error("write failed: " + path);
+}
+
+}  // namespace hbc
