@@ -1,15 +1,14 @@
-# Assembles the add-on folder (cmake -P): the add-on's sources, the hbc package with every compiled
-# module built so far (the build's own and those of the wheels of other Pythons), and the
-# project's one version written into bl_info and the manifest.
+# Assembles the add-on folder (cmake -P): the add-on's sources with their subpackages, the hbc
+# package with every compiled module built so far (the build's own and those of the wheels of other
+# Pythons), and the project's one version written into bl_info and the manifest.
 #   -DSRC=<addon sources> -DPKG=<hbc package sources> -DCORE=<_core file> -DEXTRA=<folder of
 #   extra _core modules> -DOUT=<add-on folder> -DVERSION=x.y.z
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT}/hbc)
-file(GLOB sources ${SRC}/*.py ${SRC}/*.toml)
-foreach(f ${sources})
-  get_filename_component(name ${f} NAME)
-  file(READ ${f} text)
-  if(name STREQUAL "__init__.py")
+file(GLOB_RECURSE sources RELATIVE ${SRC} ${SRC}/*.py ${SRC}/*.toml)
+foreach(name ${sources})
+  file(READ ${SRC}/${name} text)
+  if(name STREQUAL "__init__.py")  # the package's own, not a subpackage's
     string(REPLACE "." ", " tuple ${VERSION})
     string(REGEX REPLACE "\"version\": \\([0-9, ]+\\)" "\"version\": (${tuple})" text "${text}")
   elseif(name STREQUAL "blender_manifest.toml")

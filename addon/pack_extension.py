@@ -1,6 +1,6 @@
-"""Packs the assembled add-on as a Blender extension (4.2+): the add-on's files without the
-bundled hbc folder, the hbc wheels under wheels/, and a manifest listing them. Blender installs
-the wheel matching its Python when the extension is installed.
+"""Packs the assembled add-on as a Blender extension (4.2+): the add-on's files (with its
+subpackages) without the bundled hbc folder, the hbc wheels under wheels/, and a manifest listing
+them. Blender installs the wheel matching its Python when the extension is installed.
 
     python pack_extension.py ADDON_DIR WHEEL_DIR OUT_ZIP
 """
@@ -21,6 +21,17 @@ def manifest_with_wheels(text, wheels):
     return head.rstrip("\n") + "\n\n" + block + (sep + tail if sep else "")
 
 
+def addon_sources(addon_dir):
+    """The add-on's Python files, relative to its folder: the package and its subpackages, not the
+    bundled hbc package (the extension installs hbc from its wheel) nor bytecode caches."""
+    found = []
+    for folder, dirs, files in os.walk(addon_dir):
+        rel = os.path.relpath(folder, addon_dir)
+        dirs[:] = sorted(d for d in dirs if d != "__pycache__" and not (rel == "." and d == "hbc"))
+        found += [os.path.normpath(os.path.join(rel, f)) for f in files if f.endswith(".py")]
+    return sorted(found)
+
+
 def main(addon_dir, wheel_dir, out_zip):
     wheels = sorted(os.path.basename(w) for w in glob.glob(os.path.join(wheel_dir, "hbc-*.whl")))
     if not wheels:
@@ -32,8 +43,8 @@ def main(addon_dir, wheel_dir, out_zip):
     tmp = out_zip + ".tmp"
     with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as z:
         z.writestr("blender_manifest.toml", manifest)
-        for path in sorted(glob.glob(os.path.join(addon_dir, "*.py"))):
-            z.write(path, os.path.basename(path))
+        for rel in addon_sources(addon_dir):
+            z.write(os.path.join(addon_dir, rel), rel.replace(os.sep, "/"))
         for w in wheels:
             z.write(os.path.join(wheel_dir, w), f"wheels/{w}")
     os.replace(tmp, out_zip)

@@ -5,19 +5,19 @@ seconds, printed as a Markdown table.
     blender -b --factory-startup --python blender_scripts/bench_addon.py -- \
         --addon <build>/addon/hybrid_base_complex [--split-max N] MESH...
 
-Targets (issue 7): every layer of teapot.hedra under 2 s; a generated 100k-cell mesh
+Targets: every layer of teapot.hedra under 2 s; a generated 100k-cell mesh
 (`hbc generate grid --size 50 40 50 -o x.mesh`, or a split grid as .ovm) under 20 s. The picked
 sheet and subsheet layers use the largest self-intersecting sheet when there is one, else sheet 0.
 Exit status 1 when a target is missed (--no-targets to only report).
 
-Rebuilds (issue 16: a rebuild costs no more than a first build): after the first build of the
+Rebuilds (a rebuild costs no more than a first build): after the first build of the
 blocks (column `blocks`, a fresh file), --rebuilds N times the blocks layer is cleared and built
 again (a first build) and then rebuilt with another shrink, so that every block's geometry is
 written anew, as when a user changes a setting and rebuilds. Column `rebuild blocks` and a second
 table give the medians of those N first builds and N rebuilds, measured in the same run, and their
 ratio. Use --split-max 100000 to make every block of a mesh its own object.
 
---inspect (issue 17) adds the direct view's cells (column `cells`: every cell with the filter
+--inspect adds the direct view's cells (column `cells`: every cell with the filter
 modifier, or above the add-on's live-surface threshold the surface of the kept cells) and times
 one update of the sliced direct view: the slicing plane (an Empty through the mesh centre) is
 moved and the scene evaluated, which rebuilds the live surface, median of --repeat moves (column
@@ -39,7 +39,7 @@ def parse():
     ap.add_argument("--addon", required=True, help="the add-on package folder (built tree)")
     ap.add_argument("--split-max", type=int, default=None, help="blocks up to this many as separate objects")
     ap.add_argument("--no-targets", action="store_true")
-    ap.add_argument("--inspect", action="store_true", help="time the sliced direct view (issue 17)")
+    ap.add_argument("--inspect", action="store_true", help="time the sliced direct view")
     ap.add_argument("--no-analysis", action="store_true", help="import without analysing")
     ap.add_argument("--repeat", type=int, default=3, help="plane moves timed for --inspect")
     ap.add_argument("--rebuilds", type=int, default=3,
@@ -56,7 +56,7 @@ def time_slice(root, s, repeat):
     move + evaluation of the sliced direct view}."""
     import statistics
 
-    from hybrid_base_complex import inspect as I
+    from hybrid_base_complex.blender import inspect as I
 
     t = time.perf_counter()
     bpy.context.scene.hbc_inspect.direct_cells = True  # rebuilds the direct view with its cells
@@ -104,9 +104,9 @@ def main():
     args = parse()
     sys.path.insert(0, os.path.dirname(os.path.abspath(args.addon)))
     import hybrid_base_complex as addon
-    from hybrid_base_complex import layers as L
-    from hybrid_base_complex import scene as S
-    from hybrid_base_complex import session
+    from hybrid_base_complex.blender.context import find_root
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.plan import session
 
     addon.register()
     analyzed = not args.no_analysis
@@ -121,7 +121,7 @@ def main():
         t = time.perf_counter()
         assert bpy.ops.import_mesh.hbc(filepath=path, analyze=analyzed) == {"FINISHED"}
         t_import = time.perf_counter() - t
-        root = L.find_root(st.active_mesh)
+        root = find_root(st.active_mesh)
         s = session.get(root.name)
         times = {"import": t_import}
         layers = ["graph", "blocks", "sheets", "wireframe"] if analyzed else []

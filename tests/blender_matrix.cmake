@@ -38,10 +38,10 @@ function(hbc_blender_test)
     if(label MATCHES "^blender-")
       # Debian's binary: pytest inside Blender's embedded Python, in background mode.
       set(cmd ${exe} -b --factory-startup --python-exit-code 1
-              --python ${CMAKE_SOURCE_DIR}/tests/blender/run_pytest_in_blender.py -- ${T_ARGS})
+              --python ${CMAKE_SOURCE_DIR}/tests/run_pytest_in_blender.py -- ${T_ARGS})
     else()
       # A bpy wheel: its venv's Python loads Blender (import bpy), then runs pytest.
-      set(cmd ${exe} ${CMAKE_SOURCE_DIR}/tests/blender/run_pytest_in_blender.py ${T_ARGS})
+      set(cmd ${exe} ${CMAKE_SOURCE_DIR}/tests/run_pytest_in_blender.py ${T_ARGS})
     endif()
     add_test(NAME ${T_SUITE}@${label} COMMAND ${cmd})
     set_tests_properties(${T_SUITE}@${label} PROPERTIES

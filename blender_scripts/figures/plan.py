@@ -366,7 +366,7 @@ def all_edges(face_sizes, face_vertices):
 # ---------------------------------------------------------------------------------------------
 # Legend strip (--legend)
 
-#: The add-on layers whose legend (hybrid_base_complex.planning.legend) each panel shows. Panels
+#: The add-on layers whose legend (hybrid_base_complex.plan.planning.legend) each panel shows. Panels
 #: coloured from the palette only (VSG, wireframes: one colour per chain, meaning nothing beyond
 #: telling chains apart) have no entries; nor has the quality panel, whose title names its colour map.
 LEGEND_LAYERS = {

@@ -49,14 +49,15 @@ class Addon:
             sys.path.insert(0, parent)
         pkg = importlib.import_module(name)
         self.pkg = pkg
-        self.L = importlib.import_module(name + ".layers")
-        self.S = importlib.import_module(name + ".scene")
-        self.P = importlib.import_module(name + ".planning")
-        self.session = importlib.import_module(name + ".session")
-        self.structure = importlib.import_module(name + ".structure")
-        self.properties = importlib.import_module(name + ".properties")
-        self.compat = importlib.import_module(name + ".compat")
-        self.inspect = importlib.import_module(name + ".inspect")
+        self.P = importlib.import_module(name + ".plan.planning")
+        self.session = importlib.import_module(name + ".plan.session")
+        self.structure = importlib.import_module(name + ".plan.structure")
+        self.inspection = importlib.import_module(name + ".plan.inspection")
+        self.compat = importlib.import_module(name + ".blender.compat")
+        self.S = importlib.import_module(name + ".blender.scene")
+        self.L = importlib.import_module(name + ".blender.layers")
+        self.inspect = importlib.import_module(name + ".blender.inspect")
+        self.properties = importlib.import_module(name + ".ui.properties")
 
     def settings(self, **overrides):
         """The panel's settings with the add-on's defaults (read from its property definitions)."""
@@ -484,7 +485,7 @@ class Subject:
     def kept_by_cut(self, soup):
         """Faces of a soup (with face_cell) whose cell the cut keeps, for outlines."""
         p, n = plan.cut_plane(self.points, self.direction, self.args.cut_plane)
-        cen = self.addon.inspect.cell_data(self.s)["centroid"][soup.face_cell]
+        cen = self.addon.inspection.cell_data(self.s)["centroid"][soup.face_cell]
         return soup.select((cen - p) @ n <= 0)
 
     def panel_cut(self):
@@ -497,13 +498,13 @@ class Subject:
 
     def panel_quality(self):
         """Every cell coloured by its scaled Jacobian (viridis), sliced by the plane."""
-        I, S = self.addon.inspect, self.addon.S
+        I, IP, S = self.addon.inspect, self.addon.inspection, self.addon.S
         coll = self._new_coll("quality")
         with S.Transaction() as tx:
-            soup = I.cell_soup(self.s)
-            ob = S.soup_object(tx, coll, f"{self.name} cells by quality", soup, I.cell_colors(self.s, soup, True),
+            soup = IP.cell_soup(self.s)
+            ob = S.soup_object(tx, coll, f"{self.name} cells by quality", soup, IP.cell_colors(self.s, soup, True),
                                None, {"hbc_mesh": self.name, "hbc_layer": "direct", "hbc_part": "cells"})
-            I.equip_object(tx, ob, I.cell_data(self.s), I.sheet_mask(self.s, -1))
+            I.equip_object(tx, ob, IP.cell_data(self.s), IP.sheet_mask(self.s, -1))
             self.outline(tx, coll, f"{self.name} cut cell edges", self.kept_by_cut(soup), color=MESH_EDGE_COLOR,
                          every_edge=True, scale=0.35)
         self.cut(coll)

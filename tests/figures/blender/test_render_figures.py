@@ -1,6 +1,6 @@
 """blender_scripts/render_figures.py end to end, in background mode, at a tiny size: every panel
 of twistcube_s.mesh (Cycles, 4 samples) and of the demo's generated default (Workbench), and a
-comparison (Workbench). Run inside Blender by tests/blender/run_pytest_in_blender.py (the images
+comparison (Workbench). Run inside Blender by tests/run_pytest_in_blender.py (the images
 are read back with bpy.data.images); the figure script itself runs in a child Blender, as a user
 runs it.
 
@@ -262,8 +262,8 @@ def expected_legends():
     addon = os.environ["HBC_ADDON_DIR"]
     sys.path.insert(0, os.path.dirname(addon))
     name = os.path.basename(addon)
-    P = importlib.import_module(name + ".planning")
-    session = importlib.import_module(name + ".session")
+    P = importlib.import_module(name + ".plan.planning")
+    session = importlib.import_module(name + ".plan.session")
     s = session.load(str(data("twistcube_s.mesh")), 1.0, lambda *_: None)
     session.analyze(s, 0.8, lambda *_: None)
     facts = s.legend_facts()

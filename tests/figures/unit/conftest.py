@@ -1,5 +1,5 @@
 """The figure script's bpy-free modules (blender_scripts/figures/plan.py, compose.py) on sys.path, and
-the add-on's bpy-free planning module (addon/hybrid_base_complex/planning.py: the legend's colours
+the add-on's bpy-free planning module (addon/hybrid_base_complex/plan/planning.py: the legend's colours
 and words, which the figures take from there)."""
 
 import pathlib

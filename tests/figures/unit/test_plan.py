@@ -171,7 +171,7 @@ def test_legend_option():
 def test_panel_legends_are_the_addons_words_and_colours():
     """Each panel's strip lists what the add-on's Legend panel lists for the layers the panel
     shows, in the add-on's words and with its colours (the very values of planning.LEGEND_COLORS)."""
-    from hybrid_base_complex import planning as P
+    from hybrid_base_complex.plan import planning as P
 
     def legend(key, highlights=()):
         entries = plan.panel_legend(P, key, FACTS, highlights)

@@ -1,4 +1,4 @@
-"""Rebuilding a layer in place (issue 16, item 1): a rebuild refills the layer's objects instead of
+"""Rebuilding a layer in place: a rebuild refills the layer's objects instead of
 removing and making them again, and must give exactly what a first build with the same settings
 gives (names, geometry, attributes, materials, modifiers and their inputs, properties, colours,
 visibility), remove what the new build no longer makes, and, when it fails, put the layer back as
@@ -17,7 +17,7 @@ def import_twistcube(data_dir):
 
 
 def layer(root, key):
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import scene as S
 
     coll = S.find_layer(root, key)
     assert coll is not None, f"no {key} layer"
@@ -37,7 +37,7 @@ def read(collection, prop, width, dtype):
 
 def group_inputs(mod):
     """{input name: value} of a geometry-nodes modifier (objects by name)."""
-    from hybrid_base_complex import compat
+    from hybrid_base_complex.blender import compat
 
     ng = mod.node_group
     if hasattr(ng, "interface"):
@@ -177,8 +177,8 @@ def test_rebuild_removes_what_it_no_longer_makes(clean_scene, data_dir):
 def test_failed_rebuild_puts_the_layer_back(clean_scene, data_dir, monkeypatch, key, setting, value):
     """A builder that refills every object with other settings and then fails: the layer is as it
     was (geometry, colours, modifier inputs, properties) and no datablock is left or lost."""
-    from hybrid_base_complex import layers as L
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import layers as L
+    from hybrid_base_complex.blender import scene as S
 
     root = import_twistcube(data_dir)
     st = bpy.context.scene.hbc
@@ -206,8 +206,8 @@ def test_every_layer_has_first_build_names(clean_scene, data_dir):
     object or mesh is named with a '.001'-style suffix (no two layers ask for one name)."""
     import re
 
-    from hybrid_base_complex import planning as P
-    from hybrid_base_complex import session
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.plan import session
 
     root = import_twistcube(data_dir)
     st = bpy.context.scene.hbc

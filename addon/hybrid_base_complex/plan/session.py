@@ -6,7 +6,8 @@ from __future__ import annotations
 
 import time
 
-from .structure import Structure, import_hbc
+from .native import import_hbc
+from .structure import Structure
 
 _SESSIONS: dict[str, Structure] = {}
 

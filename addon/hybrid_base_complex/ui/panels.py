@@ -9,14 +9,17 @@ import textwrap
 
 import bpy
 
-from . import planning as P
-from . import scene as S
-from . import session
-from .operators import active_root, merged_owner_faces, unavailable
-from .structure import module_problem
+from ..blender import inspect
+from ..blender import scene as S
+from ..blender import sources
+from ..blender.context import active_root, merged_owner_faces, unavailable
+from ..plan import inspection as IP
+from ..plan import planning as P
+from ..plan import session
+from ..plan.native import module_problem
 
 #: Longest label a row may carry at the default sidebar width (about 30 characters across, a
-#: property's value taking the rest); tests/blender checks every drawn label against it.
+#: property's value taking the rest); tests/addon/blender checks every drawn label against it.
 MAX_LABEL = 14
 
 
@@ -85,8 +88,6 @@ class HBC_PT_main(_Base, bpy.types.Panel):
         s = session.get(root.name)
         layout.label(text=f"{root.get('hbc_cells', '?')} cells", icon="MESH_CUBE")
         layout.prop(root, "hbc_path", text="")
-        from . import sources
-
         try:
             sources.resolve(root)
         except sources.SourceMissing:
@@ -317,4 +318,53 @@ class HBC_PT_selection(_Base, bpy.types.Panel):
             layout.label(text="sheets: " + (", ".join(str(int(x)) for x in sheets) or "none"))
 
 
-classes = (HBC_UL_sheets, HBC_PT_main, HBC_PT_table1, HBC_PT_layers, *layer_panels, HBC_PT_legend, HBC_PT_selection)
+class HBC_PT_inspect(_Sub, bpy.types.Panel):
+    """Looking inside (blender/inspect.py): filters, the cut plane, the quality colour map."""
+
+    bl_idname = "HBC_PT_inspect"
+    bl_label = "Look inside"
+
+    def draw(self, context):
+        layout = self.layout
+        ins = inspect.settings(context.scene)
+        row = layout.row(align=True)
+        row.prop(ins, "enabled")
+        row.prop(ins, "direct_cells")
+        box = layout.box()
+        row = box.row(align=True)
+        row.prop(ins, "slice")
+        row.prop(ins, "flip")
+        row = box.row(align=True)
+        row.prop(ins, "plane", text="")
+        row.operator("hbc.add_cut_plane", text="", icon="ADD")
+        box.prop(ins, "peel")
+        box.prop(ins, "surface_above")
+        row = box.row(align=True)
+        for n in IP.TYPE_NAMES:
+            row.prop(ins, f"show_{n}", toggle=True)
+        row = box.row(align=True)
+        row.prop(ins, "filter_quality")
+        row.prop(ins, "quality_min")
+        row.prop(ins, "quality_max")
+        box.prop(ins, "sheet_only")
+        self.draw_quality(layout, context, ins)
+
+    @staticmethod
+    def draw_quality(layout, context, ins):
+        box = layout.box()
+        box.prop(ins, "color_by_quality")
+        box.label(text="Scaled Jacobian (viridis): " + "  ".join(f"{v:.2f}" for v in IP.LEGEND_VALUES))
+        row = box.row(align=True)
+        for i in range(len(IP.LEGEND_VALUES)):
+            row.prop(ins, f"legend_{i}", text="")
+        root = active_root(context)
+        s = session.get(root.name) if root is not None else None
+        histogram = IP.computed_histogram(s) if s is not None else None
+        if histogram is None:
+            box.label(text="Histogram: build a layer first")
+            return
+        labels, counts = histogram
+        top = max(max(counts), 1)
+        col = box.column(align=True)
+        for label, c in zip(labels, counts):
+            col.label(text=f"{label:>8}  {'█' * int(round(20 * c / top)):<20} {c}")

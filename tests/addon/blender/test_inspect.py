@@ -1,4 +1,4 @@
-"""The inspection filters (issue 17) in Blender background mode, counted on the evaluated meshes: a
+"""The inspection filters in Blender background mode, counted on the evaluated meshes: a
 plane through a generated grid hides exactly the cells on one side, peeling one layer of a
 10x10x10 grid leaves the inner 8x8x8 cells, the type filter on a split grid leaves exactly its
 non-hex cells, the quality range and the blocks/sheets layers."""
@@ -28,16 +28,16 @@ def generate(tmp_path, *args):
 
 
 def import_mesh(path, analyze=False):
-    from hybrid_base_complex import layers as L
+    from hybrid_base_complex.blender.context import find_root
 
     ins = bpy.context.scene.hbc_inspect
     ins.direct_cells = True
     assert bpy.ops.import_mesh.hbc(filepath=str(path), analyze=analyze) == {"FINISHED"}
-    return L.find_root(bpy.context.scene.hbc.active_mesh)
+    return find_root(bpy.context.scene.hbc.active_mesh)
 
 
 def cells_object(root):
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import scene as S
 
     return next(o for o in S.find_layer(root, "direct").all_objects if o.get("hbc_part") == "cells")
 
@@ -83,7 +83,7 @@ def test_unfiltered_cells_object_has_every_cell(reset, tmp_path):
 def test_plane_hides_the_cells_on_one_side(reset, tmp_path, normal, flip):
     """A 6x5x4 grid cut by a plane through a point off the cell centres: the kept cells are exactly
     those whose centroid is on the plane's -normal side (+normal with flip), all 6 faces each."""
-    from hybrid_base_complex import inspect as I
+    from hybrid_base_complex.blender import inspect as I
 
     root = import_mesh(generate(tmp_path, "grid", "--size", "6", "5", "4"))
     ob = cells_object(root)
@@ -117,7 +117,7 @@ def test_peeling_one_layer_leaves_the_inner_block(reset, tmp_path):
 
 
 def test_type_filter_leaves_the_non_hex_cells(reset, tmp_path):
-    from hybrid_base_complex import session
+    from hybrid_base_complex.plan import session
 
     root = import_mesh(generate(tmp_path, "split", "--size", "4", "4", "4", "--split", "pyramids",
                                 "--cells", "1,1,1;2,3,0"))
@@ -136,9 +136,10 @@ def test_type_filter_leaves_the_non_hex_cells(reset, tmp_path):
 
 def test_quality_range_and_colours(reset, tmp_path):
     """Pyramids of a split grid are not ideal (scaled Jacobian < 1): [0.99, 1] keeps the hexes."""
-    from hybrid_base_complex import inspect as I
-    from hybrid_base_complex import session
-    from hybrid_base_complex.structure import import_hbc
+    from hybrid_base_complex.blender import inspect as I
+    from hybrid_base_complex.plan import inspection as IP
+    from hybrid_base_complex.plan import session
+    from hybrid_base_complex.plan.native import import_hbc
 
     root = import_mesh(generate(tmp_path, "split", "--size", "3", "3", "3", "--split", "pyramids",
                                 "--cells", "1,1,1"))
@@ -150,8 +151,8 @@ def test_quality_range_and_colours(reset, tmp_path):
     reset.color_by_quality = True
     col = np.zeros(4 * len(ob.data.loops), np.float32)
     ob.data.attributes["hbc_color"].data.foreach_get("color", col)
-    assert np.allclose(col.reshape(-1, 4)[0], I.quality_colors([sj[I._face_cells(ob.data)[0]]])[0], atol=1e-5)
-    labels, counts = I.cell_data(s)["histogram"]
+    assert np.allclose(col.reshape(-1, 4)[0], IP.quality_colors([sj[I.face_cells(ob.data)[0]]])[0], atol=1e-5)
+    labels, counts = IP.cell_data(s)["histogram"]
     assert sum(counts) == s.num_cells and len(labels) == len(counts)
 
 
@@ -159,23 +160,24 @@ def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
     """Every block and sheet object carries the attributes and the modifier; peeling far enough
     (past the deepest cell) empties every shown one (the sheets layer shows only the picked sheet:
     hidden objects are not evaluated); the block attribute is the face's cell's component."""
-    from hybrid_base_complex import inspect as I
-    from hybrid_base_complex import scene as S
-    from hybrid_base_complex import session
+    from hybrid_base_complex.blender import inspect as I
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.plan import inspection as IP
+    from hybrid_base_complex.plan import session
 
     root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyze=True)
     s = session.get(root.name)
     for layer in ("blocks", "sheets"):
         assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}
     comp = np.asarray(s.analysis.complex.cell_component)
-    deepest = int(I.cell_data(s)["depth"].max())
+    deepest = int(IP.cell_data(s)["depth"].max())
     for layer in ("blocks", "sheets"):
         obs = [o for o in S.find_layer(root, layer).all_objects if o.type == "MESH"]
         assert obs and all(o.modifiers.get(I.MODIFIER) for o in obs), layer
         ob = obs[0]
         block = np.zeros(len(ob.data.polygons), np.int32)
         ob.data.attributes["hbc_block"].data.foreach_get("value", block)
-        assert np.array_equal(block, comp[I._face_cells(ob.data)])
+        assert np.array_equal(block, comp[I.face_cells(ob.data)])
     before = sum(evaluated_cells(o)[0] for o in S.find_layer(root, "blocks").all_objects)
     assert before > 0
     reset.peel = deepest + 1
@@ -192,7 +194,7 @@ def test_live_surface_of_a_large_mesh(reset, tmp_path):
     """Above `surface_above` cells the direct view holds only the surface of the kept cells, rebuilt
     by C++ when a filter changes or the plane moves: counts on a 10x10x10 grid (cell centroids at
     integer + 1/2 along each axis, in grid units)."""
-    from hybrid_base_complex import inspect as I
+    from hybrid_base_complex.blender import inspect as I
 
     reset.surface_above = 100
     try:
@@ -225,7 +227,7 @@ def test_live_surface_of_a_large_mesh(reset, tmp_path):
 def test_picked_sheet_only_follows_the_pick(reset, data_dir):
     """'Picked sheet only' keeps exactly the picked sheet's cells in the direct view; picking
     another sheet in the list (Scene.hbc.sheet_index) moves the attribute and the view with it."""
-    from hybrid_base_complex import session
+    from hybrid_base_complex.plan import session
 
     root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyze=True)
     s = session.get(root.name)

@@ -1,13 +1,13 @@
 """Where an imported mesh's source file is, stored the Blender way: relative to the .blend ("//")
 when the .blend's place is known, resolved with bpy.path.abspath on use, and found again beside a
-moved .blend (the mesh moved with it) when the stored path no longer exists."""
+moved .blend (the mesh moved with it) when the stored path no longer exists. The save handlers
+(ui/handlers.py) call `store_for_save` and `store_relative`."""
 
 from __future__ import annotations
 
 import os
 
 import bpy
-from bpy.app.handlers import persistent
 
 
 class SourceMissing(Exception):
@@ -65,32 +65,19 @@ def _current(root) -> str:
         return os.path.normpath(bpy.path.abspath(root["hbc_source"]))
 
 
-@persistent
-def save_pre(*args):
+def store_for_save(target: str | None):
     """Relative paths for the file being written. Blender versions that pass the target path to
-    the handler get paths relative to it; others (3.4 passes none) get absolute paths, always
-    right whatever folder the .blend is saved into, and found again by `resolve` after a move."""
-    target = next((a for a in args if isinstance(a, str) and a), None)
+    the save handler get paths relative to it (`target`); others (3.4 passes none: None) get
+    absolute paths, always right whatever folder the .blend is saved into, and found again by
+    `resolve` after a move."""
     for root in _roots():
         if root["hbc_source"]:
             path = _current(root)
             root["hbc_source"] = stored(path, target) if target else path
 
 
-@persistent
-def save_post(*args):
+def store_relative():
     """Back to paths relative to the file just written (its place is known now)."""
     for root in _roots():
         if root["hbc_source"]:
             root["hbc_source"] = stored(_current(root))
-
-
-def register():
-    bpy.app.handlers.save_pre.append(save_pre)
-    bpy.app.handlers.save_post.append(save_post)
-
-
-def unregister():
-    for handlers, fn in ((bpy.app.handlers.save_pre, save_pre), (bpy.app.handlers.save_post, save_post)):
-        if fn in handlers:
-            handlers.remove(fn)

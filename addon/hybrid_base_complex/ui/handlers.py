@@ -1,16 +1,19 @@
-"""File and undo handlers: after undo, redo or loading a file the layers look as they did (their
-colour attribute is the active and rendered one, their material the one they were built with),
-Blender's object caches of the imported meshes are fresh, and the source paths are stored the
-Blender way on save (sources.py)."""
+"""The add-on's app handlers (ui/addon.py registers them): after undo, redo or loading a file the
+layers look as they did (their colour attribute is the active and rendered one, their material the
+one they were built with) and Blender's object caches of the imported meshes are fresh; the source
+paths are stored the Blender way on save (blender/sources.py); and after a depsgraph update the
+inspection follows the dragged cut plane and the picked sheet (blender/inspect.py). Every handler
+is persistent: it stays when a file is opened."""
 
 from __future__ import annotations
 
 import bpy
 from bpy.app.handlers import persistent
 
-from . import compat
-from . import scene as S
-from . import sources
+from ..blender import compat
+from ..blender import inspect
+from ..blender import scene as S
+from ..blender import sources
 
 
 def _is_current(me, attr) -> bool:
@@ -63,28 +66,37 @@ def refresh_caches() -> int:
 
 
 @persistent
-def _relink(*_args):
+def on_load(*_args):
     relink_colors()
 
 
 @persistent
-def _after_undo(*_args):
+def on_undo(*_args):
     refresh_caches()
     relink_colors()
 
 
-HANDLERS = {"undo_post": _after_undo, "redo_post": _after_undo, "load_post": _relink}
+@persistent
+def on_save_pre(*args):
+    # Blender versions that pass the target path give it as a string argument; 3.4 passes none.
+    sources.store_for_save(next((a for a in args if isinstance(a, str) and a), None))
 
 
-def register():
-    for name, fn in HANDLERS.items():
-        getattr(bpy.app.handlers, name).append(fn)
-    sources.register()
+@persistent
+def on_save_post(*_args):
+    sources.store_relative()
 
 
-def unregister():
-    sources.unregister()
-    for name, fn in HANDLERS.items():
-        handlers = getattr(bpy.app.handlers, name)
-        if fn in handlers:
-            handlers.remove(fn)
+@persistent
+def on_depsgraph(scene, depsgraph=None):
+    """Dragging the plane: rebuild the live surfaces when it moved; a newly picked sheet: its
+    membership attribute."""
+    ins = getattr(scene, "hbc_inspect", None)
+    if ins is None:
+        return
+    try:
+        inspect.follow_picked_sheet(bpy.context)
+        if ins.plane is not None and ins.direct_cells:
+            inspect.refresh_all(bpy.context, only_moved=True)
+    except Exception as e:  # noqa: BLE001 - a handler cannot report; the surface stays as it was
+        print(f"hbc: live surface: {e}")

@@ -1,4 +1,4 @@
-"""Fixtures of the add-on tests inside Blender (run by tests/blender/run_pytest_in_blender.py).
+"""Fixtures of the add-on tests inside Blender (run by tests/run_pytest_in_blender.py).
 
 HBC_ADDON_DIR: the add-on package assembled by the build (<build>/addon/hybrid_base_complex, with
 the compiled hbc inside); HBC_DATA_DIR: the shared meshes. A missing variable fails the tests.

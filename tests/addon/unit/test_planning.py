@@ -4,7 +4,7 @@ containers, Table 1 row); the geometry of real meshes is in test_structure.py.""
 import numpy as np
 import pytest
 
-from hybrid_base_complex import planning as P
+from hybrid_base_complex.plan import planning as P
 
 
 def test_package_imports_without_bpy():

@@ -8,69 +8,10 @@ for the scene builders.
 
 from __future__ import annotations
 
-import functools
-import glob
-import os
-import re
-import sys
-
 import numpy as np
 
 from . import planning as P
-
-
-class ModuleMismatch(ImportError):
-    """The compiled hbc module is missing or was built for another Python than this Blender's."""
-
-
-def _built_for(folder):
-    """The Pythons (e.g. "CPython 3.11, linux x86_64") of the compiled modules in `folder`."""
-    found = []
-    for path in sorted(glob.glob(os.path.join(folder, "_core.*"))):
-        m = re.match(r"_core\.cpython-(\d)(\d+)-([a-z0-9_]+)-([a-z]+)", os.path.basename(path))
-        if m:
-            found.append(f"CPython {m.group(1)}.{m.group(2)} ({m.group(4)} {m.group(3)})")
-    return found
-
-
-def mismatch_message() -> str:
-    """Plain words for a Blender whose Python the add-on's compiled module was not built for."""
-    here = f"{sys.version_info[0]}.{sys.version_info[1]}"
-    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "hbc")
-    built = _built_for(folder)
-    have = f"built for {', '.join(built)}" if built else "not in this add-on"
-    return (f"The compiled hbc module is {have}, but this Blender runs CPython {here} "
-            f"({sys.platform}). Build it for this Python: `{sys.executable or 'python'} -m pip install .` "
-            f"in the hbc source folder (or CMake with -DPython_EXECUTABLE=<this Python>), or install the "
-            f"extension package that bundles a wheel for CPython {here}.")
-
-
-def import_hbc():
-    """The hbc module: the copy bundled in the add-on package (release zip), else one on sys.path
-    (the extension's wheel, or a development checkout with PYTHONPATH=<build>/python). Raises
-    ModuleMismatch, saying which Python the bundled module was built for and how to build it for
-    this one, when neither imports."""
-    try:
-        from . import hbc  # type: ignore[attr-defined]
-        return hbc
-    except ImportError:
-        pass
-    try:
-        import hbc  # type: ignore[no-redef]
-        return hbc
-    except ImportError:
-        raise ModuleMismatch(mismatch_message()) from None
-
-
-@functools.lru_cache(maxsize=1)
-def module_problem():
-    """None when the hbc module imports here, else the sentence mismatch_message() gives (asked
-    once: the panel draws often, and a module does not appear while Blender runs)."""
-    try:
-        import_hbc()
-    except ModuleMismatch as e:
-        return str(e)
-    return None
+from .native import import_hbc
 
 
 def _csr(obj, name):
@@ -243,7 +184,7 @@ class Structure:
         return self._soup("sheet", sheet, shrink)
 
     def sheet_highlights(self, sheet: int, radius: float):
-        """Highlights per SPEC §6: (unmatched dots, shared dots, self-parallel edge lines,
+        """The picked sheet's highlights: (unmatched dots, shared dots, self-parallel edge lines,
         self-intersecting cells soup)."""
         a = self.analysis
         off, items = _csr(a, "sheet_unmatched_vertices")

@@ -22,7 +22,7 @@ def roots():
 
 
 def layer_objects(root, layer):
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import scene as S
 
     coll = S.find_layer(root, layer)
     assert coll is not None, f"no {layer} layer under {root.name}"
@@ -40,13 +40,13 @@ def test_register_unregister_twice(addon):
 
 
 def test_addon_uses_bundled_hbc(addon):
-    from hybrid_base_complex.structure import import_hbc
+    from hybrid_base_complex.plan.native import import_hbc
 
     hbc = import_hbc()
     assert hbc.__name__ == "hybrid_base_complex.hbc", hbc.__file__
 
 
-REPO = pathlib.Path(__file__).resolve().parents[2]
+REPO = pathlib.Path(__file__).resolve().parents[3]
 #: The malformed files of the project's corpus that are plain mesh files on disk (the fuzz
 #: regressions per reader; analyze/ holds files prefixed by a reader byte, not meshes).
 MALFORMED = sorted(p for d in ("medit", "ovm", "ovmb", "hybrid", "hedra")
@@ -69,7 +69,7 @@ def test_malformed_file_cancels_with_its_message(clean_scene, path):
     """Cancelled with a message naming the file and no Python class name, the scene unchanged.
     (Cancelling is what keeps the undo history as it was: Blender pushes undo steps for FINISHED
     operators only; background mode has no undo history to inspect.)"""
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import scene as S
 
     before = S.datablock_names()
     text = import_error(path)
@@ -79,7 +79,7 @@ def test_malformed_file_cancels_with_its_message(clean_scene, path):
 
 
 def test_missing_file_cancels(clean_scene, tmp_path):
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import scene as S
 
     before = S.datablock_names()
     text = import_error(tmp_path / "missing.ovm")
@@ -90,7 +90,7 @@ def test_missing_file_cancels(clean_scene, tmp_path):
 def test_non_utf8_bytes_reach_the_report(clean_scene, tmp_path):
     """A token that is not UTF-8 (bytes ff fe) arrives as MeshFormatError with U+FFFD for each
     byte, through the binding and through the operator."""
-    from hybrid_base_complex.structure import import_hbc
+    from hybrid_base_complex.plan.native import import_hbc
 
     hbc = import_hbc()
     bad = tmp_path / "latin1.mesh"
@@ -103,8 +103,8 @@ def test_non_utf8_bytes_reach_the_report(clean_scene, tmp_path):
 
 
 def test_failed_layer_build_leaves_scene_unchanged(clean_scene, monkeypatch, data_dir):
-    from hybrid_base_complex import layers as L
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import layers as L
+    from hybrid_base_complex.blender import scene as S
 
     assert bpy.ops.import_mesh.hbc(filepath=str(data_dir / "openvolumemesh" / "Cylinder.ovm"),
                                    analyze=False) == {"FINISHED"}
@@ -125,8 +125,8 @@ def test_failed_layer_build_leaves_scene_unchanged(clean_scene, monkeypatch, dat
 
 @pytest.mark.parametrize("index", range(5))
 def test_import_every_shared_mesh(clean_scene, data_dir, index):
-    from hybrid_base_complex import session
-    from hybrid_base_complex.structure import import_hbc
+    from hybrid_base_complex.plan import session
+    from hybrid_base_complex.plan.native import import_hbc
 
     path = hbc_meshes(data_dir)[index]
     assert bpy.ops.import_mesh.hbc(filepath=str(path)) == {"FINISHED"}
@@ -151,7 +151,7 @@ def test_import_every_shared_mesh(clean_scene, data_dir, index):
 
 def build_every_layer_and_check(root, s):
     """Builds every layer through the operators and checks counts against the analysis."""
-    from hybrid_base_complex import planning as P
+    from hybrid_base_complex.plan import planning as P
 
     st = bpy.context.scene.hbc
     assert bpy.ops.hbc.build_all() == {"FINISHED"}
@@ -213,9 +213,9 @@ def import_mesh(data_dir, parts=TWISTCUBE, **kwargs):
 
 def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
     """Every builder on twistcube_s through the operators; picking; merged blocks."""
-    from hybrid_base_complex import planning as P
-    from hybrid_base_complex import scene as S
-    from hybrid_base_complex import session
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.plan import session
 
     root = import_mesh(data_dir)
     s = session.get(root.name)
@@ -245,7 +245,7 @@ def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
     st.sheets_all = False
     # The subsheets layer belongs to sheet `si`: picking another sheet marks it stale and hides it;
     # the Build button is then greyed out with the reason as its tooltip.
-    from hybrid_base_complex.operators import HBC_OT_build_layer
+    from hybrid_base_complex.ui.operators import HBC_OT_build_layer
 
     si = int(np.flatnonzero(types == 3)[0])
     st.sheet_index = si
@@ -265,7 +265,7 @@ def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
     assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
     (merged,) = layer_objects(root, "blocks")
     assert merged["hbc_owner"] == "component"
-    from hybrid_base_complex.panels import picked_block
+    from hybrid_base_complex.ui.panels import picked_block
 
     bpy.context.view_layer.objects.active = merged
     merged.select_set(True)
@@ -308,7 +308,7 @@ def test_rebuild_gives_first_build_names(clean_scene, data_dir):
 
 
 def test_second_import_lands_beside_the_first(clean_scene, data_dir):
-    from hybrid_base_complex.operators import model_boxes
+    from hybrid_base_complex.ui.operators import model_boxes
 
     first = import_mesh(data_dir)
     (lo1, hi1), = model_boxes()
@@ -320,9 +320,9 @@ def test_second_import_lands_beside_the_first(clean_scene, data_dir):
 
 
 def test_build_all_shows_one_layer_and_reports(clean_scene, data_dir, capsys):
-    from hybrid_base_complex import planning as P
-    from hybrid_base_complex import scene as S
-    from hybrid_base_complex.operators import BUILD_ALL, BUILD_ALL_SHOWN
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.ui.operators import BUILD_ALL, BUILD_ALL_SHOWN
 
     root = import_mesh(data_dir)
     assert bpy.ops.hbc.build_all() == {"FINISHED"}
@@ -389,8 +389,8 @@ def test_save_move_reopen_rebuild(clean_scene, data_dir, tmp_path):
 
 
 def test_source_gone_says_which_and_keeps_layers(clean_scene, data_dir, tmp_path):
-    from hybrid_base_complex import scene as S
-    from hybrid_base_complex import session
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.plan import session
 
     shutil.copy(data_dir / "hybrid-base-complex" / "test_2.HYBRID", tmp_path / "test_2.HYBRID")
     root = import_mesh(tmp_path, ("test_2.HYBRID",))
@@ -410,8 +410,8 @@ def test_source_gone_says_which_and_keeps_layers(clean_scene, data_dir, tmp_path
 
 
 def test_copy_table1_row(clean_scene, data_dir):
-    from hybrid_base_complex import planning as P
-    from hybrid_base_complex import session
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.plan import session
 
     root = import_mesh(data_dir)
     stats = session.get(root.name).stats()
@@ -464,11 +464,17 @@ class _Recorder:
         self._log.append(("set", name, value))
 
 
-def draw_all(context):
-    from hybrid_base_complex import panels
+def sidebar_panels():
+    """The Hex Structure panels held to the sidebar's width, in registration order. The Look inside
+    panel (HBC_PT_inspect) is not: its colour-map line is longer than a sidebar row."""
+    from hybrid_base_complex.ui import addon, panels
 
+    return [c for c in addon.CLASSES if issubclass(c, bpy.types.Panel) and c is not panels.HBC_PT_inspect]
+
+
+def draw_all(context):
     log = []
-    for cls in panels.classes[1:]:
+    for cls in sidebar_panels():
         if not hasattr(cls, "poll") or cls.poll(context):
             options = getattr(cls, "draw_options", None)
             panel = SimpleNamespace(layout=_Recorder(log), layer=getattr(cls, "layer", ""),
@@ -481,8 +487,8 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     """Every label the panels draw fits the default sidebar width (panels.MAX_LABEL),
     every property drawn has a tooltip, the panel order is fixed, and the selection box is always
     there (it never appears or disappears, moving buttons)."""
-    from hybrid_base_complex import panels
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.ui import panels
+    from hybrid_base_complex.blender import scene as S
 
     root = import_mesh(data_dir)
     assert bpy.ops.hbc.build_all() == {"FINISHED"}
@@ -501,7 +507,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     assert all(tip for _, tip in props), [t for t, tip in props if not tip]
     # Panel order (bl_order within each parent) and no poll on the selection panel.
     by_parent = {}
-    for cls in panels.classes[1:]:
+    for cls in sidebar_panels():
         by_parent.setdefault(getattr(cls, "bl_parent_id", ""), []).append((cls.bl_order, cls.bl_label))
     assert [label for _, label in sorted(by_parent["HBC_PT_main"])] == [
         "Table 1", "Layers", "Legend", "Selection"]
@@ -511,7 +517,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     bpy.context.view_layer.objects.active = None
     assert ("label", "Nothing picked", "") in draw_all(bpy.context)
     # The Table 1 labels are buttons whose tooltip says what they mean.
-    from hybrid_base_complex import planning as P
+    from hybrid_base_complex.plan import planning as P
 
     assert P.TABLE1_MEANING["|C_B|"] == "Blocks (components) of the base complex"
     assert P.TABLE1_MEANING["T_GSH"] == "Time to extract and classify the sheets"
@@ -519,7 +525,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     assert bpy.ops.hbc.build_layer(layer="sheet") == {"FINISHED"}
     legend = [t for k, t, _ in draw_all(bpy.context) if k == "label"]
     assert "Dot: unmatched" in legend and "Dot: shared vertex" in legend
-    from hybrid_base_complex import session
+    from hybrid_base_complex.plan import session
 
     words = f"Valence {int(session.get(root.name).analysis.graph.chain_valence[0])} edge"
     assert words not in legend  # the graph layer is hidden after Build All
@@ -529,7 +535,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
 
 
 def test_sheet_list_rows_filter_and_sort(clean_scene, data_dir):
-    from hybrid_base_complex import panels
+    from hybrid_base_complex.ui import panels
 
     import_mesh(data_dir)
     st = bpy.context.scene.hbc
@@ -559,7 +565,7 @@ sys.path.insert(0, dst)
 import bpy
 import hybrid_base_complex as addon
 addon.register()
-from hybrid_base_complex.structure import module_problem
+from hybrid_base_complex.plan.native import module_problem
 print("PROBLEM:", module_problem())
 try:
     bpy.ops.import_mesh.hbc(filepath=os.path.join(os.environ["HBC_DATA_DIR"], "hybrid-base-complex", "test_2.HYBRID"))

@@ -1,6 +1,7 @@
 """Everything the add-on decides without Blender: palettes, colour and opacity mapping, the names
 of collections and layers, and the containers of every layer's geometry as flat numpy arrays
-(soups, polylines, dots); the faces and line points themselves come from hbc. No ``bpy`` here, so plain pytest tests it (tests/addon_unit).
+(soups, polylines, dots); the faces and line points themselves come from hbc. No ``bpy`` here, so
+plain pytest tests it (tests/addon/unit).
 
 Arrays follow the hbc module's conventions: int32 ids, float32 positions, CSR lists as
 (offsets, items) pairs.
@@ -9,6 +10,7 @@ Arrays follow the hbc module's conventions: int32 ids, float32 positions, CSR li
 from __future__ import annotations
 
 import colorsys
+import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -39,8 +41,6 @@ def layer_collection_name(mesh_name: str, layer: str) -> str:
 
 
 def mesh_name_from_path(path: str) -> str:
-    import os
-
     base = os.path.basename(path)
     for suffix in (".ovmb", ".ovm", ".mesh", ".hybrid", ".hedra", ".msh", ".vtk", ".vtu"):
         if base.lower().endswith(suffix):

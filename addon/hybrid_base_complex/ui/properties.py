@@ -1,11 +1,19 @@
-"""Scene settings of the add-on (bpy.types.Scene.hbc) and the sheet list items."""
+"""Scene settings of the add-on (bpy.types.Scene.hbc), the sheet list items, the inspection's
+settings (bpy.types.Scene.hbc_inspect) and the source path of an imported mesh
+(bpy.types.Collection.hbc_path), with the update callbacks that act on the scene when they change.
+ui/addon.py adds them to Blender's types."""
 
 import bpy
 from bpy.props import (BoolProperty, CollectionProperty, EnumProperty, FloatProperty, FloatVectorProperty,
                        IntProperty, PointerProperty, StringProperty)
 
-
-from . import planning as P
+from ..blender import inspect
+from ..blender import layers
+from ..blender import scene
+from ..blender.context import active_root, find_root
+from ..plan import inspection as IP
+from ..plan import planning as P
+from ..plan import session
 
 
 class HBCSheetItem(bpy.types.PropertyGroup):
@@ -73,11 +81,8 @@ class HBCSettings(bpy.types.PropertyGroup):
                          description="Lay subsheets out side by side with their wireframe beneath")
 
 
-
 def _sheets_visibility(settings):
-    from . import layers, scene
-
-    root = layers.find_root(settings.active_mesh) if settings.active_mesh else None
+    root = find_root(settings.active_mesh) if settings.active_mesh else None
     coll = scene.find_layer(root, "sheets") if root is not None else None
     if coll is not None:
         layers.show_sheets([ob for ob in scene.objects_in(coll) if "hbc_sheet" in ob], settings)
@@ -88,9 +93,7 @@ def _sheet_picked(settings, context):
     sheet) is marked stale and hidden, and the picked-sheet layer is rebuilt (with auto_show)."""
     if not settings.active_mesh:
         return
-    from . import layers, scene, session
-
-    root = layers.find_root(settings.active_mesh)
+    root = find_root(settings.active_mesh)
     if root is None:
         return
     _sheets_visibility(settings)
@@ -113,31 +116,81 @@ def _sheet_picked(settings, context):
 # Legend swatches: one read-only colour property per planning.LEGEND_COLORS key.
 HBCSettings.__annotations__.update({f"legend_{k}": _legend_color(c) for k, c in P.LEGEND_COLORS.items()})
 
-classes = (HBCSheetItem, HBCSettings)
 
+# ---------------------------------------------------------------------------------------------
+# Looking inside (blender/inspect.py)
+
+def _upd(self, context):
+    inspect.apply(context)
+
+
+def _upd_color(self, context):
+    inspect.recolor(context)
+    inspect.refresh_all(context)
+
+
+def _upd_cells(self, context):
+    """Showing the cells needs the direct view rebuilt (with its cells object)."""
+    root = active_root(context)
+    s = session.get(root.name) if root is not None else None
+    if s is not None and scene.find_layer(root, "direct") is not None:
+        layers.build_layer(root, "direct", s, context.scene.hbc)
+
+
+class HBCInspectSettings(bpy.types.PropertyGroup):
+    enabled: BoolProperty(name="Filters", default=True, update=_upd,
+                          description="Apply the inspection filters to the cell-based layers")
+    direct_cells: BoolProperty(name="Cells in direct view", default=False, update=_upd_cells,
+                               description="Show every cell in the direct view (to look inside)")
+    color_by_quality: BoolProperty(name="Colour by quality", default=False, update=_upd_color,
+                                   description="Colour the direct view's cells by scaled Jacobian (viridis)")
+    plane: PointerProperty(name="Plane", type=bpy.types.Object, update=_upd,
+                           description="Empty whose XY plane cuts; cells on its +Z side are hidden")
+    slice: BoolProperty(name="Slice", default=False, update=_upd)
+    flip: BoolProperty(name="Flip", default=False, update=_upd, description="Hide the other side")
+    peel: IntProperty(name="Peel", default=0, min=0, soft_max=20, update=_upd,
+                      description="Hide the cells fewer than this many layers from the boundary")
+    show_hex: BoolProperty(name="Hex", default=True, update=_upd)
+    show_tet: BoolProperty(name="Tet", default=True, update=_upd)
+    show_prism: BoolProperty(name="Prism", default=True, update=_upd)
+    show_pyramid: BoolProperty(name="Pyramid", default=True, update=_upd)
+    show_polyhedron: BoolProperty(name="Polyhedron", default=True, update=_upd)
+    filter_quality: BoolProperty(name="Quality range", default=False, update=_upd,
+                                 description="Show only the cells whose scaled Jacobian is in [min, max]")
+    quality_min: FloatProperty(name="Min", default=-1.0, min=-1.0, max=1.0, update=_upd)
+    quality_max: FloatProperty(name="Max", default=1.0, min=-1.0, max=1.0, update=_upd)
+    sheet_only: BoolProperty(name="Picked sheet only", default=False, update=_upd,
+                             description="Show only the cells of the sheet picked in the sheet list")
+    surface_above: IntProperty(name="Live surface above", default=100000, min=0,
+                               description="Meshes with more cells show only the surface of the kept cells in "
+                                           "the direct view, rebuilt in C++ when a filter or the plane changes "
+                                           "(fast for 10^6 cells); smaller ones hold every cell, filtered by "
+                                           "geometry nodes")
+    # Legend swatches: the colour map at LEGEND_VALUES (display only).
+    for _i, _c in enumerate(IP.quality_colors(IP.LEGEND_VALUES)):
+        __annotations__[f"legend_{_i}"] = FloatVectorProperty(
+            name=f"{IP.LEGEND_VALUES[_i]:.2f}", subtype="COLOR", size=3, min=0.0, max=1.0,
+            default=tuple(float(x) for x in _c[:3]))
+    del _i, _c
+
+
+# ---------------------------------------------------------------------------------------------
+# The source path of an imported mesh
 
 def _get_source(root):
     return root.get("hbc_source", "")
 
 
 def _set_source(root, value):
-    from . import session
-
     root["hbc_source"] = value
     session.drop(root.name)  # read again from the new path on the next build
 
 
-def register_props():
-    bpy.types.Scene.hbc = PointerProperty(type=HBCSettings)
-    # The source path lives in the ID property "hbc_source" (it marks a collection as an imported
-    # mesh); this file-path view of it gives the panel a file browser to point the mesh at its file
-    # again. A get/set property stores nothing itself, so both stay one value in every Blender
-    # (5.0 keeps bpy.props values apart from dictionary-style ID properties).
-    bpy.types.Collection.hbc_path = StringProperty(
+def source_path_property():
+    """Collection.hbc_path. The source path lives in the ID property "hbc_source" (it marks a
+    collection as an imported mesh); this file-path view of it gives the panel a file browser to
+    point the mesh at its file again. A get/set property stores nothing itself, so both stay one
+    value in every Blender (5.0 keeps bpy.props values apart from dictionary-style ID properties)."""
+    return StringProperty(
         name="Source", subtype="FILE_PATH", get=_get_source, set=_set_source,
         description="The mesh file the layers are built from (relative to the .blend when saved)")
-
-
-def unregister_props():
-    del bpy.types.Collection.hbc_path
-    del bpy.types.Scene.hbc

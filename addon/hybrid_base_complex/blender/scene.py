@@ -20,9 +20,10 @@ from collections import Counter
 
 import bpy
 import numpy as np
+from mathutils import Matrix
 
+from ..plan import planning as P
 from . import compat
-from . import planning as P
 
 COLOR_ATTR = "hbc_color"
 OWNER_ATTR = "owner"
@@ -279,15 +280,10 @@ class Transaction:
                 bpy.data.batch_remove(ids)
 
 
-_IDENTITY = None
+_IDENTITY = Matrix.Identity(4)
 
 
 def _is_identity(m) -> bool:
-    global _IDENTITY
-    if _IDENTITY is None:
-        from mathutils import Matrix
-
-        _IDENTITY = Matrix.Identity(4)
     return m == _IDENTITY
 
 
@@ -388,7 +384,7 @@ def fill_soup(me, soup: P.Soup, face_colors=None):
     compat.set_polygons(me, soup.loop_starts(), np.ascontiguousarray(soup.face_sizes, np.int32))
     owner = me.attributes.new(OWNER_ATTR, "INT", "FACE")
     owner.data.foreach_set("value", np.ascontiguousarray(soup.face_owner, np.int32))
-    if soup.face_cell is not None:  # the cell of each face, for the inspection filters (inspect.py)
+    if soup.face_cell is not None:  # the cell of each face, for the inspection filters (blender/inspect.py)
         me.attributes.new(CELL_ATTR, "INT", "FACE").data.foreach_set("value", np.ascontiguousarray(soup.face_cell, np.int32))
     if face_colors is not None:
         fc = np.asarray(face_colors, np.float32).reshape(-1, 4)
@@ -414,7 +410,8 @@ def set_materials(me, materials):
         me.materials.append(mat)
 
 
-def _mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
+def mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
+    """A new mesh (registered in tx) filled with a soup, for an object to take (fill_soup)."""
     return fill_soup(tx.mesh(name), soup, face_colors)
 
 

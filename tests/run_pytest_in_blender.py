@@ -2,8 +2,8 @@
 `bpy` module (a PyPI wheel) with Blender loaded in-process first.
 
     blender -b --factory-startup --python-exit-code 1 \
-        --python tests/blender/run_pytest_in_blender.py -- <pytest args>
-    <venv>/bin/python tests/blender/run_pytest_in_blender.py <pytest args>
+        --python tests/run_pytest_in_blender.py -- <pytest args>
+    <venv>/bin/python tests/run_pytest_in_blender.py <pytest args>
 
 The process exits with pytest's status (5, "no tests collected", is non-zero, hence a failure).
 With the bpy module it exits without the interpreter's shutdown: bpy 4.2 crashes while Python

@@ -61,7 +61,7 @@ def test_hbc_comes_from_the_package(installed):
     """4.2+: the module of the extension's wheel for this Python; 3.x: the copy inside the zip."""
     from importlib import import_module
 
-    hbc = import_module(f"{installed}.structure").import_hbc()
+    hbc = import_module(f"{installed}.plan.native").import_hbc()
     where = pathlib.Path(hbc.__file__).resolve()
     tag = f"cpython-{sys.version_info[0]}{sys.version_info[1]}"
     assert any(p.name.startswith("_core.") and tag in p.name for p in where.parent.iterdir()), where

@@ -4,8 +4,8 @@ structure is known by construction (native/include/hbc/generate.hpp) and of one 
 import numpy as np
 import pytest
 
-from hybrid_base_complex import planning as P
-from hybrid_base_complex.structure import Structure
+from hybrid_base_complex.plan import planning as P
+from hybrid_base_complex.plan.structure import Structure
 
 
 @pytest.fixture(scope="module")

@@ -10,11 +10,10 @@ from __future__ import annotations
 
 import time
 
-import bpy
 import numpy as np
 
+from ..plan import planning as P
 from . import inspect
-from . import planning as P
 from . import scene as S
 
 
@@ -229,8 +228,3 @@ def build_layer(root, layer, s, st, log=print):
             f"in {time.perf_counter() - t:.2f} s")
     log("hbc: " + done)
     return coll, done
-
-
-def find_root(name):
-    c = bpy.data.collections.get(name)
-    return c if c is not None and c.get("hbc_source") is not None else None

@@ -1,4 +1,4 @@
-"""Undo and redo in Blender background mode (issue 16): after undo or redo every layer looks as
+"""Undo and redo in Blender background mode: after undo or redo every layer looks as
 it did at that step - the picked sheet shown on pick (auto-show) keeps its colour attribute as the
 active and rendered one with the same colours and its material, and renders the same in Solid >
 Attribute (Workbench, colour type Attribute); a layer rebuilt in place comes back with its old
@@ -48,7 +48,7 @@ def root():
 def layer_objects(key):
     """The layer's objects, read from the collections themselves (Collection.all_objects can list
     objects an undo freed)."""
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import scene as S
 
     coll = S.find_layer(root(), key)
     return sorted(coll.objects, key=lambda ob: ob.name) if coll is not None else []
@@ -225,11 +225,11 @@ def test_after_undo_handler_puts_colours_and_material_back(clean_scene, data_dir
     """Whatever an undo may leave (here done by hand): the picked sheet's colour attribute neither
     active nor rendered and its material gone; the undo/redo handler puts all back, and then has
     nothing left to fix. Runs in every Blender (no undo needed)."""
-    from hybrid_base_complex import handlers
+    from hybrid_base_complex.ui import handlers
 
     for name in ("undo_post", "redo_post"):
-        assert handlers._after_undo in getattr(bpy.app.handlers, name)
-    assert handlers._relink in bpy.app.handlers.load_post
+        assert handlers.on_undo in getattr(bpy.app.handlers, name)
+    assert handlers.on_load in bpy.app.handlers.load_post
     assert bpy.ops.import_mesh.hbc(filepath=str(data_dir.joinpath(*TWISTCUBE))) == {"FINISHED"}
     bpy.context.scene.hbc.sheet_index = 0
     assert bpy.ops.hbc.build_layer(layer="sheet") == {"FINISHED"}
@@ -241,7 +241,7 @@ def test_after_undo_handler_puts_colours_and_material_back(clean_scene, data_dir
     me.color_attributes.render_color_index = me.color_attributes.active_color_index
     me.materials.clear()
     assert colours(layer_objects("sheet")[0])[:2] + (colours(layer_objects("sheet")[0])[3],) == ("other", "other", [])
-    handlers._after_undo(bpy.context.scene)
+    handlers.on_undo(bpy.context.scene)
     assert_same_look(picked_sheet_look(), look)
     assert handlers.relink_colors() == 0  # nothing left to fix
 
@@ -252,7 +252,7 @@ def test_all_objects_is_fresh_after_undo(undo, data_dir):
     rebuilt in place: the mesh's collection stays the same). The undo handler refreshes the caches
     of the imported meshes' collections: after undo and redo `all_objects` lists exactly the
     objects of the collections below."""
-    from hybrid_base_complex import scene as S
+    from hybrid_base_complex.blender import scene as S
 
     assert bpy.ops.import_mesh.hbc(filepath=str(data_dir.joinpath(*TWISTCUBE))) == {"FINISHED"}
     bpy.context.scene.hbc.sheet_index = 0

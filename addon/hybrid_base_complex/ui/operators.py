@@ -1,22 +1,28 @@
-"""Operators: import, analyze, build / clear layers, copy the Table 1 row, select a merged block.
-All undoable; a failure reports what went wrong (the message, not a Python class), cancels (so
-Blender records no undo step) and leaves the scene as it was; a success reports what was built and
-how long it took."""
+"""Operators: import, analyze, build / clear layers, copy the Table 1 row, select a merged block,
+add a cut plane. All undoable; a failure reports what went wrong (the message, not a Python
+class), cancels (so Blender records no undo step) and leaves the scene as it was; a success
+reports what was built and how long it took."""
 
 from __future__ import annotations
 
 import os
 import time
 
+import bmesh
 import bpy
+import mathutils
+import numpy as np
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, StringProperty
 from bpy_extras.io_utils import ImportHelper
 
-from . import compat
-from . import layers as L
-from . import planning as P
-from . import scene as S
-from . import session, sources
+from ..blender import compat
+from ..blender import inspect
+from ..blender import layers as L
+from ..blender import scene as S
+from ..blender import sources
+from ..blender.context import active_root, fill_sheet_list, find_root, merged_owner_faces, structure_of, unavailable
+from ..plan import planning as P
+from ..plan import session
 
 FILTER = "*.ovm;*.ovmb;*.mesh;*.HYBRID;*.hybrid;*.hedra;*.msh;*.vtk;*.vtu"
 LAYER_ITEMS = [(k, title, f"Build the {title.lower()} layer") for k, title in P.LAYERS]
@@ -58,45 +64,8 @@ class _Progress:
                 pass
 
 
-def fill_sheet_list(settings, structure):
-    settings.sheets.clear()
-    if structure.analysis is None:
-        return
-    n = structure.num_sheets
-    if n == 0:
-        return
-    types = structure.sheet_types()
-    cells, comps = structure.sheet_sizes()
-    for i in range(n):
-        it = settings.sheets.add()
-        it.index, it.type, it.cells, it.components = i, int(types[i]), int(cells[i]), int(comps[i])
-    settings.sheet_index = min(settings.sheet_index, n - 1)
-
-
-def active_root(context):
-    st = context.scene.hbc
-    root = L.find_root(st.active_mesh) if st.active_mesh else None
-    if root is None:
-        ob = context.active_object
-        if ob is not None and ob.get("hbc_mesh"):
-            root = L.find_root(ob["hbc_mesh"])
-    return root
-
-
-def structure_of(root, analyzed, log, rho=0.8):
-    """The mesh's Structure, read again from its source (sources.resolve) when not in memory; a
-    source found beside a moved .blend is stored as found."""
-    path = sources.resolve(root)
-    if os.path.normpath(bpy.path.abspath(root["hbc_source"])) != path:
-        root["hbc_source"] = sources.stored(path)
-    return session.ensure(root.name, path, float(root.get("hbc_scale", 1.0)),
-                          float(root.get("hbc_rho", rho)), analyzed, log, tuple(root.get("hbc_offset", (0, 0, 0))))
-
-
 def model_boxes():
     """(lo, hi) world boxes of every imported mesh's objects (where new imports must not land)."""
-    import mathutils
-
     boxes = []
     for root in (c for c in bpy.data.collections if c.get("hbc_source") is not None):
         pts = [ob.matrix_world @ mathutils.Vector(corner) for ob in S.objects_in(root) for corner in ob.bound_box]
@@ -215,20 +184,6 @@ class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
                                 f"in {time.perf_counter() - t0:.2f} s")
 
 
-def picked_sheet_type(st):
-    """Type of the sheet picked in the list, None when none is."""
-    return st.sheets[st.sheet_index].type if 0 <= st.sheet_index < len(st.sheets) else None
-
-
-def unavailable(context, layer):
-    """Why `layer` cannot be built now (a sentence), or None."""
-    if layer == "subsheets":
-        return P.subsheets_unavailable(picked_sheet_type(context.scene.hbc))
-    if layer == "sheet" and picked_sheet_type(context.scene.hbc) is None:
-        return "Pick a sheet in the list first"
-    return None
-
-
 class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
     """Build (or rebuild) one structure layer of the active mesh"""
 
@@ -327,7 +282,7 @@ class HBC_OT_set_active(bpy.types.Operator):
     name: StringProperty()
 
     def execute(self, context):
-        root = L.find_root(self.name)
+        root = find_root(self.name)
         if root is None:
             self.report({"ERROR"}, f"No imported mesh named {self.name!r}")
             return {"CANCELLED"}
@@ -379,19 +334,6 @@ class HBC_OT_explain(bpy.types.Operator):
         return {"CANCELLED"}  # nothing changed: no undo step
 
 
-def merged_owner_faces(ob):
-    """(owner attribute values per face, active face's owner or None) of a merged-blocks mesh in
-    edit mode, through bmesh."""
-    import bmesh
-
-    bm = bmesh.from_edit_mesh(ob.data)
-    layer = bm.faces.layers.int.get(S.OWNER_ATTR)
-    if layer is None:
-        return bm, None, None
-    face = bm.faces.active
-    return bm, layer, (int(face[layer]) if face is not None else None)
-
-
 class HBC_OT_select_block(bpy.types.Operator):
     """Select every face of the picked block (the active face's owner) in a merged mesh"""
 
@@ -407,8 +349,6 @@ class HBC_OT_select_block(bpy.types.Operator):
         return ob is not None and ob.mode == "EDIT" and ob.type == "MESH" and bool(ob.get("hbc_owner"))
 
     def execute(self, context):
-        import bmesh
-
         ob = context.active_object
         bm, layer, owner = merged_owner_faces(ob)
         if owner is None:
@@ -426,17 +366,22 @@ class HBC_OT_select_block(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class HBC_OT_add_cut_plane(bpy.types.Operator):
+    bl_idname = "hbc.add_cut_plane"
+    bl_label = "Add cut plane"
+    bl_description = "Add an Empty through the mesh centre as the slicing plane (move and turn it)"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        root = active_root(context)
+        s = session.get(root.name) if root is not None else None
+        if s is None:
+            self.report({"ERROR"}, "No mesh in memory")
+            return {"CANCELLED"}
+        lo, hi = s.points.min(axis=0), s.points.max(axis=0)
+        inspect.add_plane(context, tuple(float(x) for x in (lo + hi) / 2), size=float(np.max(hi - lo)) * 0.3)
+        return {"FINISHED"}
+
+
 def menu_import(self, context):
     self.layout.operator(HBC_OT_import.bl_idname, text="Hex-dominant mesh (.mesh/.msh/.vtk/.vtu/.ovm/.HYBRID/.hedra)")
-
-
-classes = (HBC_OT_import, HBC_OT_analyze, HBC_OT_build_layer, HBC_OT_build_all, HBC_OT_clear_layer,
-           HBC_OT_set_active, HBC_OT_copy_table1, HBC_OT_explain, HBC_OT_select_block)
-
-
-def register_menus():
-    bpy.types.TOPBAR_MT_file_import.append(menu_import)
-
-
-def unregister_menus():
-    bpy.types.TOPBAR_MT_file_import.remove(menu_import)
