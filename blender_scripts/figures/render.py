@@ -457,7 +457,7 @@ class Subject:
         picked = plan.pick_subsheets(np.diff(off), self.args.max_subsheets)
         coll = self.build("subsheets", "subsheets", spread=False)
         with self.addon.S.Transaction() as tx:
-            soup = self.s.subsheet_soup(self.sheet, sub, self.st().shrink)
+            soup = self.s.subsheet_soup(self.sheet, self.st().shrink)
             for k in picked:
                 ob = self.outline(tx, coll, f"{self.name} subsheet {k} outlines", soup.select(soup.face_owner == k))
                 if ob is not None:

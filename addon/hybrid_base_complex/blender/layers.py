@@ -152,7 +152,7 @@ def build_subsheets(tx, coll, s, st, name):
     count = int(sub.count)
     colors = P.sheet_colors(count)
     made = 0
-    all_soup = s.subsheet_soup(i, sub, st.shrink)
+    all_soup = s.subsheet_soup(i, st.shrink)
     radius = _dot_radius(s, st)
     for k in range(count):
         soup = all_soup.select(all_soup.face_owner == k)

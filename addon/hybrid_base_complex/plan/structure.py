@@ -222,8 +222,9 @@ class Structure:
     def subsheets(self, sheet: int):
         return self.analysis.subsheets(int(sheet))
 
-    def subsheet_soup(self, sheet: int, sub, shrink: float) -> P.Soup:
-        """Every subsheet of `sheet` (sub = self.subsheets(sheet)) as a block, owner = subsheet."""
+    def subsheet_soup(self, sheet: int, shrink: float) -> P.Soup:
+        """Every subsheet of `sheet` as a block, owner = subsheet (the ids of self.subsheets(sheet):
+        hbc.block_soup takes the decomposition from the analysis)."""
         return self._soup("subsheets", sheet, shrink)
 
     def subsheet_unmatched(self, sub, index: int) -> np.ndarray:

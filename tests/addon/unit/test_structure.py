@@ -156,7 +156,7 @@ def test_real_mesh_highlights_and_subsheets(shared_data_dir):
         assert (si.num_faces > 0) == (types[i] == 3)
     (sheet,) = [int(x) for x in a.self_intersecting_sheets]
     sub = s.subsheets(sheet)
-    soup = s.subsheet_soup(sheet, sub, 0.0)
+    soup = s.subsheet_soup(sheet, 0.0)
     assert set(soup.face_owner.tolist()) == set(range(int(sub.count)))
 
 
