@@ -2,7 +2,8 @@
 a fresh folder per Blender version): Blender 4.2+ installs the extension zip (manifest + hbc
 wheels, one per Python) the way its command line and Preferences do; 3.x installs the legacy zip
 (bl_info, hbc bundled). Then the add-on is enabled, teapot.hedra imported through File > Import's
-operator, every layer built, and the add-on disabled again.
+operator, every layer built (Build All, then the picked sheet and its subsheets), and the add-on
+disabled again.
 
 Runs in its own pytest session (ctest entry extension@...): the add-on must not be registered
 from the build tree as well.
@@ -72,6 +73,10 @@ def test_hbc_comes_from_the_package(installed):
 
 
 def test_import_teapot_and_build_every_layer(installed):
+    """Build All's five overview layers, then the picked sheet (the largest self-intersecting one)
+    and its subsheets: every layer of planning.LAYERS, each holding what it shows."""
+    from importlib import import_module
+
     data = os.environ.get("HBC_DATA_DIR")
     teapot = pathlib.Path(data or "") / "hybrid-base-complex" / "teapot.hedra"
     if not teapot.is_file():
@@ -80,11 +85,32 @@ def test_import_teapot_and_build_every_layer(installed):
     assert bpy.ops.import_mesh.hbc(filepath=str(teapot), build_layers=False) == {"FINISHED"}
     roots = [c for c in bpy.data.collections if c.get("hbc_source") is not None]
     assert [c.name for c in roots] == ["teapot"]
+    root = roots[0]
     assert bpy.ops.hbc.build_all() == {"FINISHED"}
-    layers = {c.get("hbc_layer") for c in roots[0].children}
-    assert {"direct", "graph", "blocks", "sheets", "wireframe"} <= layers, layers
-    blocks = next(c for c in roots[0].children if c.get("hbc_layer") == "blocks")
-    assert len(blocks.all_objects) > 0
+    st = bpy.context.scene.hbc
+    self_intersecting = [it for it in st.sheets if it.type == 3]
+    assert self_intersecting, "teapot.hedra has self-intersecting sheets"
+    sheet = max(self_intersecting, key=lambda it: it.cells).index
+    st.sheet_index = sheet
+    assert bpy.ops.hbc.build_layer(layer="sheet") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="subsheets") == {"FINISHED"}
+
+    layers = {c.get("hbc_layer"): list(c.all_objects) for c in root.children}
+    every = [key for key, _ in import_module(f"{installed}.plan.planning").LAYERS]
+    assert sorted(layers) == sorted(every), layers.keys()
+    empty = [key for key, objects in layers.items() if not objects]
+    assert not empty, empty
+    # The picked sheet: its blocks and highlights, all of that sheet.
+    assert {ob.get("hbc_sheet") for ob in layers["sheet"]} == {sheet}
+    assert any(ob.get("hbc_highlight") is None for ob in layers["sheet"])
+    # The subsheets: one block object per subsheet of the analysis, each with its wireframe.
+    s = import_module(f"{installed}.plan.session").get(root.name)
+    count = int(s.subsheets(sheet).count)
+    assert count >= 2
+    blocks = [ob for ob in layers["subsheets"] if ob.get("hbc_owner") == "subsheet"]
+    assert sorted(ob["hbc_subsheet"] for ob in blocks) == list(range(count))
+    assert {ob.get("hbc_sheet") for ob in layers["subsheets"]} == {sheet}
+    assert any(ob.get("hbc_wireframe") for ob in layers["subsheets"])
 
 
 def test_disable_removes_everything(installed):
