@@ -52,9 +52,26 @@ def test_contact_sheet_size_and_content():
 
 
 def test_table_places_rows_and_columns():
-    cells = [[tile(20, 10, 0.2), tile(20, 10, 0.4)], [None, tile(20, 10, 0.6)]]
-    out = C.table(cells, [tile(15, 6, 0.0)] * 2, [tile(20, 5, 0.0)] * 2)
-    assert out.shape == (C.PAD + 5 + 4 + 2 * (10 + C.PAD), C.PAD + 15 + 4 + 2 * (20 + C.PAD), 4)
+    tw, th, gap = 20, 10, 4
+    cells = [[tile(tw, th, 0.2), tile(tw, th, 0.4)], [None, tile(tw, th, 0.6)]]
+    row_labels = [tile(15, 6, 0.1), tile(15, 6, 0.3)]
+    col_labels = [tile(tw, 5, 0.5), tile(tw, 5, 0.7)]
+    out = C.table(cells, row_labels, col_labels, gap=gap)
+    x0, y0 = C.PAD + 15 + gap, C.PAD + 5 + gap  # the first cell's corner: after the labels
+    assert out.shape == (y0 + 2 * (th + C.PAD), x0 + 2 * (tw + C.PAD), 4)
+    for r, row in enumerate(cells):
+        for c, cell in enumerate(row):
+            x, y = x0 + c * (tw + C.PAD), y0 + r * (th + C.PAD)
+            inside = out[y + 1:y + th - 1, x + 1:x + tw - 1, :3]  # within the tile's one-pixel frame
+            expected = 1.0 if cell is None else cell[0, 0, 0]  # an empty cell shows the background
+            assert np.allclose(inside, expected), (r, c)
+            assert np.allclose(out[y + th:y + th + C.PAD, x:x + tw, :3], 1.0)  # the gap below it
+    for r, label in enumerate(row_labels):  # left of its row, centred on the row's height
+        y = y0 + r * (th + C.PAD) + (th - 6) // 2
+        assert np.allclose(out[y:y + 6, C.PAD:C.PAD + 15, :3], label[0, 0, 0]), r
+    for c, label in enumerate(col_labels):  # above its column
+        x = x0 + c * (tw + C.PAD)
+        assert np.allclose(out[C.PAD:C.PAD + 5, x:x + tw, :3], label[0, 0, 0]), c
 
 
 def test_tiles_panel_and_measures():

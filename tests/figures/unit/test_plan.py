@@ -105,9 +105,11 @@ def test_frame_holds_every_point_centred(size, az, el):
     assert (depth > 0).all()
     assert np.abs(uv).max() <= 0.94 + 1e-6          # inside, with the margin
     assert np.abs(uv).max() >= 0.90                  # and tight on its tightest side
-    # centred: the extreme points are symmetric on both axes (to within a pixel)
-    assert abs(uv[:, 0].max() + uv[:, 0].min()) < 2.0 / size[0] * 2
-    assert abs(uv[:, 1].max() + uv[:, 1].min()) < 2.0 / size[1] * 2
+    # centred: the middle of the extreme points is the image's centre to within a pixel (uv spans
+    # [-1, 1] over the image, so a pixel is 2 / size in uv)
+    for axis in (0, 1):
+        middle = (uv[:, axis].max() + uv[:, axis].min()) / 2
+        assert abs(middle) < 2.0 / size[axis], (axis, middle * size[axis] / 2)
     near, far = plan.clip_range(cam, pts)
     assert 0 < near < depth.min() and far > depth.max()
 
