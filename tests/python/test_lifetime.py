@@ -29,19 +29,23 @@ def test_no_leak_over_100_load_cycles(shared_data_dir, tmp_path, resident_growth
 
     growth = resident_growth(cycle)
 
-    # What one mesh costs at least (its exposed arrays; the C++ side holds more incidences), so
-    # that the bound is known to be meaningful: leaking a whole mesh per cycle would exceed it a
-    # hundredfold, and even the float32 copy of the points alone (87 kB a cycle) would exceed it.
+    # The bound is meaningful: one mesh costs at least its exposed arrays (1.8 MB for this one; the
+    # C++ side holds more incidences), so a mesh leaked per cycle would add at least 100 MB over the
+    # 100 cycles, 25 times the bound, and even the float32 copy of the points alone (87 kB a cycle,
+    # 8.7 MB in all) would exceed it.
+    bound = 4e6
     m = hbc.load(path)
     per_mesh = sum(getattr(m, name).nbytes for name in PROPERTIES
                    if isinstance(getattr(m, name), np.ndarray))
-    assert per_mesh > 1e6
-    assert growth < 4e6, f"resident memory grew by {growth / 1e6:.1f} MB over 100 cycles"
+    assert 100 * per_mesh >= 25 * bound, per_mesh
+    assert 100 * m.points.nbytes > bound, m.points.nbytes
+    assert growth < bound, f"resident memory grew by {growth / 1e6:.1f} MB over 100 cycles"
 
 
 def test_load_releases_the_gil(tmp_path, hbc_cli, main_thread_share):
-    # The shared meshes now load in 20-30 ms, too quick for the main thread's CPU share to mean
-    # much next to starting and joining the thread: a generated 60^3 grid (216,000 hexes, 14 MB) takes about 0.1 s a load.
+    # The shared meshes load in 20-30 ms, too quick for the main thread's CPU share to mean much next
+    # to starting and joining the thread: a generated 60^3 grid (216,000 hexes, 14 MB) takes about
+    # 0.1 s a load.
     path = tmp_path / "grid60.mesh"
     subprocess.run([hbc_cli, "generate", "grid", "--size", "60", "60", "60", "-o", str(path)],
                    check=True, capture_output=True)
