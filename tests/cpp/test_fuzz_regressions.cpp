@@ -9,7 +9,10 @@
 #include <filesystem>
 #include <numbers>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "../fuzz/fuzz_targets.hpp"
@@ -21,6 +24,25 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path regressions_dir() { return fs::path(__FILE__).parent_path().parent_path() / "fuzz" / "regressions"; }
+
+// The harnesses replayed here, one per folder under regressions/: a reader per format, and
+// load + analyze.
+const std::map<std::string, Format> kReaderHarnesses = {
+    {"ovm", Format::Ovm},       {"ovmb", Format::Ovmb}, {"medit", Format::Medit}, {"hybrid", Format::Hybrid},
+    {"hedra", Format::Hedra},   {"msh", Format::Msh},   {"vtk", Format::Vtk},     {"vtu", Format::Vtu}};
+const std::string kAnalyzeHarness = "analyze";
+
+std::optional<Format> format_of_harness(const std::string& h) {
+  const auto it = kReaderHarnesses.find(h);
+  if (it == kReaderHarnesses.end()) return std::nullopt;
+  return it->second;
+}
+
+std::vector<std::string> reader_harness_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, format] : kReaderHarnesses) names.push_back(name);
+  return names;
+}
 
 std::string file_bytes(const fs::path& p) {
   std::ifstream f(p, std::ios::binary);
@@ -44,10 +66,13 @@ struct Outcome {
   int accepted = 0, rejected = 0;
 };
 
+// A harness without kept inputs fails: a replay of nothing would pass having checked nothing.
 template <class Run>
 Outcome replay(const std::string& harness, Run&& run) {
   Outcome o;
-  for (const fs::path& p : inputs_of(harness)) {
+  const std::vector<fs::path> inputs = inputs_of(harness);
+  if (inputs.empty()) ADD_FAILURE() << "no regression inputs under " << regressions_dir() / harness;
+  for (const fs::path& p : inputs) {
     SCOPED_TRACE(p.string());
     try {
       const bool accepted = run(file_bytes(p));
@@ -64,38 +89,37 @@ Outcome replay(const std::string& harness, Run&& run) {
   return o;
 }
 
-Format format_of_harness(const std::string& h) {
-  if (h == "ovm") return Format::Ovm;
-  if (h == "ovmb") return Format::Ovmb;
-  if (h == "medit") return Format::Medit;
-  if (h == "hybrid") return Format::Hybrid;
-  if (h == "msh") return Format::Msh;
-  if (h == "vtk") return Format::Vtk;
-  if (h == "vtu") return Format::Vtu;
-  return Format::Hedra;
-}
-
 class ReaderRegressions : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ReaderRegressions, OnlyInputErrorOrAMesh) {
   const std::string h = GetParam();
-  const Outcome o = replay(h, [&](const std::string& b) { return fuzz::read_and_build(format_of_harness(h), b); });
+  const std::optional<Format> format = format_of_harness(h);
+  ASSERT_TRUE(format) << "no reader harness named " << h;
+  const Outcome o = replay(h, [&](const std::string& b) { return fuzz::read_and_build(*format, b); });
   RecordProperty("accepted", o.accepted);
   RecordProperty("rejected", o.rejected);
 }
 
-INSTANTIATE_TEST_SUITE_P(Fuzz, ReaderRegressions, ::testing::Values("ovm", "ovmb", "medit", "hybrid", "hedra", "msh", "vtk", "vtu"));
+INSTANTIATE_TEST_SUITE_P(Fuzz, ReaderRegressions, ::testing::ValuesIn(reader_harness_names()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 TEST(FuzzRegressions, AnalyzeOnlyInputErrorOrAnAnalysis) {
-  replay("analyze", [](const std::string& b) { return fuzz::load_and_analyze(b); });
+  replay(kAnalyzeHarness, [](const std::string& b) { return fuzz::load_and_analyze(b); });
 }
 
-// The folder is where the harnesses' findings are kept: make sure the test is not silently looking
-// at an empty or misplaced one.
-TEST(FuzzRegressions, FolderHoldsInputs) {
-  size_t n = 0;
-  for (const char* h : {"ovm", "ovmb", "medit", "hybrid", "hedra", "msh", "vtk", "vtu", "analyze"}) n += inputs_of(h).size();
-  EXPECT_GT(n, 0u) << "no inputs under " << regressions_dir();
+// The folder is where the harnesses' findings are kept: every folder in it must be a harness
+// replayed above (a folder of a new or misspelt harness would otherwise never be replayed), and
+// every harness must have its folder.
+TEST(FuzzRegressions, FoldersAreTheReplayedHarnesses) {
+  ASSERT_TRUE(fs::is_directory(regressions_dir())) << regressions_dir();
+  for (const auto& e : fs::directory_iterator(regressions_dir()))
+    if (e.is_directory()) {
+      const std::string name = e.path().filename().string();
+      EXPECT_TRUE(name == kAnalyzeHarness || format_of_harness(name)) << "no harness replays " << e.path();
+    }
+  for (const std::string& h : reader_harness_names()) EXPECT_TRUE(fs::is_directory(regressions_dir() / h)) << h;
+  EXPECT_TRUE(fs::is_directory(regressions_dir() / kAnalyzeHarness));
+  EXPECT_FALSE(format_of_harness("no-such-harness"));
 }
 
 // The harness code path itself must tell the outcomes apart, or the replays above prove nothing.
