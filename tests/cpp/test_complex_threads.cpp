@@ -1,10 +1,8 @@
 // The hybrid singularity graph, the base complex, the sheet domain, the sheets and the
-// complex-level view split over threads: every array equals the single-threaded result. A small
+// views at both levels split over threads: every array equals the single-threaded result. A small
 // grain splits even these small meshes into many ranges, so that range boundaries fall inside
 // chains, components, patches, classes and sheets.
 #include <gtest/gtest.h>
-
-#include <tuple>
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
@@ -12,76 +10,6 @@
 
 namespace hbc {
 namespace {
-
-void expect_same_graph(const SingularityGraph& a, const SingularityGraph& b) {
-  EXPECT_EQ(a.edge_class, b.edge_class);
-  EXPECT_EQ(a.edge_irregular, b.edge_irregular);
-  test::expect_same_csr(a.chain_verts, b.chain_verts, "chain_verts");
-  test::expect_same_csr(a.chain_edges, b.chain_edges, "chain_edges");
-  EXPECT_EQ(std::tie(a.chain_valence, a.chain_boundary, a.chain_closed, a.edge_chain),
-            std::tie(b.chain_valence, b.chain_boundary, b.chain_closed, b.edge_chain));
-  EXPECT_EQ(std::tie(a.pseudo_singular_edges, a.non_manifold_edges, a.singular_vertices, a.pseudo_singular_vertices),
-            std::tie(b.pseudo_singular_edges, b.non_manifold_edges, b.singular_vertices, b.pseudo_singular_vertices));
-  EXPECT_EQ(a.vert_pseudo_singular, b.vert_pseudo_singular);
-}
-
-void expect_same_complex(const BaseComplex& a, const BaseComplex& b) {
-  EXPECT_EQ(a.face_separation, b.face_separation);
-  EXPECT_EQ(a.edge_complex, b.edge_complex);
-  EXPECT_EQ(a.vert_corner, b.vert_corner);
-  EXPECT_EQ(a.cell_component, b.cell_component);
-  test::expect_same_csr(a.component_cells, b.component_cells, "component_cells");
-  EXPECT_EQ(a.component_kind, b.component_kind);
-  test::expect_same_csr(a.component_adjacency, b.component_adjacency, "component_adjacency");
-  EXPECT_EQ(a.face_patch, b.face_patch);
-  test::expect_same_csr(a.patch_faces, b.patch_faces, "patch_faces");
-  EXPECT_EQ(a.patch_components, b.patch_components);
-  test::expect_same_csr(a.patch_corners, b.patch_corners, "patch_corners");
-  test::expect_same_csr(a.patch_curves, b.patch_curves, "patch_curves");
-  EXPECT_EQ(a.edge_curve, b.edge_curve);
-  test::expect_same_csr(a.curve_verts, b.curve_verts, "curve_verts");
-  test::expect_same_csr(a.curve_edges, b.curve_edges, "curve_edges");
-  EXPECT_EQ(a.curve_closed, b.curve_closed);
-  EXPECT_EQ(a.corners, b.corners);
-  test::expect_same_csr(a.component_patches, b.component_patches, "component_patches");
-  test::expect_same_csr(a.component_curves, b.component_curves, "component_curves");
-  test::expect_same_csr(a.component_corners, b.component_corners, "component_corners");
-  EXPECT_EQ(a.self_adjacent_faces, b.self_adjacent_faces);
-}
-
-void expect_same_domain(const SheetDomain& a, const SheetDomain& b) {
-  EXPECT_EQ(a.cell_block, b.cell_block);
-  test::expect_same_csr(a.block_cells, b.block_cells, "block_cells");
-  test::expect_same_csr(a.block_curves, b.block_curves, "block_curves");
-  test::expect_same_csr(a.block_adjacency, b.block_adjacency, "block_adjacency");
-  test::expect_same_csr(a.curve_edges, b.curve_edges, "curve_edges");
-  EXPECT_EQ(a.curve_ends, b.curve_ends);
-  test::expect_same_csr(a.curve_blocks, b.curve_blocks, "curve_blocks");
-  test::expect_same_csr(a.curve_parallels, b.curve_parallels, "curve_parallels");
-  test::expect_same_csr(a.curve_non_hex_cells, b.curve_non_hex_cells, "curve_non_hex_cells");
-  EXPECT_EQ(a.block_component, b.block_component);
-  EXPECT_EQ(a.face_joins, b.face_joins);
-}
-
-void expect_same_sheets(const Sheets& a, const Sheets& b) {
-  test::expect_same_csr(a.sheet_blocks, b.sheet_blocks, "sheet_blocks");
-  test::expect_same_csr(a.sheet_cells, b.sheet_cells, "sheet_cells");
-  test::expect_same_csr(a.sheet_curves, b.sheet_curves, "sheet_curves");
-  test::expect_same_csr(a.sheet_edges, b.sheet_edges, "sheet_edges");
-  test::expect_same_csr(a.sheet_non_hex_cells, b.sheet_non_hex_cells, "sheet_non_hex_cells");
-  ASSERT_EQ(a.classes.size(), b.classes.size());
-  for (size_t s = 0; s < a.classes.size(); ++s) {
-    const SheetClass &x = a.classes[s], &y = b.classes[s];
-    EXPECT_EQ(x.type, y.type) << s;
-    EXPECT_EQ(x.type1, y.type1) << s;
-    EXPECT_EQ(x.type2, y.type2) << s;
-    EXPECT_EQ(x.type3, y.type3) << s;
-    EXPECT_EQ(x.unmatched_vertices, y.unmatched_vertices) << s;
-    EXPECT_EQ(x.shared_vertices, y.shared_vertices) << s;
-    EXPECT_EQ(x.self_parallel_curves, y.self_parallel_curves) << s;
-    EXPECT_EQ(x.self_intersecting_blocks, y.self_intersecting_blocks) << s;
-  }
-}
 
 // A component's neighbours, patches, curves and corners by their definition, from the separation
 // faces of its cells: the stage gathers them from its patches instead (a patch's faces all have the
@@ -120,7 +48,7 @@ void expect_thread_independent(const Mesh& m) {
   const SingularityGraph g = singularity_graph(m, one);
   for (int threads : {2, 3}) {
     SCOPED_TRACE(threads);
-    expect_same_graph(g, singularity_graph(m, Threads{threads, 8}));
+    test::expect_same(g, singularity_graph(m, Threads{threads, 8}), "the graph");
   }
   const BaseComplex bc = base_complex(m, g, one);
   expect_component_rows_from_faces(m, bc);
@@ -128,7 +56,7 @@ void expect_thread_independent(const Mesh& m) {
     SCOPED_TRACE(threads);
     const Threads par{threads, 8};
     const BaseComplex other = base_complex(m, g, par);
-    expect_same_complex(bc, other);
+    test::expect_same(bc, other, "the base complex");
     {
       // The whole view, and that of every other component (a proper region: fans of the region's
       // cells, and the whole-mesh adjacency).
@@ -137,12 +65,18 @@ void expect_thread_independent(const Mesh& m) {
       std::vector<int32_t> region;
       for (size_t k = 0; k < bc.num_components(); k += 2) region.push_back(static_cast<int32_t>(k));
       test::expect_same_view(complex_from_base(m, bc, region, one), complex_from_base(m, other, region, par));
+      // The mesh-level view, whole and of the cells of those components.
+      test::expect_same_view(complex_from_mesh(m, one), complex_from_mesh(m, par));
+      std::vector<int32_t> cells;
+      for (int32_t k : region)
+        for (int32_t c : bc.component_cells[static_cast<size_t>(k)]) cells.push_back(c);
+      test::expect_same_view(complex_from_mesh(m, cells, one), complex_from_mesh(m, cells, par));
     }
     for (Level level : {Level::Complex, Level::Mesh}) {
       SCOPED_TRACE(level == Level::Complex ? "complex level" : "mesh level");
       const SheetDomain d = sheet_domain(m, bc, level, one), d2 = sheet_domain(m, other, level, par);
-      expect_same_domain(d, d2);
-      expect_same_sheets(extract_sheets(m, d, one), extract_sheets(m, d2, par));
+      test::expect_same(d, d2, "the sheet domain");
+      test::expect_same(extract_sheets(m, d, one), extract_sheets(m, d2, par), "the sheets");
     }
   }
 }

@@ -439,13 +439,13 @@ TEST(LoadParallel, EveryArrayEqualsTheSingleThreadedLoad) {
     SCOPED_TRACE(rel);
     HBC_REQUIRE_DATA(rel);
     const Mesh one = load_mesh(test::data_path(rel), Format::Auto, Threads{1, 64});
-    for (int threads : {2, 3}) expect_same_mesh(one, load_mesh(test::data_path(rel), Format::Auto, Threads{threads, 64}));
+    for (int threads : {2, 3}) test::expect_same(one, load_mesh(test::data_path(rel), Format::Auto, Threads{threads, 64}), "the mesh");
   }
   // The all-singleton worst case: a grid with about 1 % of its cells split into pyramids.
   std::vector<std::array<int, 3>> split;
   for (int i = 0; i < 12 * 12 * 12; i += 97) split.push_back({i % 12, i / 12 % 12, i / 144});
   const Mesh one = build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), Threads{1, 64});
-  expect_same_mesh(one, build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), Threads{2, 64}));
+  test::expect_same(one, build_mesh(generate_split(12, 12, 12, SplitKind::Pyramids, split), Threads{2, 64}), "the mesh");
 }
 
 // `in` with vertex v renumbered p[v]: points moved, face loops and element corners mapped.

@@ -79,6 +79,9 @@ struct CellComplex {
   int32_t other_vertex(int32_t e, int32_t v) const {
     return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0];
   }
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const CellComplex&) const = default;
 };
 
 // The fine mesh. `region_cells` (mesh cell ids, any order, repeats ignored) restricts the view;

@@ -37,6 +37,9 @@ struct Csr {
     items.reserve(items_);
   }
   void push_row(std::span<const T> r) { push_row(r.begin(), r.end()); }
+
+  // The same rows.
+  bool operator==(const Csr&) const = default;
 };
 
 // Transposes an incidence: rows of `a` hold column ids in [0, ncols); the result has ncols rows,

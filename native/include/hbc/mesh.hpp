@@ -104,6 +104,9 @@ struct Mesh {
   int32_t other_vertex(int32_t e, int32_t v) const {
     return edge_verts[e][0] == v ? edge_verts[e][1] : edge_verts[e][0];
   }
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const Mesh&) const = default;
 };
 
 // The faces and cells around edge e. Where the fan is ok they come in cyclic order f0 c0 f1 c1 ...,

@@ -30,6 +30,9 @@ struct SheetClass {
   std::vector<int32_t> shared_vertices;      // curve ends shared by two parallel curves (any type)
   std::vector<int32_t> self_parallel_curves; // curves of type-2 pairs
   std::vector<int32_t> self_intersecting_blocks;  // blocks holding two parallel curves sharing an end
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const SheetClass&) const = default;
 };
 
 // The curve/block structure sheets are computed on (see the file comment). Curves are given by
@@ -49,6 +52,9 @@ struct SheetDomain {
   // nf: faces across which the direction orthogonal to the face continues from one hex cell to
   // the other (complex level: non-separation faces inside a component; mesh level: none).
   std::vector<uint8_t> face_joins;
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const SheetDomain&) const = default;
 };
 
 // `threads`: see threads.hpp; the result is the same for any thread count.
@@ -66,6 +72,9 @@ struct Sheets {
 
   size_t size() const { return classes.size(); }
   size_t count(SheetType t) const;
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const Sheets&) const = default;
 };
 
 Sheets extract_sheets(const Mesh& mesh, const SheetDomain& domain, const Threads& threads = {});
@@ -81,6 +90,9 @@ struct Subsheets {
   Csr<int32_t> cells;    // per subsheet, mesh hex cells, sorted
   std::vector<SheetClass> classes;
   size_t size() const { return classes.size(); }
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const Subsheets&) const = default;
 };
 
 // Breadth-first decomposition of one sheet (SPEC §3): grow from the lowest unused curve over

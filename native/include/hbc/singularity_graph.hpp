@@ -43,6 +43,9 @@ struct SingularityGraph {
   size_t num_singular_edges() const { return chain_edges.items.size(); }
   // Singular, pseudo-singular or non-manifold: the edges that stop separation surfaces.
   bool is_structural(int32_t e) const { return edge_class[e] != EdgeClass::Regular; }
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const SingularityGraph&) const = default;
 };
 
 // `threads`: see threads.hpp; the graph is the same for any

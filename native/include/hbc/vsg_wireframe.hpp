@@ -88,6 +88,9 @@ struct VsgWireframe {
   size_t size() const { return kind.size(); }
   int64_t wireframe_edges() const { return static_cast<int64_t>(kind.size()); }
   int64_t wireframe_edges_simplified() const { return static_cast<int64_t>(simplified_edges.rows()); }
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const VsgWireframe&) const = default;
 };
 
 // Distinct mesh edges along the rows (complex edges) of `chains` (a complex edge of k+1 points

@@ -23,6 +23,9 @@ struct WireframeStyle {
   std::vector<float> point_opacity;  // aligned with the wireframe's polylines.items
   std::vector<int32_t> color_class;  // per chain
   std::vector<int32_t> color;        // per chain, in [0, palette_size)
+
+  // Every member compared, so that a member added later cannot escape the thread-count tests.
+  bool operator==(const WireframeStyle&) const = default;
 };
 
 // `threads`: see threads.hpp.
