@@ -1,7 +1,7 @@
-// VSG wireframe timings (SPEC §4, the paper's T_VSGW): building the CellComplex view plus
+// VSG wireframe timings (paper §5, its Table 1's T_VSGW): building the CellComplex view plus
 // vsg_wireframe, at the complex level (the paper's) and at the mesh level, on the shared
 // hex-dominant meshes, on a generated 100×100×100 grid (10^6 cells) and on that grid with 1 % of its
-// cells cut into pyramids (`hbc generate split --random 10000`: every cell a block, the worst
+// cells cut into pyramids (`hbc generate split --random 10000`: every cell a component, the worst
 // case, 3 million wireframe chains at the complex level). Loading, the singularity
 // graph and the base complex are computed once beforehand and not timed.
 // Targets on one core: teapot and twistcube_s in milliseconds (<= 10 ms), 10^6 cells < 1 s.

@@ -1,5 +1,6 @@
-// hbc wireframe: the VSG wireframe (SPEC §4) of a whole mesh or of one sheet, as JSON (polylines
-// with colours, opacities and simplification flags) or as OBJ line objects, one per colour class.
+// hbc wireframe: the VSG wireframe (paper §5) of a whole mesh or of one sheet, as JSON (the complete
+// wireframe's polylines with colours, opacities and simplification flags) or as OBJ line objects,
+// one per colour class.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <memory>
@@ -29,7 +30,7 @@ struct WireframeArgs {
 const char* stop_name(TraceStop s) {
   switch (s) {
     case TraceStop::None: return "none";
-    case TraceStop::VsgVertex: return "vsg_vertex";
+    case TraceStop::SingularVertex: return "vsg_vertex";
     case TraceStop::Boundary: return "boundary";
     case TraceStop::NoContinuation: return "no_continuation";
   }
@@ -140,15 +141,15 @@ void run_wireframe(const WireframeArgs& args) {
 
 void add_wireframe(CLI::App& app) {
   auto args = std::make_shared<WireframeArgs>();
-  CLI::App* cmd = add_mesh_command(app, "wireframe", "VSG wireframe (SPEC §4) of the mesh or of one sheet", args->input,
+  CLI::App* cmd = add_mesh_command(app, "wireframe", "VSG wireframe (paper §5) of the mesh or of one sheet", args->input,
                                    args->json, "JSON: polylines with colours, opacities, flags (the default)");
   add_level(*cmd, args->level, "complex (the paper's) or mesh");
-  cmd->add_option("--rho", args->rho, "partial-parallel threshold of the colour classes")
+  cmd->add_option("--rho", args->rho, "partial-parallel threshold of the colour classes (presentation only)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   add_sheet_option(*cmd, args->sheet, "restrict to sheet N (complex-level sheets) and its adjacent non-hex cells");
   cmd->add_flag("--obj", args->obj, "OBJ line objects, one per colour class")->excludes("--json");
-  cmd->add_flag("--all", args->all, "OBJ: also write the hidden (non-important) edges");
+  cmd->add_flag("--all", args->all, "OBJ: every chain of the complete wireframe, not only those on the simplified one");
   cmd->add_option("-o", args->out, "output file (default: stdout)");
   cmd->callback([args] { run_wireframe(*args); });
 }

@@ -1,5 +1,6 @@
 #pragma once
-// The whole pipeline on one mesh, with per-stage timings, and the Table 1 statistics (SPEC §5).
+// The whole pipeline on one mesh, with per-stage timings, and the statistics of the paper's Table 1
+// (§7.3; docs/concepts.md).
 // The CLI, the Python binding and the table command all go through here.
 #include <cstdint>
 #include <optional>
@@ -31,7 +32,7 @@ struct Timings {
   double load = 0, singularity_graph = 0, base_complex = 0, sheets = 0, subsheets = 0, vsg_wireframe = 0;
 };
 
-// The sheet stage (SPEC §3): the curve/block domain, the sheets on it and, when the subsheet
+// The sheet stage (paper §4): the curve/block domain, the sheets on it and, when the subsheet
 // stage ran too, the decomposition of every self-intersecting sheet.
 struct SheetStage {
   SheetDomain domain;
@@ -45,9 +46,9 @@ struct SheetStage {
   const Subsheets* subsheets_of(int32_t s) const;
 };
 
-// The whole-mesh VSG wireframe stage (SPEC §4).
+// The whole-mesh VSG wireframe stage (paper §5).
 struct WireframeStage {
-  CellComplex view;  // the view the wireframe was computed on
+  CellComplex view;  // the view (at wireframe_level) the wireframe was computed on
   VsgWireframe wireframe;
 };
 
@@ -55,7 +56,7 @@ struct WireframeStage {
 // (AnalysisOptions) is an optional that holds a value exactly when it ran.
 struct Analysis {
   SingularityGraph graph;
-  BaseComplex complex;
+  BaseComplex complex;  // the hybrid base complex (not a CellComplex view, whatever its level)
   std::optional<SheetStage> sheet_stage;
   std::optional<WireframeStage> wireframe_stage;
   Timings timings;
@@ -63,12 +64,13 @@ struct Analysis {
 
 Analysis analyze(const Mesh& mesh, const AnalysisOptions& options = {});
 
-// The SPEC §5 statistics. The counts of a stage that did not run hold no value.
+// The statistics: Table 1's and more (docs/concepts.md). The counts of a stage that did not run
+// hold no value.
 struct Stats {
   int64_t cells = 0, hex_cells = 0;
   double hex_ratio = 0;
   int64_t singular_edges = 0, singularities = 0, pseudo_singular_edges = 0, non_manifold_edges = 0;
-  int64_t singular_vertices = 0;
+  int64_t singular_vertices = 0;  // of the singularity graph (SingularityGraph::singular_vertices)
   int64_t components = 0, hex_components = 0;
   double hex_component_ratio = 0;
   int64_t patches = 0, curves = 0, corners = 0, self_adjacent_faces = 0;
@@ -82,7 +84,7 @@ Stats compute_stats(const Mesh& mesh, const Analysis& analysis);
 
 // A self-intersecting sheet and how many subsheets it splits into.
 struct SubsheetCount {
-  int32_t sheet = -1, blocks = 0;
+  int32_t sheet = -1, blocks = 0;  // blocks: hex components (level complex) or hex cells (level mesh)
   int64_t subsheets = 0;
 };
 

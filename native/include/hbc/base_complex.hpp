@@ -1,5 +1,5 @@
 #pragma once
-// The hybrid base complex G_B (paper §3.3, SPEC §2): separation faces traced from the hybrid
+// The hybrid base complex G_B (paper §3.3; docs/concepts.md): separation faces traced from the hybrid
 // singularity graph, the components they cut the volume into, and the patches, curves and
 // corners that bound the components.
 #include <array>
@@ -50,7 +50,7 @@ struct BaseComplex {
   Csr<int32_t> component_patches, component_curves, component_corners;
 
   // Interior separation faces with the same component on both sides (a ring cut or a dangling
-  // surface): SPEC §2 wants them counted and reported, never hidden.
+  // surface): counted and reported, never hidden.
   std::vector<int32_t> self_adjacent_faces;
 
   size_t num_components() const { return component_kind.size(); }

@@ -1,8 +1,8 @@
 #pragma once
-// A mesh-like view (vertices, edges, faces, cells) that the valence singularity graph and its
-// wireframe (SPEC §4) are computed on, at one of two levels:
+// The view: a mesh-like object (vertices, edges, faces, cells) that the valence singularity graph
+// and its wireframe (paper §5) are computed on, at one of two levels (docs/concepts.md, "Level"):
 //  - Mesh: the fine mesh as it is (edges are mesh edges, cells mesh cells);
-//  - Complex: the hybrid base complex seen as a coarse mesh (SPEC §4 "Level"): vertices are the
+//  - Complex: the hybrid base complex seen as a coarse mesh (the paper's): vertices are the
 //    corners that end curves, edges the curves (each carrying its polyline of mesh vertices),
 //    faces the patches, cells the components.
 // Either view may be restricted to a region (a subset of cells, e.g. a sheet's components plus its
@@ -70,7 +70,7 @@ struct CellComplex {
   size_t num_edges() const { return edge_verts.size(); }
   size_t num_faces() const { return face_source.size(); }
   size_t num_cells() const { return cell_source.size(); }
-  // Interior valence other than 4, boundary valence other than 2 (SPEC §0).
+  // Interior valence other than 4, boundary valence other than 2 (paper §5).
   bool irregular(size_t e) const {
     return edge_boundary[e] ? edge_valence[e] != 2 : edge_valence[e] != 4;
   }

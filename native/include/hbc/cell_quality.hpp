@@ -50,8 +50,8 @@
 //               exists for a general polyhedron): a cube corner gives 1, a regular hexagonal
 //               prism's corner sin 120°.
 // A corner with a zero-length edge contributes 0 (Verdict returns its VERDICT_DBL_MAX flag there),
-// as does a corner where fewer than 3 faces of the cell meet (a flat or folded cell, SPEC §1).
-// A cell is inverted when q < 0.
+// as does a corner where fewer than 3 faces of the cell meet (a flat or folded cell; the vertex is
+// then non-manifold). A cell is inverted when q < 0.
 //
 // Edge ratio: longest / shortest edge of the cell (Verdict's hex, tet and wedge edge ratio, the
 // same rule for the other types); +infinity for a cell with a zero-length edge; >= 1.

@@ -1,7 +1,8 @@
 #pragma once
-// Face selections: which mesh faces to draw, each oriented out of the block it bounds and tagged
-// with the id of that block. One type for every consumer: the OpenMesh surfaces of
-// `hbc export-surface` (surface.hpp) and the block soups of the viewer (render_geometry.hpp).
+// Face selections: which mesh faces to draw, each oriented out of the owner it bounds (a cell,
+// component, patch, sheet, ...) and tagged with the id of that owner. One type for every consumer:
+// the OpenMesh surfaces of `hbc export-surface` (surface.hpp) and the soups of the viewer
+// (render_geometry.hpp).
 // Every selector is a pure function; faces follow the mesh's cell and face order.
 #include <cstdint>
 #include <optional>
@@ -16,16 +17,16 @@
 namespace hbc {
 
 // All arrays have one entry per selected face: `faces` mesh face ids, `cells` the mesh cell on the
-// block's side (the face points out of it), `reversed` 1 when the face's stored loop is to be
-// walked backwards to point out of that cell, `ids` the block (patch, component, sheet, cell, ...)
-// that owns it and sets its colour. A face bounding two blocks appears once for each.
+// owner's side (the face points out of it), `reversed` 1 when the face's stored loop is to be
+// walked backwards to point out of that cell, `ids` the owner (patch, component, sheet, cell, ...)
+// that holds it and sets its colour. A face bounding two owners appears once for each.
 struct FaceSelection {
   std::vector<int32_t> faces;
   std::vector<int32_t> cells;
   std::vector<uint8_t> reversed;
   std::vector<int32_t> ids;
   // Surfaces: weld vertices only between faces of the same id, so that each id is its own piece
-  // (faces of one id are then consecutive). Soups always keep blocks apart.
+  // (faces of one id are then consecutive). Soups always keep owners apart.
   bool separate_ids = false;
 
   size_t size() const { return faces.size(); }
@@ -42,12 +43,12 @@ FaceSelection boundary_selection(const Mesh& mesh);
 // Every face of each listed cell, id = the cell.
 FaceSelection cells_selection(const Mesh& mesh, std::span<const int32_t> cells);
 
-// Each row of `sets` (mesh cells) is a block, id = its row (with `only`, that row alone): the
+// Each row of `sets` (mesh cells) is an owner, id = its row (with `only`, that row alone): the
 // faces of its cells whose other side is not in the row (or is outside the mesh). Rows may share
 // cells. Sheets, subsheets and the hex region are such sets.
 FaceSelection cell_set_selection(const Mesh& mesh, const Csr<int32_t>& sets, std::optional<int32_t> only = std::nullopt);
 
-// The surface of the hex cells (one block, id 0): hex faces whose other side is not a hex cell.
+// The surface of the hex cells (one owner, id 0): hex faces whose other side is not a hex cell.
 FaceSelection hex_region_selection(const Mesh& mesh);
 
 // Every separation face once, id = its patch; oriented out of its first cell.

@@ -1,6 +1,6 @@
 #pragma once
-// The two levels every structure stage can work at (SPEC §4 "Level"): the fine mesh as it is, or
-// the hybrid base complex seen as a coarse mesh (the paper's). Sheets, the cell complex and the
+// The two levels every structure stage can work at (docs/concepts.md, "Level"): the fine mesh as it
+// is, or the hybrid base complex seen as a coarse mesh (the paper's, §4 and its T_VSGW). Sheets, the cell complex and the
 // VSG wireframe all take this one enum; the CLI and the binding parse its name with level_from_name.
 #include <cstdint>
 #include <string_view>

@@ -1,5 +1,5 @@
 #pragma once
-// The conforming polyhedral volume mesh (SPEC §0) in flat index arrays, and the builder that turns
+// The conforming polyhedral volume mesh (paper §3.1; docs/concepts.md) in flat index arrays, and the builder that turns
 // what a reader found in a file (MeshInput) into it, checking that it is a conforming mesh.
 #include <array>
 #include <cstdint>
@@ -81,7 +81,7 @@ struct Mesh {
 
   std::vector<uint8_t> vert_boundary, edge_boundary, face_boundary;
   std::vector<CellType> cell_type;
-  std::vector<uint8_t> vert_non_manifold;           // SPEC §1
+  std::vector<uint8_t> vert_non_manifold;           // non-manifold vertex (docs/concepts.md)
 
   int64_t dropped_faces = 0;                        // faces in the file used by no cell
   int64_t dropped_edges = 0;                        // edges in the file used by no kept face

@@ -1,8 +1,9 @@
 #pragma once
 // Render-ready data made from a mesh and its analysis, so that a viewer (the Blender add-on, via
 // the Python binding) only copies flat arrays and never loops over elements itself:
-//  - block soups: the faces of a set of "blocks" (cells, components, sheets, ...), each block a
-//    separate piece with its own vertex copies so it can be shrunk toward its own centroid;
+//  - soups (BlockSoup, block_soup: names kept from the Python API hbc.block_soup; the pieces are
+//    owners, not sheet blocks): the faces of a set of owners (cells, components, sheets, ...), each
+//    owner a separate piece with its own vertex copies so it can be shrunk toward its own centroid;
 //  - polyline point positions;
 //  - per-sheet / per-subsheet classification flattened to arrays.
 // The region of a sheet and its wireframe are part of the analysis (region.hpp).
@@ -20,12 +21,12 @@
 
 namespace hbc {
 
-// What the blocks of a soup are; the owner id of each face is given in parentheses.
+// What the owners of a soup are; the owner id of each face is given in parentheses.
 enum class SoupKind : uint8_t {
   Cells,        // every cell, all its faces (cell id)
   Components,   // every base-complex component, its separation faces, once per side (component id)
   Sheets,       // every sheet: the boundary faces of its cell set (sheet id); a cell of two
-                // sheets is in both blocks
+                // sheets is in both owners
   Subsheets,    // the subsheets of one self-intersecting sheet, as Sheets (subsheet id)
   Sheet,        // one sheet split by component: the boundary faces of the sheet's cells in each
                 // component (component id)
@@ -97,13 +98,14 @@ struct ClassArrays {
   std::vector<uint8_t> flags;                 // 3n: type1, type2, type3 configuration present (0/1)
   Csr<int32_t> unmatched_vertices;            // n rows: mesh vertices left unmatched
   Csr<int32_t> shared_vertices;               // n rows: mesh vertices shared by two parallel curves
-  Csr<int32_t> self_parallel_curves;          // n rows: curve ids (SheetDomain curves) of type-2 pairs
-  Csr<int32_t> self_intersecting_components;  // n rows: base-complex component ids holding type-3 pairs
+  Csr<int32_t> self_parallel_curves;          // n rows: curve ids (SheetDomain curves) of type 2 pairs
+  Csr<int32_t> self_intersecting_components;  // n rows: base-complex component ids holding type 3 pairs
 };
 ClassArrays flatten_classes(const SheetDomain& domain, std::span<const SheetClass> classes);
 
 // Rows of sheet blocks (SheetDomain block ids) as sorted, distinct base-complex component ids (at
-// the complex level a block is a component; at the mesh level several hex cells share one).
+// the complex level a block is a component; at the mesh level a hex cell, several of which share
+// one). The Python binding shows sheets and subsheets by components.
 Csr<int32_t> blocks_as_components(const SheetDomain& domain, const Csr<int32_t>& blocks);
 
 }  // namespace hbc

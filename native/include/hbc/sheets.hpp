@@ -1,11 +1,12 @@
 #pragma once
-// Sheets of the hybrid base complex (paper §4, SPEC §3): extraction, perfect / type-1 / type-2 /
-// type-3 classification with a maximum cardinality matching, and the decomposition of
-// self-intersecting sheets into subsheets.
+// Sheets of the hybrid base complex (paper §4; docs/concepts.md): extraction, classification as
+// perfect, type 1 (non-hex), type 2 (self-parallel) or type 3 (self-intersecting) with a maximum
+// cardinality matching, and the decomposition of self-intersecting sheets into subsheets (§4.3).
 //
-// Sheets are computed at one of two levels. At the complex level (the paper's) the blocks are the
-// hex components of the base complex, the curves its curves and the quads its patches. At the mesh
-// level the blocks are the hex cells, the curves the mesh edges and the quads the cells' faces.
+// Sheets are computed at one of two levels, and a block is what a sheet is made of. At the complex
+// level (the paper's) the blocks are the base complex's components of hex cells (cube-like, ring or
+// other), the curves its curves and the quads its quad patches. At the mesh level the blocks are
+// the hex cells, the curves the mesh edges and the quads the cells' faces.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -28,7 +29,7 @@ struct SheetClass {
   bool type1 = false, type2 = false, type3 = false;  // every configuration present
   std::vector<int32_t> unmatched_vertices;   // mesh vertices left uncovered by a maximum matching
   std::vector<int32_t> shared_vertices;      // curve ends shared by two parallel curves (any type)
-  std::vector<int32_t> self_parallel_curves; // curves of type-2 pairs
+  std::vector<int32_t> self_parallel_curves; // curves of type 2 pairs
   std::vector<int32_t> self_intersecting_blocks;  // blocks holding two parallel curves sharing an end
 
   // Every member compared, so that a member added later cannot escape the thread-count tests.
@@ -95,9 +96,10 @@ struct Subsheets {
   bool operator==(const Subsheets&) const = default;
 };
 
-// Breadth-first decomposition of one sheet (SPEC §3): grow from the lowest unused curve over
+// Breadth-first decomposition of one sheet (paper §4.3): grow from the lowest unused curve over
 // parallel curves, never adding a curve that shares an end with a curve already taken inside one
-// block of the sheet.
+// block of the sheet; the blocks around a rejected curve leave the subsheet, and curves left with no
+// block seed later subsheets (docs/validation.md).
 Subsheets decompose_sheet(const SheetDomain& domain, const Sheets& sheets, int32_t sheet);
 
 // The self-intersecting sheet with most cells (ties: lowest id); none without such a sheet.

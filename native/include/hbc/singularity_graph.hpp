@@ -1,5 +1,5 @@
 #pragma once
-// The hybrid singularity graph G_S (paper §3.2, SPEC §1): singular edges chained into
+// The hybrid singularity graph G_S (paper §3.2; docs/concepts.md): singular edges chained into
 // singularities, pseudo-singular edges (touching a non-hex cell), non-manifold edges (touching a
 // non-manifold vertex), and the vertices where they end.
 #include <array>
@@ -35,7 +35,9 @@ struct SingularityGraph {
 
   std::vector<int32_t> pseudo_singular_edges;     // sorted edge ids
   std::vector<int32_t> non_manifold_edges;        // sorted edge ids
-  std::vector<int32_t> singular_vertices;         // sorted: chain ends that are not pseudo-singular
+  // Sorted: singularity ends that are not pseudo-singular. Not VsgWireframe::singular_vertices
+  // (the wireframe's), although `hbc analyze` and `hbc wireframe` print both as "singular_vertices".
+  std::vector<int32_t> singular_vertices;
   std::vector<int32_t> pseudo_singular_vertices;  // sorted: ends of pseudo-singular / non-manifold edges
   std::vector<uint8_t> vert_pseudo_singular;      // nv
 
@@ -54,7 +56,7 @@ SingularityGraph singularity_graph(const Mesh& mesh, const Threads& threads = {}
 
 // Chains the edges marked in `member` (ne flags) into maximal chains of equal `edge_value`
 // (ne values, or empty for one value everywhere), cut at vertices marked in `stop` (nv flags), at
-// vertices with other than two member edges and where the value changes. Shared by the hybrid singularity graph and the VSG (SPEC §4).
+// vertices with other than two member edges and where the value changes. Shared by the hybrid singularity graph and the VSG (paper §5).
 // Output rows as in SingularityGraph::chain_verts / chain_edges; closed[s] marks loops.
 // Chains are ordered by their lowest edge id; an open chain runs from its end with the lower
 // vertex id, a closed one from its lowest vertex towards its lower-id neighbour.

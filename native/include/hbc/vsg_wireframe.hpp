@@ -1,7 +1,7 @@
 #pragma once
-// The valence singularity graph (VSG) and its wireframe (paper §5, §6.2; SPEC §4), computed on a
-// CellComplex (fine mesh or base complex, whole or restricted to a region), by the rules of the
-// authors' implementation (which made the paper's figures; docs/validation.md compares the two):
+// The valence singularity graph (VSG) and its wireframe (paper §5, §6.2; docs/concepts.md), computed on
+// a CellComplex view (fine mesh or base complex, whole or restricted to a region), by the rules of
+// the authors' implementation (which made the paper's figures; docs/validation.md compares the two):
 //
 // VSG: seed edges are the valence-irregular edges (region valence = distinct region cells; interior
 // != 4, boundary != 2). From each seed both ways, a chain continues through a vertex along the one
@@ -33,7 +33,9 @@
 namespace hbc {
 
 struct WireframeOptions {
-  double rho = 0.8;             // partial-parallel threshold for colour classes
+  // Partial-parallel threshold of the colour classes (paper §6.2, Definition 2). Presentation
+  // only: it sets WireframeStyle's classes and colours, and no count depends on it.
+  double rho = 0.8;
   double opacity_floor = 0.15;  // opacity far from irregular edges and non-hex cells
   int32_t opacity_hops = 6;     // mesh-edge hops over which opacity falls from 1 to the floor
   int32_t palette_size = 8;     // colours available to the greedy colouring
@@ -42,22 +44,26 @@ struct WireframeOptions {
   std::vector<int32_t> parallel_edges;
 };
 
-// Kind of a complete-wireframe chain: made of VSG (irregular) edges or of regular ones.
+// Kind of a complete-wireframe chain: made of VSG (irregular) edges only, or not (JSON "vsg" / "trace").
 enum class WireKind : uint8_t { Vsg = 0, Trace = 1 };
-// Where a chain's last vertex lies (None for a closed chain).
-enum class TraceStop : uint8_t { None = 0, VsgVertex = 1, Boundary = 2, NoContinuation = 3 };
+// Where a chain's last vertex lies (None for a closed chain): a singular vertex of the complete
+// wireframe (JSON "vsg_vertex", the name scripts read), the boundary, or no continuation.
+enum class TraceStop : uint8_t { None = 0, SingularVertex = 1, Boundary = 2, NoContinuation = 3 };
 
 struct VsgWireframe {
   // ---- VSG (ids of the CellComplex) ----
   std::vector<uint8_t> edge_vsg;           // ne: seed (irregular) edge
-  std::vector<uint8_t> vert_vsg;           // nv: end of a VSG chain
+  std::vector<uint8_t> vert_vsg;           // nv: end of a VSG chain (a VSG vertex)
   Csr<int32_t> vsg_chain_edges;            // VSG chains: complex edges in order
   int64_t vsg_edges = 0;                   // seed edges
   int64_t vsg_chains = 0;                  // rows of vsg_chain_edges
 
   // ---- Complete wireframe ----
-  std::vector<uint8_t> vert_singular;      // nv: singular vertex of the complete wireframe
-  std::vector<int32_t> singular_vertices;  // sorted complex vertex ids
+  // The wireframe's singular vertices (where the VSG's separation surfaces meet), not the
+  // singularity graph's (SingularityGraph::singular_vertices, singularity ends); both are printed
+  // as "singular_vertices", by `hbc wireframe` and by `hbc analyze` respectively.
+  std::vector<uint8_t> vert_singular;      // nv
+  std::vector<int32_t> singular_vertices;  // sorted view vertex ids
   // Row w of `edges` lists complex edges in order along chain w; row w of `polylines` the mesh
   // vertices along it (a closed chain repeats its first vertex at the end). ends[w] are its two end
   // vertices ({-1,-1} for a closed chain).
@@ -73,14 +79,17 @@ struct VsgWireframe {
   // 0 = kept; 1 = both ends redundant; 2 = in a removable pair at a singular vertex.
   std::vector<uint8_t> non_important;
   std::vector<uint8_t> reactivated;        // non-important but kept (continues a kept chain)
-  std::vector<uint8_t> shown;              // every edge lies on the simplified wireframe
+  std::vector<uint8_t> shown;              // every edge lies on the simplified wireframe (JSON/Python "shown")
   // The simplified wireframe: kept chains re-chained through the vertices that stop being singular.
   Csr<int32_t> simplified_edges;
   Csr<int32_t> simplified_polylines;
-  // Distinct mesh edges covered by the VSG chains, the complete and the simplified wireframe.
+  // Distinct mesh edges covered by the VSG chains, the complete and the simplified wireframe
+  // (JSON/Python vsg_mesh_edges, wireframe_mesh_edges, wireframe_mesh_edges_simplified).
   int64_t vsg_mesh_edges = 0, wireframe_mesh_edges = 0, simplified_mesh_edges = 0;
-  int64_t reference_components = 0;        // connected components of the complete wireframe
-  int64_t shown_components = 0;            // connected components of the simplified one
+  // Connected pieces of the complete and of the simplified wireframe. The names are the JSON and
+  // Python keys, which scripts read: "reference" is the complete wireframe, "shown" the simplified.
+  int64_t reference_components = 0;
+  int64_t shown_components = 0;
 
   // ---- Presentation: a separate step's result (wireframe_style.hpp), empty from vsg_wireframe_graph ----
   WireframeStyle style;

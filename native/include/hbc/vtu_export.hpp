@@ -4,7 +4,7 @@
 // OUT.vtu holds the cells (hexahedra, tetrahedra, prisms and pyramids as VTK's own cell types in
 // VTK's corner order; when the mesh has any other cell, every cell as VTK_POLYHEDRON with outward
 // faces, since meshio and other readers cannot mix polyhedra with other types) with
-//   cell data  component   Int32  base-complex component (block) id
+//   cell data  component   Int32  base-complex component id
 //              is_hex      UInt8  1 for a hexahedron
 //              cell_type   UInt8  hbc's CellType: 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron
 //              sheet       Int32  lowest id of a sheet holding the cell, -1 for none (when sheets ran)

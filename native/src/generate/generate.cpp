@@ -456,14 +456,14 @@ MeshInput generate_cylinder(int radius_cells, int layers) {
       pl.xy.push_back(radius * cs);
       pl.xy.push_back(radius * sn);
     }
-    // Slot o is a triangle when it holds the middle of one of d equal blocks of the ring: the
-    // quads of a block then lean at most half a cell either way.
-    auto block_mid = [&](int64_t o) { return (2 * o * d + n_out) / (2 * static_cast<int64_t>(n_out)); };
+    // Slot o is a triangle when it holds the middle of one of d equal arcs of the ring: the
+    // quads of an arc then lean at most half a cell either way.
+    auto arc_mid = [&](int64_t o) { return (2 * o * d + n_out) / (2 * static_cast<int64_t>(n_out)); };
     int i = 0;
     for (int o = 0; o < n_out; ++o) {
       const int32_t o0 = outer[static_cast<size_t>(o)], o1 = outer[static_cast<size_t>((o + 1) % n_out)];
       const int32_t i0 = inner[static_cast<size_t>(i % n_in)];
-      if (block_mid(o + 1) > block_mid(o)) {
+      if (arc_mid(o + 1) > arc_mid(o)) {
         const int32_t t[3] = {i0, o0, o1};
         pl.polys.push_row(t, t + 3);
       } else {

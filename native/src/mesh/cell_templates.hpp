@@ -1,7 +1,7 @@
 #pragma once
 // The four standard volume elements as face templates over their corners, and the rule that turns
 // an element whose corners repeat (as At-Most-Hexa and converters write prisms, pyramids and tets
-// as hexahedra) into the polyhedron it stands for (SPEC §0). Shared by every reader of
+// as hexahedra) into the polyhedron it stands for (docs/concepts.md, "Hex cell"). Shared by every reader of
 // element-list formats (MEDIT, Gmsh, VTK, VTU) so that all give the same cells, and by the
 // builder, which reads the faces of an element straight from its corners.
 #include <array>

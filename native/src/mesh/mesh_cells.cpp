@@ -125,7 +125,7 @@ double signed_volume(const Mesh& m, size_t c, const Flips& state) {
 }
 
 // The cell's type from its face sizes and vertices; marks the vertices it meets in fewer than 3
-// of its faces as non-manifold (the cell is flat or folded there, SPEC §1).
+// of its faces as non-manifold (the cell is flat or folded there; docs/concepts.md).
 CellType classify(Mesh& m, const CellCorners& cc) {
   int tris = 0, quads = 0;
   const size_t nfc = cc.face_begin.size() - 1;

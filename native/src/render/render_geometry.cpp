@@ -29,7 +29,7 @@ constexpr std::array<std::pair<std::string_view, SoupKind>, 9> kSoupNames{{
 SoupKind soup_kind_from_name(std::string_view name) {
   for (const auto& [n, k] : kSoupNames)
     if (n == name) return k;
-  std::string msg = "unknown block set '" + std::string(name) + "'; expected one of:";
+  std::string msg = "unknown soup kind '" + std::string(name) + "'; expected one of:";
   for (const auto& [n, k] : kSoupNames) (msg += ' ') += n;
   throw std::invalid_argument(msg);
 }
@@ -45,7 +45,7 @@ bool soup_kind_needs_analysis(SoupKind kind) {
 FaceSelection soup_faces(const Mesh& m, const Analysis& a, SoupKind kind, std::optional<int32_t> sheet) {
   if (soup_kind_needs_sheet(kind) && !sheet) {
     const auto named = std::find_if(kSoupNames.begin(), kSoupNames.end(), [&](const auto& nk) { return nk.second == kind; });
-    throw std::invalid_argument("the block set '" + std::string(named->first) + "' needs a sheet");
+    throw std::invalid_argument("the soup kind '" + std::string(named->first) + "' needs a sheet");
   }
   switch (kind) {
     case SoupKind::Cells: {

@@ -95,7 +95,7 @@ CurveEnds sorted_curve_ends(const SheetDomain& d, const std::vector<int32_t>& cu
   return ends;
 }
 
-// The configuration of two parallel curves a and b sharing an end (SPEC §3): type 3 when a block
+// The configuration of two parallel curves a and b sharing an end (paper §4.2): type 3 when a block
 // of the sheet holds both, type 2 when they lie in adjacent blocks, type 1 otherwise.
 void classify_pair(const SheetDomain& d, int32_t a, int32_t b, const BlockMask& in_blocks, SheetClass& k) {
   bool common = false;

@@ -790,7 +790,7 @@ void fill_complete(const Region& r, const Chains& ch, const Threads& par, VsgWir
       w.valence[c] = r.valence(es[0]);
       const int32_t last = vs.back();
       w.stop[c] = closed ? TraceStop::None
-                  : w.vert_singular[last] ? TraceStop::VsgVertex
+                  : w.vert_singular[last] ? TraceStop::SingularVertex
                   : cx.vert_boundary[last] ? TraceStop::Boundary
                                            : TraceStop::NoContinuation;
     }
