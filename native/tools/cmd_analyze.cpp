@@ -1,4 +1,5 @@
-// hbc analyze FILE [--json|--csv]: the whole pipeline and the Table 1 statistics (SPEC §5).
+// hbc analyze FILE [--json|--csv]: the whole pipeline and the statistics of the paper's Table 1
+// (docs/concepts.md).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
@@ -52,10 +53,14 @@ void run_analyze(const AnalyzeArgs& args) {
 void add_analyze(CLI::App& app) {
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = add_mesh_command(app, "analyze", "hybrid singularity graph, base complex, sheets and VSG wireframe",
-                                   args->input, args->json, "print the SPEC §5 statistics as JSON");
+                                   args->input, args->json, "print the statistics (the paper's Table 1 and more) as JSON");
   cmd->add_flag("--csv", args->csv, "print them as one CSV header and row")->excludes("--json");
   add_level(*cmd, args->level, "level of sheets and wireframe");
-  cmd->add_option("--rho", args->rho, "wireframe simplification threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  // rho only sets the wireframe's colour classes: no number printed here depends on it (it reaches
+  // only the wireframe stage's time). It stays for the command lines that already pass it.
+  cmd->add_option("--rho", args->rho, "colour-class threshold of the wireframe (presentation only: no count depends on it)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_flag("--no-sheets", args->no_sheets, "skip the sheet stages");
   cmd->add_flag("--no-wireframe", args->no_wireframe, "skip the wireframe stage");
   cmd->callback([args] { run_analyze(*args); });

@@ -43,7 +43,7 @@ void run_export_vtu(const ExportVtuArgs& args) {
 
 void add_export_vtu(CLI::App& app) {
   auto args = std::make_shared<ExportVtuArgs>();
-  CLI::App* cmd = add_export_command(app, "export-vtu", "cells with block/sheet ids for ParaView (+ OUT_graph.vtu)",
+  CLI::App* cmd = add_export_command(app, "export-vtu", "cells with component and sheet ids for ParaView (+ OUT_graph.vtu)",
                                      args->input, args->out, "the .vtu file to write");
   add_sheet_option(*cmd, args->sheet, "also write in_sheet and the subsheets of this sheet");
   add_level(*cmd, args->level, "level of the sheets");

@@ -1,4 +1,4 @@
-// hbc info FILE [--json]: the counts of a mesh (SPEC §5 keys).
+// hbc info FILE [--json]: the counts of a mesh (keys in docs/concepts.md, "The mesh").
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
@@ -57,7 +57,7 @@ void run_info(const InfoArgs& args) {
 
 void add_info(CLI::App& app) {
   auto args = std::make_shared<InfoArgs>();
-  CLI::App* cmd = add_mesh_command(app, "info", "counts of the mesh (SPEC §5 keys)", args->input, args->json);
+  CLI::App* cmd = add_mesh_command(app, "info", "counts of the mesh: vertices, edges, faces, cells by type, boundary faces", args->input, args->json);
   cmd->callback([args] { run_info(*args); });
 }
 

@@ -2,7 +2,7 @@
 // The hbc command's subcommands, one file each, on CLI11. Each add_<command> registers its
 // subcommand on the top-level app: its options (typed, with ranges and choices, so CLI11 rejects
 // bad values before any work) and a callback that runs the command once the line has parsed.
-// Exit status (SPEC §5, set in hbc_main.cpp): 0 success; 1 a malformed command line (unknown
+// Exit status (set in hbc_main.cpp; docs/development.md): 0 success; 1 a malformed command line (unknown
 // option, missing argument); 2 bad input: a value an option cannot take (`--rho abc`, `--rho 7`),
 // or a file that cannot be read (message on stderr naming file and line).
 #include <CLI/CLI.hpp>

@@ -11,7 +11,7 @@
 
 namespace {
 
-// SPEC §5: a value an option cannot take is bad input (2), like a bad file; any other mistake
+// A value an option cannot take is bad input (2), like a bad file; any other mistake
 // in the command line is a usage error (1); --help and --version succeed (0).
 int exit_status(const CLI::ParseError& e, int cli11_status) {
   if (cli11_status == 0) return 0;
