@@ -76,17 +76,17 @@ template <class H, class... Opts, class Get>
 void class_arrays(py::class_<H, Opts...>& cls, const std::string& row, const std::string& rows, Get get) {
   cls.def_property_readonly((row + "_type").c_str(), [get](py::object self) -> py::array {
     return vec(get(self.cast<const H&>()).type, self);
-  }, ("uint8 (" + rows + ",): 0 perfect, 1 type 1, 2 type 2 (self-parallel), 3 type 3 (self-intersecting).").c_str());
+  }, ("uint8 (" + rows + ",): 0 perfect, 1 type 1 (non-hex), 2 type 2 (self-parallel), 3 type 3 (self-intersecting).").c_str());
   cls.def_property_readonly((row + "_flags").c_str(), [get](py::object self) -> py::array {
     const auto& f = get(self.cast<const H&>()).flags;
     return view(f.data(), {ssize(f.size() / 3), 3}, self, py::dtype::of<bool>());
-  }, ("bool (" + rows + ", 3): type-1, type-2, type-3 configurations present.").c_str());
+  }, ("bool (" + rows + ", 3): type 1, type 2, type 3 configurations present.").c_str());
   const std::tuple<const char*, Csr<int32_t> ClassArrays::*, const char*> csrs[] = {
       {"unmatched_vertices", &ClassArrays::unmatched_vertices, "mesh vertices left unmatched by a maximum matching."},
       {"shared_vertices", &ClassArrays::shared_vertices, "mesh vertices shared by two parallel curves."},
-      {"self_parallel_curves", &ClassArrays::self_parallel_curves, "curve ids of self-parallel (type-2) pairs."},
+      {"self_parallel_curves", &ClassArrays::self_parallel_curves, "curve ids of type 2 (self-parallel) pairs."},
       {"self_intersecting_components", &ClassArrays::self_intersecting_components,
-       "base-complex components holding two parallel curves sharing an end (type 3)."}};
+       "base-complex components holding two parallel curves sharing an end (type 3 pairs)."}};
   for (const auto& [name, member, doc] : csrs)
     def_csr(cls, row + "_" + name, [get, member = member](const H& h) -> const Csr<int32_t>& { return get(h).*member; },
             rows, doc);
@@ -126,7 +126,7 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
   return out;
 }
 
-// The CLI's `hbc analyze --json` object (SPEC §5) without "file": stages not run leave their keys
+// The CLI's `hbc analyze --json` object (docs/concepts.md) without "file": stages not run leave their keys
 // out, as there.
 py::dict stats_dict(const PyAnalysis& p) {
   const Stats s = compute_stats(p.mesh->mesh, p.analysis);
@@ -190,7 +190,7 @@ SubsheetsView subsheets(const PyAnalysisPtr& p, int64_t sheet) {
 
 void bind_graph(py::module_& m) {
   py::class_<GraphView> g(m, "SingularityGraph",
-                          "The hybrid singularity graph of an Analysis (SPEC section 1); arrays are views.");
+                          "The hybrid singularity graph of an Analysis (paper §3.2); arrays are views.");
   prop(g, "edge_class", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.graph.edge_class, s); },
        "uint8 (ne,): 0 regular, 1 singular, 2 pseudo-singular, 3 non-manifold.");
   prop(g, "edge_irregular", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.edge_irregular, s); },
@@ -208,7 +208,7 @@ void bind_graph(py::module_& m) {
   prop(g, "chain_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.chain_closed, s); },
        "bool (ns,): a closed loop.");
   prop(g, "singular_vertices", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.singular_vertices, s); },
-       "int32, sorted: singularity ends that are not pseudo-singular.");
+       "int32, sorted: singularity ends that are not pseudo-singular (not the wireframe's singular vertices).");
   prop(g, "pseudo_singular_vertices",
        [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.pseudo_singular_vertices, s); },
        "int32, sorted: ends of pseudo-singular and non-manifold edges.");
@@ -220,7 +220,7 @@ void bind_graph(py::module_& m) {
 }
 
 void bind_complex(py::module_& m) {
-  py::class_<ComplexView> c(m, "BaseComplex", "The hybrid base complex of an Analysis (SPEC section 2); arrays are views.");
+  py::class_<ComplexView> c(m, "BaseComplex", "The hybrid base complex of an Analysis (paper §3.3); arrays are views.");
   prop(c, "cell_component", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.cell_component, s); },
        "int32 (nc,): component of each cell.");
   prop(c, "component_kind", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.complex.component_kind, s); },
@@ -254,7 +254,7 @@ void bind_complex(py::module_& m) {
 
 void bind_subsheets(py::module_& m) {
   py::class_<SubsheetsView> c(m, "Subsheets",
-                              "The subsheets of one self-intersecting sheet (SPEC section 3); arrays are views.");
+                              "The subsheets of one self-intersecting sheet (paper §4.3); arrays are views.");
   const auto sub = [](const SubsheetsView& v) -> const Subsheets& { return v.a->decompositions()[v.index]; };
   c.def_property_readonly("sheet", [sub](const SubsheetsView& v) { return sub(v).sheet; });
   c.def_property_readonly("count", [sub](const SubsheetsView& v) { return sub(v).size(); });
@@ -289,7 +289,8 @@ void bind_analysis(py::module_& m) {
                                           "sheets, subsheets, VSG wireframe. Arrays are read-only views.");
   c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analyzed hbc.Mesh.");
   c.def_property_readonly("level", [](const PyAnalysis& p) { return level_name(p.options.wireframe_level); });
-  c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; });
+  c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; },
+                          "The wireframes' colour-class threshold (presentation only: no count depends on it).");
   c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.sheet_stage.has_value(); },
                           "The sheet stage ran (else the per-sheet arrays are empty).");
   c.def_property_readonly("has_subsheets",
@@ -298,7 +299,7 @@ void bind_analysis(py::module_& m) {
   c.def_property_readonly("has_wireframe", [](const PyAnalysis& p) { return p.analysis.wireframe_stage.has_value(); },
                           "The whole-mesh wireframe stage ran (else wireframe() computes it on demand).");
   c.def_property_readonly("stats", &stats_dict,
-                          "dict: the `hbc analyze --json` keys (SPEC section 5), timings in seconds.");
+                          "dict: the `hbc analyze --json` keys (Table 1 and more, docs/concepts.md), timings in seconds.");
   c.def_property_readonly("graph", [](const PyAnalysisPtr& p) { return GraphView{p}; });
   c.def_property_readonly("complex", [](const PyAnalysisPtr& p) { return ComplexView{p}; });
 
@@ -337,7 +338,8 @@ void bind_analysis(py::module_& m) {
   auto mesh_cls = py::reinterpret_borrow<py::class_<PyMesh, PyMeshPtr>>(m.attr("Mesh"));
   mesh_cls.def("analyze", &analyze, py::arg("rho") = 0.8, py::arg("level") = "complex", py::arg("sheets") = true,
                py::arg("subsheets") = true, py::arg("wireframe") = true, py::arg("threads") = py::none(),
-               "Runs the structure analysis (GIL released). level: 'complex' (the paper's) or 'mesh'. "
+               "Runs the structure analysis (GIL released). rho in [0, 1]: the threshold of the wireframes' "
+               "colour classes (paper §6.2; no count depends on it). level: 'complex' (the paper's) or 'mesh'. "
                "threads: how many threads the stages may use (results are the same for any number; "
                "None: HBC_THREADS, else every core).");
 }

@@ -34,8 +34,9 @@ void wire_prop(py::class_<PyWireframe>& cls, const char* name, Get get, const ch
 
 void bind_wireframe(py::module_& m) {
   py::class_<PyWireframe> c(m, "Wireframe",
-                            "A VSG wireframe (SPEC section 4): polylines of mesh vertices with per-point "
-                            "opacity and per-polyline kind, simplification flags and colours. Arrays are views.");
+                            "A VSG wireframe (paper §5): the complete wireframe's polylines of mesh vertices with per-point "
+                            "opacity and per-polyline kind, simplification flags and colours, and the simplified "
+                            "wireframe's polylines. Arrays are views.");
   c.def_property_readonly("count", [](const PyWireframe& p) { return p.w->size(); }, "Number of polylines.");
   def_csr(c, "polylines", [](const PyWireframe& p) -> auto& { return p.w->polylines; }, "count",
           "mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
@@ -45,13 +46,13 @@ void bind_wireframe(py::module_& m) {
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
             "int32 (count,): region valence of the chain's first edge.");
   wire_prop(c, "stop", [](const VsgWireframe& w) -> auto& { return w.stop; },
-            "uint8 (count,): the chain's last vertex: 0 closed chain, 1 singular, 2 boundary, 3 neither.");
+            "uint8 (count,): the chain's last vertex: 0 closed chain, 1 singular vertex of the wireframe, 2 boundary, 3 neither.");
   wire_prop(c, "shown", [](const VsgWireframe& w) -> auto& { return w.shown; },
             "bool (count,): every edge of the chain lies on the simplified wireframe.", true);
   wire_prop(c, "non_important", [](const VsgWireframe& w) -> auto& { return w.non_important; },
             "uint8 (count,): 0 kept, 1 both ends redundant, 2 in a removable pair at a singular vertex.");
   wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
-            "bool (count,): non-important but kept: it continues a kept chain.", true);
+            "bool (count,): non-important but kept: it continues a kept chain (reactivation).", true);
   def_csr(c, "simplified_polylines", [](const PyWireframe& p) -> auto& { return p.w->simplified_polylines; },
           "counts['wireframe_edges_simplified']",
           "mesh vertices along each simplified polyline (kept chains re-chained).");
@@ -75,9 +76,10 @@ void bind_wireframe(py::module_& m) {
         d["shown_components"] = w.shown_components;
         return d;
       },
-      "dict: vsg_edges, wireframe_edges, wireframe_edges_simplified, vsg_chains, singular_vertices, "
-      "vsg_mesh_edges, wireframe_mesh_edges, wireframe_mesh_edges_simplified (distinct mesh edges covered), "
-      "reference_components, shown_components.");
+      "dict: vsg_edges, wireframe_edges (complete wireframe polylines), wireframe_edges_simplified, vsg_chains, "
+      "singular_vertices (of the wireframe, not the graph's), vsg_mesh_edges, wireframe_mesh_edges, "
+      "wireframe_mesh_edges_simplified (distinct mesh edges covered), reference_components and "
+      "shown_components (connected pieces of the complete and of the simplified wireframe).");
 }
 
 py::dict soup_dict(BlockSoup&& s) {
@@ -153,7 +155,7 @@ void bind_geometry(py::module_& m) {
   bind_wireframe(m);
   m.def("block_soup", &block_soup, py::arg("mesh"), py::arg("analysis").none(true), py::arg("what"), py::arg("sheet") = py::none(),
         py::arg("shrink") = 0.0,
-        "Faces of a set of blocks as a polygon soup, each block (owner) with its own vertex copies, "
+        "Faces of a set of owners (cells, components, sheets, ...) as a polygon soup, each owner with its own vertex copies, "
         "shrunk toward its vertex centroid by `shrink` in [0, 1). what: 'cells', 'components', "
         "'sheets', 'subsheets' (needs sheet), 'sheet' (needs sheet; owner = component), "
         "'sheet_non_hex' (needs sheet), 'non_hex', 'boundary' (owner = cell type), 'hex' (the hex region's surface, owner 0). Returns a dict: "

@@ -139,7 +139,8 @@ void bind_mesh(py::module_& mod) {
   byte_view(cls, "vertex_boundary", [](const Mesh& m) -> auto& { return m.vert_boundary; }, boolean,
             "bool (nv,): vertex lies on a boundary face.");
   byte_view(cls, "vertex_non_manifold", [](const Mesh& m) -> auto& { return m.vert_non_manifold; }, boolean,
-            "bool (nv,): vertex whose neighbourhood is not a ball or half-ball (SPEC section 1).");
+            "bool (nv,): non-manifold vertex: its cells are not face-connected around it, or one of them "
+            "meets it in fewer than 3 faces (docs/concepts.md).");
 
   cls.def_property_readonly(
       "edge_valence",

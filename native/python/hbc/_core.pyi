@@ -120,8 +120,9 @@ class Mesh:
         wireframe: bool = True,
         threads: int | None = None,
     ) -> Analysis:
-        """The structure analysis (GIL released); rho in [0, 1] for the wireframe's colour classes;
-        threads for the stages (None: HBC_THREADS, else every core; results do not depend on it)."""
+        """The structure analysis (GIL released); rho in [0, 1]: the wireframes' colour-class
+        threshold (presentation only, no count depends on it); threads for the stages (None:
+        HBC_THREADS, else every core; results do not depend on it)."""
     @staticmethod
     def from_arrays(
         points: npt.ArrayLike,
@@ -174,17 +175,19 @@ class AnalysisStats(TypedDict, total=False):
 
 class WireframeCounts(TypedDict):
     vsg_edges: int
-    wireframe_edges: int
-    wireframe_edges_simplified: int
+    wireframe_edges: int  # polylines of the complete wireframe
+    wireframe_edges_simplified: int  # polylines of the simplified wireframe
     vsg_chains: int
-    singular_vertices: int
+    singular_vertices: int  # the wireframe's, not SingularityGraph.singular_vertices
     vsg_mesh_edges: int
     wireframe_mesh_edges: int
     wireframe_mesh_edges_simplified: int
-    reference_components: int
-    shown_components: int
+    reference_components: int  # connected pieces of the complete wireframe
+    shown_components: int  # connected pieces of the simplified wireframe
 
 class BlockSoup(TypedDict):
+    """block_soup's polygon soup, faces grouped by owner (cell, component, sheet, ...)."""
+
     positions: npt.NDArray[np.float32]  # (np, 3)
     point_vertex: I32  # (np,) mesh vertex of each point
     face_vertices_offsets: I32  # (nf + 1,)
@@ -194,8 +197,8 @@ class BlockSoup(TypedDict):
     face_cell: I32  # (nf,) mesh cell on the owner's side (the face points out of it)
 
 class SingularityGraph:
-    """Views into an Analysis (SPEC section 1); ne edges, ns singularities (chains). Chains: a closed
-    one does not repeat its first vertex."""
+    """The hybrid singularity graph (paper §3.2) of an Analysis, as views; ne edges, ns
+    singularities (chains). Chains: a closed one does not repeat its first vertex."""
 
     @property
     def edge_class(self) -> U8:
@@ -229,7 +232,7 @@ class SingularityGraph:
         """(ns,)"""
     @property
     def singular_vertices(self) -> I32:
-        """(k,) sorted singularity ends that are not pseudo-singular."""
+        """(k,) sorted singularity ends that are not pseudo-singular (not the wireframe's singular vertices)."""
     @property
     def pseudo_singular_vertices(self) -> I32:
         """(k,) sorted ends of pseudo-singular and non-manifold edges."""
@@ -243,8 +246,8 @@ class SingularityGraph:
     def num_singularities(self) -> int: ...
 
 class BaseComplex:
-    """Views into an Analysis (SPEC section 2); ncomp components, npatch patches, ncurve curves. A
-    closed curve does not repeat its first vertex."""
+    """The hybrid base complex (paper §3.3) of an Analysis, as views; ncomp components, npatch
+    patches, ncurve curves. A closed curve does not repeat its first vertex."""
 
     @property
     def cell_component(self) -> I32:
@@ -317,10 +320,10 @@ class Subsheets:
     def count(self) -> int: ...
     @property
     def subsheet_type(self) -> U8:
-        """(count,) 0 perfect, 1..3 type."""
+        """(count,) 0 perfect, 1 type 1 (non-hex), 2 type 2 (self-parallel), 3 type 3 (self-intersecting)."""
     @property
     def subsheet_flags(self) -> Bool:
-        """(count, 3) type-1, type-2, type-3 configurations present."""
+        """(count, 3) type 1, type 2, type 3 configurations present."""
     @property
     def subsheet_components_offsets(self) -> I32:
         """(count + 1,)"""
@@ -356,17 +359,18 @@ class Subsheets:
         """(count + 1,)"""
     @property
     def subsheet_self_parallel_curves_items(self) -> I32:
-        """(subsheet_self_parallel_curves_offsets[-1],) curves of self-parallel (type-2) pairs."""
+        """(subsheet_self_parallel_curves_offsets[-1],) curves of type 2 (self-parallel) pairs."""
     @property
     def subsheet_self_intersecting_components_offsets(self) -> I32:
         """(count + 1,)"""
     @property
     def subsheet_self_intersecting_components_items(self) -> I32:
-        """(subsheet_self_intersecting_components_offsets[-1],) components holding two parallel curves sharing an end (type 3)."""
+        """(subsheet_self_intersecting_components_offsets[-1],) components holding two parallel curves sharing an end (type 3 pairs)."""
 
 class Wireframe:
-    """A VSG wireframe, `count` polylines of mesh vertices (a closed VSG chain repeats its first
-    vertex); polylines and simplified_polylines are CSRs (<name>_offsets, <name>_items)."""
+    """A VSG wireframe (paper §5): the complete wireframe's `count` polylines of mesh vertices (a
+    closed chain repeats its first vertex) and the simplified wireframe's; polylines and
+    simplified_polylines are CSRs (<name>_offsets, <name>_items)."""
 
     @property
     def count(self) -> int: ...
@@ -387,7 +391,7 @@ class Wireframe:
         """(count,)"""
     @property
     def stop(self) -> U8:
-        """(count,) 0 closed chain, 1 singular, 2 boundary, 3 neither."""
+        """(count,) 0 closed chain, 1 singular vertex of the wireframe, 2 boundary, 3 neither."""
     @property
     def shown(self) -> Bool:
         """(count,) on the simplified wireframe."""
@@ -442,10 +446,10 @@ class Analysis:
     def num_sheets(self) -> int: ...
     @property
     def sheet_type(self) -> U8:
-        """(num_sheets,) 0 perfect, 1..3 type."""
+        """(num_sheets,) 0 perfect, 1 type 1 (non-hex), 2 type 2 (self-parallel), 3 type 3 (self-intersecting)."""
     @property
     def sheet_flags(self) -> Bool:
-        """(num_sheets, 3) type-1, type-2, type-3 configurations present."""
+        """(num_sheets, 3) type 1, type 2, type 3 configurations present."""
     @property
     def sheet_components_offsets(self) -> I32:
         """(num_sheets + 1,)"""
@@ -493,13 +497,13 @@ class Analysis:
         """(num_sheets + 1,)"""
     @property
     def sheet_self_parallel_curves_items(self) -> I32:
-        """(sheet_self_parallel_curves_offsets[-1],) curves of self-parallel (type-2) pairs."""
+        """(sheet_self_parallel_curves_offsets[-1],) curves of type 2 (self-parallel) pairs."""
     @property
     def sheet_self_intersecting_components_offsets(self) -> I32:
         """(num_sheets + 1,)"""
     @property
     def sheet_self_intersecting_components_items(self) -> I32:
-        """(sheet_self_intersecting_components_offsets[-1],) components holding two parallel curves sharing an end (type 3)."""
+        """(sheet_self_intersecting_components_offsets[-1],) components holding two parallel curves sharing an end (type 3 pairs)."""
     @property
     def largest_self_intersecting(self) -> int | None:
         """The self-intersecting sheet with most cells; None without one (or without sheets)."""
