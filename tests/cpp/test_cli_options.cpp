@@ -1,5 +1,5 @@
 // The command line itself (CLI11): help for every command, one version, typed options whose bad
-// values exit 2 naming the option (SPEC §5), and JSON that stays valid for any file name.
+// values exit 2 naming the option (as bad input does), and JSON that stays valid for any file name.
 #include <filesystem>
 #include <string>
 

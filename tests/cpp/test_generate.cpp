@@ -362,7 +362,7 @@ TEST(GenerateCli, WritesWhatTheLibraryGenerates) {
   EXPECT_EQ(run_cli("generate blob -o '" + d + "/x.mesh'"), 1);
   EXPECT_EQ(run_cli("generate split --size 3 3 3 --split tets --cells 3,0,0 -o '" + d + "/x.mesh'"), 1);
   EXPECT_EQ(run_cli("generate split --size 3 3 3 --split tets -o '" + d + "/x.mesh'"), 1);
-  // A value outside its option's type, choices or range: exit 2 (bad input, SPEC §5).
+  // A value outside its option's type, choices or range: exit 2 (bad input).
   EXPECT_EQ(run_cli("generate split --size 3 3 3 --split cubes --cells 1,1,1 -o '" + d + "/x.mesh'"), 2);
   EXPECT_EQ(run_cli("generate grid --size 2 0 3 -o '" + d + "/x.mesh'"), 2);
   EXPECT_EQ(run_cli("generate sector --valence 2 --rings 1 --layers 1 -o '" + d + "/x.mesh'"), 2);
@@ -406,7 +406,7 @@ TEST(Generate, TwistedRingSheets) {
   const Mesh turned = build_mesh(generate_twisted_ring(1, 12, 1, false));
   const Analysis a1 = analyze(turned, opt);
   EXPECT_EQ(a1.sheet_stage->sheets.count(SheetType::Type3), 1u);
-  // The demo's ring, at the complex level: a self-intersecting sheet with subsheets, a type-1
+  // The demo's ring, at the complex level: a self-intersecting sheet with subsheets, a type 1
   // sheet (the one through the prism column) and non-hex cells.
   const Mesh demo = build_mesh(generate_twisted_ring(5, 12, 1, true));
   const Analysis d = analyze(demo, {});

@@ -1,6 +1,6 @@
 // Property tests: hundreds of generated meshes (grids, grids with random cells split into
 // pyramids / prisms / tets, sectors, cylinders), each analyzed as generated and randomly
-// renumbered. Every SPEC invariant is checked on both, and the renumbered analysis must equal the
+// renumbered. Every structural invariant is checked on both, and the renumbered analysis must equal the
 // original one up to the renumbering. Seeded std::mt19937 throughout: every run sees the same
 // meshes, and a failure names the case so it can be rebuilt alone.
 #include <algorithm>
@@ -42,7 +42,7 @@ bool is_mesh_edge(const Mesh& m, const Csr<int32_t>& ve, int32_t a, int32_t b) {
   return false;
 }
 
-// The SPEC invariants on one analyzed mesh.
+// The structural invariants (docs/concepts.md) on one analyzed mesh.
 void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& opt) {
   const SingularityGraph& g = a.graph;
   const BaseComplex& bc = a.complex;
@@ -192,7 +192,7 @@ TEST(Properties, Grids) {
     const int n = uniform(rng, 1, 6), m = uniform(rng, 1, 6), k = uniform(rng, 1, 6);
     Case cs{"grid " + std::to_string(n) + "x" + std::to_string(m) + "x" + std::to_string(k),
             generate_grid(n, m, k)};
-    // A structured grid is one cube-like block whose three sheets are perfect.
+    // A structured grid is one cube-like component whose three sheets are perfect.
     const Mesh mesh = build_mesh(cs.input);
     const Stats s = compute_stats(mesh, analyze(mesh));
     EXPECT_EQ(s.components, 1) << cs.name;

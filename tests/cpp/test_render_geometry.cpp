@@ -121,7 +121,7 @@ TEST(RenderGeometry, GridSheets) {
   EXPECT_THROW(block_soup(g.mesh, g.analysis, SoupKind::Sheet, -1), std::invalid_argument);
 
   // Mesh level: 6 one-cell-thick slabs of 2×2×1 cells; each slab's boundary has 8 + 8 quads and
-  // 18 vertices, and within the one component it stays one block.
+  // 18 vertices, and within the one component it stays one owner.
   const Analysed fine = grid2(Level::Mesh);
   ASSERT_EQ(fine.analysis.sheet_stage->sheets.size(), 6u);
   const BlockSoup slabs = block_soup(fine.mesh, fine.analysis, SoupKind::Sheets);

@@ -1,6 +1,6 @@
-// Hand-built meshes with one sheet of each imperfect type (SPEC §3, paper §4 and Fig. 3), each
+// Hand-built meshes with one sheet of each imperfect type (paper §4.2 and Fig. 3), each
 // classified exactly: the number of sheets, which are perfect / type 1 / type 2 / type 3, their
-// cells and parallel curves, and the highlight sets SPEC §6 uses (unmatched vertices, shared
+// cells and parallel curves, and the highlight sets of paper §6.3 (unmatched vertices, shared
 // vertices, self-parallel curves, self-intersecting blocks). The derivations are in the comments.
 // Every mesh is also analyzed randomly renumbered, and must give the same sheets up to renumbering.
 //
@@ -152,7 +152,7 @@ void expect_same_after_renumbering(const Mesh& m, Level level, uint32_t seed) {
   std::sort(vb.begin(), vb.end());
   ASSERT_EQ(va.size(), vb.size());
   for (size_t i = 0; i < va.size(); ++i) EXPECT_TRUE(va[i] == vb[i]) << "sheet " << i << " differs";
-  // Subsheets: the decomposition starts from the lowest curve id, so only what SPEC §3 requires
+  // Subsheets: the decomposition starts from the lowest curve id, so only what paper §4.3 requires
   // of any decomposition is compared: no subsheet is type 3 and every curve of the sheet lands in
   // exactly one subsheet.
   EXPECT_EQ(a.sheet_stage->subsheets->size(), b.sheet_stage->subsheets->size());
@@ -567,10 +567,11 @@ TEST(SheetTypes, Type3TwistedRingRenumbered) {
 // y = 1, touch an interior face, so they are not complex edges, no vertex is a corner, and the
 // curves are the closed chains of corner-longitudinal edges (the 2 × 1 ring: (0,0) -> (2,1) ->
 // (0,0) and (0,1) -> (2,0) -> (0,1), 2 curves; the 1 × 1 ring: all four corners in one chain). The
-// component is not cube-like. Whether it is a sheet block at all is left open by SPEC §3 ("hex
-// components"); either way no curve has an end, so no sheet of this level can be imperfect: the
-// twist is invisible to the complex-level sheets of these meshes, which is why types 2 and 3 are
-// derived at the mesh level above.
+// component is not cube-like. Whether it is a sheet block at all is left open by the paper (§4:
+// "hexahedral blocks"; hbc makes every component of hex cells a block, docs/concepts.md); either
+// way no curve has an end, so no sheet of this level can be imperfect: the twist is invisible to
+// the complex-level sheets of these meshes, which is why types 2 and 3 are derived at the mesh
+// level above.
 TEST(SheetTypes, TwistedRingsLevel) {
   struct Case {
     Mesh mesh;

@@ -189,7 +189,7 @@ namespace hbc {
 namespace {
 
 // The structure surfaces: each patch / component / sheet is a piece of its own, oriented out of
-// the block it bounds. On a 3×3×3 grid with the centre cell split into pyramids every piece is a
+// the owner it bounds. On a 3×3×3 grid with the centre cell split into pyramids every piece is a
 // box (or a flat rectangle for patches), so every exported piece is welded: nothing unwelded.
 TEST(StructureSurfaces, SplitGridPiecesAreClean) {
   const std::array<int32_t, 3> centre{1, 1, 1};

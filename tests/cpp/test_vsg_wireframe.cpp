@@ -1,4 +1,4 @@
-// The valence singularity graph and its wireframe (SPEC §4, the authors' rules, docs/validation.md):
+// The valence singularity graph and its wireframe (paper §5, the authors' rules, docs/validation.md):
 // hand-derived results on plain grids, test_2 at both levels against the authors' figures,
 // determinism under renumbering, regions, colours, and invariants on every real mesh.
 #include <algorithm>
@@ -73,8 +73,8 @@ std::vector<Polygon> grid_squares(int n, bool skip_centre_block) {
 // The 4×4×4 grid whose 2×2 column x, y in [1, 3] is replaced by a "Y": around the centre line
 // (2, 2) three cells with spokes to (2, 1), (3, 2), (2, 3): two quads (hex columns) and one
 // hexagon (2,2) (2,3) (1,3) (1,2) (1,1) (2,1) (a column of hexagonal prisms). The vertical line at
-// (2, 2) then has 3 cells; the one at (1, 2), a block-side midpoint that is no spoke, has lost one
-// cell inside the block and has 3 too; every other line keeps its valence.
+// (2, 2) then has 3 cells; the one at (1, 2), a midpoint of the column's side that is no spoke, has
+// lost one cell inside the column and has 3 too; every other line keeps its valence.
 Mesh y_mesh() {
   std::vector<Polygon> polys = grid_squares(4, true);
   polys.push_back({{2, 2}, {2, 1}, {3, 1}, {3, 2}});

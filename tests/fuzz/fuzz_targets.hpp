@@ -60,8 +60,8 @@ inline bool read_and_build(Format f, std::string_view bytes) {
   }
 }
 
-// Selector byte, then a file; the whole pipeline on whatever parses, plus the SPEC invariants that
-// hold for every mesh (every cell in exactly one component, non-hex cells alone).
+// Selector byte, then a file; the whole pipeline on whatever parses, plus the base complex's
+// invariants that hold for every mesh (every cell in exactly one component, non-hex cells alone).
 inline bool load_and_analyze(std::string_view data) {
   if (data.empty()) return false;
   const Format f = format_of_selector(static_cast<uint8_t>(data[0]));

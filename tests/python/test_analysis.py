@@ -220,7 +220,7 @@ def test_sheet_arrays(analyzed, name):
         assert np.array_equal(np.unique(comp[cells]), comps)
         non_hex = rows(a.sheet_non_hex_cells_offsets, a.sheet_non_hex_cells_items)[s]
         assert np.all(types[non_hex] != 0)
-        # Perfect sheets leave no vertex unmatched; type-3 ones name the components holding it.
+        # Perfect sheets leave no vertex unmatched; type 3 ones name the components holding it.
         unmatched = rows(a.sheet_unmatched_vertices_offsets, a.sheet_unmatched_vertices_items)[s]
         if a.sheet_type[s] == 0:
             assert len(unmatched) == 0

@@ -1,6 +1,6 @@
-"""hbc.block_soup() and hbc.polylines(): polygon soups of blocks (cells, components, sheets,
-subsheets, one sheet's blocks, non-hex cells, the boundary, the hex region) with outward loops, one vertex copy
-per owner, shrinking toward each owner's centroid; and polyline point positions."""
+"""hbc.block_soup() and hbc.polylines(): polygon soups of owners (cells, components, sheets,
+subsheets, one sheet's components, non-hex cells, the boundary, the hex region) with outward loops,
+one vertex copy per owner, shrinking toward each owner's centroid; and polyline point positions."""
 
 import subprocess
 
@@ -17,7 +17,7 @@ def rows(offsets, items):
 
 
 def kinds(a):
-    """(what, sheet, number of possible owners) for every block set the analysis allows."""
+    """(what, sheet, number of possible owners) for every soup kind the analysis allows."""
     out = [("cells", None, a.mesh.num_cells), ("components", None, len(a.complex.component_kind)),
            ("sheets", None, a.num_sheets), ("non_hex", None, a.mesh.num_cells), ("boundary", None, 5),
            ("hex", None, 1)]
@@ -106,7 +106,7 @@ def test_soup_face_counts(analyzed, name):
     assert np.array_equal(np.sort(boundary["face_source"]), bf)
     order = np.argsort(boundary["face_source"])
     assert np.array_equal(boundary["face_owner"][order], m.cell_types[m.face_cells[bf, 0]])
-    # The hex region: one block (owner 0), the faces with a hex cell on exactly one side (a
+    # The hex region: one owner (0), the faces with a hex cell on exactly one side (a
     # boundary face of a hex cell counts: its other side is no cell), each seen from its hex cell.
     region = hbc.block_soup(m, a, "hex")
     hex_side = np.append(hexes, False)[m.face_cells]  # face_cells -1 picks the appended False
@@ -184,7 +184,7 @@ def test_cube_component_blocks_closed_and_outward(analyzed, name):
     sizes = np.diff(starts)
     cubes = np.flatnonzero(a.complex.component_kind == 0)
     # The mesh builder orients neighbouring cells consistently: no interior face is seen the same
-    # way from both sides. Blocks holding an inverted cell may enclose a negative volume.
+    # way from both sides. Owners holding an inverted cell may enclose a negative volume.
     assert len(disagreeing_cells(m)) == 0
     tangled = set(a.complex.cell_component[inverted_cells(m, a)].tolist())
     assert len(cubes) > 0
@@ -288,7 +288,7 @@ def test_mesh_only_soups_need_no_analysis(analyzed):
 @pytest.mark.parametrize("name", MESHES)
 def test_soup_face_cell(analyzed, name):
     """face_cell is a cell the face bounds, on the owner's side: the face's owner is that cell (cell
-    kinds), its component (components, one sheet's blocks), or a sheet holding it (sheets)."""
+    kinds), its component (components, one sheet's components), or a sheet holding it (sheets)."""
     m, a = analyzed[name]
     comp = a.complex.cell_component
     fc = m.face_cells
@@ -334,7 +334,7 @@ def test_cell_centroids_mean_of_distinct_vertices(analyzed, name):
 
 
 def test_kept_surface_soup_of_a_grid(hbc_cli, tmp_path):
-    """A 4x4x4 grid: all cells kept gives the 96 boundary faces; the inner 2x2x2 block alone its 24
+    """A 4x4x4 grid: all cells kept gives the 96 boundary faces; the inner 2x2x2 cells alone their 24
     outer faces; nothing kept, nothing. Faces point out of their (kept) cell."""
     out = tmp_path / "grid.ovm"
     subprocess.run([hbc_cli, "generate", "grid", "--size", "4", "4", "4", "-o", str(out)], check=True,

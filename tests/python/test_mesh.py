@@ -12,7 +12,7 @@ import pytest
 import hbc
 
 INFO_KEYS = {"vertices", "edges", "faces", "cells", "hex_cells", "hex_ratio", "cell_types",
-             "boundary_faces", "dropped_faces", "dropped_edges"}  # SPEC section 5
+             "boundary_faces", "dropped_faces", "dropped_edges"}  # hbc info --json (docs/concepts.md)
 CELL_TYPE_KEYS = {"hex", "tet", "prism", "pyramid", "polyhedron"}
 
 

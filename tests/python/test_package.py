@@ -67,7 +67,7 @@ def test_stub_matches_module():
 
 
 def test_every_csr_is_offsets_and_items():
-    """One vocabulary (issue 15): every CSR a class exposes is `<name>_offsets` with `<name>_items`,
+    """One vocabulary (docs/concepts.md): every CSR a class exposes is `<name>_offsets` with `<name>_items`,
     and nothing else ends in `_offsets` or `_items`."""
     pairs = 0
     for cls in (hbc.Mesh, hbc.Analysis, hbc.SingularityGraph, hbc.BaseComplex, hbc.Subsheets, hbc.Wireframe):

@@ -1,5 +1,5 @@
 """Analysis.to_vtu() and `hbc export-vtu`: the files open in an independent reader (Debian's
-python3-meshio) with one cell per mesh cell, the block ids of the analysis and the sheet arrays;
+python3-meshio) with one cell per mesh cell, the component ids of the analysis and the sheet arrays;
 the singularity graph file holds one line per structural edge. Also: the new readers from Python."""
 
 import base64
@@ -16,7 +16,7 @@ import hbc
 import meshio  # Debian python3-meshio: the independent reader
 
 FORMATS_DIR = pathlib.Path(__file__).resolve().parents[1] / "data" / "formats"
-# An all-hex mesh of 288 cells in 5 blocks, a hex-dominant one with prisms, pyramids, tets and
+# An all-hex mesh of 288 cells in 5 components, a hex-dominant one with prisms, pyramids, tets and
 # degenerate cells, and a polyhedral one (VTK_POLYHEDRON cells).
 MESHES = ["openvolumemesh/Cylinder.ovm", "hybrid-base-complex/twistcube_s.mesh", "cinolib/eight_voronoi.hedra"]
 DTYPES = {"Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8, "Float64": np.float64}
@@ -79,7 +79,7 @@ def test_to_vtu_opens_in_meshio_with_the_block_ids(shared_data_dir, tmp_path, na
     assert len(m.points) == mesh.num_vertices
     assert len(np.unique(data["component"])) == a.stats["components"]
     if name == MESHES[0]:
-        assert a.stats["components"] == 5  # blocks, not cells: the ids are shared
+        assert a.stats["components"] == 5  # components, not cells: the ids are shared
     assert int(data["is_hex"].sum()) == int((mesh.cell_types == 0).sum())
     # meshio regroups the cells by VTK type: compare the counts of hbc's cell types.
     assert np.array_equal(np.bincount(data["cell_type"], minlength=5), np.bincount(mesh.cell_types, minlength=5))

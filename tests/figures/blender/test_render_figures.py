@@ -134,7 +134,7 @@ def demo_default(tmp_path):
 
 
 def test_demo_default_fills_every_panel(tmp_path):
-    """The demo's first default (without ../shared) has a self-intersecting sheet whose region holds
+    """The demo's first default (without ../shared/data) has a self-intersecting sheet whose region holds
     non-hex cells, so every panel a-g is drawn - none skipped - and the contact sheet holds all."""
     mesh = demo_default(tmp_path)
     name = mesh.stem
