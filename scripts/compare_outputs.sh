@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Whether two builds give the same results: runs both `hbc` binaries on each mesh with one and two
-# threads (analyze, sheets and wireframe JSON at both levels, the OBJ wireframe with hidden edges,
-# the VTU export) and compares the outputs byte for byte, timings removed. A speed-up or refactor
+# threads (analyze, sheets and wireframe JSON at both levels, the OBJ of the whole complete
+# wireframe, the VTU export) and compares the outputs byte for byte, timings removed. A speed-up or refactor
 # must leave every one of them unchanged (see the README's Correctness section).
 #
 #   bash scripts/compare_outputs.sh OLD_HBC NEW_HBC [MESH...]

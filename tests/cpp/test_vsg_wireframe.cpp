@@ -119,7 +119,8 @@ TEST(VsgWireframe, PlainGridHidesTheBoxEdgesAtTheCorners) {
   // Only the 12 box edges are irregular (boundary valence 1); they chain corner to corner (three
   // meet at each corner). Every edge at a corner is on the VSG, so there are no traces. All eight
   // corners are boundary corners with one cell and quad faces: non-important, so all 12 chains are
-  // (criterion 1), and with nothing shown there is nothing to reconnect.
+  // (criterion 1), and with nothing kept there is nothing to reactivate: the simplified wireframe
+  // is empty.
   const Mesh m = grid_mesh(4);
   for (auto cx : {complex_from_mesh(m), complex_from_base(m, base_complex(m, singularity_graph(m)))}) {
     const VsgWireframe w = vsg_wireframe(cx);
