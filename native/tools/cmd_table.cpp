@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "hbc/schema.hpp"
 #include "stats_format.hpp"
 
 extern char** environ;
@@ -117,39 +118,21 @@ void finish(const Job& j, int status, Row& r) {
   for (size_t i = 0; i < keys.size() && i < vals.size(); ++i) r.values[keys[i]] = vals[i];
 }
 
-// Table 1's columns: header, CSV key, decimals for timings (-1: copy as is).
-struct Column {
-  const char* title;
-  const char* latex;
-  const char* key;
-};
-const Column kColumns[] = {
-    {"|C|", "$|C|$", "cells"},
-    {"|H|/|C|", "$\\frac{|H|}{|C|}$", "hex_ratio"},
-    {"|C_B|", "$|C_B|$", "components"},
-    {"|H_B|/|C_B|", "$\\frac{|H_B|}{|C_B|}$", "hex_component_ratio"},
-    {"|G_SH|", "$|G_{SH}|$", "sheets"},
-    {"T1", "$|G_{SH}^{T1}|$", "sheets_type1"},
-    {"T2", "$|G_{SH}^{T2}|$", "sheets_type2"},
-    {"T3", "$|G_{SH}^{T3}|$", "sheets_type3"},
-    {"|G_SH*|", "$|G_{SH*}|$", "subsheets_of_largest_self_intersecting"},
-    {"T_GS ms", "$T_{G_S}$", "t_singularity_graph"},
-    {"T_GB ms", "$T_{G_B}$", "t_base_complex"},
-    {"T_VSGW ms", "$T_{VSGW}$", "t_vsg_wireframe"},
-    {"T_GSH ms", "$T_{G_{SH}}$", "t_sheets"},
-    {"T_GSH* ms", "$T_{G_{SH*}}$", "t_subsheets"},
-};
-
-std::string cell(const Row& r, const Column& c) {
-  auto it = r.values.find(c.key);
+// A Table 1 cell from a row's CSV values: times in milliseconds, everything else as printed.
+std::string cell(const Row& r, const Table1Column& c) {
+  const std::string key = (c.timing ? "t_" : "") + std::string(c.field->key);
+  auto it = r.values.find(key);
   if (it == r.values.end()) return "";
-  if (std::string(c.key).rfind("t_", 0) == 0) {
+  if (c.timing) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3f", std::stod(it->second) * 1e3);
     return buf;
   }
   return it->second;
 }
+
+// The Markdown head of a column: the paper's symbol, times marked as milliseconds.
+std::string title(const Table1Column& c) { return std::string(c.field->notation) + (c.timing ? " ms" : ""); }
 
 std::string name_of(const std::string& file) { return fs::path(file).filename().string(); }
 
@@ -207,31 +190,31 @@ void run_table(const TableArgs& args) {
     }
   } else if (latex) {
     std::printf("\\begin{tabular}{c|cc|cc|cccc|c|ccccc}\nModels");
-    for (const Column& c : kColumns) std::printf(" & %s", c.latex);
+    for (const Table1Column& c : table1_columns()) std::printf(" & %s", std::string(c.field->latex).c_str());
     std::printf(" \\\\ \\hline\n");
     for (const Row& r : rows) {
       std::string n = name_of(r.file);
       for (size_t p = 0; (p = n.find('_', p)) != std::string::npos; p += 2) n.insert(p, "\\");
       std::printf("%s", n.c_str());
-      if (!r.error.empty()) std::printf(" & \\multicolumn{%zu}{l}{failed}", std::size(kColumns));
+      if (!r.error.empty()) std::printf(" & \\multicolumn{%zu}{l}{failed}", table1_columns().size());
       else
-        for (const Column& c : kColumns) std::printf(" & %s", cell(r, c).c_str());
+        for (const Table1Column& c : table1_columns()) std::printf(" & %s", cell(r, c).c_str());
       std::printf(" \\\\\n");
     }
     std::printf("\\end{tabular}\n");
   } else {
     std::printf("| mesh |");
-    for (const Column& c : kColumns) std::printf(" %s |", c.title);
+    for (const Table1Column& c : table1_columns()) std::printf(" %s |", title(c).c_str());
     std::printf("\n|---|");
-    for (size_t i = 0; i < std::size(kColumns); ++i) std::printf("---:|");
+    for (size_t i = 0; i < table1_columns().size(); ++i) std::printf("---:|");
     std::printf("\n");
     for (const Row& r : rows) {
       std::printf("| %s |", name_of(r.file).c_str());
       if (!r.error.empty()) {
         std::printf(" failed: %s |", r.error.c_str());
-        for (size_t i = 1; i < std::size(kColumns); ++i) std::printf(" |");
+        for (size_t i = 1; i < table1_columns().size(); ++i) std::printf(" |");
       } else {
-        for (const Column& c : kColumns) std::printf(" %s |", cell(r, c).c_str());
+        for (const Table1Column& c : table1_columns()) std::printf(" %s |", cell(r, c).c_str());
       }
       std::printf("\n");
     }

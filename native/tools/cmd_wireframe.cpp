@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "hbc/schema.hpp"
 #include "hbc/analysis.hpp"
 #include "hbc/region.hpp"
 #include "json.hpp"
@@ -66,24 +67,16 @@ std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeO
                       double seconds) {
   Json edges = Json::array();
   for (size_t i = 0; i < w.size(); ++i) edges.push_back(edge_json(m, w, i));
-  const Json j = {{"file", args.input.file},
-                  {"level", args.level},
-                  {"sheet", args.sheet.value_or(-1)},
-                  {"rho", opt.rho},
-                  {"opacity_floor", opt.opacity_floor},
-                  {"palette_size", opt.palette_size},
-                  {"vsg_edges", w.vsg_edges},
-                  {"vsg_chains", w.vsg_chains},
-                  {"singular_vertices", w.singular_vertices.size()},
-                  {"wireframe_edges", w.wireframe_edges()},
-                  {"wireframe_edges_simplified", w.wireframe_edges_simplified()},
-                  {"vsg_mesh_edges", w.vsg_mesh_edges},
-                  {"wireframe_mesh_edges", w.wireframe_mesh_edges},
-                  {"wireframe_mesh_edges_simplified", w.simplified_mesh_edges},
-                  {"reference_components", w.reference_components},
-                  {"shown_components", w.shown_components},
-                  {"seconds_vsg_wireframe", seconds},
-                  {"edges", std::move(edges)}};
+  Json j = {{"file", args.input.file},
+            {"level", args.level},
+            {"sheet", args.sheet.value_or(-1)},
+            {"rho", opt.rho},
+            {"opacity_floor", opt.opacity_floor},
+            {"palette_size", opt.palette_size}};
+  const auto counts = wireframe_count_fields();
+  for (size_t i = 0; i < counts.size(); ++i) j[std::string(counts[i].key)] = wireframe_count(w, i);
+  j["seconds_vsg_wireframe"] = seconds;
+  j["edges"] = std::move(edges);
   return cli::json_text(j);
 }
 

@@ -2,6 +2,7 @@
 // Readers and writers for the volume mesh formats real hex-dominant meshers write.
 // Every reader parses from memory (so fuzzers and tests need no files) and reports bad input as
 // InputError with the file name and the line (byte offset for binary files).
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -11,7 +12,19 @@ namespace hbc {
 
 enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu };
 
-// "ovm", "ovmb", "mesh" (or "medit"), "hybrid", "hedra", "msh", "vtk", "vtu"; case-insensitive. Throws
+// Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
+// hbc.FORMATS and the Blender add-on's file filter come from it.
+struct FormatInfo {
+  Format format;
+  std::string_view name;       // --format NAME and format_name(); also the extension, lower case
+  std::string_view alias;      // another accepted name ("medit"), or empty
+  std::string_view extension;  // as files usually spell it, with the dot (".HYBRID")
+  std::string_view title;      // what writes it, in words
+  bool writable;               // write_mesh writes it too
+};
+std::span<const FormatInfo> formats();
+
+// A name or alias of formats() ("ovm", "mesh", "medit", ...); case-insensitive. Throws
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
 // By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu. Throws InputError otherwise.

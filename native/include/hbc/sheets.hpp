@@ -21,7 +21,10 @@ namespace hbc {
 
 // Perfect, or the highest imperfect configuration present (type 3 > type 2 > type 1).
 enum class SheetType : uint8_t { Perfect = 0, Type1 = 1, Type2 = 2, Type3 = 3 };
+// The machine name ("perfect", "type1", ...: JSON values) and the label in words
+// ("type 3 (self-intersecting)"), the one spelling every output and the add-on use.
 const char* sheet_type_name(SheetType t);
+const char* sheet_type_label(SheetType t);
 
 // Classification of one set of parallel curves over a set of blocks, shared by sheets and subsheets.
 struct SheetClass {

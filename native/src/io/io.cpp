@@ -11,24 +11,47 @@
 
 namespace hbc {
 
-Format format_from_name(std::string_view name) {
-  const std::string n = detail::lower(name);
-  if (n == "ovm") return Format::Ovm;
-  if (n == "ovmb") return Format::Ovmb;
-  if (n == "mesh" || n == "medit") return Format::Medit;
-  if (n == "hybrid") return Format::Hybrid;
-  if (n == "hedra") return Format::Hedra;
-  if (n == "msh") return Format::Msh;
-  if (n == "vtk") return Format::Vtk;
-  if (n == "vtu") return Format::Vtu;
-  throw std::invalid_argument("unknown format '" + std::string(name) +
-                              "' (expected ovm, ovmb, mesh, hybrid, hedra, msh, vtk or vtu)");
+namespace {
+
+constexpr FormatInfo kFormats[] = {
+    {Format::Ovm, "ovm", "", ".ovm", "OpenVolumeMesh ASCII", true},
+    {Format::Ovmb, "ovmb", "", ".ovmb", "OpenVolumeMesh binary", false},
+    {Format::Medit, "mesh", "medit", ".mesh", "MEDIT (At-Most-Hexa, HexaLab, Gmsh)", true},
+    {Format::Hybrid, "hybrid", "", ".HYBRID", "Robust Hex-Dominant Meshing", false},
+    {Format::Hedra, "hedra", "", ".hedra", "LoopyCuts / cinolib", false},
+    {Format::Msh, "msh", "", ".msh", "Gmsh 2.2 and 4.1, ASCII or binary", false},
+    {Format::Vtk, "vtk", "", ".vtk", "legacy VTK unstructured grid", false},
+    {Format::Vtu, "vtu", "", ".vtu", "VTK XML unstructured grid", false},
+};
+
+// "a, b, c or d" of each format's `part`.
+template <class Part>
+std::string listed(Part part) {
+  std::string out;
+  const size_t n = std::size(kFormats);
+  for (size_t i = 0; i < n; ++i) {
+    if (i) out += i + 1 == n ? " or " : ", ";
+    out += part(kFormats[i]);
+  }
+  return out;
 }
 
-static const char* kExtensions =
-    "a file name ending in .ovm, .ovmb, .mesh, .HYBRID, .hedra, .msh, .vtk or .vtu (or --format)";
+}  // namespace
+
+std::span<const FormatInfo> formats() { return kFormats; }
+
+Format format_from_name(std::string_view name) {
+  const std::string n = detail::lower(name);
+  for (const FormatInfo& f : kFormats)
+    if (n == f.name || (!f.alias.empty() && n == f.alias)) return f.format;
+  throw std::invalid_argument("unknown format '" + std::string(name) + "' (expected " +
+                              listed([](const FormatInfo& f) { return std::string(f.name); }) + ")");
+}
 
 Format format_from_path(const std::string& path) {
+  static const std::string kExtensions =
+      "a file name ending in " + listed([](const FormatInfo& f) { return std::string(f.extension); }) +
+      " (or --format)";
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
@@ -41,18 +64,9 @@ Format format_from_path(const std::string& path) {
 }
 
 const char* format_name(Format f) {
-  switch (f) {
-    case Format::Ovm: return "ovm";
-    case Format::Ovmb: return "ovmb";
-    case Format::Medit: return "mesh";
-    case Format::Hybrid: return "hybrid";
-    case Format::Hedra: return "hedra";
-    case Format::Msh: return "msh";
-    case Format::Vtk: return "vtk";
-    case Format::Vtu: return "vtu";
-    case Format::Auto: return "auto";
-  }
-  return "?";
+  for (const FormatInfo& i : kFormats)
+    if (i.format == f) return i.name.data();
+  return f == Format::Auto ? "auto" : "?";
 }
 
 std::string read_file_bytes(const std::string& path) {

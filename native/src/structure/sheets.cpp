@@ -27,6 +27,16 @@ const char* sheet_type_name(SheetType t) {
   return "?";
 }
 
+const char* sheet_type_label(SheetType t) {
+  switch (t) {
+    case SheetType::Perfect: return "perfect";
+    case SheetType::Type1: return "type 1 (non-hex)";
+    case SheetType::Type2: return "type 2 (self-parallel)";
+    case SheetType::Type3: return "type 3 (self-intersecting)";
+  }
+  return "?";
+}
+
 size_t Sheets::count(SheetType t) const {
   return static_cast<size_t>(
       std::count_if(classes.begin(), classes.end(), [t](const SheetClass& c) { return c.type == t; }));
