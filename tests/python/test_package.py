@@ -37,7 +37,9 @@ def test_package_reexports_core():
     assert set(hbc.__all__) == {"Mesh", "MeshFormatError", "load", "__version__", "Analysis",
                                 "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe",
                                 "block_soup", "polylines", "cell_quality", "cell_depth", "cell_centroids",
-                                "kept_surface_soup"}
+                                "kept_surface_soup", "Field", "STAT_FIELDS", "TIMING_FIELDS",
+                                "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS", "SHEET_TYPES", "CELL_TYPES",
+                                "COMPONENT_KINDS", "FORMATS"}
     for name in hbc.__all__:
         assert getattr(hbc, name) is getattr(_core, name)
     assert issubclass(hbc.MeshFormatError, ValueError)
@@ -48,7 +50,7 @@ def test_stub_matches_module():
     stub_top = defined_names(tree.body)
     # Helper types that exist only for typing (TypedDicts, aliases) are not in the module.
     typing_only = {"Format", "CellTypeCounts", "MeshInfo", "Level", "SoupWhat", "I32", "U8", "Bool",
-                   "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup", "CellQuality"}
+                   "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup", "CellQuality", "FormatInfo"}
     assert public(stub_top) - typing_only == public(dir(_core))
     assert "__version__" in stub_top
 

@@ -126,47 +126,8 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
   return out;
 }
 
-// The CLI's `hbc analyze --json` object (docs/concepts.md) without "file": stages not run leave their keys
-// out, as there.
-py::dict stats_dict(const PyAnalysis& p) {
-  const Stats s = compute_stats(p.mesh->mesh, p.analysis);
-  py::dict d;
-  auto count = [&](const char* key, std::optional<int64_t> v) {
-    if (v) d[key] = *v;
-  };
-  count("cells", s.cells);
-  d["hex_ratio"] = s.hex_ratio;
-  count("singular_edges", s.singular_edges);
-  count("singularities", s.singularities);
-  count("pseudo_singular_edges", s.pseudo_singular_edges);
-  count("non_manifold_edges", s.non_manifold_edges);
-  count("singular_vertices", s.singular_vertices);
-  count("components", s.components);
-  count("hex_components", s.hex_components);
-  d["hex_component_ratio"] = s.hex_component_ratio;
-  count("patches", s.patches);
-  count("curves", s.curves);
-  count("corners", s.corners);
-  count("self_adjacent_faces", s.self_adjacent_faces);
-  count("sheets", s.sheets);
-  count("sheets_perfect", s.sheets_perfect);
-  count("sheets_type1", s.sheets_type1);
-  count("sheets_type2", s.sheets_type2);
-  count("sheets_type3", s.sheets_type3);
-  count("subsheets_of_largest_self_intersecting", s.subsheets_of_largest_self_intersecting);
-  count("vsg_edges", s.vsg_edges);
-  count("wireframe_edges", s.wireframe_edges);
-  count("wireframe_edges_simplified", s.wireframe_edges_simplified);
-  py::dict t;
-  t["load"] = s.timings.load;
-  t["singularity_graph"] = s.timings.singularity_graph;
-  t["base_complex"] = s.timings.base_complex;
-  t["sheets"] = s.timings.sheets;
-  t["subsheets"] = s.timings.subsheets;
-  t["vsg_wireframe"] = s.timings.vsg_wireframe;
-  d["timings"] = t;
-  return d;
-}
+// The CLI's `hbc analyze --json` object without "file" (schema.cpp's stats_dict).
+py::dict analysis_stats(const PyAnalysis& p) { return stats_dict(compute_stats(p.mesh->mesh, p.analysis)); }
 
 PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const py::object& subsheet_arg) {
   const auto sheet = optional_id(sheet_arg, "sheet"), subsheet = optional_id(subsheet_arg, "subsheet");
@@ -298,7 +259,7 @@ void bind_analysis(py::module_& m) {
                           "The subsheet stage ran (else subsheets() raises ValueError).");
   c.def_property_readonly("has_wireframe", [](const PyAnalysis& p) { return p.analysis.wireframe_stage.has_value(); },
                           "The whole-mesh wireframe stage ran (else wireframe() computes it on demand).");
-  c.def_property_readonly("stats", &stats_dict,
+  c.def_property_readonly("stats", &analysis_stats,
                           "dict: the `hbc analyze --json` keys (Table 1 and more, docs/concepts.md), timings in seconds.");
   c.def_property_readonly("graph", [](const PyAnalysisPtr& p) { return GraphView{p}; });
   c.def_property_readonly("complex", [](const PyAnalysisPtr& p) { return ComplexView{p}; });

@@ -61,21 +61,7 @@ void bind_wireframe(py::module_& m) {
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
   c.def_property_readonly(
       "counts",
-      [](const PyWireframe& p) {
-        const VsgWireframe& w = *p.w;
-        py::dict d;
-        d["vsg_edges"] = w.vsg_edges;
-        d["wireframe_edges"] = w.wireframe_edges();
-        d["wireframe_edges_simplified"] = w.wireframe_edges_simplified();
-        d["vsg_chains"] = w.vsg_chains;
-        d["singular_vertices"] = w.singular_vertices.size();
-        d["vsg_mesh_edges"] = w.vsg_mesh_edges;
-        d["wireframe_mesh_edges"] = w.wireframe_mesh_edges;
-        d["wireframe_mesh_edges_simplified"] = w.simplified_mesh_edges;
-        d["reference_components"] = w.reference_components;
-        d["shown_components"] = w.shown_components;
-        return d;
-      },
+      [](const PyWireframe& p) { return wireframe_counts(*p.w); },
       "dict: vsg_edges, wireframe_edges (complete wireframe polylines), wireframe_edges_simplified, vsg_chains, "
       "singular_vertices (of the wireframe, not the graph's), vsg_mesh_edges, wireframe_mesh_edges, "
       "wireframe_mesh_edges_simplified (distinct mesh edges covered), reference_components and "

@@ -13,4 +13,5 @@ PYBIND11_MODULE(_core, m) {
   hp::bind_analysis(m);  // adds Mesh.analyze, so after bind_mesh
   hp::bind_geometry(m);
   hp::bind_quality(m);
+  hp::bind_schema(m);
 }

@@ -10,10 +10,20 @@ so that user code never imports ``_core`` directly.
     >>> a.stats["hex_components"], a.num_sheets
     >>> soup = hbc.block_soup(mesh, a, "components", shrink=0.1)
     >>> q = hbc.cell_quality(mesh)["scaled_jacobian"]; depth = hbc.cell_depth(mesh)
+    >>> [(f.label, f.unit) for f in hbc.STAT_FIELDS]  # what each statistic means
 """
 
 from ._core import (
+    CELL_TYPES,
+    COMPONENT_KINDS,
+    FORMATS,
+    SHEET_TYPES,
+    STAT_FIELDS,
+    TABLE1_COLUMNS,
+    TIMING_FIELDS,
+    WIREFRAME_COUNT_FIELDS,
     Analysis,
+    Field,
     BaseComplex,
     Mesh,
     MeshFormatError,
@@ -34,4 +44,6 @@ __all__ = [
     "Mesh", "MeshFormatError", "load", "__version__",
     "Analysis", "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe", "block_soup", "polylines",
     "cell_quality", "cell_depth", "cell_centroids", "kept_surface_soup",
+    "Field", "STAT_FIELDS", "TIMING_FIELDS", "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS",
+    "SHEET_TYPES", "CELL_TYPES", "COMPONENT_KINDS", "FORMATS",
 ]

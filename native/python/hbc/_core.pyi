@@ -145,6 +145,44 @@ class Timings(TypedDict):
     subsheets: float
     vsg_wireframe: float
 
+class Field:
+    """One reported number, described once in the library (see docs/concepts.md)."""
+
+    @property
+    def key(self) -> str: ...
+    @property
+    def label(self) -> str: ...
+    @property
+    def notation(self) -> str: ...
+    @property
+    def latex(self) -> str: ...
+    @property
+    def meaning(self) -> str: ...
+    @property
+    def unit(self) -> str: ...
+    @property
+    def kind(self) -> Literal["count", "ratio", "seconds"]: ...
+
+# The statistics of Analysis.stats (and `hbc analyze --json`) in output order; its "timings";
+# Wireframe.counts; the paper's Table 1 columns in its order, each (field, is a timing).
+STAT_FIELDS: tuple[Field, ...]
+TIMING_FIELDS: tuple[Field, ...]
+WIREFRAME_COUNT_FIELDS: tuple[Field, ...]
+TABLE1_COLUMNS: tuple[tuple[Field, bool], ...]
+# Name tables, index = the value stored in the arrays: SHEET_TYPES[t] = (JSON name, label);
+# CELL_TYPES[t] and COMPONENT_KINDS[k] = names; FORMATS: every format the readers take.
+SHEET_TYPES: tuple[tuple[str, str], ...]
+CELL_TYPES: tuple[str, ...]
+COMPONENT_KINDS: tuple[str, ...]
+class FormatInfo(TypedDict):
+    name: str  # the format= / --format name, and the extension in lower case
+    alias: str  # another accepted name, or ""
+    extension: str  # as files usually spell it, with the dot
+    title: str  # what writes it
+    writable: bool  # write_mesh / `hbc generate` write it too
+
+FORMATS: tuple[FormatInfo, ...]
+
 class AnalysisStats(TypedDict, total=False):
     """`hbc analyze FILE --json` without "file"; keys of stages not run are absent."""
 
@@ -175,10 +213,10 @@ class AnalysisStats(TypedDict, total=False):
 
 class WireframeCounts(TypedDict):
     vsg_edges: int
-    wireframe_edges: int  # polylines of the complete wireframe
-    wireframe_edges_simplified: int  # polylines of the simplified wireframe
     vsg_chains: int
     singular_vertices: int  # the wireframe's, not SingularityGraph.singular_vertices
+    wireframe_edges: int  # polylines of the complete wireframe
+    wireframe_edges_simplified: int  # polylines of the simplified wireframe
     vsg_mesh_edges: int
     wireframe_mesh_edges: int
     wireframe_mesh_edges_simplified: int
