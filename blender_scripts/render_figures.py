@@ -54,7 +54,7 @@ def stats_row(subject):
 def sheet_caption(subject):
     if subject.sheet is None:
         return ""
-    return f"sheet {subject.sheet}, {plan.SHEET_TYPE_NAMES[subject.sheet_type]}"
+    return f"sheet {subject.sheet}, {subject.addon.P.SHEET_TYPES[subject.sheet_type]}"
 
 
 def start(args, path):
@@ -192,7 +192,7 @@ def panel_label(subject, key):
     t = f"({plan.PANEL_LETTER[key]}) {plan.PANEL_TITLE[key]}"
     if subject.sheet is None:
         return t
-    name = plan.SHEET_TYPE_NAMES[subject.sheet_type]
+    name = subject.addon.P.SHEET_TYPES[subject.sheet_type]
     if key == "sheet":
         return f"{t} {subject.sheet} ({name})"
     if key in ("vsg", "wireframe"):

@@ -45,8 +45,6 @@ COMPARE_ROWS = (
 
 ENGINES = ("cycles", "eevee", "workbench")
 
-SHEET_TYPE_NAMES = ("perfect", "type 1", "self-parallel", "self-intersecting")
-
 
 def script_args(argv):
     """The script's own arguments: those after Blender's '--' separator when Blender runs the

@@ -15,6 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import native
+
 # ---------------------------------------------------------------------------------------------
 # Layers and names
 
@@ -40,10 +42,18 @@ def layer_collection_name(mesh_name: str, layer: str) -> str:
     return f"{mesh_name} / {LAYER_TITLES[layer]}"
 
 
+def mesh_extensions():
+    """The file extensions the readers take (hbc.FORMATS), longest first so that .ovmb wins over
+    .ovm; none when the compiled module is not usable here (the import then says why)."""
+    if native.module_problem():
+        return []
+    return sorted((f["extension"] for f in native.import_hbc().FORMATS), key=len, reverse=True)
+
+
 def mesh_name_from_path(path: str) -> str:
     base = os.path.basename(path)
-    for suffix in (".ovmb", ".ovm", ".mesh", ".hybrid", ".hedra", ".msh", ".vtk", ".vtu"):
-        if base.lower().endswith(suffix):
+    for suffix in mesh_extensions():
+        if base.lower().endswith(suffix.lower()):
             return base[: -len(suffix)] or base
     return base
 
@@ -99,10 +109,18 @@ SHARED_COLOR = (1.0, 0.85, 0.0, 1.0)
 SELF_PARALLEL_EDGE_COLOR = (1.0, 0.55, 0.0, 1.0)
 SELF_INTERSECTING_COLOR = (0.85, 0.1, 0.85, 1.0)
 
-COMPONENT_KINDS = ("cube", "ring", "other", "non-hex")
-SHEET_TYPES = ("perfect", "type 1 (non-hex)", "type 2 (self-parallel)", "type 3 (self-intersecting)")
-#: One short word per sheet type for narrow list rows.
+#: One short word per sheet type for narrow list rows (the labels are hbc.SHEET_TYPES').
 SHEET_TYPE_SHORT = ("perfect", "non-hex", "self-par.", "self-int.")
+
+
+def __getattr__(name):
+    # Names the library defines once (hbc.COMPONENT_KINDS, hbc.SHEET_TYPES' labels), read when first
+    # asked: the module must import before the compiled hbc is known to load.
+    if name == "COMPONENT_KINDS":
+        return native.import_hbc().COMPONENT_KINDS
+    if name == "SHEET_TYPES":
+        return tuple(label for _, label in native.import_hbc().SHEET_TYPES)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def palette_color(index) -> np.ndarray:
@@ -349,45 +367,36 @@ def spread_translation(index: int, points, gap: float = 0.25, below: bool = Fals
 # ---------------------------------------------------------------------------------------------
 # Table 1 row
 
-TABLE1_FIELDS = (
-    ("cells", "|C|", "{:d}", "Cells of the mesh"),
-    ("hex_ratio", "|H|/|C|", "{:.1%}", "Share of the cells that are hexahedra"),
-    ("components", "|C_B|", "{:d}", "Blocks (components) of the base complex"),
-    ("hex_component_ratio", "|H_B|/|C_B|", "{:.1%}", "Share of the blocks made of hexahedra"),
-    ("sheets", "#Sheets", "{:d}", "Sheets of the base complex"),
-    ("sheets_type1", "#Type 1", "{:d}", "Imperfect sheets of type 1 (corners shared through non-hex cells)"),
-    ("sheets_type2", "#Type 2", "{:d}", "Self-parallel sheets (type 2)"),
-    ("sheets_type3", "#Type 3", "{:d}", "Self-intersecting sheets (type 3)"),
-    ("subsheets_of_largest_self_intersecting", "#Subsheets", "{:d}",
-     "Subsheets of the largest self-intersecting sheet"),
-)
-TIMING_FIELDS = (
-    ("singularity_graph", "T_GS", "Time to extract the hybrid singularity graph"),
-    ("base_complex", "T_GB", "Time to build the base complex"),
-    ("vsg_wireframe", "T_VSGW", "Time to compute the VSG wireframe"),
-    ("sheets", "T_GSH", "Time to extract and classify the sheets"),
-    ("subsheets", "T_GSH*", "Time to decompose the self-intersecting sheets into subsheets"),
-)
-#: Table 1 label -> what it means, in words (the panel's tooltips).
-TABLE1_MEANING = {label: meaning for _, label, _, meaning in TABLE1_FIELDS}
-TABLE1_MEANING.update({label: meaning for _, label, meaning in TIMING_FIELDS})
+def table1_columns():
+    """[(key, notation, meaning, is a time)] of the paper's Table 1 in its order, from the library's
+    one description of what it reports (hbc.TABLE1_COLUMNS): the panel, the copied row and
+    `hbc table` share the notation, and the panel's tooltips say what each means."""
+    hbc = native.import_hbc()
+    return [(f.key, f.notation, f"{f.label}: {f.meaning}" + (" (seconds)" if timing else ""), timing)
+            for f, timing in hbc.TABLE1_COLUMNS]
+
+
+def table1_meaning(label: str) -> str:
+    """What the Table 1 column headed `label` means, in words (the panel's tooltip)."""
+    return next(meaning for _, notation, meaning, _ in table1_columns() if notation == label)
 
 
 def table1_row(stats: dict):
     """[(label, text)] of the paper's Table 1 for one mesh; missing or -1 values show as '-'."""
-    rows = []
     if "hex_component_ratio" not in stats and stats.get("components"):
         stats = dict(stats, hex_component_ratio=stats.get("hex_components", 0) / stats["components"])
-    for key, label, fmt, _ in TABLE1_FIELDS:
-        v = stats.get(key)
+    timings = stats.get("timings") or {}
+    rows = []
+    for key, label, _, timing in table1_columns():
+        v = (timings if timing else stats).get(key)
         if v is None or (isinstance(v, (int, np.integer)) and v < 0):
             rows.append((label, "-"))
+        elif timing:
+            rows.append((label, f"{1000.0 * float(v):.0f} ms"))
+        elif isinstance(v, (int, np.integer)):
+            rows.append((label, f"{int(v):d}"))
         else:
-            rows.append((label, fmt.format(int(v) if "d" in fmt else float(v))))
-    timings = stats.get("timings") or {}
-    for key, label, _ in TIMING_FIELDS:
-        v = timings.get(key)
-        rows.append((label, "-" if v is None else f"{1000.0 * float(v):.0f} ms"))
+            rows.append((label, f"{float(v):.1%}"))
     return rows
 
 
@@ -422,7 +431,7 @@ def subsheets_unavailable(sheet_type) -> str | None:
     if sheet_type is None:
         return "Pick a sheet in the list first"
     if int(sheet_type) != 3:
-        return (f"Sheet is {SHEET_TYPES[int(sheet_type)]}: only self-intersecting (type 3) sheets "
+        return (f"Sheet is {__getattr__('SHEET_TYPES')[int(sheet_type)]}: only self-intersecting (type 3) sheets "
                 "have subsheets")
     return None
 

@@ -24,7 +24,8 @@ from ..blender.context import active_root, fill_sheet_list, find_root, merged_ow
 from ..plan import planning as P
 from ..plan import session
 
-FILTER = "*.ovm;*.ovmb;*.mesh;*.HYBRID;*.hybrid;*.hedra;*.msh;*.vtk;*.vtu"
+# The file browser's filter: every extension the readers take, as files spell it and in lower case.
+FILTER = ";".join(sorted({f"*{e}" for x in P.mesh_extensions() for e in (x, x.lower())})) or "*"
 LAYER_ITEMS = [(k, title, f"Build the {title.lower()} layer") for k, title in P.LAYERS]
 
 
@@ -384,4 +385,5 @@ class HBC_OT_add_cut_plane(bpy.types.Operator):
 
 
 def menu_import(self, context):
-    self.layout.operator(HBC_OT_import.bl_idname, text="Hex-dominant mesh (.mesh/.msh/.vtk/.vtu/.ovm/.HYBRID/.hedra)")
+    exts = "/".join(sorted(P.mesh_extensions(), key=str.lower))
+    self.layout.operator(HBC_OT_import.bl_idname, text=f"Hex-dominant mesh ({exts})" if exts else "Hex-dominant mesh")

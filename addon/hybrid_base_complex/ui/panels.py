@@ -124,7 +124,7 @@ class HBC_PT_table1(_Sub, bpy.types.Panel):
         col = layout.column(align=True)
         for label, text in P.table1_row(s.stats()):
             split = col.split(factor=0.5, align=True)
-            split.operator("hbc.explain", text=label, emboss=False).text = P.TABLE1_MEANING[label]
+            split.operator("hbc.explain", text=label, emboss=False).text = P.table1_meaning(label)
             right = split.row()
             right.alignment = "RIGHT"
             right.label(text=text)

@@ -497,7 +497,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     log = draw_all(bpy.context)
     labels = [(kind, text) for kind, text, _ in log if kind in ("prop", "label", "operator")]
     words = {text for _, text in labels}
-    assert {"|C|", "#Type 3", "Markdown", "CSV", "Rebuild", "Build All"} <= words
+    assert {"|C|", "T3", "Markdown", "CSV", "Rebuild", "Build All"} <= words
     # Buttons and property labels share a row with a value or an icon: MAX_LABEL characters; a
     # label alone on its row: 30 (the object's name and its list of sheets excepted).
     too_long = [t for kind, t in labels if len(t) > (30 if kind == "label" else panels.MAX_LABEL)
@@ -519,8 +519,8 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     # The Table 1 labels are buttons whose tooltip says what they mean.
     from hybrid_base_complex.plan import planning as P
 
-    assert P.TABLE1_MEANING["|C_B|"] == "Blocks (components) of the base complex"
-    assert P.TABLE1_MEANING["T_GSH"] == "Time to extract and classify the sheets"
+    assert P.table1_meaning("|C_B|").startswith("Components: components of the hybrid base complex")
+    assert P.table1_meaning("T_GSH") == "Sheets: extracting and classifying the sheets (seconds)"
     # The legend names what the yellow and red dots mean once the picked-sheet layer is shown.
     assert bpy.ops.hbc.build_layer(layer="sheet") == {"FINISHED"}
     legend = [t for k, t, _ in draw_all(bpy.context) if k == "label"]

@@ -94,7 +94,10 @@ def test_names_and_table_row():
     row = dict(P.table1_row({"cells": 10, "hex_ratio": 0.5, "components": 4, "hex_components": 3,
                              "sheets": -1, "timings": {"base_complex": 0.0123}}))
     assert row["|C|"] == "10" and row["|H|/|C|"] == "50.0%" and row["|H_B|/|C_B|"] == "75.0%"
-    assert row["#Sheets"] == "-" and row["T_GB"] == "12 ms" and row["T_GS"] == "-"
+    assert row["|G_SH|"] == "-" and row["T_GB"] == "12 ms" and row["T_GS"] == "-"
+    # The columns are the library's (hbc.TABLE1_COLUMNS): the same heads as `hbc table`.
+    assert list(row) == ["|C|", "|H|/|C|", "|C_B|", "|H_B|/|C_B|", "|G_SH|", "T1", "T2", "T3", "|G_SH*|",
+                         "T_GS", "T_GB", "T_VSGW", "T_GSH", "T_GSH*"]
 
 
 def test_progress_reports_fractions():
@@ -124,7 +127,7 @@ def test_table1_text_markdown_and_csv():
     assert md[2].startswith("| a\\|b | 10 | 50.0% | 4 | 75.0% | - |")
     csv = P.table1_text("x,y", stats, "CSV").splitlines()
     assert csv[0].split(",")[:3] == ["Mesh", "|C|", "|H|/|C|"] and csv[1].startswith('"x,y",10,50.0%,4,75.0%,-')
-    assert all(P.TABLE1_MEANING[label] for label, _ in P.table1_row(stats))
+    assert all(P.table1_meaning(label) for label, _ in P.table1_row(stats))
 
 
 def test_describe_error_and_subsheet_reason():
