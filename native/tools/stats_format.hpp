@@ -1,5 +1,5 @@
 #pragma once
-// Table 1 statistics as JSON (SPEC §5 keys), CSV and a human-readable table.
+// Table 1 statistics as JSON, CSV and a human-readable table, from the schema (hbc/schema.hpp).
 #include <string>
 
 #include "hbc/analysis.hpp"

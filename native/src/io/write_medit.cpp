@@ -1,5 +1,5 @@
 // MEDIT .mesh writer: Hexahedra, Tetrahedra, Prisms and Pyramids in MEDIT's vertex order, which
-// is rebuilt from each cell's faces. The order matches the face templates of read_medit.cpp
+// is rebuilt from each cell's faces. The order matches the face templates of mesh/cell_templates
 // (hex bottom 0 3 2 1 and top 4 5 6 7, tet 0 2 1 + apex 3, prism 0 2 1 / 3 4 5, pyramid base
 // 0 3 2 1 + apex 4), so reading the text back gives every cell the same faces. The element's
 // handedness follows the cell's view of the face used as its base: a cell whose faces are seen
