@@ -6,7 +6,7 @@
 
 One MESH: the paper's pipeline panels (Fig. 1), each a PNG `<name>_<letter>_<panel>.png` -
 (a) the mesh (transparent boundary with its cell edges, non-hex cells coloured by type),
-(b) the hybrid singularity graph, (c) the hybrid base complex (coloured blocks, slight shrink),
+(b) the hybrid singularity graph, (c) the hybrid base complex (its components coloured, slight shrink),
 (d) a sheet with its highlights (default: the largest self-intersecting sheet, else the largest
 imperfect one, else the largest, within that class the largest with a non-empty VSG wireframe
 first; --sheet N to choose), (e) its VSG, (f) its simplified VSG wireframe, (g) its largest

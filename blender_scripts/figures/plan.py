@@ -1,6 +1,6 @@
 """What the figure script decides without Blender (no ``bpy``; tested with plain pytest):
 command line, the panels and their titles, which sheet and subsheets to show, the camera that
-frames a set of points, the feature edges that outline blocks, and what each panel's legend strip
+frames a set of points, the feature edges that outline soups, and what each panel's legend strip
 lists and where its swatches and words go.
 """
 
@@ -22,8 +22,8 @@ PANELS = (
     ("wireframe", "f", "Simplified VSG wireframe"),
     ("subsheets", "g", "Subsheets"),
 )
-#: Inspection panels (issue 17), rendered only when asked for with --panels: the base complex
-#: blocks cut by a plane, and the cells coloured by scaled Jacobian (viridis), cut the same way.
+#: Inspection panels, rendered only when asked for with --panels: the base complex's
+#: components cut by a plane, and the cells coloured by scaled Jacobian (viridis), cut the same way.
 INSPECT_PANELS = (
     ("cut", "h", "Base complex, cut"),
     ("quality", "i", "Scaled Jacobian (viridis, 0 purple to 1 yellow), cut"),
@@ -310,8 +310,8 @@ def clip_range(camera: Camera, points):
 def feature_edges(positions, face_sizes, face_vertices, angle_deg=35.0):
     """(m, 2) vertex pairs of a polygon soup's feature edges: border edges (one face),
     non-manifold ones (three or more) and edges whose two faces' normals differ by more than
-    `angle_deg`. Faces with their own vertex copies per block (block soups) give each block's
-    own corner edges, never the seams between blocks."""
+    `angle_deg`. Faces with their own vertex copies per owner (block_soup's soups) give each
+    owner's own corner edges, never the seams between owners."""
     pos = np.asarray(positions, np.float64).reshape(-1, 3)
     sizes = np.asarray(face_sizes, np.int64)
     fv = np.asarray(face_vertices, np.int64)

@@ -313,8 +313,8 @@ class Subject:
         return built
 
     def outline(self, tx, coll, name, soup, angle=35.0, color=OUTLINE_COLOR, every_edge=False, scale=0.55):
-        """Dark tubes along a soup's feature edges (or every edge): blocks read clearly in any
-        engine, and the line builder of the add-on makes them."""
+        """Dark tubes along a soup's feature edges (or every edge): components and sheets read
+        clearly in any engine, and the line builder of the add-on makes them."""
         P, S = self.addon.P, self.addon.S
         if soup.num_faces == 0:
             return None
@@ -489,7 +489,7 @@ class Subject:
         return soup.select((cen - p) @ n <= 0)
 
     def panel_cut(self):
-        """The base complex blocks sliced by the plane (whole cells kept by their centroid)."""
+        """The base complex's components sliced by the plane (whole cells kept by their centroid)."""
         coll = self.build("cut", "blocks")
         self.cut(coll)
         with self.addon.S.Transaction() as tx:

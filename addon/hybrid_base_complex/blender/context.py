@@ -1,7 +1,7 @@
 """What the scene holds, as the operators, panels, settings and the inspection all ask it: the
 imported meshes' collections, the one the Hex Structure panel acts on, its Structure (read again
-from its source when not in memory), the sheet list, which layers can be built now, and the block
-picked in a merged mesh."""
+from its source when not in memory), the sheet list, which layers can be built now, and the owner
+(component or sheet) picked in a merged mesh."""
 
 from __future__ import annotations
 
@@ -45,7 +45,7 @@ def structure_of(root, analyzed, log, rho=0.8):
 
 
 def fill_sheet_list(settings, structure):
-    """Scene.hbc's sheet list (index, type, cells, blocks per sheet) from an analyzed Structure."""
+    """Scene.hbc's sheet list (index, type, cells, components per sheet) from an analyzed Structure."""
     settings.sheets.clear()
     if structure.analysis is None:
         return
@@ -80,7 +80,7 @@ def unavailable(context, layer):
 
 
 def merged_owner_faces(ob):
-    """(bmesh, its `owner` face layer or None, the active face's owner or None) of a merged-blocks
+    """(bmesh, its `owner` face layer or None, the active face's owner or None) of a merged
     mesh in edit mode."""
     bm = bmesh.from_edit_mesh(ob.data)
     layer = bm.faces.layers.int.get(S.OWNER_ATTR)

@@ -1,5 +1,5 @@
 """Looking inside a mesh in Blender: HexaLab's slicing plane, peeling, cell-type and quality
-filters, applied to every cell-based layer (the direct view's cells, the blocks, the sheets), live
+filters, applied to every cell-based layer (the direct view's cells, the components, the sheets), live
 in the viewport, and the quality colour map of the direct view. What is decided without Blender
 (colour map, histogram, per-cell arrays, kept-cells mask) is in plan/inspection.py; the settings,
 the operator and the panel are in ui/.
@@ -30,8 +30,8 @@ How it works:
 - The cut. A cell is kept or hidden whole, by its centroid: the cells the plane crosses whose
   centroid is on the near side keep all their faces, so the cut surface is made of whole cells
   standing out of the plane by up to half a cell (HexaLab's look), never of sliced polygons. On the
-  blocks and sheets layers a face is judged by the cell it was taken from, so a block is opened
-  along the same cells and shows its inside.
+  components and sheets layers a face is judged by the cell it was taken from, so a component is
+  opened along the same cells and shows its inside.
 """
 
 import bpy

@@ -71,7 +71,7 @@ def build_blocks(tx, coll, s, st, name):
 
 
 def build_sheets(tx, coll, s, st, name):
-    """Every sheet as a large coloured block: one object per sheet (clickable) up to split_max."""
+    """Every sheet as one large coloured piece: one object per sheet (clickable) up to split_max."""
     n = s.num_sheets
     if n == 0:
         return 0

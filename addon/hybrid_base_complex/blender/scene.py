@@ -3,7 +3,7 @@
 - Meshes: vertices.foreach_set("co"), polygons via loop_start (+ loop_total before 4.0) and
   loops.foreach_set("vertex_index"); colours as a CORNER float colour attribute `hbc_color`
   (shown by Workbench with colour type Attribute, read by an Attribute node in Cycles/EEVEE);
-  the block a face belongs to as a FACE int attribute `owner`.
+  the owner (cell, component, sheet, ...) a face belongs to as a FACE int attribute `owner`.
 - Lines (singularity graph, wireframes, highlighted edges): a mesh of edges with a POINT colour
   attribute (alpha = opacity) and a shared geometry-nodes modifier (Mesh to Curve, Curve to Mesh)
   that makes tubes; the attribute is carried onto the tubes so the shared line material renders
@@ -292,8 +292,8 @@ def _is_identity(m) -> bool:
 
 def material(tx: Transaction, kind: str, color=(0.8, 0.8, 0.8, 1.0), alpha: float = 1.0):
     """Shared material by kind:
-    - "attr": base colour and alpha from the `hbc_color` attribute (blocks, lines, dots);
-    - "object": base colour from Object Info > Color (per-block objects);
+    - "attr": base colour and alpha from the `hbc_color` attribute (soups, lines, dots);
+    - "object": base colour from Object Info > Color (one object per owner);
     - "flat": one colour with `alpha` (the transparent boundary); named by colour and alpha.
     """
     if kind == "flat":
@@ -428,7 +428,7 @@ def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=
 
 def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of=None):
     """One object per owner (faces with equal owner), all sharing the Object Info material with
-    ob.color set: for layers with few blocks, so that clicking a block selects it. Relies on
+    ob.color set: for layers with few owners, so that clicking one selects it. Relies on
     hbc.block_soup giving each owner its own points (usually one contiguous range)."""
     mat = material(tx, "object")
     order = np.argsort(soup.face_owner, kind="stable")

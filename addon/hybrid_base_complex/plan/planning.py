@@ -109,8 +109,8 @@ SHARED_COLOR = (1.0, 0.85, 0.0, 1.0)
 SELF_PARALLEL_EDGE_COLOR = (1.0, 0.55, 0.0, 1.0)
 SELF_INTERSECTING_COLOR = (0.85, 0.1, 0.85, 1.0)
 
-#: One short word per sheet type for narrow list rows (the labels are hbc.SHEET_TYPES').
-SHEET_TYPE_SHORT = ("perfect", "non-hex", "self-par.", "self-int.")
+#: The sheet type for narrow list rows: the label without its word (the labels are hbc.SHEET_TYPES').
+SHEET_TYPE_SHORT = ("perfect", "type 1", "type 2", "type 3")
 
 
 def __getattr__(name):
@@ -208,7 +208,7 @@ def csr_invert(offsets, items, n_items: int):
 @dataclass
 class Soup:
     """Polygons with their own vertices: positions (n,3) float32, face_sizes (m,), face_vertices
-    (sum sizes,) int32 into positions, face_owner (m,) int32 (the block a face belongs to). Sizes,
+    (sum sizes,) int32 into positions, face_owner (m,) int32 (the owner a face belongs to). Sizes,
     as Blender's loop totals; hbc's soups come as a CSR (from_dict)."""
 
     positions: np.ndarray
@@ -496,7 +496,7 @@ def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_he
         if has_non_manifold:
             out.append(("non_manifold", "Non-manifold edge"))
     if "blocks" in layers and has_non_hex_blocks:
-        out.append(("non_hex_block", "Non-hex block"))
+        out.append(("non_hex_block", "Non-hex component"))
     if "sheet" in layers or "subsheets" in layers:
         out += [(key, words) for key, words in SHEET_HIGHLIGHTS if highlights is None or key in highlights]
     return out

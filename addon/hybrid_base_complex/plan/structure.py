@@ -91,7 +91,7 @@ class Structure:
         return self._soup("hex")
 
     def non_hex_cells(self, shrink=0.0) -> P.Soup:
-        """Every non-hex cell as its own block, owner = cell id (colour by its type)."""
+        """Every non-hex cell as its own piece, owner = cell id (colour by its type)."""
         return self._soup("non_hex", shrink=shrink)
 
     def cell_type_colors(self, owners) -> np.ndarray:
@@ -122,7 +122,7 @@ class Structure:
     # -- legend -------------------------------------------------------------------------------
     def legend_facts(self) -> dict:
         """planning.legend's facts about this mesh: its non-hex cell types and, analysed, the
-        singularity valences, whether pseudo-singular and non-manifold edges and non-hex blocks
+        singularity valences, whether pseudo-singular and non-manifold edges and non-hex components
         occur."""
         types = np.asarray(self.mesh.cell_types)
         facts = {"non_hex_types": sorted(int(t) for t in np.unique(types) if t != 0)}
@@ -142,7 +142,7 @@ class Structure:
         return np.asarray(self.analysis.complex.component_kind, np.uint8)
 
     def blocks(self, shrink: float) -> P.Soup:
-        """Every component as a block, owner = component id."""
+        """Every component as its own piece, owner = component id."""
         return self._soup("components", shrink=shrink)
 
     def component_colors(self) -> np.ndarray:
@@ -175,8 +175,8 @@ class Structure:
         return P.csr_row(off, items, sheet)
 
     def all_sheets(self, shrink: float) -> P.Soup:
-        """Every sheet as one large block (the boundary of its cell set), owner = sheet id; a cell
-        in two sheets is in both blocks."""
+        """Every sheet as one large piece (the boundary of its cell set), owner = sheet id; a cell
+        in two sheets is in both pieces."""
         return self._soup("sheets", shrink=shrink)
 
     def sheet_blocks(self, sheet: int, shrink: float) -> P.Soup:
@@ -202,7 +202,7 @@ class Structure:
         off, items = _csr(a, "sheet_self_intersecting_components")
         comps = P.csr_row(off, items, sheet)
         if len(comps):
-            # The blocks (components) holding a type-3 pair, each its own piece.
+            # The blocks (components) holding a type 3 pair, each its own piece.
             blocks = self._soup("components")
             cells = blocks.select(np.isin(blocks.face_owner, comps))
         else:
@@ -223,7 +223,7 @@ class Structure:
         return self.analysis.subsheets(int(sheet))
 
     def subsheet_soup(self, sheet: int, shrink: float) -> P.Soup:
-        """Every subsheet of `sheet` as a block, owner = subsheet (the ids of self.subsheets(sheet):
+        """Every subsheet of `sheet` as its own piece, owner = subsheet (the ids of self.subsheets(sheet):
         hbc.block_soup takes the decomposition from the analysis)."""
         return self._soup("subsheets", sheet, shrink)
 

@@ -1,5 +1,5 @@
-"""Operators: import, analyze, build / clear layers, copy the Table 1 row, select a merged block,
-add a cut plane. All undoable; a failure reports what went wrong (the message, not a Python
+"""Operators: import, analyze, build / clear layers, copy the Table 1 row, select a merged owner
+(component or sheet), add a cut plane. All undoable; a failure reports what went wrong (the message, not a Python
 class), cancels (so Blender records no undo step) and leaves the scene as it was; a success
 reports what was built and how long it took."""
 
@@ -116,7 +116,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
     analyze: BoolProperty(name="Analyze", default=True,
                           description="Analyze on import: singularity graph, base complex, sheets and wireframe")
     build_layers: BoolProperty(name="Build layers", default=False,
-                               description="Also build the singularity graph, blocks and wireframe layers")
+                               description="Also build the singularity graph, Blocks (components) and wireframe layers")
     beside: BoolProperty(name="Place beside", default=True,
                          description="Place the mesh to the right of the meshes already imported")
     frame: BoolProperty(name="Frame", default=True, description="Frame the imported mesh in the 3D views")
@@ -181,7 +181,7 @@ class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
         root["hbc_rho"] = float(st.rho)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
-        return self.finish_with(f"Analyzed {root.name}: {s.num_components} blocks, {s.num_sheets} sheets "
+        return self.finish_with(f"Analyzed {root.name}: {s.num_components} components, {s.num_sheets} sheets "
                                 f"in {time.perf_counter() - t0:.2f} s")
 
 
@@ -228,7 +228,7 @@ BUILD_ALL_SHOWN = "blocks"
 
 
 class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
-    """Build the overview layers (direct view, singularity graph, blocks, sheets, wireframe); only the blocks stay visible"""
+    """Build the overview layers (direct view, singularity graph, components, sheets, wireframe); only the components stay visible"""
 
     bl_idname = "hbc.build_all"
     bl_label = "Build All"
@@ -336,13 +336,13 @@ class HBC_OT_explain(bpy.types.Operator):
 
 
 class HBC_OT_select_block(bpy.types.Operator):
-    """Select every face of the picked block (the active face's owner) in a merged mesh"""
+    """Select every face of the picked component or sheet (the active face's owner) in a merged mesh"""
 
     bl_idname = "hbc.select_block"
     bl_label = "Select Block"
     bl_options = {"REGISTER", "UNDO"}
 
-    frame: BoolProperty(name="Frame", default=False, description="Also frame the block in the 3D views")
+    frame: BoolProperty(name="Frame", default=False, description="Also frame it in the 3D views")
 
     @classmethod
     def poll(cls, context):
@@ -353,7 +353,7 @@ class HBC_OT_select_block(bpy.types.Operator):
         ob = context.active_object
         bm, layer, owner = merged_owner_faces(ob)
         if owner is None:
-            self.report({"ERROR"}, "Pick a face of the block first")
+            self.report({"ERROR"}, "Pick a face of the component or sheet first")
             return {"CANCELLED"}
         n = 0
         for f in bm.faces:

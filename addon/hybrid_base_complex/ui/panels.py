@@ -264,7 +264,7 @@ class HBC_PT_legend(_Sub, bpy.types.Panel):
 
 
 def picked_block(context):
-    """(component or None, owner kind, object) of the selection: a per-block object, or the
+    """(component or None, owner kind, object) of the selection: a per-owner object, or the
     active face of a merged mesh in edit mode."""
     ob = context.active_object
     if ob is None or not ob.get("hbc_mesh"):

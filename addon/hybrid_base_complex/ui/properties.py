@@ -18,7 +18,8 @@ from ..plan import session
 
 class HBCSheetItem(bpy.types.PropertyGroup):
     index: IntProperty()
-    type: IntProperty(description="0 perfect, 1 non-hex (type 1), 2 self-parallel, 3 self-intersecting")
+    type: IntProperty(description="0 perfect, 1 type 1 (non-hex), 2 type 2 (self-parallel), "
+                                  "3 type 3 (self-intersecting)")
     cells: IntProperty()
     components: IntProperty()
 
@@ -42,11 +43,11 @@ class HBCSettings(bpy.types.PropertyGroup):
     direct_shrink: FloatProperty(name="Shrink", default=0.0, min=0.0, max=0.9,
                                  description="Pull every non-hex cell towards its centre")
 
-    # blocks, sheets
+    # components (the Blocks layer), sheets
     shrink: FloatProperty(name="Shrink", default=0.1, min=0.0, max=0.9,
-                          description="Pull every block towards its centre to separate blocks")
+                          description="Pull every component or sheet towards its centre to separate them")
     split_max: IntProperty(name="Max objects", default=1000, min=0,
-                           description="Up to this many blocks, one object per block (clickable); "
+                           description="Up to this many components or sheets, one object each (clickable); "
                                        "more: one merged mesh with a face attribute 'owner'")
     sheets: CollectionProperty(type=HBCSheetItem)
     sheet_index: IntProperty(name="Sheet", default=0, min=0, update=lambda self, context: _sheet_picked(self, context))
@@ -70,11 +71,13 @@ class HBCSettings(bpy.types.PropertyGroup):
 
     # wireframe
     rho: FloatProperty(name="ρ", default=0.8, min=0.0, max=1.0,
-                       description="Partial-parallel threshold of the wireframe colours (re-analyzes)")
+                       description="Threshold of the wireframe's colour classes (partial-parallel fraction; "
+                                   "only colours depend on it), used when the mesh is analyzed (again)")
     opacity_floor: FloatProperty(name="Floor", default=0.15, min=0.0, max=1.0,
                                  description="Opacity of the faintest (farthest) wireframe lines")
     simplified: BoolProperty(name="Simplified", default=True,
-                             description="Only the important polylines (and those keeping it connected)")
+                             description="The simplified wireframe (kept and reactivated chains); "
+                                         "off: the complete wireframe")
     wireframe_scope: EnumProperty(name="Scope", description="Wireframe of the whole mesh or of the picked sheet", items=[("MESH", "Mesh", "The whole mesh's wireframe"),
                                                        ("SHEET", "Sheet", "The picked sheet's wireframe")])
     spread: BoolProperty(name="Side by side", default=True,

@@ -334,7 +334,7 @@ def test_build_all_shows_one_layer_and_reports(clean_scene, data_dir, capsys):
     assert "hbc: [100%] built " + P.LAYER_TITLES["wireframe"] in out
     assert f"{root.name}: built 5 layers (" in out and " s; showing Blocks" in out
     assert bpy.ops.hbc.analyze() == {"FINISHED"}
-    assert f"Info: Analyzed {root.name}: 1301 blocks, 20 sheets in " in capsys.readouterr().out
+    assert f"Info: Analyzed {root.name}: 1301 components, 20 sheets in " in capsys.readouterr().out
 
 
 RESAVE_AND_REBUILD = """
@@ -542,7 +542,7 @@ def test_sheet_list_rows_filter_and_sort(clean_scene, data_dir):
     log = []
     item = SimpleNamespace(index=0, type=1, cells=10, components=2)
     panels.HBC_UL_sheets.draw_item(None, bpy.context, _Recorder(log), None, item, 0, None, "")
-    assert [t for _, t, _ in log] == ["Sheet 0", "non-hex", "10 cells"]
+    assert [t for _, t, _ in log] == ["Sheet 0", "type 1", "10 cells"]
     ul = SimpleNamespace(filter_name="self-int", bitflag_filter_item=1 << 30)
     st.sheet_sort = "SIZE"
     flags, order = panels.HBC_UL_sheets.filter_items(ul, bpy.context, st, "sheets")

@@ -172,7 +172,7 @@ def test_legend_facts_of_known_meshes(grid, sector5, pyramids):
     split = Structure(*pyramids).legend_facts()
     assert split["non_hex_types"] == [3] and split["has_non_hex_blocks"]
     assert P.legend(["direct", "blocks"], **split) == [("hex", "Boundary, hex cells"), ("pyramid", "Pyramid cells"),
-                                                       ("non_hex_block", "Non-hex block")]
+                                                       ("non_hex_block", "Non-hex component")]
     assert Structure(pyramids[0]).legend_facts() == {"non_hex_types": [3]}  # not analysed: cell types only
 
 

@@ -184,7 +184,7 @@ def test_panel_legends_are_the_addons_words_and_colours():
     assert legend("mesh") == [("hex", "Boundary, hex cells"), ("prism", "Prism cells"), ("pyramid", "Pyramid cells")]
     assert legend("graph") == [("valence3", "Valence 3 edge"), ("valence5", "Valence 5 edge"),
                                ("valence_other", "Valence 7 edge"), ("pseudo", "Pseudo-singular")]
-    assert legend("complex") == legend("cut") == [("non_hex_block", "Non-hex block")]
+    assert legend("complex") == legend("cut") == [("non_hex_block", "Non-hex component")]
     # Only the highlights the panel draws, in the add-on's order.
     assert legend("sheet", {"self_intersecting", "unmatched"}) == [
         ("unmatched", "Dot: unmatched"), ("self_intersecting", "Self-intersecting")]
@@ -195,7 +195,7 @@ def test_panel_legends_are_the_addons_words_and_colours():
         assert legend(key, {"unmatched"}) == []
     # Every panel of the script is covered.
     assert set(plan.LEGEND_LAYERS) == set(plan.ALL_PANEL_KEYS) | {k for k, _ in plan.COMPARE_ROWS}
-    # A mesh without non-hex blocks has no "Non-hex block" entry.
+    # A mesh without non-hex components has no "Non-hex component" entry.
     assert plan.panel_legend(P, "complex", dict(FACTS, has_non_hex_blocks=False)) == []
 
 
