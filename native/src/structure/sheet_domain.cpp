@@ -69,101 +69,108 @@ Csr<int32_t> curve_owner_rows(const Csr<int32_t>& owner_curves, const std::vecto
       owner_curves, ncurves, par, [&](size_t o) { return map[o]; }, [](int32_t k) { return k; });
 }
 
-}  // namespace
-
-SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level, const Threads& threads) {
-  const Threads par = resolved(threads);
-  SheetDomain d;
-  d.level = level;
+// Level complex: the blocks are the hex components, the curves the base complex's curves and the
+// quads its patches.
+void complex_level_domain(const Mesh& m, const BaseComplex& bc, const Threads& par, SheetDomain& d) {
   const size_t nc = m.num_cells(), nf = m.num_faces();
-  d.cell_block.assign(nc, -1);
-  d.face_joins.assign(nf, 0);
   std::vector<int32_t> buf;
-
-  if (level == Level::Complex) {
-    std::vector<int32_t> comp_block(bc.num_components(), -1);
-    for (size_t k = 0; k < bc.num_components(); ++k) {
-      if (bc.component_kind[k] == ComponentKind::NonHex) continue;
-      comp_block[k] = static_cast<int32_t>(d.block_component.size());
-      d.block_component.push_back(static_cast<int32_t>(k));
-      d.block_cells.push_row(bc.component_cells[k]);
-    }
-    detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int) {
-      for (size_t c = b; c < e; ++c) d.cell_block[c] = m.is_hex(c) ? comp_block[bc.cell_component[c]] : -1;
-    });
-    // comp_block only grows with the component, so the kept neighbours stay sorted and distinct.
-    d.block_adjacency.reserve(d.block_component.size(), bc.component_adjacency.items.size());
-    for (int32_t k : d.block_component) {
-      buf.clear();
-      for (int32_t j : bc.component_adjacency[k])
-        if (comp_block[j] >= 0) buf.push_back(comp_block[j]);
-      d.block_adjacency.push_row(buf.begin(), buf.end());
-    }
-    d.curve_edges = bc.curve_edges;
-    // Plain resize: with huge-page advice (resize_touched) this array took 8-12 ms on the
-    // cylinder's 822k curves, against 2 ms without, likely because advised huge pages come
-    // untouched from the system where plain ones reuse the pages the stages before freed.
-    d.curve_ends.resize(bc.curve_verts.rows());
-    detail::parallel_ranges(bc.curve_verts.rows(), par, [&](size_t b, size_t e, int) {
-      for (size_t k = b; k < e; ++k) {
-        const auto vs = bc.curve_verts[k];
-        d.curve_ends[k] = bc.curve_closed[k] ? std::array<int32_t, 2>{-1, -1} : std::array<int32_t, 2>{vs.front(), vs.back()};
-      }
-    });
-    detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
-      for (size_t f = b; f < e; ++f) {
-        const auto fc = m.face_cells[f];
-        d.face_joins[f] = !bc.face_separation[f] && fc[1] >= 0 && m.is_hex(fc[0]) && m.is_hex(fc[1]);
-      }
-    });
-    d.curve_parallels = parallels_from_quads(bc.patch_curves, d.curve_ends, d.curve_edges.rows(), par);
-    // Blocks and non-hex cells at each curve, without walking the fans of its edges: a cell at a
-    // curve edge has both its faces there among the separation faces, so the curve is one of its
-    // component's curves, and conversely. A non-hex cell is a component of its own, and
-    // components are numbered by their lowest cell, so both maps below keep the order.
-    std::vector<int32_t> non_hex_cell(bc.num_components(), -1);
-    for (size_t k = 0; k < bc.num_components(); ++k)
-      if (bc.component_kind[k] == ComponentKind::NonHex) non_hex_cell[k] = bc.component_cells[k][0];
-    d.curve_blocks = curve_owner_rows(bc.component_curves, comp_block, d.curve_edges.rows(), par);
-    d.curve_non_hex_cells = curve_owner_rows(bc.component_curves, non_hex_cell, d.curve_edges.rows(), par);
-  } else {
-    for (size_t c = 0; c < nc; ++c) {
-      if (!m.is_hex(c)) continue;
-      d.cell_block[c] = static_cast<int32_t>(d.block_component.size());
-      d.block_component.push_back(bc.cell_component[c]);
-      const int32_t row[1] = {static_cast<int32_t>(c)};
-      d.block_cells.push_row(row, row + 1);
-    }
-    for (size_t u = 0; u < d.block_cells.rows(); ++u) {
-      const int32_t c = d.block_cells[u][0];
-      buf.clear();
-      for (int32_t f : m.cell_faces[c]) {
-        const auto fc = m.face_cells[f];
-        const int32_t o = fc[0] == c ? fc[1] : fc[0];
-        if (o >= 0 && d.cell_block[o] >= 0) buf.push_back(d.cell_block[o]);
-      }
-      push_sorted_unique(buf, d.block_adjacency);
-    }
-    for (size_t e = 0; e < m.num_edges(); ++e) {
-      const int32_t row[1] = {static_cast<int32_t>(e)};
-      d.curve_edges.push_row(row, row + 1);
-      d.curve_ends.push_back(m.edge_verts[e]);
-    }
-    // Quads: faces of hex cells, with their edges as the curves.
-    Csr<int32_t> quads;
-    for (size_t f = 0; f < nf; ++f) {
-      const auto fc = m.face_cells[f];
-      const bool hex_face = m.is_hex(fc[0]) || (fc[1] >= 0 && m.is_hex(fc[1]));
-      if (hex_face && m.face_verts.count(f) == 4) quads.push_row(m.face_edges(f));
-    }
-    d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges(), par);
+  std::vector<int32_t> comp_block(bc.num_components(), -1);
+  for (size_t k = 0; k < bc.num_components(); ++k) {
+    if (bc.component_kind[k] == ComponentKind::NonHex) continue;
+    comp_block[k] = static_cast<int32_t>(d.block_component.size());
+    d.block_component.push_back(static_cast<int32_t>(k));
+    d.block_cells.push_row(bc.component_cells[k]);
   }
+  detail::parallel_ranges(nc, par, [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) d.cell_block[c] = m.is_hex(c) ? comp_block[bc.cell_component[c]] : -1;
+  });
+  // comp_block only grows with the component, so the kept neighbours stay sorted and distinct.
+  d.block_adjacency.reserve(d.block_component.size(), bc.component_adjacency.items.size());
+  for (int32_t k : d.block_component) {
+    buf.clear();
+    for (int32_t j : bc.component_adjacency[k])
+      if (comp_block[j] >= 0) buf.push_back(comp_block[j]);
+    d.block_adjacency.push_row(buf.begin(), buf.end());
+  }
+  d.curve_edges = bc.curve_edges;
+  // Plain resize: with huge-page advice (resize_touched) this array took 8-12 ms on the
+  // cylinder's 822k curves, against 2 ms without, likely because advised huge pages come
+  // untouched from the system where plain ones reuse the pages the stages before freed.
+  d.curve_ends.resize(bc.curve_verts.rows());
+  detail::parallel_ranges(bc.curve_verts.rows(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k) {
+      const auto vs = bc.curve_verts[k];
+      d.curve_ends[k] = bc.curve_closed[k] ? std::array<int32_t, 2>{-1, -1} : std::array<int32_t, 2>{vs.front(), vs.back()};
+    }
+  });
+  detail::parallel_ranges(nf, par, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      const auto fc = m.face_cells[f];
+      d.face_joins[f] = !bc.face_separation[f] && fc[1] >= 0 && m.is_hex(fc[0]) && m.is_hex(fc[1]);
+    }
+  });
+  d.curve_parallels = parallels_from_quads(bc.patch_curves, d.curve_ends, d.curve_edges.rows(), par);
+  // Blocks and non-hex cells at each curve, without walking the fans of its edges: a cell at a
+  // curve edge has both its faces there among the separation faces, so the curve is one of its
+  // component's curves, and conversely. A non-hex cell is a component of its own, and
+  // components are numbered by their lowest cell, so both maps below keep the order.
+  std::vector<int32_t> non_hex_cell(bc.num_components(), -1);
+  for (size_t k = 0; k < bc.num_components(); ++k)
+    if (bc.component_kind[k] == ComponentKind::NonHex) non_hex_cell[k] = bc.component_cells[k][0];
+  d.curve_blocks = curve_owner_rows(bc.component_curves, comp_block, d.curve_edges.rows(), par);
+  d.curve_non_hex_cells = curve_owner_rows(bc.component_curves, non_hex_cell, d.curve_edges.rows(), par);
+  // The transpose of curve_blocks is each hex component's own curves (sorted, distinct), whose
+  // rows are copied in order instead of scattered curve by curve.
+  d.block_curves.reserve(d.block_component.size(), 0);
+  size_t n = 0;
+  for (int32_t k : d.block_component) n += bc.component_curves[k].size();
+  d.block_curves.items.reserve(n);
+  for (int32_t k : d.block_component) {
+    const auto row = bc.component_curves[k];
+    d.block_curves.items.insert(d.block_curves.items.end(), row.begin(), row.end());
+    d.block_curves.offsets.push_back(static_cast<int32_t>(d.block_curves.items.size()));
+  }
+}
 
-  // Mesh level: blocks holding each curve, and non-hex cells touching it, from the edge fans.
-  const size_t ncurves = level == Level::Complex ? 0 : d.curve_edges.rows();
+// Level mesh: the blocks are the hex cells, the curves the mesh edges and the quads the faces of
+// hex cells.
+void mesh_level_domain(const Mesh& m, const BaseComplex& bc, const Threads& par, SheetDomain& d) {
+  const size_t nc = m.num_cells(), nf = m.num_faces();
+  std::vector<int32_t> buf;
+  for (size_t c = 0; c < nc; ++c) {
+    if (!m.is_hex(c)) continue;
+    d.cell_block[c] = static_cast<int32_t>(d.block_component.size());
+    d.block_component.push_back(bc.cell_component[c]);
+    const int32_t row[1] = {static_cast<int32_t>(c)};
+    d.block_cells.push_row(row, row + 1);
+  }
+  for (size_t u = 0; u < d.block_cells.rows(); ++u) {
+    const int32_t c = d.block_cells[u][0];
+    buf.clear();
+    for (int32_t f : m.cell_faces[c]) {
+      const auto fc = m.face_cells[f];
+      const int32_t o = fc[0] == c ? fc[1] : fc[0];
+      if (o >= 0 && d.cell_block[o] >= 0) buf.push_back(d.cell_block[o]);
+    }
+    push_sorted_unique(buf, d.block_adjacency);
+  }
+  for (size_t e = 0; e < m.num_edges(); ++e) {
+    const int32_t row[1] = {static_cast<int32_t>(e)};
+    d.curve_edges.push_row(row, row + 1);
+    d.curve_ends.push_back(m.edge_verts[e]);
+  }
+  // Quads: faces of hex cells, with their edges as the curves.
+  Csr<int32_t> quads;
+  for (size_t f = 0; f < nf; ++f) {
+    const auto fc = m.face_cells[f];
+    const bool hex_face = m.is_hex(fc[0]) || (fc[1] >= 0 && m.is_hex(fc[1]));
+    if (hex_face && m.face_verts.count(f) == 4) quads.push_row(m.face_edges(f));
+  }
+  d.curve_parallels = parallels_from_quads(quads, d.curve_ends, m.num_edges(), par);
+  // The blocks holding each curve, and the non-hex cells touching it, from the edge fans.
   EdgeFan fan;
   std::vector<int32_t> non_hex;
-  for (size_t k = 0; k < ncurves; ++k) {
+  for (size_t k = 0; k < d.curve_edges.rows(); ++k) {
     buf.clear();
     non_hex.clear();
     for (int32_t e : d.curve_edges[k]) {
@@ -176,21 +183,19 @@ SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level, cons
     push_sorted_unique(buf, d.curve_blocks);
     push_sorted_unique(non_hex, d.curve_non_hex_cells);
   }
-  if (level == Level::Complex) {
-    // The transpose of curve_blocks is each hex component's own curves (sorted, distinct), whose
-    // rows are copied in order instead of scattered curve by curve.
-    d.block_curves.reserve(d.block_component.size(), 0);
-    size_t n = 0;
-    for (int32_t k : d.block_component) n += bc.component_curves[k].size();
-    d.block_curves.items.reserve(n);
-    for (int32_t k : d.block_component) {
-      const auto row = bc.component_curves[k];
-      d.block_curves.items.insert(d.block_curves.items.end(), row.begin(), row.end());
-      d.block_curves.offsets.push_back(static_cast<int32_t>(d.block_curves.items.size()));
-    }
-  } else {
-    d.block_curves = transpose(d.curve_blocks, d.block_cells.rows());
-  }
+  d.block_curves = transpose(d.curve_blocks, d.block_cells.rows());
+}
+
+}  // namespace
+
+SheetDomain sheet_domain(const Mesh& m, const BaseComplex& bc, Level level, const Threads& threads) {
+  const Threads par = resolved(threads);
+  SheetDomain d;
+  d.level = level;
+  d.cell_block.assign(m.num_cells(), -1);
+  d.face_joins.assign(m.num_faces(), 0);
+  if (level == Level::Complex) complex_level_domain(m, bc, par, d);
+  else mesh_level_domain(m, bc, par, d);
   return d;
 }
 
