@@ -15,7 +15,7 @@
 # Cases: armadillo (real, 29,935 cells); rockerarm refined to 678,400 hexes; three 10^6-cell meshes
 # from hbc generate: the grid, a hex-dominant cylinder with prism columns, and the all-singleton
 # worst case (the grid with 1 % of its cells split into 6 pyramids each); and the grid again with
-# its vertices numbered at random (scripts/shuffle_medit_vertices.py), no spatial order at all.
+# its vertices numbered at random (scripts/bench/shuffle_medit_vertices.py), no spatial order at all.
 # Usage: scripts/bench.sh [build-dir]
 # Environment: HBC_BENCH_DIR keeps the generated meshes (default: a fresh temporary folder);
 # HBC_BENCH_BASELINE=DIR compares with the build folder DIR of an earlier commit whose source tree
@@ -46,9 +46,9 @@ make_case "$D/grid_1000000.mesh" "$HBC" generate grid --size 100 100 100
 make_case "$D/cylinder_988240.mesh" "$HBC" generate cylinder --radius-cells 50 --layers 110
 make_case "$D/split_1050000.mesh" "$HBC" generate split --size 100 100 100 --split pyramids --random 10000
 [[ -f "$D/rockerarm_x64.mesh" ]] ||
-  /usr/bin/python3 scripts/refine_medit_hexes.py ../shared/data/cinolib/rockerarm.mesh "$D/rockerarm_x64.mesh" 4 >/dev/null
+  /usr/bin/python3 scripts/bench/refine_medit_hexes.py ../shared/data/cinolib/rockerarm.mesh "$D/rockerarm_x64.mesh" 4 >/dev/null
 [[ -f "$D/grid_1000000_shuffled.mesh" ]] ||
-  /usr/bin/python3 scripts/shuffle_medit_vertices.py "$D/grid_1000000.mesh" "$D/grid_1000000_shuffled.mesh" >/dev/null
+  /usr/bin/python3 scripts/bench/shuffle_medit_vertices.py "$D/grid_1000000.mesh" "$D/grid_1000000_shuffled.mesh" >/dev/null
 cases=(../shared/data/hexalab-edge-cone-rectification/armadillo_out.mesh "$D/rockerarm_x64.mesh" "$D/grid_1000000.mesh"
        "$D/grid_1000000_shuffled.mesh" "$D/cylinder_988240.mesh" "$D/split_1050000.mesh")
 if [[ "${HBC_BENCH_LARGE:-0}" == 1 ]]; then

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the hbc wheel (pip + scikit-build-core on the project's CMake, pyproject.toml) for each
 # Python the test matrix runs Blender with — Debian's CPython 3.11 and the CPython 3.13 of
-# scripts/python313.sh — into build/wheels/, puts each wheel's compiled module beside the build
+# scripts/env/python313.sh — into build/wheels/, puts each wheel's compiled module beside the build
 # tree's own (build/python/hbc, and the add-on assembled in build/addon) so that every Blender of
 # the matrix imports the same package, and packs the Blender extension (4.2+) with the wheels.
 #   scripts/wheels.sh [PYTHON...]     default: /usr/bin/python3 and CPython 3.13
@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 ENV_DIR=${HBC_ENV_DIR:-$HOME/.cache/hbc-envs}
 PYTHONS=("$@")
-[ ${#PYTHONS[@]} -eq 0 ] && PYTHONS=(/usr/bin/python3 "$(bash scripts/python313.sh)")
+[ ${#PYTHONS[@]} -eq 0 ] && PYTHONS=(/usr/bin/python3 "$(bash scripts/env/python313.sh)")
 WHEELS=$ROOT/build/wheels
 mkdir -p "$WHEELS/modules"
 rm -f "$WHEELS"/*.whl

@@ -1,7 +1,7 @@
 # The Blender test matrix: every Blender-side suite runs once per Blender the project supports —
 # Debian's `blender` binary (3.4 here) and each `bpy` wheel (4.2, 4.5, 5.0 on CPython 3.11; 5.2 on
-# the CPython 3.13 of scripts/python313.sh), each in its own virtual environment made by
-# scripts/blender_envs.sh. scripts/test.sh passes them as
+# the CPython 3.13 of scripts/env/python313.sh), each in its own virtual environment made by
+# scripts/env/blender_envs.sh. scripts/test.sh passes them as
 #   -DHBC_BPY_PYTHONS="4.2=/path/bin/python;4.5=...;5.2=..."
 # Each test is named <suite>@blender-<version> or <suite>@bpy-<version>, with its own user folders.
 

@@ -1,7 +1,7 @@
 // Replays every input kept in tests/fuzz/regressions/<harness>/ through the code path of that
 // libFuzzer harness (tests/fuzz/fuzz_targets.hpp): each must be rejected with InputError or
 // accepted with the invariants the harness checks; any other exception fails the test naming the
-// file, and a crash or sanitizer report (scripts/test_sanitized.sh) fails the suite.
+// file, and a crash or sanitizer report (scripts/check/asan_ubsan.sh) fails the suite.
 #include <algorithm>
 #include <chrono>
 #include <ctime>

@@ -3,9 +3,9 @@
 # Sanitizer (build-asan/, RelWithDebInfo so reports carry file:line) and runs the whole C++ suite,
 # CLI tests included (they run the sanitized hbc binary). Leaks fail the run; so does any UB
 # report (compiled with -fno-sanitize-recover, and halt_on_error below for good measure).
-# usage: scripts/test_sanitized.sh [extra gtest arguments, e.g. --gtest_filter=Io.*]
+# usage: scripts/check/asan_ubsan.sh [extra gtest arguments, e.g. --gtest_filter=Io.*]
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 BUILD=${BUILD:-build-asan}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHBC_SANITIZE=ON -DHBC_BUILD_BENCHMARKS=OFF \
   -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null

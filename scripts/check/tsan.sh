@@ -4,9 +4,9 @@
 # grains (LoadParallel, LoadSteps, LoadParse), the base complex, sheets and VSG wireframe with 1, 2
 # and 3 threads (ComplexThreads, WireframeThreads), the readers and formats, the generated and
 # shared meshes loaded and analysed with the machine's threads. Any data race fails the run.
-# usage: scripts/test_tsan.sh [extra gtest arguments]
+# usage: scripts/check/tsan.sh [extra gtest arguments]
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 BUILD=${BUILD:-build-tsan}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHBC_TSAN=ON -DHBC_BUILD_BENCHMARKS=OFF \
   -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null

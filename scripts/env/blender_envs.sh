@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Creates (once) a virtual environment per Blender of the test matrix holding the `bpy` wheel of
 # that version and pytest, and prints one line per environment: "<version> <python>".
-#   scripts/blender_envs.sh            every version of BPY_VERSIONS below
-#   scripts/blender_envs.sh 4.5 5.2    only these
+#   scripts/env/blender_envs.sh            every version of BPY_VERSIONS below
+#   scripts/env/blender_envs.sh 4.5 5.2    only these
 # Environments live in $HBC_ENV_DIR (default ~/.cache/hbc-envs), outside any checkout, so fresh
 # clones and CI reuse them; a stamp names the installed bpy so a second run downloads nothing.
 # bpy 4.2-5.0 are built for CPython 3.11 (Debian's /usr/bin/python3); 5.1+ for 3.13, which
-# scripts/python313.sh builds from Debian 13's source.
+# scripts/env/python313.sh builds from Debian 13's source.
 set -euo pipefail
 HERE=$(cd "$(dirname "$0")" && pwd)
 ENV_DIR=${HBC_ENV_DIR:-$HOME/.cache/hbc-envs}
