@@ -6,14 +6,14 @@
 #
 #   bash scripts/compare_outputs.sh OLD_HBC NEW_HBC [MESH...]
 #
-# Without meshes: every mesh under ../shared/data. Exit status 1 when any output differs; the
-# outputs are kept under $HBC_COMPARE_DIR (default: a fresh temporary directory).
+# Without meshes: every mesh under $HBC_DATA_DIR (default ../shared/data). Exit status 1 when any
+# output differs; the outputs are kept under $HBC_COMPARE_DIR (default: a fresh temporary directory).
 set -euo pipefail
 [ $# -ge 2 ] || { sed -n 2,10p "$0"; exit 2; }
 old=$(realpath "$1"); new=$(realpath "$2"); shift 2
-here=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/env/common.sh"
 if [ $# -eq 0 ]; then
-  mapfile -t meshes < <(find "$here/../shared/data" -type f \
+  mapfile -t meshes < <(find "$HBC_DATA_DIR" -type f \
     \( -name '*.mesh' -o -name '*.ovm' -o -name '*.ovmb' -o -name '*.HYBRID' -o -name '*.hedra' \
        -o -name '*.msh' -o -name '*.vtk' -o -name '*.vtu' \) | sort)
 else
@@ -24,7 +24,7 @@ mkdir -p "$out/old" "$out/new"
 
 # JSON without its timings (the only part of an output that may change from run to run).
 strip_timings() {
-  python3 -c '
+  "$HBC_PYTHON" -c '
 import json, sys
 def drop(x):
     if isinstance(x, dict):

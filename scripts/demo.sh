@@ -13,12 +13,14 @@
 # HBC_DEMO_RESOLUTION ("480 360"), HBC_DEMO_SAMPLES (12), HBC_DATA_DIR (../shared/data).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/env/deps.sh
 bash scripts/build.sh
+source scripts/env/common.sh
 
 ENGINE=${HBC_DEMO_ENGINE:-cycles}
 read -r W H <<<"${HBC_DEMO_RESOLUTION:-480 360}"
 SAMPLES=${HBC_DEMO_SAMPLES:-12}
-DATA=${HBC_DATA_DIR:-../shared/data}
+DATA=$HBC_DATA_DIR
 OUT=out
 FIG=$OUT/figures
 mkdir -p "$FIG"

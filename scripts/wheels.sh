@@ -1,22 +1,33 @@
 #!/usr/bin/env bash
 # Builds the hbc wheel (pip + scikit-build-core on the project's CMake, pyproject.toml) for each
-# Python the test matrix runs Blender with — Debian's CPython 3.11 and the CPython 3.13 of
-# scripts/env/python313.sh — into build/wheels/, puts each wheel's compiled module beside the build
+# Python the test matrix runs Blender with — $HBC_PYTHON (Debian's CPython 3.11) and the CPython 3.13
+# of scripts/env/python313.sh — into build/wheels/, puts each wheel's compiled module beside the build
 # tree's own (build/python/hbc, and the add-on assembled in build/addon) so that every Blender of
 # the matrix imports the same package, and packs the Blender extension (4.2+) with the wheels.
-#   scripts/wheels.sh [PYTHON...]     default: /usr/bin/python3 and CPython 3.13
+#   scripts/wheels.sh [PYTHON...]     default: $HBC_PYTHON and CPython 3.13
 # Build folders persist (build/wheel-build/<tag>), so a second run only relinks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/env/common.sh
 ROOT=$PWD
-ENV_DIR=${HBC_ENV_DIR:-$HOME/.cache/hbc-envs}
+ENV_DIR=$HBC_ENV_DIR
 PYTHONS=("$@")
-[ ${#PYTHONS[@]} -eq 0 ] && PYTHONS=(/usr/bin/python3 "$(bash scripts/env/python313.sh)")
+[ ${#PYTHONS[@]} -eq 0 ] && PYTHONS=("$HBC_PYTHON" "$(bash scripts/env/python313.sh)")
 WHEELS=$ROOT/build/wheels
 mkdir -p "$WHEELS/modules"
 rm -f "$WHEELS"/*.whl
 defines=()
-command -v ccache >/dev/null && defines+=(--config-settings=cmake.define.CMAKE_CXX_COMPILER_LAUNCHER=ccache)
+if command -v ccache >/dev/null; then
+  defines+=(--config-settings=cmake.define.CMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Paths under the checkout as ccache sees them relative: the library's objects, alike for every
+  # Python (their build folders are at the same depth), are then compiled once, not once per wheel,
+  # and hit the cache from a checkout at another path. (Not for the test trees: the tests find
+  # their data from __FILE__, which must stay absolute; the library and module do not use it.)
+  export CCACHE_BASEDIR=$ROOT
+  # One compiler name for every wheel: Debian's CPython would otherwise pass its own
+  # (x86_64-linux-gnu-g++, from its sysconfig), and ccache tells compilers apart by name.
+  export CXX=${CXX:-c++}
+fi
 for py in "${PYTHONS[@]}"; do
   tag=$("$py" -c 'import sys; print(f"cp{sys.version_info[0]}{sys.version_info[1]}")')
   venv=$ENV_DIR/wheel-$tag
@@ -31,7 +42,7 @@ done
 # The compiled module of every other Python, beside the build tree's own (distinct ABI tags in
 # their names); the build's own Python keeps the module CMake built.
 rm -f "$WHEELS"/modules/*
-/usr/bin/python3 - "$WHEELS" "$ROOT/build/python/hbc" "$ROOT/build/addon/hybrid_base_complex/hbc" <<'PY'
+"$HBC_PYTHON" - "$WHEELS" "$ROOT/build/python/hbc" "$ROOT/build/addon/hybrid_base_complex/hbc" <<'PY'
 import glob, os, sys, sysconfig, zipfile
 wheels, *targets = sys.argv[1:]
 own = sysconfig.get_config_var("EXT_SUFFIX")

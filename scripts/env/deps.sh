@@ -1,13 +1,10 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the project needs, only those missing (idempotent).
+# Installs the Debian packages the project needs (the list is in scripts/env/common.sh), only those
+# missing, with apt-get (through sudo when not root). Idempotent. scripts/test.sh and .ci/run run it;
+# scripts/build.sh only checks the list and names this script.
 set -euo pipefail
-PKGS=(cmake g++ make pkg-config python3-dev python3-numpy python3-pytest pybind11-dev python3-pybind11
-      libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev libbenchmark-dev blender
-      libpugixml-dev zlib1g-dev python3-meshio libcli11-dev nlohmann-json3-dev python3-venv ccache)
-missing=()
-for p in "${PKGS[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
+source "$(dirname "$0")/common.sh"
+mapfile -t missing < <(hbc_missing_packages)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo

@@ -1,0 +1,30 @@
+# Settings every script shares (sourced, not run): which Python the build uses, where the shared
+# meshes and the test environments are, and the cmake arguments every build tree gets.
+#   HBC_PYTHON    the Python the binding is built for and tested with (default /usr/bin/python3:
+#                 Debian's CPython 3.11, which Debian's Blender embeds and which has numpy and
+#                 pytest; a bare search would find the pyenv Python first on PATH, which has neither)
+#   HBC_DATA_DIR  the shared real meshes (default ../shared/data beside the checkout)
+#   HBC_ENV_DIR   the bpy virtual environments and CPython 3.13 (default ~/.cache/hbc-envs)
+# Compiles go through ccache when it is installed (scripts/env/deps.sh installs it), into ccache's
+# own persistent cache (~/.cache/ccache, 5 GB by default: the five trees of scripts/test.sh take
+# about 1 GB; CCACHE_DIR and CCACHE_MAXSIZE change them).
+HBC_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+HBC_PYTHON=${HBC_PYTHON:-/usr/bin/python3}
+HBC_DATA_DIR=$(realpath -m "${HBC_DATA_DIR:-$HBC_ROOT/../shared/data}")
+HBC_ENV_DIR=${HBC_ENV_DIR:-$HOME/.cache/hbc-envs}
+export HBC_PYTHON HBC_DATA_DIR HBC_ENV_DIR
+HBC_CMAKE_ARGS=(-DPython_EXECUTABLE="$HBC_PYTHON" -DHBC_DATA_DIR="$HBC_DATA_DIR")
+if command -v ccache >/dev/null; then
+  HBC_CMAKE_ARGS+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+# Debian packages scripts/env/deps.sh installs; hbc_missing_packages prints those not installed.
+HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3-pytest pybind11-dev
+  python3-pybind11 libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev
+  libbenchmark-dev blender libpugixml-dev zlib1g-dev python3-meshio libcli11-dev nlohmann-json3-dev
+  python3-venv ccache)
+hbc_missing_packages() {
+  local p
+  for p in "${HBC_DEBIAN_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+  done
+}
