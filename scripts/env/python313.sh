@@ -1,14 +1,36 @@
 #!/usr/bin/env bash
-# Builds CPython 3.13 (for the cp313 bpy wheels of Blender 5.1+ and the cp313 hbc module) from the
-# source of Debian 13's python3.13 package, into a prefix of the project's. Debian 12 packages no
-# 3.13; its registry serves the trixie source through a sources list of our own (the system's apt
-# state is not touched). Idempotent: prints the interpreter's path and returns at once when built.
+# Prints the path of a CPython 3.13 (for the cp313 bpy wheels of Blender 5.1+ and the cp313 hbc
+# module) with the modules the venvs and wheels need, trying in turn:
+#   1. $HBC_PYTHON313, when set (it must work, or the script fails);
+#   2. a pyenv CPython 3.13 (the machine image has 3.13.0 under $(pyenv root)/versions);
+#   3. the one this script built before, in $HBC_ENV_DIR/python3.13;
+#   4. a build from the source of Debian 13's python3.13 package (about 5 minutes on 2 cores), into
+#      that prefix. Debian 12 packages no 3.13; its registry serves the trixie source through a
+#      sources list of our own (the system's apt state is not touched).
 set -euo pipefail
-ENV_DIR=${HBC_ENV_DIR:-$HOME/.cache/hbc-envs}
+source "$(dirname "$0")/common.sh"
+ENV_DIR=$HBC_ENV_DIR
 PREFIX=$ENV_DIR/python3.13
-if [ -x "$PREFIX/bin/python3.13" ] && "$PREFIX/bin/python3.13" -c "import ssl, sqlite3, zlib, lzma, bz2, ctypes, venv" 2>/dev/null; then
-  echo "$PREFIX/bin/python3.13"; exit 0
+usable() { [ -x "$1" ] && "$1" -c "import ssl, sqlite3, zlib, lzma, bz2, ctypes, venv, ensurepip" 2>/dev/null; }
+if [ -n "${HBC_PYTHON313:-}" ]; then
+  usable "$HBC_PYTHON313" || { echo "python313.sh: HBC_PYTHON313=$HBC_PYTHON313 lacks ssl/sqlite3/zlib/lzma/bz2/ctypes/venv" >&2; exit 1; }
+  echo "$HBC_PYTHON313"; exit 0
 fi
+PYENV_ROOT=${PYENV_ROOT:-$(pyenv root 2>/dev/null || echo "$HOME/.pyenv")}
+find_one() {
+  local py
+  for py in $(ls -d "$PYENV_ROOT"/versions/3.13.*/bin/python3.13 2>/dev/null | sort -rV) "$PREFIX/bin/python3.13"; do
+    if usable "$py"; then echo "$py"; return 0; fi
+  done
+  return 1
+}
+find_one && exit 0
+# The build, under a lock: the bpy 5.2 environment and the wheels may ask for it at the same time.
+mkdir -p "$ENV_DIR"
+exec 9>"$ENV_DIR/python3.13.lock"
+flock 9
+find_one && exit 0
+echo "python313.sh: no CPython 3.13 found; building one from Debian 13's source into $PREFIX (about 5 minutes)" >&2
 SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
 BUILD_DEPS=(libssl-dev zlib1g-dev libffi-dev libbz2-dev libsqlite3-dev liblzma-dev libreadline-dev xz-utils)
 missing=()
