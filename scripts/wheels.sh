@@ -5,7 +5,8 @@
 # tree's own (build/python/hbc, and the add-on assembled in build/addon) so that every Blender of
 # the matrix imports the same package, and packs the Blender extension (4.2+) with the wheels.
 #   scripts/wheels.sh [PYTHON...]     default: $HBC_PYTHON and CPython 3.13
-# Build folders persist (build/wheel-build/<tag>), so a second run only relinks.
+# Build folders persist (build/wheel-build/<tag>), so a second run only relinks; each Python has a
+# virtual environment of its own for the build ($HBC_ENV_DIR/wheel-<tag>).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/env/common.sh
@@ -35,8 +36,20 @@ for py in "${PYTHONS[@]}"; do
     "$py" -m venv "$venv"
     "$venv/bin/python" -m pip install -q --upgrade pip
   fi
+  # The build's requirements (pyproject.toml's build-system.requires, and ninja, which an isolated
+  # build adds itself) installed in this environment once, and the wheel built in it rather than in
+  # an isolated one: pybind11's headers then keep one path from run to run, which ccache needs to
+  # reuse the module's objects (an isolated build puts them in a new temporary folder each time, and
+  # downloads them again).
+  reqs=$("$venv/bin/python" -c 'import tomllib
+print(" ".join(tomllib.load(open("pyproject.toml", "rb"))["build-system"]["requires"] + ["ninja"]))')
+  if [ "$(cat "$venv/.hbc-build-requires" 2>/dev/null)" != "$reqs" ]; then
+    # shellcheck disable=SC2086
+    "$venv/bin/python" -m pip install -q $reqs
+    echo "$reqs" >"$venv/.hbc-build-requires"
+  fi
   echo "== hbc wheel for $tag"
-  "$venv/bin/python" -m pip wheel -q . --no-deps -w "$WHEELS" \
+  "$venv/bin/python" -m pip wheel -q . --no-deps --no-build-isolation -w "$WHEELS" \
     --config-settings=build-dir="$ROOT/build/wheel-build/$tag" "${defines[@]}"
 done
 # The compiled module of every other Python, beside the build tree's own (distinct ABI tags in
