@@ -6,8 +6,8 @@
 #   HBC_DATA_DIR  the shared real meshes (default ../shared/data beside the checkout)
 #   HBC_ENV_DIR   the bpy virtual environments and CPython 3.13 (default ~/.cache/hbc-envs)
 # Compiles go through ccache when it is installed (scripts/env/deps.sh installs it), into ccache's
-# own persistent cache (~/.cache/ccache, 5 GB by default: the five trees of scripts/test.sh take
-# about 1 GB; CCACHE_DIR and CCACHE_MAXSIZE change them).
+# own persistent cache (~/.cache/ccache, 5 GB by default; all five trees of scripts/test.sh took
+# 0.19 GB, compressed, so it holds many versions of them; CCACHE_DIR and CCACHE_MAXSIZE change it).
 HBC_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 HBC_PYTHON=${HBC_PYTHON:-/usr/bin/python3}
 HBC_DATA_DIR=$(realpath -m "${HBC_DATA_DIR:-$HBC_ROOT/../shared/data}")
