@@ -182,8 +182,8 @@ if [ $release_ok = 1 ]; then
   part_start ctest ctest --test-dir build --output-on-failure -j"$JOBS" ${HBC_CTEST_ARGS:-}
   tail -n +1 -f --pid="${PID[ctest]}" "$LOGS/ctest.log" | sed 's/^/  ctest| /' &
   tail_pid=$!
+  wait "$tail_pid" 2>/dev/null || true  # it ends with ctest (--pid), its last lines shown
   part_wait ctest || true
-  wait "$tail_pid" 2>/dev/null || true
 else
   part_skip ctest "release_build failed"
 fi
