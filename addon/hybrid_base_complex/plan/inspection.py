@@ -61,10 +61,11 @@ def quality_histogram(sj):
 # Per-cell data (C++), cached on the Structure for as long as its analysis is the same
 
 def cell_data(s) -> dict:
-    """{"type", "quality" (scaled Jacobian), "depth", "centroid" (scaled), "block" (component id,
+    """{"type", "quality" (scaled Jacobian), "depth", "centroid" (placed like s.points: the
+    filters compare it with the plane in the layer objects' coordinates), "block" (component id,
     -1 without an analysis), "histogram"} of every cell of the Structure `s`."""
     cache = getattr(s, "_hbc_inspect", None)
-    if cache is not None and cache["analysis"] is s.analysis:
+    if cache is not None and cache["analysis"] is s.analysis and np.array_equal(cache["offset"], s.offset):
         return cache
     hbc = import_hbc()
     nc = s.num_cells
@@ -72,10 +73,11 @@ def cell_data(s) -> dict:
              else np.full(nc, -1, np.int32))
     cache = {
         "analysis": s.analysis,
+        "offset": s.offset.copy(),
         "type": np.asarray(s.mesh.cell_types, np.int32),
         "quality": np.asarray(hbc.cell_quality(s.mesh)["scaled_jacobian"], np.float32),
         "depth": np.asarray(hbc.cell_depth(s.mesh), np.int32),
-        "centroid": (np.asarray(hbc.cell_centroids(s.mesh), np.float64) * s.scale).astype(np.float32),
+        "centroid": s.place(hbc.cell_centroids(s.mesh)),
         "block": block,
     }
     cache["histogram"] = quality_histogram(cache["quality"])
@@ -133,18 +135,17 @@ def kept_cells(s, ins, plane, sheet: int) -> np.ndarray:
 # Cell geometry (C++)
 
 def cell_soup(s, shrink=0.0) -> P.Soup:
-    """Every cell with all its faces (hbc.block_soup 'cells', C++), positions scaled like s.points."""
+    """Every cell with all its faces (hbc.block_soup 'cells', C++), placed like s.points (beside
+    the meshes imported before, as the boundary is)."""
     soup = P.Soup.from_dict(import_hbc().block_soup(s.mesh, s.analysis, "cells", shrink=float(shrink)))
-    if s.scale != 1.0:
-        soup.positions = soup.positions * np.float32(s.scale)
+    soup.positions = s.place(soup.positions)
     return soup
 
 
 def surface_soup(s, keep, shrink=0.0) -> P.Soup:
-    """The surface of the kept cells (hbc.kept_surface_soup, C++), scaled like cell_soup."""
+    """The surface of the kept cells (hbc.kept_surface_soup, C++), placed like cell_soup."""
     soup = P.Soup.from_dict(import_hbc().kept_surface_soup(s.mesh, np.asarray(keep, np.uint8), shrink=float(shrink)))
-    if s.scale != 1.0:
-        soup.positions = soup.positions * np.float32(s.scale)
+    soup.positions = s.place(soup.positions)
     return soup
 
 

@@ -33,9 +33,10 @@ class Structure:
     def set_offset(self, offset):
         """Moves the model (every position made from now on) to `offset`."""
         self.offset = np.asarray(offset, np.float32).reshape(3)
-        self.points = self._place(np.asarray(self.mesh.points, np.float32).reshape(-1, 3))
+        self.points = self.place(np.asarray(self.mesh.points, np.float32).reshape(-1, 3))
 
-    def _place(self, positions) -> np.ndarray:
+    def place(self, positions) -> np.ndarray:
+        """Positions in the file's coordinates as this model shows them: scaled, then moved to `offset`."""
         return (np.asarray(positions, np.float32) * np.float32(self.scale) + self.offset).astype(np.float32)
 
     # -- geometry, all made by hbc (render_geometry.hpp) -----------------------------------------
@@ -44,14 +45,14 @@ class Structure:
         sheet = None if sheet is None else int(sheet)
         soup = P.Soup.from_dict(import_hbc().block_soup(self.mesh, self.analysis, what, sheet=sheet,
                                                         shrink=float(shrink)))
-        soup.positions = self._place(soup.positions)
+        soup.positions = self.place(soup.positions)
         return soup
 
     def _lines(self, offsets, vertices, colors, alpha=None, keep=None, closed=None) -> P.Lines:
         """Polylines of mesh vertices (a CSR), their points placed by hbc.polylines."""
         offsets = np.ascontiguousarray(offsets, np.int32)
         vertices = np.ascontiguousarray(vertices, np.int32)
-        positions = self._place(import_hbc().polylines(self.mesh, offsets, vertices))
+        positions = self.place(import_hbc().polylines(self.mesh, offsets, vertices))
         return P.lines(positions, offsets, colors, alpha, keep, closed)
 
     def _edges(self, edges, color) -> P.Lines:
@@ -232,8 +233,9 @@ class Structure:
         return P.csr_row(off, items, index)
 
     # -- VSG wireframe ------------------------------------------------------------------------
-    def wireframe(self, sheet=None, subsheet=None, floor=0.15, simplified=True) -> P.Lines:
-        """VSG wireframe polylines coloured by palette class, alpha = opacity (floor mapped)."""
+    def wireframe(self, sheet=None, subsheet=None, floor=0.15, simplified=True, by_kind=False) -> P.Lines:
+        """VSG wireframe polylines coloured by palette class (by_kind: by non-hex kind,
+        planning.chain_kind_colors), alpha = opacity (floor mapped)."""
         a = self.analysis
         kwargs = {}
         if sheet is not None and sheet >= 0:
@@ -244,6 +246,8 @@ class Structure:
         off, verts = _csr(w, "polylines")
         k = len(off) - 1
         colors = P.palette_color(np.asarray(w.color, np.int64)) if k else np.zeros((0, 4), np.float32)
+        if by_kind:
+            colors = P.chain_kind_colors(*_csr(w, "non_hex"))
         keep = np.asarray(w.shown, bool) if simplified else None
         alpha = P.opacity_alpha(np.asarray(w.point_opacity, np.float32), floor)
         return self._lines(off, verts, colors, alpha, keep)
