@@ -219,13 +219,19 @@ def view3d_spaces(context=None):
                         yield space
 
 
+def solid_shading(shading):
+    """The add-on's Solid settings on a View3DShading (a 3D View's, or the scene's display one
+    that Workbench renders with): colours from the objects' active colour attribute. The enum is
+    still "VERTEX" in 5.x (labelled "Attribute" since 3.2)."""
+    shading.color_type = "VERTEX"
+
+
 def show_attribute_colors(context=None):
     """Solid mode of every open 3D View shows the objects' active colour attribute (the layers'
-    colours) instead of the materials' single viewport colour. The enum is still "VERTEX" in
-    5.x (labelled "Attribute" since 3.2)."""
+    colours) instead of the materials' single viewport colour."""
     for space in view3d_spaces(context):
         if space.shading.type == "SOLID":
-            space.shading.color_type = "VERTEX"
+            solid_shading(space.shading)
 
 
 def view3d_regions(context):

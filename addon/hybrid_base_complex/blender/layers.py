@@ -29,7 +29,11 @@ def build_direct(tx, coll, s, st, name):
         soup = s.direct_boundary()
         alpha = st.boundary_alpha if st.direct_transparent else 1.0
         mat = S.material(tx, "flat", P.HEX_COLOR, alpha)
-        S.soup_object(tx, coll, f"{name} boundary", soup, None, mat, _props(name, "direct", hbc_part="boundary"))
+        ob = S.soup_object(tx, coll, f"{name} boundary", soup, None, mat, _props(name, "direct", hbc_part="boundary"))
+        # No colour attribute: Solid > Attribute (the add-on's setting) draws such an object in its
+        # object colour, transparent when that colour's alpha is below 1 (the material's alpha
+        # counts in Solid > Material only).
+        ob.color = tuple(P.HEX_COLOR[:3]) + (float(alpha),)
         made += 1
     types = np.asarray(s.mesh.cell_types)
     if np.any(types != 0):
@@ -169,7 +173,7 @@ def build_subsheets(tx, coll, s, st, name):
                           np.tile(P.UNMATCHED_COLOR, (d.num_faces, 1)), None,
                           _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_highlight="unmatched"))
             made += 1
-        lines = s.wireframe(i, k, st.opacity_floor, st.simplified)
+        lines = s.wireframe(i, k, st.opacity_floor, st.simplified, _by_kind(st))
         below = np.array(P.spread_translation(k, s.points, below=True), np.float32) if st.spread else offset
         lines.positions = lines.positions + below
         if lines.positions.size:
@@ -179,9 +183,15 @@ def build_subsheets(tx, coll, s, st, name):
     return made
 
 
+def _by_kind(st):
+    """Wireframes coloured by non-hex kind (planning.WIRE_COLORINGS); settings without the choice
+    (older figure scripts) keep the colour classes."""
+    return getattr(st, "wireframe_colors", "CLASS") == "KIND"
+
+
 def build_wireframe(tx, coll, s, st, name):
     sheet = st.sheet_index if st.wireframe_scope == "SHEET" else None
-    lines = s.wireframe(sheet, None, st.opacity_floor, st.simplified)
+    lines = s.wireframe(sheet, None, st.opacity_floor, st.simplified, _by_kind(st))
     if not lines.positions.size:
         return 0
     S.lines_object(tx, coll, f"{name} wireframe" + (f" sheet {sheet}" if sheet is not None else ""), lines,
