@@ -426,6 +426,26 @@ def describe_error(error: BaseException) -> str:
     return text or f"unexpected failure ({type(error).__name__})"
 
 
+def wrap_message(text: str, width: int = 60) -> list[str]:
+    """A message as lines of at most `width` characters for a popup, nothing cut: the lines hold
+    every character of the message in order, only the spaces where lines break dropped; a word
+    longer than a line (a path) is split."""
+    lines = []
+    for paragraph in str(text).splitlines() or [""]:
+        line = ""
+        for word in paragraph.split(" "):
+            candidate = f"{line} {word}" if line else word
+            if line and len(candidate) > width:
+                lines.append(line)
+                candidate = word
+            while len(candidate) > width:
+                lines.append(candidate[:width])
+                candidate = candidate[width:]
+            line = candidate
+        lines.append(line)
+    return lines
+
+
 def subsheets_unavailable(sheet_type) -> str | None:
     """Why the subsheets layer cannot be built for a picked sheet of this type, or None."""
     if sheet_type is None:

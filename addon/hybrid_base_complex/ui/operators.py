@@ -75,14 +75,41 @@ def model_boxes():
     return boxes
 
 
+def push_undo_step(message):
+    """One undo step named `message` for what an operator without the "UNDO" option did (none
+    where Blender has no undo stack: background mode without one)."""
+    if bpy.ops.ed.undo_push.poll():
+        bpy.ops.ed.undo_push(message=message)
+
+
+def show_message(context, title, text):
+    """The whole of a long message in a popup, wrapped (the status bar cuts a report at its
+    width); nothing in background mode, where the report is printed whole."""
+    if bpy.app.background:
+        return
+    lines = P.wrap_message(text)
+
+    def draw(menu, _context):
+        for line in lines:
+            menu.layout.label(text=line)
+
+    try:
+        context.window_manager.popup_menu(draw, title=title, icon="ERROR")
+    except (AttributeError, RuntimeError):
+        pass
+
+
 class _Reporting:
     """How the operators end: one report, also written to the log when given."""
 
     def cancel_with(self, context, error, prog=None):
-        """Reports a failure and cancels; the scene was not touched (builds are all or nothing)."""
+        """Reports a failure (the whole message also in a popup) and cancels; the scene was not
+        touched (builds are all or nothing)."""
         if prog is not None:
             prog.end(context)
-        self.report({"ERROR"}, P.describe_error(error))
+        text = P.describe_error(error)
+        self.report({"ERROR"}, text)
+        show_message(context, f"{self.bl_label}: failed", text)
         return {"CANCELLED"}
 
     def finish_with(self, done, log=None):
@@ -108,7 +135,9 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
 
     bl_idname = "import_mesh.hbc"
     bl_label = "Import Hex-dominant Mesh"
-    bl_options = {"REGISTER", "UNDO", "PRESET"}
+    # No "UNDO": run from the file browser, Blender 3.x pushes an undo step for an UNDO operator
+    # even when it cancels; the import pushes its own step when it succeeds (push_undo_step).
+    bl_options = {"REGISTER", "PRESET"}
 
     filename_ext = ".mesh"
     filter_glob: StringProperty(default=FILTER, options={"HIDDEN"})
@@ -159,6 +188,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
         fill_sheet_list(st, s)
         if self.frame:
             compat.frame_objects(context, S.objects_in(root))
+        push_undo_step(self.bl_label)
         return self.finish_with(f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s", log)
 
 

@@ -143,3 +143,34 @@ def test_see_through_boundary_in_solid_view(clean_scene, data_dir, tmp_path):
     opaque = coloured(render_solid(tmp_path, "opaque")).sum()
     assert opaque < 0.3 * without, (opaque, without)
     assert S.find_layer(root, "direct") is not None
+
+
+def test_failed_import_leaves_no_undo_step_and_says_everything(clean_scene, data_dir, tmp_path):
+    """A failed import adds no undo step: the import operator has no "UNDO" option (from the file
+    browser Blender 3.x pushes a step for an UNDO operator even when it cancels) and pushes its own
+    step only on success, so undoing a successful import removes it. The error names the
+    undecodable bytes as U+FFFD and its popup lines hold the whole message."""
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.ui.operators import HBC_OT_import
+
+    assert "UNDO" not in HBC_OT_import.bl_options
+    bad = tmp_path / ("a-folder-with-a-rather-long-name-" * 3) / "latin1.mesh"
+    bad.parent.mkdir()
+    bad.write_bytes(b"MeshVersionFormatted 1\nDimension 3\nVertices\n1\n0 z\xff\xfe 0 0\nEnd\n")
+    with pytest.raises(RuntimeError) as info:
+        bpy.ops.import_mesh.hbc(filepath=str(bad))
+    text = str(info.value)[len("Error: "):].rstrip("\n")
+    assert text.startswith(f"{bad}:5: ") and "z\ufffd\ufffd" in text, text
+    lines = P.wrap_message(text)
+    assert len(lines) > 1 and all(len(line) <= 60 for line in lines)
+    assert "".join(lines).replace(" ", "") == text.replace(" ", "")
+    if not bpy.ops.ed.undo_push.poll():
+        pytest.skip(f"Blender {bpy.app.version_string}: no undo stack without a window here")
+    bpy.ops.ed.undo_push(message="before")
+    import_mesh(data_dir, CYLINDER, analyze=False)
+    assert roots()
+    try:
+        assert bpy.ops.ed.undo() == {"FINISHED"}
+    except RuntimeError as e:
+        pytest.skip(f"Blender {bpy.app.version_string}: undo refused in background mode: {e}")
+    assert not roots(), "undo did not take the import back: it pushed no step of its own"
