@@ -117,6 +117,7 @@ MeshInput read_as(Format f, std::string_view bytes, const std::string& name) {
     case Format::Msh: return read_msh(bytes, name);
     case Format::Vtk: return read_vtk(bytes, name);
     case Format::Vtu: return read_vtu(bytes, name);
+    case Format::Foam:  // four files: see the Foam cases below
     case Format::Auto: break;
   }
   throw std::logic_error("no reader");

@@ -16,6 +16,18 @@
 
 namespace hbc::fuzz {
 
+// The OpenFOAM harness's input: points, faces, owner and neighbour one after the other, each ended
+// by the line "#-#-#" (what is missing is empty).
+inline FoamFiles foam_files(std::string_view bytes) {
+  std::string_view part[4];
+  for (auto& p : part) {
+    const size_t end = bytes.find("\n#-#-#\n");
+    p = bytes.substr(0, end);
+    bytes = end == std::string_view::npos ? std::string_view() : bytes.substr(end + 7);
+  }
+  return {part[0], part[1], part[2], part[3], "points", "faces", "owner", "neighbour"};
+}
+
 inline MeshInput read_as(Format f, std::string_view bytes) {
   switch (f) {
     case Format::Ovm: return read_ovm(bytes, "fuzz");
@@ -26,6 +38,7 @@ inline MeshInput read_as(Format f, std::string_view bytes) {
     case Format::Msh: return read_msh(bytes, "fuzz");
     case Format::Vtk: return read_vtk(bytes, "fuzz");
     case Format::Vtu: return read_vtu(bytes, "fuzz");
+    case Format::Foam: return read_foam(foam_files(bytes));
     case Format::Auto: break;
   }
   std::abort();

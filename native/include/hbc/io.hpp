@@ -10,7 +10,7 @@
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam };
 
 // Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
 // hbc.FORMATS and the Blender add-on's file filter come from it.
@@ -27,7 +27,8 @@ std::span<const FormatInfo> formats();
 // A name or alias of formats() ("ovm", "mesh", "medit", ...); case-insensitive. Throws
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
-// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu. Throws InputError otherwise.
+// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam; a folder
+// and a polyMesh `owner` file (or owner.gz) are OpenFOAM too. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
 
@@ -44,6 +45,23 @@ MeshInput read_hedra(std::string_view text, const std::string& source);   // Loo
 MeshInput read_msh(std::string_view bytes, const std::string& source);    // Gmsh 2.2 / 4.1, ASCII or binary
 MeshInput read_vtk(std::string_view bytes, const std::string& source);    // legacy VTK UNSTRUCTURED_GRID
 MeshInput read_vtu(std::string_view bytes, const std::string& source);    // VTK XML UnstructuredGrid
+
+// OpenFOAM constant/polyMesh: the bytes of its points, faces, owner and neighbour files (inflated
+// when they were gzip-compressed) and the names messages give them. Each cell's faces are those it
+// owns (seen as written) and those it neighbours (seen reversed), in face order; the MeshInput's
+// source and face locations are those of the faces file.
+struct FoamFiles {
+  std::string_view points, faces, owner, neighbour;
+  std::string points_name, faces_name, owner_name, neighbour_name;
+};
+MeshInput read_foam(const FoamFiles& files);
+// The polyMesh folder of an OpenFOAM case given as its folder, a .foam marker file in it (as
+// ParaView opens cases), constant/polyMesh itself or its owner file: the newest time folder's
+// polyMesh when snappyHexMesh wrote one there, else constant/polyMesh. InputError naming `path`
+// when it is none of these.
+std::string foam_mesh_dir(const std::string& path);
+// foam_mesh_dir + read_foam on its files, each plain or gzip-compressed (`points` or `points.gz`).
+MeshInput read_foam_case(const std::string& path);
 
 // Reads a whole file; throws InputError when it cannot be opened.
 std::string read_file_bytes(const std::string& path);

@@ -1,5 +1,6 @@
 #include "hbc/io.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -22,6 +23,7 @@ constexpr FormatInfo kFormats[] = {
     {Format::Msh, "msh", "", ".msh", "Gmsh 2.2 and 4.1, ASCII or binary", false},
     {Format::Vtk, "vtk", "", ".vtk", "legacy VTK unstructured grid", false},
     {Format::Vtu, "vtu", "", ".vtu", "VTK XML unstructured grid", false},
+    {Format::Foam, "foam", "openfoam", ".foam", "OpenFOAM polyMesh (case folder, .foam file or polyMesh/owner)", false},
 };
 
 // "a, b, c or d" of each format's `part`.
@@ -52,6 +54,10 @@ Format format_from_path(const std::string& path) {
   static const std::string kExtensions =
       "a file name ending in " + listed([](const FormatInfo& f) { return std::string(f.extension); }) +
       " (or --format)";
+  // OpenFOAM keeps a mesh in a folder of files without extensions: the folder, or its owner file.
+  std::error_code ec;
+  const std::string base = std::filesystem::path(path).filename().string();
+  if (std::filesystem::is_directory(path, ec) || base == "owner" || base == "owner.gz") return Format::Foam;
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
@@ -70,6 +76,9 @@ const char* format_name(Format f) {
 }
 
 std::string read_file_bytes(const std::string& path) {
+  // A folder opens as a stream on Linux, and its "size" would be allocated.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, {}, "expected a file, found a folder");
   // One read into a buffer of the file's size: no stream buffering, no copy of the text.
   std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) throw InputError(path, {}, "a readable file (cannot open it)");
@@ -116,6 +125,7 @@ class FileBytes {
 
 MeshInput read_input(const std::string& path, Format format, const Threads& threads) {
   if (format == Format::Auto) format = format_from_path(path);
+  if (format == Format::Foam) return read_foam_case(path);  // four files, not one
   const FileBytes file(path);
   const std::string_view bytes = file.view();
   switch (format) {
@@ -127,6 +137,7 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Msh: return read_msh(bytes, path);
     case Format::Vtk: return read_vtk(bytes, path);
     case Format::Vtu: return read_vtu(bytes, path);
+    case Format::Foam:
     case Format::Auto: break;
   }
   throw InputError(path, {}, "a known format");
