@@ -5,7 +5,7 @@
 #   extra _core modules> -DOUT=<add-on folder> -DVERSION=x.y.z
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT}/hbc)
-file(GLOB_RECURSE sources RELATIVE ${SRC} ${SRC}/*.py ${SRC}/*.toml)
+file(GLOB_RECURSE sources RELATIVE ${SRC} ${SRC}/*.py ${SRC}/*.toml ${SRC}/*.md)
 foreach(name ${sources})
   file(READ ${SRC}/${name} text)
   if(name STREQUAL "__init__.py")  # the package's own, not a subpackage's

@@ -22,13 +22,13 @@ def manifest_with_wheels(text, wheels):
 
 
 def addon_sources(addon_dir):
-    """The add-on's Python files, relative to its folder: the package and its subpackages, not the
+    """The add-on's Python files and its user guide (README.md), relative to its folder: the package and its subpackages, not the
     bundled hbc package (the extension installs hbc from its wheel) nor bytecode caches."""
     found = []
     for folder, dirs, files in os.walk(addon_dir):
         rel = os.path.relpath(folder, addon_dir)
         dirs[:] = sorted(d for d in dirs if d != "__pycache__" and not (rel == "." and d == "hbc"))
-        found += [os.path.normpath(os.path.join(rel, f)) for f in files if f.endswith(".py")]
+        found += [os.path.normpath(os.path.join(rel, f)) for f in files if f.endswith((".py", ".md"))]
     return sorted(found)
 
 

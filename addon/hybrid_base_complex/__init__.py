@@ -7,13 +7,18 @@ ui -> blender -> plan: plan/ does not import bpy and is tested with plain pytest
 Blender data; ui/ is what the user touches, and ui/addon.py registers everything.
 """
 
+# Preferences > Add-ons searches the name, author and category: "hex" finds the add-on by its name.
+# Blender reads bl_info without running this file, so it holds literals only; doc_url and
+# tracker_url are the add-on's own user guide (README.md), a file URL set when it registers.
 bl_info = {
-    "name": "Hybrid Base Complex",
+    "name": "Hex Structure: Hybrid Base Complex",
     "author": "hbc authors",
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
-    "location": "File > Import > Hex-dominant mesh; 3D View > Sidebar > Hex Structure",
+    "location": "File > Import > Hex-dominant Mesh; 3D View > Sidebar > Hex Structure",
     "description": "Structure of hex-dominant meshes: singularity graph, base complex, sheets, VSG wireframes",
+    "doc_url": "",
+    "tracker_url": "",
     "category": "Import-Export",
 }
 

@@ -247,11 +247,8 @@ def view3d_regions(context):
 
 
 def frame_objects(context, objects) -> bool:
-    """Frames `objects` in every 3D viewport (selects them, makes the first active). False when
-    there is no viewport (background mode). context.temp_override exists from 3.2 on."""
-    regions = list(view3d_regions(context))
-    if not regions:
-        return False
+    """Selects `objects` (the first active) and frames them in every 3D viewport. False when
+    there is no viewport to frame in (background mode). context.temp_override exists from 3.2 on."""
     context.view_layer.update()  # objects linked in this same operator join the view layer here
     objects = [ob for ob in objects if ob.name in context.view_layer.objects]
     if not objects:
@@ -262,10 +259,11 @@ def frame_objects(context, objects) -> bool:
     for ob in objects:
         ob.select_set(True)
     context.view_layer.objects.active = objects[0]
+    regions = list(view3d_regions(context))
     for window, area, region in regions:
         with context.temp_override(window=window, area=area, region=region):
             bpy.ops.view3d.view_selected()
-    return True
+    return bool(regions)
 
 
 def frame_edit_selection(context) -> bool:

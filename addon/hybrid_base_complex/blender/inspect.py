@@ -396,14 +396,22 @@ def plane_rotation(normal):
     return Vector((0.0, 0.0, 1.0)).rotation_difference(Vector(normal).normalized()).to_euler()
 
 
-def add_plane(context, location, normal=(0.0, 0.0, 1.0), size=1.0):
-    """An Empty (single arrow: the normal, pointing to the hidden side) used as the slicing plane."""
+def add_plane(context, location, normal=(0.0, 0.0, 1.0), size=1.0, collection=None):
+    """An Empty used as the slicing plane: a circle in the plane (its +Z side is hidden), in
+    `collection` (the mesh's own; else the scene's), selected and active so it can be moved and
+    turned at once."""
     ob = bpy.data.objects.new("HBC cut plane", None)
-    ob.empty_display_type = "SINGLE_ARROW"
+    ob.empty_display_type = "CIRCLE"
     ob.empty_display_size = size
     ob.location = location
     ob.rotation_euler = plane_rotation(normal)
-    context.scene.collection.objects.link(ob)
+    (collection or context.scene.collection).objects.link(ob)
+    view_layer = context.view_layer
+    for other in view_layer.objects:
+        if other.select_get():
+            other.select_set(False)
+    ob.select_set(True)
+    view_layer.objects.active = ob
     ins = settings(context.scene)
     ins.plane = ob
     ins.slice = True

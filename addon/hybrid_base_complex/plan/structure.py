@@ -149,6 +149,12 @@ class Structure:
     def component_colors(self) -> np.ndarray:
         return P.component_colors(self.component_kinds())
 
+    def component_cell_types(self, component: int) -> list:
+        """[(cell type name, cells)] of the cells in `component`, in CellType order, types it has only."""
+        cells = np.asarray(self.analysis.complex.cell_component) == int(component)
+        counts = np.bincount(np.asarray(self.mesh.cell_types, np.int64)[cells], minlength=len(P.CELL_TYPE_NAMES))
+        return [(P.CELL_TYPE_NAMES[t], int(n)) for t, n in enumerate(counts) if n]
+
     def component_sheets(self, component: int) -> np.ndarray:
         """Sheets holding a component."""
         if self._component_sheets is None:

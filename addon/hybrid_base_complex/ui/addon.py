@@ -1,12 +1,25 @@
 """The one place that registers the add-on with Blender: every class, property, menu entry and
 app handler is listed here, registered in list order and unregistered in reverse."""
 
+import pathlib
+import sys
+
 import bpy
 from bpy.props import PointerProperty
 
 from ..plan import session
 from ..plan.native import module_problem
 from . import handlers, operators, panels, properties
+
+def help_url() -> str:
+    """The add-on's user guide (README.md beside its __init__.py) as a file URL."""
+    return (pathlib.Path(__file__).resolve().parents[1] / "README.md").as_uri()
+
+
+def _bl_info() -> dict:
+    """The package's bl_info (Blender 3.4's Preferences read it from the loaded module)."""
+    return sys.modules[__package__.rpartition(".")[0]].bl_info
+
 
 #: Every class, in registration order: a property group after the groups it points to, a panel
 #: after its parent (sub-panels of equal bl_order show in this order).
@@ -19,9 +32,12 @@ CLASSES = (
     operators.HBC_OT_build_layer,
     operators.HBC_OT_build_all,
     operators.HBC_OT_clear_layer,
+    operators.HBC_OT_frame_layer,
+    operators.HBC_OT_toggle_layer,
     operators.HBC_OT_set_active,
     operators.HBC_OT_copy_table1,
     operators.HBC_OT_explain,
+    operators.HBC_OT_help,
     operators.HBC_OT_select_block,
     operators.HBC_OT_add_cut_plane,
     panels.HBC_UL_sheets,
@@ -58,6 +74,9 @@ HANDLERS = (
 
 
 def register():
+    guide = help_url()
+    for key, url in (("doc_url", guide), ("tracker_url", guide + "#reporting-a-problem")):
+        _bl_info()[key] = url
     for cls in CLASSES:
         bpy.utils.register_class(cls)
     for owner, name, prop in PROPERTIES:

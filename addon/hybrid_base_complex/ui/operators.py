@@ -69,7 +69,8 @@ def model_boxes():
     """(lo, hi) world boxes of every imported mesh's objects (where new imports must not land)."""
     boxes = []
     for root in (c for c in bpy.data.collections if c.get("hbc_source") is not None):
-        pts = [ob.matrix_world @ mathutils.Vector(corner) for ob in S.objects_in(root) for corner in ob.bound_box]
+        pts = [ob.matrix_world @ mathutils.Vector(corner) for ob in S.objects_in(root) if ob.type == "MESH"
+               for corner in ob.bound_box]  # not the cut plane's Empty
         if pts:
             boxes.append((tuple(min(p[i] for p in pts) for i in range(3)), tuple(max(p[i] for p in pts) for i in range(3))))
     return boxes
@@ -132,6 +133,11 @@ class _OnActiveMesh(_Reporting):
 
 class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
     """Import a hex-dominant volume mesh and show it (optionally analyzed)"""
+
+    @classmethod
+    def description(cls, context, properties):
+        exts = ", ".join(sorted(P.mesh_extensions(), key=str.lower))
+        return f"Import a hex-dominant volume mesh ({exts}) and show it (optionally analyzed)"
 
     bl_idname = "import_mesh.hbc"
     bl_label = "Import Hex-dominant Mesh"
@@ -243,12 +249,14 @@ class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
             prog.step("analysis ready")
             if not len(st.sheets) and s.analysis is not None:
                 fill_sheet_list(st, s)
-            _, done = L.build_layer(root, self.layer, s, st, log)
+            coll, done = L.build_layer(root, self.layer, s, st, log)
             prog.step(f"built {P.LAYER_TITLES[self.layer]}")
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e, prog)
         prog.end(context)
         st.active_mesh = root.name
+        if self.layer == "subsheets" and st.spread:  # laid out beside the mesh, out of view
+            compat.frame_objects(context, S.objects_in(coll))
         return self.finish_with(done)
 
 
@@ -300,6 +308,40 @@ class HBC_OT_clear_layer(_OnActiveMesh, bpy.types.Operator):
 
     def execute(self, context):
         S.remove_layer(active_root(context), self.layer)
+        return {"FINISHED"}
+
+
+class HBC_OT_frame_layer(_OnActiveMesh, bpy.types.Operator):
+    """Select this layer's visible objects and frame them in the 3D views"""
+
+    bl_idname = "hbc.frame_layer"
+    bl_label = "Frame Layer"
+
+    layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
+
+    def execute(self, context):
+        coll = S.find_layer(active_root(context), self.layer)
+        if coll is None:
+            self.report({"ERROR"}, f"The {P.LAYER_TITLES[self.layer].lower()} layer is not built")
+            return {"CANCELLED"}
+        coll.hide_viewport = False
+        compat.frame_objects(context, [ob for ob in S.objects_in(coll) if not ob.hide_viewport])
+        return {"FINISHED"}
+
+
+class HBC_OT_toggle_layer(_OnActiveMesh, bpy.types.Operator):
+    """Show or hide this layer in the 3D views"""
+
+    bl_idname = "hbc.toggle_layer"
+    bl_label = "Show/Hide Layer"
+
+    layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
+
+    def execute(self, context):
+        coll = S.find_layer(active_root(context), self.layer)
+        if coll is None:
+            return {"CANCELLED"}
+        coll.hide_viewport = not coll.hide_viewport
         return {"FINISHED"}
 
 
@@ -365,6 +407,20 @@ class HBC_OT_explain(bpy.types.Operator):
         return {"CANCELLED"}  # nothing changed: no undo step
 
 
+class HBC_OT_help(bpy.types.Operator):
+    """Open the add-on's user guide: where things are, how to report a problem"""
+
+    bl_idname = "hbc.help"
+    bl_label = "Hex Structure Help"
+    bl_options = {"INTERNAL"}
+
+    def execute(self, context):
+        from .addon import help_url
+
+        bpy.ops.wm.url_open(url=help_url())
+        return {"FINISHED"}
+
+
 class HBC_OT_select_block(bpy.types.Operator):
     """Select every face of the picked component or sheet (the active face's owner) in a merged mesh"""
 
@@ -410,10 +466,15 @@ class HBC_OT_add_cut_plane(bpy.types.Operator):
             self.report({"ERROR"}, "No mesh in memory")
             return {"CANCELLED"}
         lo, hi = s.points.min(axis=0), s.points.max(axis=0)
-        inspect.add_plane(context, tuple(float(x) for x in (lo + hi) / 2), size=float(np.max(hi - lo)) * 0.3)
+        inspect.add_plane(context, tuple(float(x) for x in (lo + hi) / 2), size=float(np.max(hi - lo)) * 0.6,
+                          collection=root)
         return {"FINISHED"}
 
 
+#: File > Import's entry: the extensions (eight of them) would make it the menu's widest; the file
+#: browser's filter and the operator's tooltip list them.
+MENU_LABEL = "Hex-dominant Mesh"
+
+
 def menu_import(self, context):
-    exts = "/".join(sorted(P.mesh_extensions(), key=str.lower))
-    self.layout.operator(HBC_OT_import.bl_idname, text=f"Hex-dominant mesh ({exts})" if exts else "Hex-dominant mesh")
+    self.layout.operator(HBC_OT_import.bl_idname, text=MENU_LABEL)

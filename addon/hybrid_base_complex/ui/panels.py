@@ -21,6 +21,23 @@ from ..plan.native import module_problem
 #: Longest label a row may carry at the default sidebar width (about 30 characters across, a
 #: property's value taking the rest); tests/addon/blender checks every drawn label against it.
 MAX_LABEL = 14
+#: Characters of the longest histogram bar (its share of a sidebar row, beside the bin and count).
+HISTOGRAM_BAR = 8
+
+
+#: The sheet list's columns (sheet, type, cells) as split factors: a number, "type 3", a count.
+SHEET_COLUMNS = (0.25, 0.5)
+
+
+def sheet_columns(layout, index, kind, cells):
+    """One row of the sheet list (or its header): the index, the type, the cell count at the right."""
+    split = layout.split(factor=SHEET_COLUMNS[0], align=True)
+    split.label(text=index)
+    split = split.split(factor=SHEET_COLUMNS[1], align=True)
+    split.label(text=kind)
+    right = split.row()
+    right.alignment = "RIGHT"
+    right.label(text=cells)
 
 
 class HBC_UL_sheets(bpy.types.UIList):
@@ -29,11 +46,9 @@ class HBC_UL_sheets(bpy.types.UIList):
     bl_idname = "HBC_UL_sheets"
 
     def draw_item(self, context, layout, data, item, icon, active_data, active_propname, index=0):
-        row = layout.row(align=True)
-        row.label(text=f"Sheet {item.index}")
         t = item.type
-        row.label(text=P.SHEET_TYPE_SHORT[t] if 0 <= t < len(P.SHEET_TYPE_SHORT) else str(t))
-        row.label(text=f"{item.cells} cells")
+        sheet_columns(layout, str(item.index), P.SHEET_TYPE_SHORT[t] if 0 <= t < len(P.SHEET_TYPE_SHORT) else str(t),
+                      str(item.cells))
 
     def draw_filter(self, context, layout):
         row = layout.row(align=True)
@@ -75,7 +90,9 @@ class HBC_PT_main(_Base, bpy.types.Panel):
                 box.label(text=line)
             return
         root = active_root(context)
-        layout.operator("import_mesh.hbc", text="Import", icon="IMPORT")
+        row = layout.row(align=True)
+        row.operator("import_mesh.hbc", text="Import", icon="IMPORT")
+        row.operator("hbc.help", text="", icon="HELP")
         roots = [c for c in bpy.data.collections if c.get("hbc_source") is not None]
         if len(roots) > 1:
             col = layout.column(align=True)
@@ -144,6 +161,7 @@ def layer_controls(context, layout, root, layer):
     row.operator("hbc.build_layer", text="Rebuild" if built else "Build",
                  icon="ERROR" if stale else "FILE_REFRESH").layer = layer
     if built:
+        row.operator("hbc.frame_layer", text="", icon="ZOOM_SELECTED").layer = layer
         row.operator("hbc.clear_layer", text="", icon="X").layer = layer
     if stale:
         layout.label(text="Stale: rebuild", icon="ERROR")
@@ -159,7 +177,9 @@ class _Layer(_Sub):
     def draw_header(self, context):
         coll = S.find_layer(active_root(context), self.layer)
         if coll is not None:
-            self.layout.prop(coll, "hide_viewport", text="", emboss=False)
+            # An open or a closed eye (the collection's own toggle icons differ only by fill).
+            self.layout.operator("hbc.toggle_layer", text="", emboss=False,
+                                 icon=visibility_icon(coll)).layer = self.layer
         else:
             self.layout.label(text="", icon="BLANK1")
 
@@ -169,6 +189,10 @@ class _Layer(_Sub):
 
     def draw_options(self, col, st):
         pass
+
+
+def visibility_icon(coll) -> str:
+    return "HIDE_ON" if coll.hide_viewport else "HIDE_OFF"
 
 
 class HBC_PT_layers(_Sub, bpy.types.Panel):
@@ -192,6 +216,7 @@ def _props(*names):
 
 def _sheets_options(self, col, st):
     col.prop(st, "sheets_all")
+    sheet_columns(col.row(), "Sheet", "Type", "Cells")
     col.template_list("HBC_UL_sheets", "", st, "sheets", st, "sheet_index", rows=5)
 
 
@@ -298,9 +323,14 @@ class HBC_PT_selection(_Base, bpy.types.Panel):
         for key in ("hbc_layer", "hbc_sheet", "hbc_sheet_type", "hbc_subsheet", "hbc_highlight", "hbc_count",
                     "hbc_group", "hbc_polylines"):
             if key in ob:
+                name, text = key[4:].replace("_", " "), str(ob[key])
+                if len(text) > 15:  # a long value (a sheet type's words) on a row of its own
+                    col.label(text=name)
+                    col.label(text="  " + text)
+                    continue
                 split = col.split(factor=0.45, align=True)
-                split.label(text=key[4:].replace("_", " "))
-                split.label(text=str(ob[key]))
+                split.label(text=name)
+                split.label(text=text)
         owner, kind, _ = picked_block(context)
         if owner is None:
             if kind:
@@ -314,6 +344,13 @@ class HBC_PT_selection(_Base, bpy.types.Panel):
         s = session.get(ob["hbc_mesh"])
         if kind == "component" and s is not None and s.analysis is not None and owner < s.num_components:
             layout.label(text=f"kind: {P.COMPONENT_KINDS[int(s.component_kinds()[owner])]}")
+            types = s.component_cell_types(owner)
+            layout.label(text=f"cells: {sum(n for _, n in types)}")
+            col = layout.column(align=True)
+            for name, n in types:
+                split = col.split(factor=0.45, align=True)
+                split.label(text=f"  {name}")
+                split.label(text=str(n))
             sheets = s.component_sheets(owner)
             layout.label(text="sheets: " + (", ".join(str(int(x)) for x in sheets) or "none"))
 
@@ -323,13 +360,15 @@ class HBC_PT_inspect(_Sub, bpy.types.Panel):
 
     bl_idname = "HBC_PT_inspect"
     bl_label = "Look inside"
+    # Below the layers and closed at first: an import shows the layers without scrolling.
+    bl_order = 5
+    bl_options = {"DEFAULT_CLOSED"}
 
     def draw(self, context):
         layout = self.layout
         ins = inspect.settings(context.scene)
-        row = layout.row(align=True)
-        row.prop(ins, "enabled")
-        row.prop(ins, "direct_cells")
+        layout.prop(ins, "direct_cells")
+        layout.prop(ins, "enabled")
         box = layout.box()
         row = box.row(align=True)
         row.prop(ins, "slice")
@@ -339,11 +378,11 @@ class HBC_PT_inspect(_Sub, bpy.types.Panel):
         row.operator("hbc.add_cut_plane", text="", icon="ADD")
         box.prop(ins, "peel")
         box.prop(ins, "surface_above")
-        row = box.row(align=True)
+        grid = box.grid_flow(columns=2, even_columns=True, align=True)
         for n in IP.TYPE_NAMES:
-            row.prop(ins, f"show_{n}", toggle=True)
+            grid.prop(ins, f"show_{n}", toggle=True)
+        box.prop(ins, "filter_quality")
         row = box.row(align=True)
-        row.prop(ins, "filter_quality")
         row.prop(ins, "quality_min")
         row.prop(ins, "quality_max")
         box.prop(ins, "sheet_only")
@@ -353,10 +392,13 @@ class HBC_PT_inspect(_Sub, bpy.types.Panel):
     def draw_quality(layout, context, ins):
         box = layout.box()
         box.prop(ins, "color_by_quality")
-        box.label(text="Scaled Jacobian (viridis): " + "  ".join(f"{v:.2f}" for v in IP.LEGEND_VALUES))
+        box.label(text="Scaled Jacobian (viridis)")
         row = box.row(align=True)
         for i in range(len(IP.LEGEND_VALUES)):
             row.prop(ins, f"legend_{i}", text="")
+        row = box.row(align=True)
+        for v in IP.LEGEND_VALUES:
+            row.label(text=f"{v:g}")
         root = active_root(context)
         s = session.get(root.name) if root is not None else None
         histogram = IP.computed_histogram(s) if s is not None else None
@@ -367,4 +409,10 @@ class HBC_PT_inspect(_Sub, bpy.types.Panel):
         top = max(max(counts), 1)
         col = box.column(align=True)
         for label, c in zip(labels, counts):
-            col.label(text=f"{label:>8}  {'█' * int(round(20 * c / top)):<20} {c}")
+            split = col.split(factor=0.3, align=True)
+            split.label(text=label)
+            split = split.split(factor=0.6, align=True)
+            split.label(text="█" * int(round(HISTOGRAM_BAR * c / top)))
+            right = split.row()
+            right.alignment = "RIGHT"
+            right.label(text=str(c))

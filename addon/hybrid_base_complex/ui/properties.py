@@ -143,9 +143,9 @@ def _upd_cells(self, context):
 class HBCInspectSettings(bpy.types.PropertyGroup):
     enabled: BoolProperty(name="Filters", default=True, update=_upd,
                           description="Apply the inspection filters to the cell-based layers")
-    direct_cells: BoolProperty(name="Cells in direct view", default=False, update=_upd_cells,
+    direct_cells: BoolProperty(name="All cells", default=False, update=_upd_cells,
                                description="Show every cell in the direct view (to look inside)")
-    color_by_quality: BoolProperty(name="Colour by quality", default=False, update=_upd_color,
+    color_by_quality: BoolProperty(name="By quality", default=False, update=_upd_color,
                                    description="Colour the direct view's cells by scaled Jacobian (viridis)")
     plane: PointerProperty(name="Plane", type=bpy.types.Object, update=_upd,
                            description="Empty whose XY plane cuts; cells on its +Z side are hidden")
@@ -162,9 +162,9 @@ class HBCInspectSettings(bpy.types.PropertyGroup):
                                  description="Show only the cells whose scaled Jacobian is in [min, max]")
     quality_min: FloatProperty(name="Min", default=-1.0, min=-1.0, max=1.0, update=_upd)
     quality_max: FloatProperty(name="Max", default=1.0, min=-1.0, max=1.0, update=_upd)
-    sheet_only: BoolProperty(name="Picked sheet only", default=False, update=_upd,
+    sheet_only: BoolProperty(name="Sheet only", default=False, update=_upd,
                              description="Show only the cells of the sheet picked in the sheet list")
-    surface_above: IntProperty(name="Live surface above", default=100000, min=0,
+    surface_above: IntProperty(name="Surface above", default=100000, min=0,
                                description="Meshes with more cells show only the surface of the kept cells in "
                                            "the direct view, rebuilt in C++ when a filter or the plane changes "
                                            "(fast for 10^6 cells); smaller ones hold every cell, filtered by "

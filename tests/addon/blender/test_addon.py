@@ -542,7 +542,7 @@ def test_sheet_list_rows_filter_and_sort(clean_scene, data_dir):
     log = []
     item = SimpleNamespace(index=0, type=1, cells=10, components=2)
     panels.HBC_UL_sheets.draw_item(None, bpy.context, _Recorder(log), None, item, 0, None, "")
-    assert [t for _, t, _ in log] == ["Sheet 0", "type 1", "10 cells"]
+    assert [t for k, t, _ in log if k == "label"] == ["0", "type 1", "10"]  # under "Sheet", "Type", "Cells"
     ul = SimpleNamespace(filter_name="self-int", bitflag_filter_item=1 << 30)
     st.sheet_sort = "SIZE"
     flags, order = panels.HBC_UL_sheets.filter_items(ul, bpy.context, st, "sheets")

@@ -6,6 +6,7 @@ menus and Preferences are found and read at the default sidebar width."""
 import bpy
 import numpy as np
 import pytest
+from types import SimpleNamespace
 
 TWISTCUBE = ("hybrid-base-complex", "twistcube_s.mesh")  # 1301 cells: hex, prisms, pyramids, tets
 CYLINDER = ("openvolumemesh", "Cylinder.ovm")
@@ -174,3 +175,307 @@ def test_failed_import_leaves_no_undo_step_and_says_everything(clean_scene, data
     except RuntimeError as e:
         pytest.skip(f"Blender {bpy.app.version_string}: undo refused in background mode: {e}")
     assert not roots(), "undo did not take the import back: it pushed no step of its own"
+
+
+#: Characters across the sidebar at its default width (a panel's row; sub-panels alike).
+SIDEBAR = 30
+#: Characters a list row has (the list's margins and scroll bar take the rest).
+LIST_ROW = 26
+
+
+class _Layout:
+    """A stand-in UILayout that knows how wide each of its items is: a row shares its width
+    equally among what it holds, a split gives its first item `factor` of it, a grid `1/columns`,
+    a column or box the whole width. Records (text, characters needed, characters given) for
+    every item showing words: a label, a button, a property's name (a checkbox or an icon takes 3
+    characters more, a number field's value 8)."""
+
+    def __init__(self, items, kind="column", factor=0.5, columns=1):
+        self.items, self.kind, self.factor, self.columns = items, kind, factor, columns
+        self.children = []  # _Layout or (text, needed)
+
+    def _child(self, kind, **kw):
+        child = _Layout(self.items, kind, **kw)
+        self.children.append(child)
+        return child
+
+    def row(self, **_):
+        return self._child("row")
+
+    def column(self, **_):
+        return self._child("column")
+
+    def box(self):
+        return self._child("box")
+
+    def column_flow(self, columns=1, **_):
+        return self._child("grid", columns=columns)
+
+    def grid_flow(self, columns=1, **_):
+        return self._child("grid", columns=max(columns, 1))
+
+    def split(self, factor=0.5, **_):
+        return self._child("split", factor=factor)
+
+    def _word(self, text, extra):
+        self.children.append((str(text), len(str(text)) + extra if text else 0))
+
+    def label(self, text="", icon="NONE", **_):
+        self._word(text, 3 if icon not in ("NONE", "BLANK1") else 0)
+
+    def operator(self, idname, text=None, icon="NONE", **_):
+        self._word(text if text is not None else idname, 3 if icon != "NONE" else 0)
+        return SimpleNamespace()
+
+    def prop(self, data, name, text=None, toggle=False, expand=False, icon="NONE", **_):
+        rna = data.bl_rna.properties[name]
+        label = rna.name if text is None else text
+        if rna.type == "ENUM" and expand:
+            row = self._child("row")
+            for item in rna.enum_items:
+                row._word(item.name, 0)
+            return
+        if rna.type == "BOOLEAN":
+            extra = 1 if toggle else 3
+        elif rna.type in ("INT", "FLOAT") and getattr(rna, "array_length", 0) == 0:
+            extra = 8
+        else:
+            extra = 0
+        self._word(label, extra)
+
+    def template_list(self, *_, **__):
+        pass
+
+    def separator(self, **_):
+        pass
+
+    def __setattr__(self, name, value):
+        object.__setattr__(self, name, value)
+
+    def measure(self, width):
+        """(text, needed, given) of every word under this layout of `width` characters."""
+        if self.kind == "box":
+            width -= 2
+        n = len(self.children)
+        out = []
+        for i, child in enumerate(self.children):
+            if self.kind == "row":
+                w = width / n
+            elif self.kind == "split":
+                w = width * self.factor if i == 0 else width * (1 - self.factor) / max(n - 1, 1)
+            elif self.kind == "grid":
+                w = width / self.columns
+            else:
+                w = width
+            if isinstance(child, _Layout):
+                out += child.measure(w)
+            elif child[0]:
+                out.append((child[0], child[1], w))
+        return out
+
+
+def _panel(cls, layout):
+    """An instance-like stand-in of a panel class whose draw() draws into `layout`."""
+    import inspect as pyinspect
+
+    class Proxy:
+        def __getattr__(self, name):
+            attr = pyinspect.getattr_static(cls, name)
+            if isinstance(attr, staticmethod):
+                return attr.__func__
+            if callable(attr):
+                return attr.__get__(self)
+            return getattr(cls, name)
+
+    proxy = Proxy()
+    proxy.layout = layout
+    return proxy
+
+
+def cut_words(context, names):
+    """Every word the Hex Structure panels (all of them, the Look inside panel too) and the sheet
+    list's rows draw that does not fit the default sidebar width: [(text, needed, given)]."""
+    from hybrid_base_complex.ui import addon, panels
+
+    out = []
+    for cls in addon.CLASSES:
+        if not issubclass(cls, bpy.types.Panel) or (hasattr(cls, "poll") and not cls.poll(context)):
+            continue
+        root = _Layout([])
+        cls.draw(_panel(cls, root), context)
+        out += root.measure(SIDEBAR)
+    st = context.scene.hbc
+    for item in list(st.sheets)[:3] + [SimpleNamespace(index=12345, type=3, cells=1234567)]:
+        row = _Layout([])
+        panels.HBC_UL_sheets.draw_item(None, context, row, None, item, 0, None, "")
+        out += row.measure(LIST_ROW)
+    return [(t, need, round(given, 1)) for t, need, given in out if need > given and t not in names]
+
+
+def test_panels_fit_the_default_sidebar(clean_scene, data_dir):
+    """Nothing the panels draw is cut off at the default sidebar width (about 30 characters
+    across): the sheet list's index, type and size, the Look inside panel's options, cell types
+    and histogram counts, the layer buttons, the legend, the selection. Object and mesh names
+    are the user's and may be long."""
+    root = import_mesh(data_dir)
+    assert bpy.ops.hbc.build_all() == {"FINISHED"}
+    from hybrid_base_complex.plan import inspection as IP
+    from hybrid_base_complex.plan import session
+
+    IP.cell_data(session.get(root.name))  # the histogram is drawn once computed
+    ob = next(o for o in bpy.context.scene.objects if o.get("hbc_sheet") is not None)
+    bpy.context.view_layer.objects.active = ob
+    names = {o.name for o in bpy.data.objects} | {c.name for c in bpy.data.collections}
+    assert not cut_words(bpy.context, names)
+
+
+def test_panel_order_layers_first(addon):
+    """After an import the layers come first: the Look inside panel (filters, cut plane, an
+    11-row histogram) is below them and closed at first."""
+    from hybrid_base_complex.ui import addon as A, panels
+
+    under_main = sorted((c.bl_order, c.bl_label) for c in A.CLASSES
+                        if issubclass(c, bpy.types.Panel) and getattr(c, "bl_parent_id", "") == "HBC_PT_main")
+    labels = [label for _, label in under_main]
+    assert labels.index("Layers") < labels.index("Look inside") and labels[-1] == "Look inside", labels
+    assert "DEFAULT_CLOSED" in panels.HBC_PT_inspect.bl_options
+
+
+def test_cut_plane_goes_with_the_mesh_selected_and_visible(clean_scene, data_dir):
+    """The cut plane is an Empty in the mesh's own collection (not the scene's top level), drawn
+    as a circle in the plane, selected and active (ready to move and turn), and visible."""
+    from hybrid_base_complex.blender import scene as S
+
+    root = import_mesh(data_dir)
+    assert bpy.ops.hbc.add_cut_plane() == {"FINISHED"}
+    plane = bpy.context.scene.hbc_inspect.plane
+    assert plane is not None and plane.name in root.objects
+    assert plane.name not in bpy.context.scene.collection.objects
+    assert plane.empty_display_type == "CIRCLE"
+    assert plane.select_get() and bpy.context.view_layer.objects.active == plane
+    assert plane.visible_get()
+    assert [ob for ob in bpy.context.selected_objects] == [plane]
+    assert plane in S.objects_in(root)
+
+
+def test_found_in_preferences_with_a_guide(addon):
+    """Searching "hex" in Preferences > Add-ons finds the add-on (Blender searches name, author and
+    category); its Documentation and Report a Bug buttons open the add-on's own user guide, which
+    says how to report a problem; the extension's manifest names it the same way."""
+    import os
+    import pathlib
+    import urllib.parse
+    import urllib.request
+
+    info = addon.bl_info
+    assert "hex" in info["name"].casefold()
+    for key in ("doc_url", "tracker_url"):
+        url = info[key]
+        assert url.startswith("file:"), (key, url)
+        path = pathlib.Path(urllib.request.url2pathname(urllib.parse.urlparse(url).path))
+        assert path.is_file() and path.parent == pathlib.Path(os.environ["HBC_ADDON_DIR"]).resolve(), url
+    guide = path.read_text(encoding="utf-8")
+    assert "## Reporting a problem" in guide and info["tracker_url"].endswith("#reporting-a-problem")
+    manifest = (pathlib.Path(os.environ["HBC_ADDON_DIR"]) / "blender_manifest.toml").read_text()
+    name = next(line for line in manifest.splitlines() if line.startswith("name = "))
+    tagline = next(line for line in manifest.splitlines() if line.startswith("tagline = "))
+    assert "hex" in name.casefold() and "hex" in tagline.casefold() and len(tagline) - 12 <= 64
+    assert hasattr(bpy.ops.hbc, "help") and bpy.ops.hbc.help.poll()
+
+
+def test_import_menu_entry_is_short_and_the_filter_lists_every_format(addon):
+    """File > Import's entry lists no extensions (eight would make it the menu's widest); the file
+    browser's filter and the tooltip list every one, .ovmb among them."""
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.ui import operators as O
+
+    menu = _Layout([])
+    O.menu_import(SimpleNamespace(layout=menu), bpy.context)
+    (text, _), = menu.children
+    assert text == "Hex-dominant Mesh" and "." not in text
+    exts = P.mesh_extensions()
+    assert ".ovmb" in exts
+    filters = bpy.ops.import_mesh.hbc.get_rna_type().properties["filter_glob"].default.split(";")
+    tip = O.HBC_OT_import.description(bpy.context, None)
+    for e in exts:
+        assert f"*{e.lower()}" in filters and e in tip, e
+
+
+def test_layer_eye_shows_open_or_closed(clean_scene, data_dir):
+    """A layer's header shows an open eye when the layer is shown and a closed one when hidden
+    (shapes that differ, not only by fill); clicking it toggles the layer."""
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.ui import panels
+
+    root = import_mesh(data_dir)
+    assert bpy.ops.hbc.build_layer(layer="graph") == {"FINISHED"}
+    cls = next(c for c in panels.layer_panels if c.layer == "graph")
+    icons = []
+
+    class Header:
+        def operator(self, idname, icon="NONE", **_):
+            icons.append((idname, icon))
+            return SimpleNamespace()
+
+        def prop(self, *_, **__):
+            icons.append(("prop", "collection's own toggle"))
+
+        def label(self, *_, **__):
+            pass
+
+    def header_icon():
+        icons.clear()
+        cls.draw_header(SimpleNamespace(layout=Header(), layer="graph"), bpy.context)
+        (entry,) = icons
+        return entry
+
+    assert header_icon() == ("hbc.toggle_layer", "HIDE_OFF")
+    assert bpy.ops.hbc.toggle_layer(layer="graph") == {"FINISHED"}
+    assert S.find_layer(root, "graph").hide_viewport
+    assert header_icon() == ("hbc.toggle_layer", "HIDE_ON")
+
+
+def test_frame_layer_selects_what_it_frames(clean_scene, data_dir):
+    """Frame (per layer) selects the layer's shown objects and frames them (a hidden layer is
+    shown first); the subsheets, laid out beside the mesh, are framed when built."""
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.plan import session
+
+    root = import_mesh(data_dir)
+    assert bpy.ops.hbc.build_all() == {"FINISHED"}
+    graph = S.find_layer(root, "graph")
+    assert graph.hide_viewport
+    assert bpy.ops.hbc.frame_layer(layer="graph") == {"FINISHED"}
+    assert not graph.hide_viewport
+    assert {ob.name for ob in bpy.context.selected_objects} == {ob.name for ob in S.objects_in(graph)}
+    st = bpy.context.scene.hbc
+    st.sheet_index = int(np.flatnonzero(session.get(root.name).sheet_types() == 3)[0])
+    assert bpy.ops.hbc.build_layer(layer="subsheets") == {"FINISHED"}
+    sub = S.find_layer(root, "subsheets")
+    assert {ob.name for ob in bpy.context.selected_objects} == {ob.name for ob in S.objects_in(sub)}
+    with pytest.raises(RuntimeError, match="not built"):
+        bpy.ops.hbc.frame_layer(layer="sheet")
+
+
+def test_picked_block_shows_its_cells(clean_scene, data_dir):
+    """The Selection panel names a picked block's cell count and its cells' types, as the analysis
+    has them."""
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.plan import session
+    from hybrid_base_complex.ui import panels
+
+    root = import_mesh(data_dir, CYLINDER)
+    s = session.get(root.name)
+    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    ob = next(o for o in bpy.context.scene.objects if o.get("hbc_component") is not None)
+    c = int(ob["hbc_component"])
+    bpy.context.view_layer.objects.active = ob
+    layout = _Layout([])
+    panels.HBC_PT_selection.draw(_panel(panels.HBC_PT_selection, layout), bpy.context)
+    words = [t for t, _, _ in layout.measure(SIDEBAR)]
+    cells = np.flatnonzero(np.asarray(s.analysis.complex.cell_component) == c)
+    assert f"cells: {len(cells)}" in words, words
+    types = np.asarray(s.mesh.cell_types)[cells]
+    for t in np.unique(types):
+        i = words.index(f"  {P.CELL_TYPE_NAMES[t]}")
+        assert words[i + 1] == str(int((types == t).sum()))
