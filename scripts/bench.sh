@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
-# Load and analysis benchmark, printed as a Markdown table: every figure of a row, and every ratio
-# between rows, comes from the same run. Per case and per variant (this build with 1 and with 2
-# threads, and the baseline when given):
+# Load and analysis benchmark, printed as two Markdown tables: every figure of a row, and every
+# ratio between rows, comes from the same run.
+# 1. Cold, the headline (scripts/bench/cold_runs.py): `hbc analyze FILE --json` as a user runs it,
+#    one process per run, HBC_BENCH_RUNS (default 5) runs per case and variant, interleaved;
+#    medians (and ranges) of wall, user and kernel CPU, load, stages and peak RSS. Variants: the
+#    baseline when given, this build, and this build with HBC_HUGE_PAGES=0 (no 2 MiB page advice),
+#    every core.
+# 2. Warm, marked as such: per case and per variant (this build with 1 and with 2 threads, and the
+#    baseline when given):
 #   - hbc_bench_load (BM_LoadFile, one process per case and variant): the time to read the file
 #     into memory (read_file_bytes: the hardware's pace), read+parse (read_input) and topology
 #     (build_mesh) wall times of the fastest of HBC_BENCH_REPS (default 5) loads, from which parse
@@ -77,6 +83,15 @@ own_rss() {  # CLI THREADS: peak RSS in KB of `hbc analyze` on the one-hex mesh
     tail -1 "$D/own.rss"
   done | sort -n | head -1
 }
+cold=("--variant" "new=$HBC" "--variant" "new-no-huge-pages=HBC_HUGE_PAGES=0 $HBC")
+[[ -n "${HBC_BENCH_BASELINE:-}" ]] && cold=("--variant" "baseline=$HBC_BENCH_BASELINE/bin/hbc" "${cold[@]}")
+echo "## Cold: one \`hbc analyze --json\` process per run, median (range) of ${HBC_BENCH_RUNS:-5}"
+echo
+"$HBC_PYTHON" scripts/bench/cold_runs.py --runs "${HBC_BENCH_RUNS:-5}" --out "$D/cold_runs.json" "${cold[@]}" "${cases[@]}"
+echo
+echo "## Warm: fastest of ${HBC_BENCH_REPS:-5} loads in one process (overstates what users see)"
+echo
+
 declare -A own
 for v in "${variants[@]}"; do
   IFS=: read -r name threads bench cli <<<"$v"
