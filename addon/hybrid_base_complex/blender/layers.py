@@ -8,6 +8,7 @@ swaps the result in.
 
 from __future__ import annotations
 
+import json
 import time
 
 import numpy as np
@@ -224,7 +225,27 @@ def build_into(tx, root, layer, s, st):
         coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
     BUILDERS[layer](tx, coll, s, st, name)
     inspect.equip_layer(tx, coll, layer, s, st)
+    if not isinstance(root, str):
+        store_legend_facts(root, s)
     return coll
+
+
+LEGEND_FACTS = "hbc_legend_facts"
+
+
+def store_legend_facts(root, s):
+    """Keeps the mesh's legend facts (Structure.legend_facts, JSON) on its collection, so that the
+    legend of a reopened file is whole before the mesh is read and analyzed again."""
+    text = json.dumps(s.legend_facts(), sort_keys=True)
+    if root.get(LEGEND_FACTS) != text:
+        root[LEGEND_FACTS] = text
+
+
+def stored_legend_facts(root) -> dict:
+    try:
+        return json.loads(root.get(LEGEND_FACTS, "{}"))
+    except ValueError:
+        return {}
 
 
 def build_layer(root, layer, s, st, log=print):

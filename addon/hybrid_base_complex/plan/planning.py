@@ -531,6 +531,31 @@ def beside(boxes, lo, hi, gap: float = 0.25):
     return (right + gap * float(hi[0] - lo[0]) - float(lo[0]), 0.0, 0.0)
 
 
+# The layers coloured from the palette (one colour per block, sheet, subsheet or wireframe class):
+# a swatch stands for "a colour of its own each", and the wireframes' faint lines for distance.
+LEGEND_COLORS.update(palette=tuple(float(x) for x in PALETTE[0]),
+                     faint=tuple(float(x) for x in PALETTE[0][:3]) + (0.3,))
+PALETTE_LEGEND = {
+    "blocks": [("palette", "Hex component")],
+    "sheets": [("palette", "A colour a sheet")],
+    "sheet": [("palette", "Picked sheet")],
+    "subsheets": [("palette", "A colour a subsheet")],
+    "wireframe": [("palette", "Wire: chain class"), ("faint", "Faint: far away")],
+}
+
+
+def palette_legend(layers, wire_by_kind=False) -> list:
+    """[(colour key, words)] for the palette colours of the layers shown (the panel's legend: each
+    shown layer says what its colours mean; the figures' legend strips leave them out). The
+    wireframe's class colours only when it is coloured by class."""
+    out = []
+    for layer in layers:
+        if layer == "wireframe" and wire_by_kind:
+            continue
+        out += [e for e in PALETTE_LEGEND.get(layer, ()) if e not in out]
+    return out
+
+
 
 class Progress:
     """Counts steps of long work, calling `report(fraction, message)` (window manager progress

@@ -10,6 +10,7 @@ import textwrap
 import bpy
 
 from ..blender import inspect
+from ..blender import layers
 from ..blender import scene as S
 from ..blender import sources
 from ..blender.context import active_root, merged_owner_faces, unavailable
@@ -269,6 +270,25 @@ def legend_entries(context):
     return P.legend(shown, highlights=highlights, **s.legend_facts())
 
 
+def panel_legend(context):
+    """(the layers shown, [(colour key, words)]): legend_entries and what the palette colours of the
+    shown layers mean; in a reopened file (the mesh not in memory yet) from the facts stored on the
+    mesh's collection, so the legend is as whole as before."""
+    root = active_root(context)
+    if root is None:
+        return [], []
+    shown = [layer for layer, _ in P.LAYERS
+             if (c := S.find_layer(root, layer)) is not None and not c.hide_viewport]
+    if session.get(root.name) is None:
+        highlights = {ob.get("hbc_highlight") for layer in ("sheet", "subsheets") if layer in shown
+                      for ob in S.objects_in(S.find_layer(root, layer))}
+        entries = P.legend(shown, highlights=highlights, **layers.stored_legend_facts(root))
+    else:
+        entries = legend_entries(context)
+    by_kind = getattr(context.scene.hbc, "wireframe_colors", "CLASS") == "KIND"
+    return shown, entries + P.palette_legend(shown, wire_by_kind=by_kind)
+
+
 class HBC_PT_legend(_Sub, bpy.types.Panel):
     """What the colours, dots and edges of the visible layers mean."""
 
@@ -278,8 +298,8 @@ class HBC_PT_legend(_Sub, bpy.types.Panel):
 
     def draw(self, context):
         st = context.scene.hbc
-        entries = legend_entries(context)
-        if not entries:
+        shown, entries = panel_legend(context)
+        if not shown:
             self.layout.label(text="No layer shown", icon="INFO")
         col = self.layout.column(align=True)
         for key, words in entries:

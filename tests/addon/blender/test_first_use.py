@@ -479,3 +479,54 @@ def test_picked_block_shows_its_cells(clean_scene, data_dir):
     for t in np.unique(types):
         i = words.index(f"  {P.CELL_TYPE_NAMES[t]}")
         assert words[i + 1] == str(int((types == t).sum()))
+
+
+def test_legend_names_every_layers_colours(clean_scene, data_dir, tmp_path):
+    """Each layer shown alone gets legend entries (the wireframe's class colours and faint lines,
+    the subsheets' and sheets' own colours among them) and the legend never says "No layer shown"
+    while a layer is visible; after the file is saved and reopened in a new session (the meshes
+    not in memory) the legend is as whole as before."""
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.plan import planning as P
+    from hybrid_base_complex.plan import session
+    from hybrid_base_complex.ui import panels
+
+    root = import_mesh(data_dir)
+    st = bpy.context.scene.hbc
+    assert bpy.ops.hbc.build_all() == {"FINISHED"}
+    st.sheet_index = int(np.flatnonzero(session.get(root.name).sheet_types() == 3)[0])
+    for layer in ("sheet", "subsheets"):
+        assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}
+    expected = {"wireframe": ("palette", "Wire: chain class"), "subsheets": ("palette", "A colour a subsheet"),
+                "sheets": ("palette", "A colour a sheet"), "blocks": ("palette", "Hex component")}
+
+    def legend_alone(layer):
+        for key, _ in P.LAYERS:
+            coll = S.find_layer(root, key)
+            if coll is not None:
+                coll.hide_viewport = key != layer
+        shown, entries = panels.panel_legend(bpy.context)
+        layout = _Layout([])
+        panels.HBC_PT_legend.draw(_panel(panels.HBC_PT_legend, layout), bpy.context)
+        words = [t for t, _, _ in layout.measure(SIDEBAR)]
+        return shown, entries, words
+
+    before = {}
+    for layer, _ in P.LAYERS:
+        shown, entries, words = legend_alone(layer)
+        assert shown == [layer] and entries, layer
+        assert "No layer shown" not in words, layer
+        if layer in expected:
+            assert expected[layer] in entries, (layer, entries)
+        before[layer] = entries
+    path, name = tmp_path / "legend.blend", root.name
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    session.clear()  # what a new Blender session has
+    bpy.ops.wm.open_mainfile(filepath=str(path))
+    root = bpy.data.collections[name]
+    for layer, _ in P.LAYERS:
+        assert legend_alone(layer)[1] == before[layer], layer
+    for key, _ in P.LAYERS:
+        S.find_layer(root, key).hide_viewport = True
+    shown, entries, words = legend_alone(None)
+    assert shown == [] and "No layer shown" in words
