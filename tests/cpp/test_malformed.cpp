@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <unistd.h>
 
 #include "format_samples.hpp"
@@ -568,6 +569,120 @@ TEST(Malformed, Vtu) {
       {"missing_offsets", replaced("Name=\"offsets\"", "Name=\"offs\""), at(t, "<Cells"), "a DataArray named 'offsets'"},
       {"appended_offset", replaced("Name=\"types\" format=\"ascii\"", "Name=\"types\" format=\"appended\" offset=\"0\""), at(t, "<DataArray type=\"UInt8\""), "an AppendedData element"},
   });
+}
+
+// ---------------------------------------------------------------------------------------------
+// OpenFOAM polyMesh: the two-hexahedra case of tests/data/formats/foam with one file changed; the
+// error names that file and its line (byte offset once a binary file's header is read).
+
+struct FoamCase {
+  std::string name;
+  std::string file;     // which of the four is broken
+  std::string bytes;    // its new bytes
+  int64_t where;        // line, or byte offset when `binary`
+  std::string keyword;
+  bool binary = false;
+  std::string reported = {};  // the file the error names, when not `file`
+};
+
+void expect_foam_rejected(const std::string& dir, const std::vector<FoamCase>& cases) {
+  const std::string base = std::string(HBC_FORMATS_DIR) + "/foam/" + dir + "/constant/polyMesh/";
+  for (const FoamCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::map<std::string, std::string> bytes;
+    for (const char* f : {"points", "faces", "owner", "neighbour"}) bytes[f] = f == c.file ? c.bytes : read_file_bytes(base + f);
+    try {
+      build_mesh(read_foam({bytes["points"], bytes["faces"], bytes["owner"], bytes["neighbour"], "points", "faces", "owner", "neighbour"}));
+      ADD_FAILURE() << "accepted a malformed case";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), c.reported.empty() ? c.file : c.reported) << e.what();
+      EXPECT_EQ(c.binary ? e.loc().byte_offset : e.loc().line, c.where) << e.what();
+      EXPECT_NE(e.detail().find(c.keyword), std::string::npos) << "'" << c.keyword << "' not in: " << e.what();
+    }
+  }
+}
+
+std::string foam_file(const std::string& dir, const std::string& name) {
+  return read_file_bytes(std::string(HBC_FORMATS_DIR) + "/foam/" + dir + "/constant/polyMesh/" + name);
+}
+
+TEST(Malformed, FoamAscii) {
+  // points: the count on line 14, point i on line 16 + i; faces: face i on line 16 + i; owner
+  // (one header line more, its note): the count on line 15, face i's owner on line 17 + i.
+  const std::string p = foam_file("hex2_ascii", "points"), f = foam_file("hex2_ascii", "faces"),
+                    o = foam_file("hex2_ascii", "owner"), n = foam_file("hex2_ascii", "neighbour");
+  expect_foam_rejected("hex2_ascii", {
+      {"empty_points", "points", "", 1, "the number of points (an integer), found the end of the file"},
+      {"format", "points", with_line(p, 7, "    format      ebcdic;"), 7, "format ascii or binary, found 'ebcdic'"},
+      {"header_entry", "faces", with_line(f, 10, "    object      faces"), 11, "';' ending the header entry object, found '}'"},
+      {"point_word", "points", with_line(p, 18, "(0 one 0)"), 18, "a point coordinate (a number), found 'one'"},
+      {"point_nan", "points", with_line(p, 18, "(0 nan 0)"), 18, "finite"},
+      {"point_open", "points", with_line(p, 18, "0 1 0)"), 18, "'(' opening point 2"},
+      {"too_many_points", "points", with_line(p, 14, "4000"), 14, "number of points that the rest of the file can hold"},
+      {"too_few_points", "points", with_line(p, 14, "11"), 27, "')' closing the list of 11, found '(2'"},
+      {"too_many_lists", "points", p + "2(0 1)\n", 32, "the end of the file after the list of points, found '2(0'"},
+      {"point_label", "faces", with_line(f, 17, "4(0 6 9 12)"), 17, "a point label in [0, 11], found 12"},
+      {"negative_label", "faces", with_line(f, 17, "4(0 6 -9 3)"), 17, "found -9"},
+      {"face_unclosed", "faces", with_line(f, 17, "4(0 6 9 3"), 18, "')' closing the list of 4"},
+      {"face_class", "faces", with_line(f, 8, "    class       cellList;"), 1, "class faceList or faceCompactList"},
+      {"two_corners", "faces", with_line(f, 17, "2(0 6)"), 17, "at least 3"},
+      {"owner_count", "owner", with_line(o, 15, "10"), 15, "one owner cell for each of the 11 faces, found 10"},
+      {"owner_negative", "owner", with_line(o, 19, "-1"), 19, "a cell label in [0, 2^31), found -1"},
+      {"neighbour_count", "neighbour", with_line(n, 15, "12(1 1 1 1 1 1 1 1 1 1 1 1)"), 15, "at most one neighbour cell for each of the 11 faces"},
+      // Face 0 owned and neighboured by cell 0: cell 0 lists it twice (found by build_mesh, which
+      // names the faces file, the MeshInput's source).
+      {"face_twice", "neighbour", with_line(n, 15, "1(0)"), -1, "each face once per cell", false, "faces"},
+      // Face 10 owned by cell 5: cells 2 to 4 own and neighbour nothing.
+      {"cell_gap", "owner", with_line(o, 27, "5"), -1, "cell 2 has none"},
+  });
+}
+
+TEST(Malformed, FoamBinary) {
+  // hex2_binary as foamFormatConvert wrote it: faces a faceCompactList of 12 offsets, then 44
+  // labels, each 4 bytes after its '('.
+  const std::string f = foam_file("hex2_binary", "faces"), o = foam_file("hex2_binary", "owner");
+  const size_t offsets = f.find("12\n(") + 4, labels = f.find("44\n(") + 4;
+  const size_t owner_at = o.find("11\n(") + 4;
+  std::string bad_label = f, bad_offset = f, bad_owner = o;
+  bad_label[labels + 4 * 5] = 12;            // face 1's second label: point 12 of 12
+  bad_offset[offsets + 4 * 3] = 3;           // offsets 0 4 8 3: falling
+  bad_owner[owner_at + 4 * 2 + 3] = '\x80';  // a negative owner
+  expect_foam_rejected("hex2_binary", {
+      {"point_label", "faces", bad_label, static_cast<int64_t>(labels + 4 * 5), "a point label in [0, 11], found 12", true},
+      {"falling_offsets", "faces", bad_offset, static_cast<int64_t>(offsets + 4 * 3), "face offsets rising from 0, found 3 after 8", true},
+      {"truncated", "faces", f.substr(0, labels + 10), static_cast<int64_t>(labels - 4), "number of face labels that the rest of the file can hold (at most 3), found 44", true},
+      // Cut inside the labels, the count padded to pass: the spaces read as a label.
+      {"cut_labels", "faces", f.substr(0, labels + 10) + std::string(170, ' '), static_cast<int64_t>(labels + 8), "a point label in [0, 11], found", true},
+      {"label_count", "faces", f.substr(0, labels - 4) + "43" + f.substr(labels - 2), static_cast<int64_t>(labels - 4), "44 face labels as the last offset says, found 43", true},
+      {"owner_negative", "owner", bad_owner, static_cast<int64_t>(owner_at + 8), "a cell label in [0, 2^31)", true},
+      {"arch", "owner", with_line(o, 13, "    arch        \"LSB;label=16;scalar=64\";"), 13, "label=32 or 64 in the arch entry"},
+  });
+}
+
+TEST(Malformed, FoamGzipAndCaseFolders) {
+  // A .gz file that is no gzip data: the file and the offset where zlib gave up.
+  const auto dir = std::filesystem::temp_directory_path() / ("hbc_bad_foam_" + std::to_string(::getpid()));
+  const auto mesh = dir / "constant" / "polyMesh";
+  std::filesystem::create_directories(mesh);
+  std::filesystem::copy(std::string(HBC_FORMATS_DIR) + "/foam/hex2_gzip/constant/polyMesh", mesh);
+  {
+    std::ofstream(mesh / "points.gz", std::ios::binary) << std::string("\x1f\x8b\x08\x00garbage", 11);
+  }
+  try {
+    load_mesh(dir.string());
+    ADD_FAILURE() << "accepted a broken .gz";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), (mesh / "points.gz").string());
+    EXPECT_NE(e.detail().find("gzip data"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(mesh / "points.gz");
+  try {
+    load_mesh(dir.string());
+    ADD_FAILURE() << "accepted a case without points";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.detail().find("the polyMesh file points (or points.gz)"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -60,8 +60,9 @@ class FoamText {
   };
   List open_list(const char* what, int64_t min_bytes) {
     List l;
+    const int64_t at = loc();  // the count's place names the list in messages
     l.n = integer(what);
-    if (l.n < 0 || l.n > kMaxId) fail_at(loc(), std::string(what) + " in [0, 2^31), found " + std::to_string(l.n));
+    if (l.n < 0 || l.n > kMaxId) fail_at(at, std::string(what) + " in [0, 2^31), found " + std::to_string(l.n));
     skip_space();
     if (pos_ < t_.size() && t_[pos_] == '{') {
       ++pos_;
@@ -75,7 +76,7 @@ class FoamText {
     expect('(', "'(' opening the list of " + std::to_string(l.n));
     const int64_t room = static_cast<int64_t>(t_.size() - pos_) / min_bytes + 1;
     if (l.n > room)
-      fail_at(loc(), std::string(what) + " that the rest of the file can hold (at most " + std::to_string(room) +
+      fail_at(at, std::string(what) + " that the rest of the file can hold (at most " + std::to_string(room) +
                          "), found " + std::to_string(l.n));
     return l;
   }
@@ -156,7 +157,7 @@ class FoamText {
   }
 
  private:
-  static bool ends_number(char c) { return is_space(c) || c == ')' || c == '(' || c == '}' || c == '/' || c == ';'; }
+  static bool ends_number(char c) { return is_space(c) || c == ')' || c == '(' || c == '{' || c == '}' || c == '/' || c == ';'; }
 
   const char* raw(size_t n, const char* what) {
     if (t_.size() - pos_ < n)

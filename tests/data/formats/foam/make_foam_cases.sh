@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Writes hex2_binary/ and hex2_gzip/ from the hand-written hex2_ascii/ with OpenFOAM's own
+# foamFormatConvert (Debian's openfoam, v1912): the same mesh as OpenFOAM writes it in binary
+# (faces as a faceCompactList, arch "LSB;label=32;scalar=64") and gzip-compressed ASCII. Run once
+# by hand; the results are checked in, so the tests need no OpenFOAM.
+#   tests/data/formats/foam/make_foam_cases.sh
+set -euo pipefail
+HERE=$(cd "$(dirname "$0")" && pwd)
+set +eu
+export WM_PROJECT_DIR=/usr/share/openfoam
+source /usr/share/openfoam/etc/bashrc >/dev/null 2>&1
+set -eu
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+convert() {  # name format compression
+  local C=$TMP/$1
+  mkdir -p "$C/system" "$C/constant"
+  cp -r "$HERE/hex2_ascii/constant/polyMesh" "$C/constant/"
+  cat >"$C/system/controlDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application none; startFrom startTime; startTime 0; stopAt endTime; endTime 0; deltaT 1;
+writeControl timeStep; writeInterval 1; writeFormat $2; writePrecision 17; writeCompression $3;
+timeFormat general; timePrecision 6;
+DICT
+  (cd "$C" && foamFormatConvert -constant >log.foamFormatConvert 2>&1) || { cat "$C/log.foamFormatConvert"; exit 1; }
+  rm -rf "${HERE:?}/$1"
+  mkdir -p "$HERE/$1/constant"
+  cp -r "$C/constant/polyMesh" "$HERE/$1/constant/"
+  touch "$HERE/$1/$1.foam"
+}
+convert hex2_binary binary off
+convert hex2_gzip ascii on
