@@ -1,7 +1,6 @@
 """The one place that registers the add-on with Blender: every class, property, menu entry and
 app handler is listed here, registered in list order and unregistered in reverse."""
 
-import pathlib
 import sys
 
 import bpy
@@ -10,11 +9,6 @@ from bpy.props import PointerProperty
 from ..plan import session
 from ..plan.native import module_problem
 from . import handlers, operators, panels, properties
-
-def help_url() -> str:
-    """The add-on's user guide (README.md beside its __init__.py) as a file URL."""
-    return (pathlib.Path(__file__).resolve().parents[1] / "README.md").as_uri()
-
 
 def _bl_info() -> dict:
     """The package's bl_info (Blender 3.4's Preferences read it from the loaded module)."""
@@ -74,7 +68,7 @@ HANDLERS = (
 
 
 def register():
-    guide = help_url()
+    guide = operators.help_url()
     for key, url in (("doc_url", guide), ("tracker_url", guide + "#reporting-a-problem")):
         _bl_info()[key] = url
     for cls in CLASSES:

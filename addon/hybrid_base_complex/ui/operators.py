@@ -6,6 +6,7 @@ reports what was built and how long it took."""
 from __future__ import annotations
 
 import os
+import pathlib
 import time
 
 import bmesh
@@ -407,6 +408,11 @@ class HBC_OT_explain(bpy.types.Operator):
         return {"CANCELLED"}  # nothing changed: no undo step
 
 
+def help_url() -> str:
+    """The add-on's user guide (README.md beside its __init__.py) as a file URL."""
+    return (pathlib.Path(__file__).resolve().parents[1] / "README.md").as_uri()
+
+
 class HBC_OT_help(bpy.types.Operator):
     """Open the add-on's user guide: where things are, how to report a problem"""
 
@@ -415,8 +421,6 @@ class HBC_OT_help(bpy.types.Operator):
     bl_options = {"INTERNAL"}
 
     def execute(self, context):
-        from .addon import help_url
-
         bpy.ops.wm.url_open(url=help_url())
         return {"FINISHED"}
 
