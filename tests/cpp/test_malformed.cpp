@@ -253,7 +253,7 @@ TEST(Malformed, Hybrid) {
       {"negative", with_line(t, 7, "3 0 -1 3"), 7, "found -1"},
       {"non_numeric", with_line(t, 3, "1 0 O"), 3, "(a number), found 'O'"},
       {"nan", with_line(t, 4, "nan 1 0"), 4, "finite"},
-      {"two_vertices", with_line(t, 9, "2 0 1"), 9, "vertices of a face in [3,"},
+      {"two_vertices", with_line(t, 9, "2 0 1"), 9, "a face with at least 3 vertices"},
       {"repeated_vertex", with_line(t, 9, "3 2 2 3"), 9, "distinct vertices in face 3"},
       {"cell_not_closed", with_line(with_line(t, 10, "3 0 1 2"), 11, "3 1 0 0"), 10, "closed cell"},
       {"face_in_three_cells", three, 14, "at most 2 cells"},

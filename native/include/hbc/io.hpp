@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "hbc/check.hpp"
 #include "hbc/mesh.hpp"
 
 namespace hbc {
@@ -68,6 +69,12 @@ std::string read_file_bytes(const std::string& path);
 MeshInput read_input(const std::string& path, Format format = Format::Auto, const Threads& threads = {});
 // read_input + build_mesh.
 Mesh load_mesh(const std::string& path, Format format = Format::Auto, const Threads& threads = {});
+// read_input + build_mesh_skipping_invalid (hbc/check.hpp): the cells build_mesh would refuse
+// are dropped and listed in `dropped` (--skip-invalid, skip_invalid=True).
+Mesh load_mesh_skipping_invalid(const std::string& path, std::vector<DroppedCell>& dropped, Format format = Format::Auto,
+                                const Threads& threads = {});
+// read_input + check_input: InputError only for a file that cannot be read at all.
+CheckReport check_file(const std::string& path, Format format = Format::Auto, size_t listed = 10, const Threads& threads = {});
 
 // Writers. ovm_text keeps the mesh's numbering and each cell's view of its faces (read_ovm +
 // build_mesh give back the same arrays). medit_text writes Hexahedra, Tetrahedra, Prisms and

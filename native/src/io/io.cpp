@@ -149,6 +149,19 @@ Mesh load_mesh(const std::string& path, Format format, const Threads& threads) {
   return build_mesh(read_input(path, format, par), par);
 }
 
+Mesh load_mesh_skipping_invalid(const std::string& path, std::vector<DroppedCell>& dropped, Format format,
+                                const Threads& threads) {
+  const detail::RunOptions run(threads);
+  const Threads& par = run.get();
+  return build_mesh_skipping_invalid(read_input(path, format, par), dropped, par);
+}
+
+CheckReport check_file(const std::string& path, Format format, size_t listed, const Threads& threads) {
+  const detail::RunOptions run(threads);
+  const Threads& par = run.get();
+  return check_input(read_input(path, format, par), listed, par);
+}
+
 void write_mesh(const Mesh& mesh, const std::string& path, Format format) {
   if (format == Format::Auto) format = format_from_path(path);
   std::string text;

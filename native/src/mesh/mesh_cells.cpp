@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 
+#include "hbc/check.hpp"
 #include "mesh/mesh_steps.hpp"
 #include "platform/huge_pages.hpp"
 #include "parallel/parallel.hpp"
@@ -70,7 +71,7 @@ void CellCorners::gather(const Mesh& m, const MeshInput& in, size_t c) {
   const auto ev = m.edge_verts[static_cast<size_t>(bad->key)];
   throw InputError(in.source, in.loc_of(in.cell_loc, c),
                    "a closed cell (each edge in exactly 2 of its faces), cell " + std::to_string(c) + " has edge (" +
-                       std::to_string(ev[0]) + " " + std::to_string(ev[1]) + ") in " + std::to_string(bad->count));
+                       std::to_string(ev[0]) + " " + std::to_string(ev[1]) + ") in " + std::to_string(bad->count) + kSkipInvalidHint);
 }
 
 bool CellCorners::orient(const Mesh& m, size_t c) {

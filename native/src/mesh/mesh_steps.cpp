@@ -10,6 +10,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "hbc/check.hpp"
 #include "mesh/cell_templates.hpp"
 #include "platform/huge_pages.hpp"
 #include "parallel/parallel.hpp"
@@ -33,7 +34,7 @@ void validate_face(const MeshInput& in, size_t nv, size_t f, std::vector<int32_t
   auto loop = in.faces[f];
   if (loop.size() < 3)
     throw InputError(in.source, in.loc_of(in.face_loc, f),
-                     "a face with at least 3 vertices, face " + std::to_string(f) + " has " + std::to_string(loop.size()));
+                     "a face with at least 3 vertices, face " + std::to_string(f) + " has " + std::to_string(loop.size()) + kSkipInvalidHint);
   for (int32_t v : loop) {
     if (v < 0 || static_cast<size_t>(v) >= nv)
       throw InputError(in.source, in.loc_of(in.face_loc, f),
@@ -42,7 +43,7 @@ void validate_face(const MeshInput& in, size_t nv, size_t f, std::vector<int32_t
     if (stamp[static_cast<size_t>(v)] == static_cast<int32_t>(f))
       throw InputError(in.source, in.loc_of(in.face_loc, f),
                        "distinct vertices in face " + std::to_string(f) + ", vertex " + std::to_string(v) + " repeats in " +
-                           loop_text(loop));
+                           loop_text(loop) + kSkipInvalidHint);
     stamp[static_cast<size_t>(v)] = static_cast<int32_t>(f);
   }
 }
@@ -59,19 +60,19 @@ void validate_cell(const MeshInput& in, size_t nv, size_t c) {
     if (!ok)
       throw InputError(in.source, in.loc_of(in.cell_loc, c),
                        std::to_string(corner_count(shape)) + " distinct vertex indices in [0, " + std::to_string(nv) +
-                           ") for cell " + std::to_string(c) + ", found " + loop_text(row));
+                           ") for cell " + std::to_string(c) + ", found " + loop_text(row) + kSkipInvalidHint);
     return;
   }
   if (row.size() < 2)
     throw InputError(in.source, in.loc_of(in.cell_loc, c),
-                     "a cell with at least 2 faces, cell " + std::to_string(c) + " has " + std::to_string(row.size()));
+                     "a cell with at least 2 faces, cell " + std::to_string(c) + " has " + std::to_string(row.size()) + kSkipInvalidHint);
   const size_t nf = in.faces.rows();
   for (int32_t r : row) {
     const int32_t f = r >> 1;
     if (r < 0 || static_cast<size_t>(f) >= nf)
       throw InputError(in.source, in.loc_of(in.cell_loc, c),
                        "face index in [0, " + std::to_string(nf) + ") in cell " + std::to_string(c) + ", found " +
-                           std::to_string(r < 0 ? r : f));
+                           std::to_string(r < 0 ? r : f) + kSkipInvalidHint);
   }
 }
 
@@ -372,7 +373,7 @@ void fill_face_cells(const MeshInput& in, Mesh& m, const Threads& par) {
       if (fc[0] == ci || fc[1] == ci)
         throw InputError(in.source, in.loc_of(in.cell_loc, c),
                          "each face once per cell, cell " + std::to_string(c) + " lists the face " +
-                             loop_text(m.face_verts[u]) + " twice");
+                             loop_text(m.face_verts[u]) + " twice" + kSkipInvalidHint);
       if (fc[0] < 0) {
         fc[0] = ci;
       } else if (fc[1] < 0) {
@@ -380,7 +381,7 @@ void fill_face_cells(const MeshInput& in, Mesh& m, const Threads& par) {
       } else {
         throw InputError(in.source, in.loc_of(in.cell_loc, c),
                          "a face shared by at most 2 cells, face " + loop_text(m.face_verts[u]) + " is in cells " +
-                             std::to_string(fc[0]) + ", " + std::to_string(fc[1]) + " and " + std::to_string(c));
+                             std::to_string(fc[0]) + ", " + std::to_string(fc[1]) + " and " + std::to_string(c) + kSkipInvalidHint);
       }
     }
   }

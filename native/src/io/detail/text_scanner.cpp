@@ -179,7 +179,8 @@ void read_face_loops(TextScanner& s, int64_t nf, int64_t nv, int base, MeshInput
   const char* what = base == 0 ? "a vertex index (0-based)" : "a vertex index (1-based)";
   for (int64_t f = 0; f < nf; ++f) {
     in.face_loc.push_back(s.next_line());
-    const int64_t n = s.integer_in(3, 1 << 20, "the number of vertices of a face");
+    // Fewer than 3 are read: build_mesh names the face, hbc check lists it, --skip-invalid drops its cells.
+    const int64_t n = s.integer_in(1, 1 << 20, "the number of vertices of a face");
     for (int64_t k = 0; k < n; ++k)
       in.faces.items.push_back(static_cast<int32_t>(s.integer_in(base, nv - 1 + base, what) - base));
     in.faces.offsets.push_back(static_cast<int32_t>(in.faces.items.size()));
