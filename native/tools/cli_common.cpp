@@ -38,6 +38,8 @@ void add_input(CLI::App& cmd, InputArgs& in) {
   add_format(cmd, in.format);
   cmd.add_option("--threads", in.threads, "threads for reading and analysing the mesh (default: HBC_THREADS, else every core)")
       ->check(CLI::Range(1, 1024));
+  cmd.add_flag("--skip-invalid", in.skip_invalid,
+               "drop the cells that cannot be volumes (docs/check.md) instead of refusing the file; stderr says which");
 }
 
 CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,
@@ -74,9 +76,12 @@ void add_level(CLI::App& cmd, std::string& level, const std::string& help) {
 
 CLI::Range at_least(int min) { return CLI::Range(min, std::numeric_limits<int32_t>::max()); }
 
-Mesh load_for_cli(const InputArgs& in, double* seconds) {
+Mesh load_for_cli(const InputArgs& in, double* seconds, std::vector<DroppedCell>* dropped) {
   auto t0 = std::chrono::steady_clock::now();
-  Mesh m = load_mesh(in.file, in.parsed_format(), in.load_threads());
+  std::vector<DroppedCell> skipped;
+  Mesh m = in.skip_invalid ? load_mesh_skipping_invalid(in.file, skipped, in.parsed_format(), in.load_threads())
+                           : load_mesh(in.file, in.parsed_format(), in.load_threads());
+  if (dropped) *dropped = std::move(skipped);
   auto t1 = std::chrono::steady_clock::now();
   if (seconds) *seconds = std::chrono::duration<double>(t1 - t0).count();
   for (const auto& w : m.warnings) std::fprintf(stderr, "hbc: warning: %s: %s\n", in.file.c_str(), w.c_str());

@@ -27,7 +27,8 @@ void run_analyze(const AnalyzeArgs& args) {
   opt.wireframe_options.rho = args.rho;
   opt.sheet_level = opt.wireframe_level = level_from_name(args.level);
   double t_load = 0;
-  Mesh m = load_for_cli(args.input, &t_load);
+  std::vector<DroppedCell> dropped;
+  Mesh m = load_for_cli(args.input, &t_load, &dropped);
   // Only counts are printed: analyze_stats drops each stage once counted, and the mesh once only the
   // wireframe's view is still to be built, a lower peak at 10^7 cells.
   StatsRun run = analyze_stats(std::move(m), opt);
@@ -37,6 +38,7 @@ void run_analyze(const AnalyzeArgs& args) {
   if (args.json) {
     Json j = {{"file", file}};
     add_stats_json(j, s);
+    add_dropped_json(j, args.input.skip_invalid, dropped);
     write_output(json_text(j), std::nullopt);
   } else if (args.csv) {
     std::printf("%s\n%s\n", stats_csv_header().c_str(), stats_csv_row(file, s).c_str());

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "hbc/analysis.hpp"
+#include "hbc/check.hpp"
 #include "hbc/io.hpp"
 #include "hbc/level.hpp"
 
@@ -24,6 +25,7 @@ void add_sheets(CLI::App& app);
 void add_table(CLI::App& app);
 void add_export_vtu(CLI::App& app);
 void add_quality(CLI::App& app);
+void add_check(CLI::App& app);
 
 // The mesh file every reading command takes: FILE, --format NAME (default: by extension) and
 // --threads N (default: HBC_THREADS, else every core; the results are the same for any number).
@@ -31,6 +33,7 @@ struct InputArgs {
   std::string file;
   std::string format;  // empty: by extension; else a name format_from_name accepts
   int threads = 0;     // 0: HBC_THREADS, else every core (Threads::count)
+  bool skip_invalid = false;  // drop the cells build_mesh refuses (hbc/check.hpp) instead of failing
   Format parsed_format() const { return format.empty() ? Format::Auto : format_from_name(format); }
   Threads load_threads() const {
     Threads o;
@@ -60,8 +63,9 @@ void check_sheet_option(const Analysis& analysis, const std::optional<int32_t>& 
 // An integer option's range [min, INT32_MAX] (CLI11's NonNegativeNumber prints DBL_MAX).
 CLI::Range at_least(int min);
 
-// Loads a mesh and prints its warnings on stderr.
-Mesh load_for_cli(const InputArgs& in, double* seconds = nullptr);
+// Loads a mesh and prints its warnings on stderr (with --skip-invalid, what was dropped, which
+// `dropped` receives when given).
+Mesh load_for_cli(const InputArgs& in, double* seconds = nullptr, std::vector<DroppedCell>* dropped = nullptr);
 // Writes `text` to `path`, or to stdout when there is none.
 void write_output(const std::string& text, const std::optional<std::string>& path);
 

@@ -74,4 +74,18 @@ std::string stats_table(const std::string& name, const Stats& s) {
   return out;
 }
 
+void add_dropped_json(Json& j, bool skip, const std::vector<DroppedCell>& dropped) {
+  if (!skip) return;
+  Json by = Json::object(), cells = Json::array();
+  for (const DroppedCell& d : dropped) {
+    const char* key = defect_key(d.reason);
+    by[key] = by.value(key, 0) + 1;
+    Json c = {{"id", d.cell}, {"reason", key}};
+    if (d.loc.line >= 0) c["line"] = d.loc.line;
+    if (d.loc.byte_offset >= 0) c["byte"] = d.loc.byte_offset;
+    cells.push_back(std::move(c));
+  }
+  j["dropped"] = {{"count", dropped.size()}, {"by_reason", by}, {"cells", cells}};
+}
+
 }  // namespace hbc::cli

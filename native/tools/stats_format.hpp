@@ -3,12 +3,16 @@
 #include <string>
 
 #include "hbc/analysis.hpp"
+#include "hbc/check.hpp"
 #include "json.hpp"
 
 namespace hbc::cli {
 
 // Adds the stats keys (and "timings") to a JSON object.
 void add_stats_json(Json& j, const Stats& s);
+// j["dropped"]: what --skip-invalid dropped, {"count", "by_reason": {key: n}, "cells": [{"id",
+// "reason", "line" or "byte"}]} (docs/check.md); nothing when `skip` is false.
+void add_dropped_json(Json& j, bool skip, const std::vector<DroppedCell>& dropped);
 std::string stats_csv_header();
 std::string stats_csv_row(const std::string& name, const Stats& s);
 std::string stats_table(const std::string& name, const Stats& s);
