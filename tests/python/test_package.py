@@ -34,7 +34,7 @@ def public(names):
 
 
 def test_package_reexports_core():
-    assert set(hbc.__all__) == {"Mesh", "MeshFormatError", "load", "__version__", "Analysis",
+    assert set(hbc.__all__) == {"Mesh", "MeshFormatError", "load", "check", "__version__", "Analysis",
                                 "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe",
                                 "block_soup", "polylines", "cell_quality", "cell_depth", "cell_centroids",
                                 "kept_surface_soup", "Field", "STAT_FIELDS", "TIMING_FIELDS",
@@ -50,7 +50,8 @@ def test_stub_matches_module():
     stub_top = defined_names(tree.body)
     # Helper types that exist only for typing (TypedDicts, aliases) are not in the module.
     typing_only = {"Format", "CellTypeCounts", "MeshInfo", "Level", "SoupWhat", "I32", "U8", "Bool",
-                   "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup", "CellQuality", "FormatInfo"}
+                   "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup", "CellQuality", "FormatInfo",
+                   "CheckReport", "DefectClass", "DefectItem", "Dropped", "DroppedCell"}
     assert public(stub_top) - typing_only == public(dir(_core))
     assert "__version__" in stub_top
 

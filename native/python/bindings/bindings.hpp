@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hbc/analysis.hpp"
+#include "hbc/check.hpp"
 #include "hbc/mesh.hpp"
 #include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
@@ -25,8 +26,12 @@ struct PyMesh {
   Mesh mesh;
   std::vector<float> points32;
   double load_seconds = 0;  // set by hbc.load(); reported as the analysis' "load" timing
+  bool skip_invalid = false;           // hbc.load(skip_invalid=True)
+  std::vector<DroppedCell> dropped;    // the cells that load dropped (hbc/check.hpp)
 };
 using PyMeshPtr = std::shared_ptr<PyMesh>;
+// Mesh.dropped (io.cpp).
+py::object dropped_dict(const PyMesh& p);
 
 inline py::ssize_t ssize(size_t n) { return static_cast<py::ssize_t>(n); }
 

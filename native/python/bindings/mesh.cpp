@@ -92,6 +92,10 @@ void bind_mesh(py::module_& mod) {
           "Array properties are read-only numpy views sharing memory with the mesh. "
           "Create with hbc.load() or Mesh.from_arrays().");
 
+  cls.def_property_readonly("dropped", &dropped_dict,
+                            "What hbc.load(skip_invalid=True) dropped, as `hbc analyze --skip-invalid --json` "
+                            "says it: {count, by_reason: {key: n}, cells: [{id, reason, line|byte}]}; None "
+                            "for a mesh loaded without skip_invalid.");
   cls.def_property_readonly("source", [](const PyMesh& p) { return p.mesh.source; },
                             "The file (or '<arrays>') the mesh was built from.");
   cls.def_property_readonly("warnings", [](const PyMesh& p) {

@@ -34,6 +34,7 @@ from ._core import (
     block_soup,
     cell_centroids,
     cell_depth,
+    check,
     cell_quality,
     kept_surface_soup,
     load,
@@ -41,7 +42,7 @@ from ._core import (
 )
 
 __all__ = [
-    "Mesh", "MeshFormatError", "load", "__version__",
+    "Mesh", "MeshFormatError", "load", "check", "__version__",
     "Analysis", "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe", "block_soup", "polylines",
     "cell_quality", "cell_depth", "cell_centroids", "kept_surface_soup",
     "Field", "STAT_FIELDS", "TIMING_FIELDS", "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS",

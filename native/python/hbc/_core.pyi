@@ -50,6 +50,9 @@ class Mesh:
     @property
     def source(self) -> str: ...
     @property
+    def dropped(self) -> Dropped | None:
+        """What load(skip_invalid=True) dropped; None without skip_invalid."""
+    @property
     def warnings(self) -> list[str]: ...
     @property
     def num_vertices(self) -> int: ...
@@ -135,7 +138,43 @@ class Mesh:
     ) -> Mesh:
         """The mesh of these arrays, laid out as the properties of the same names (copied)."""
 
-def load(path: str | os.PathLike[str], format: Format | None = None) -> Mesh: ...
+def load(path: str | os.PathLike[str], format: Format | None = None, *, threads: int | None = None,
+         skip_invalid: bool = False) -> Mesh: ...
+
+class DefectItem(TypedDict, total=False):
+    id: int        # 0-based, in file order: a cell, face or vertex as the class's "of" says
+    line: int      # where the reader knows it (text files)
+    byte: int      # ... (binary files)
+    volume: float  # inverted and zero_volume only
+
+class DefectClass(TypedDict):
+    count: int
+    of: str        # "cells", "faces" or "vertices"
+    refused: bool  # build_mesh refuses the file for it (skip_invalid drops such cells)
+    first: list[DefectItem]
+
+class CheckReport(TypedDict):
+    """`hbc check --json`, key for key (docs/check.md)."""
+    file: str
+    vertices: int
+    cells: int
+    clean: bool
+    defects: dict[str, DefectClass]  # every class of docs/check.md, in its order
+
+def check(path: str | os.PathLike[str], format: Format | None = None, *, first: int = 10,
+          threads: int | None = None) -> CheckReport: ...
+
+class DroppedCell(TypedDict, total=False):
+    id: int
+    reason: str
+    line: int
+    byte: int
+
+class Dropped(TypedDict):
+    """`dropped` of `hbc analyze --skip-invalid --json` (docs/check.md)."""
+    count: int
+    by_reason: dict[str, int]
+    cells: list[DroppedCell]
 
 class Timings(TypedDict):
     load: float
