@@ -191,14 +191,17 @@ std::string vtu_cells_text(const Mesh& m, const Analysis& a, const VtuExportOpti
   std::vector<int64_t> conn, offsets, faces, faceoffsets, corners, loop64;
   std::vector<uint8_t> types(nc);
   std::vector<int32_t> loop, scratch;
-  // meshio (and other readers) cannot mix VTK_POLYHEDRON with other cell types: with any general
-  // polyhedron every cell is written as one (cell_type still names what it is).
-  const bool any_poly = std::find(m.cell_type.begin(), m.cell_type.end(), CellType::Polyhedron) != m.cell_type.end();
+  // Each cell as its own VTK type, so that ParaView's filters treat hexahedra as hexahedra; only
+  // general polyhedra (and a standard type whose corners cannot be found) as VTK_POLYHEDRON, whose
+  // face stream VTK's format puts beside the others (faceoffsets -1 for the standard cells).
+  // meshio 5 refuses a file mixing VTK_POLYHEDRON with other types; VTK and ParaView read it.
+  bool any_poly = false;
   for (size_t c = 0; c < nc; ++c) {
-    if (!any_poly && vtk_corners(m, c, corners, types[c])) {
+    if (vtk_corners(m, c, corners, types[c])) {
       conn.insert(conn.end(), corners.begin(), corners.end());
       faceoffsets.push_back(-1);
     } else {
+      any_poly = true;
       // Face stream: face count, then each outward loop with its length.
       types[c] = 42;
       cell_vertices(m, c, scratch);
