@@ -84,34 +84,18 @@ def push_undo_step(message):
         bpy.ops.ed.undo_push(message=message)
 
 
-def show_message(context, title, text):
-    """The whole of a long message in a popup, wrapped (the status bar cuts a report at its
-    width); nothing in background mode, where the report is printed whole."""
-    if bpy.app.background:
-        return
-    lines = P.wrap_message(text)
-
-    def draw(menu, _context):
-        for line in lines:
-            menu.layout.label(text=line)
-
-    try:
-        context.window_manager.popup_menu(draw, title=title, icon="ERROR")
-    except (AttributeError, RuntimeError):
-        pass
-
-
 class _Reporting:
     """How the operators end: one report, also written to the log when given."""
 
-    def cancel_with(self, context, error, prog=None):
-        """Reports a failure (the whole message also in a popup) and cancels; the scene was not
-        touched (builds are all or nothing)."""
+    def cancel_with(self, context, error, prog=None, wrap=False):
+        """Reports a failure and cancels; the scene was not touched (builds are all or nothing).
+        wrap: the report in lines (planning.wrap_message) in a window: run from the file browser,
+        Blender shows an operator's reports in a popup, one line per line of the report, each cut
+        at the popup's width."""
         if prog is not None:
             prog.end(context)
         text = P.describe_error(error)
-        self.report({"ERROR"}, text)
-        show_message(context, f"{self.bl_label}: failed", text)
+        self.report({"ERROR"}, "\n".join(P.wrap_message(text)) if wrap and not bpy.app.background else text)
         return {"CANCELLED"}
 
     def finish_with(self, done, log=None):
@@ -188,7 +172,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
                     prog.step(f"built {P.LAYER_TITLES[layer]}")
                 context.scene.collection.children.link(root)
         except Exception as e:  # noqa: BLE001 - any failure must cancel cleanly
-            return self.cancel_with(context, e, prog)
+            return self.cancel_with(context, e, prog, wrap=True)
         prog.end(context)
         session.put(root.name, s)
         st.active_mesh = root.name
