@@ -54,6 +54,8 @@ struct CellComplex {
   // Cells (nc): mesh cells / components in the region.
   std::vector<uint8_t> cell_non_hex;      // nc: non-hex cell / non-hex component
   std::vector<int32_t> cell_source;       // nc: mesh cell / component id
+  // nc: non_hex_kind (mesh.hpp) of a non-hex cell, of a non-hex component's one cell; 0 for the others.
+  std::vector<int32_t> cell_kind;
 
   // Whole-mesh adjacency of the region's elements, for the rules that look past the region (the
   // authors' continuation and flood use the whole mesh's faces and cells). Ids are source ids (mesh
@@ -101,6 +103,7 @@ CellComplex complex_from_base(const Mesh& mesh, const BaseComplex& bc, std::span
 struct BaseViewFacts {
   size_t num_mesh_vertices = 0;
   std::vector<uint8_t> component_in;      // ncomp: in the region
+  std::vector<int32_t> component_kind;    // ncomp: non_hex_kind of a non-hex component's cell, else 0
   std::vector<uint8_t> patch_in;          // npatch: a region cell on one of its sides
   std::vector<uint8_t> patch_quad;        // npatch: 4 curves and 4 corners
   std::vector<uint8_t> curve_in;          // ncurve: a region cell at its first mesh edge

@@ -16,6 +16,15 @@ namespace hbc {
 enum class CellType : uint8_t { Hex = 0, Tet = 1, Prism = 2, Pyramid = 3, Polyhedron = 4 };
 const char* cell_type_name(CellType t);
 
+// The kind of a non-hex cell, as the wireframe's chains carry it (docs/concepts.md, "Non-hex
+// kinds"): its type and its number of faces in one code, type << 16 | faces (faces capped at
+// 0xffff), so that sorted codes list tets, prisms, pyramids, then polyhedra by face count.
+constexpr int32_t non_hex_kind(CellType t, size_t faces) {
+  return static_cast<int32_t>(t) << 16 | static_cast<int32_t>(faces < 0xffff ? faces : 0xffff);
+}
+constexpr CellType non_hex_kind_type(int32_t kind) { return static_cast<CellType>(kind >> 16); }
+constexpr int32_t non_hex_kind_faces(int32_t kind) { return kind & 0xffff; }
+
 // How a MeshInput row describes a cell: as references to faces of the polygon soup, or as the
 // corners of one of the standard elements in MEDIT's corner order (hex 0-3 bottom, 4-7 top, the
 // bottom's right-hand normal pointing into the cell; prism 0-2 bottom, 3-5 top, same rule;

@@ -74,6 +74,11 @@ struct VsgWireframe {
   std::vector<int32_t> valence;            // per chain: region valence of its first edge
   std::vector<TraceStop> stop;             // per chain: what its second end is
 
+  // Non-hex kinds of each chain (docs/concepts.md, "Non-hex kinds"): row w lists, sorted and each
+  // once, the non_hex_kind codes (mesh.hpp) of the view's non-hex cells around an edge of chain w
+  // or at an end of it (the first and last vertex of an open chain). Empty rows on an all-hex view.
+  Csr<int32_t> non_hex;
+
   // ---- Simplification (per complete chain) ----
   std::vector<uint8_t> vert_non_important; // nv: redundant singular vertex, or not singular
   // 0 = kept; 1 = both ends redundant; 2 = in a removable pair at a singular vertex.
@@ -83,6 +88,7 @@ struct VsgWireframe {
   // The simplified wireframe: kept chains re-chained through the vertices that stop being singular.
   Csr<int32_t> simplified_edges;
   Csr<int32_t> simplified_polylines;
+  Csr<int32_t> simplified_non_hex;         // the non-hex kinds of each simplified chain, as non_hex
   // Distinct mesh edges covered by the VSG chains, the complete and the simplified wireframe
   // (JSON/Python vsg_mesh_edges, wireframe_mesh_edges, wireframe_mesh_edges_simplified).
   int64_t vsg_mesh_edges = 0, wireframe_mesh_edges = 0, simplified_mesh_edges = 0;

@@ -176,7 +176,12 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
   const std::vector<int32_t> vmap = compact(vert_in, cx.vert_mesh, par);
 
   cx.cell_non_hex.resize(cx.num_cells());
-  for (size_t i = 0; i < cx.num_cells(); ++i) cx.cell_non_hex[i] = !m.is_hex(cx.cell_source[i]);
+  cx.cell_kind.assign(cx.num_cells(), 0);
+  for (size_t i = 0; i < cx.num_cells(); ++i) {
+    const int32_t c = cx.cell_source[i];
+    cx.cell_non_hex[i] = !m.is_hex(c);
+    if (cx.cell_non_hex[i]) cx.cell_kind[i] = non_hex_kind(m.cell_type[c], static_cast<size_t>(m.cell_faces.count(c)));
+  }
 
   std::vector<int32_t> buf;
   cx.face_quad.resize(cx.num_faces());
@@ -411,8 +416,11 @@ CellComplex view_from_facts(const BaseComplex& bc, const BaseViewFacts& f, const
   cx.level = Level::Complex;
   const std::vector<int32_t> kmap = compact(f.component_in, cx.cell_source, par);
   cx.cell_non_hex.resize(cx.num_cells());
-  for (size_t i = 0; i < cx.num_cells(); ++i)
+  cx.cell_kind.resize(cx.num_cells());
+  for (size_t i = 0; i < cx.num_cells(); ++i) {
     cx.cell_non_hex[i] = bc.component_kind[cx.cell_source[i]] == ComponentKind::NonHex;
+    cx.cell_kind[i] = f.component_kind[cx.cell_source[i]];
+  }
   const std::vector<int32_t> pmap = compact(f.patch_in, cx.face_source, par);
   const std::vector<int32_t> emap = compact(f.curve_in, cx.edge_source, par);
   cx.vert_mesh = f.corners;
@@ -453,6 +461,15 @@ BaseViewFacts base_view_facts(const Mesh& m, const BaseComplex& bc, std::span<co
   BaseViewFacts f;
   f.num_mesh_vertices = m.num_vertices();
   f.component_in = flags_of(region_components, bc.num_components(), "component");
+  // A non-hex component is one non-hex cell (docs/concepts.md): the view's cell takes its kind.
+  f.component_kind.assign(bc.num_components(), 0);
+  parallel_ranges(f.component_kind.size(), par, [&](size_t b, size_t e, int) {
+    for (size_t k = b; k < e; ++k) {
+      if (bc.component_kind[k] != ComponentKind::NonHex) continue;
+      const int32_t c = bc.component_cells[k][0];
+      f.component_kind[k] = non_hex_kind(m.cell_type[c], static_cast<size_t>(m.cell_faces.count(c)));
+    }
+  });
   std::vector<uint8_t> in_cell(m.num_cells());
   parallel_ranges(in_cell.size(), par, [&](size_t b, size_t e, int) {
     for (size_t c = b; c < e; ++c) in_cell[c] = f.component_in[bc.cell_component[c]];

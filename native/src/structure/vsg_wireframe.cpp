@@ -408,6 +408,29 @@ Csr<int32_t> polylines(const CellComplex& cx, const Chains& ch, const Threads& p
   return out;
 }
 
+// The non-hex kinds of each chain (VsgWireframe::non_hex): those of the non-hex cells around its
+// edges and, for an open chain, around the edges at its two ends (every cell at a vertex holds an
+// edge there: a mesh cell its own edges, a component the curves of its cells' edges, all of which
+// end at a corner). edge_non_hex spares the look-up at the many edges with hex cells only around.
+Csr<int32_t> chain_kinds(const CellComplex& cx, const Chains& ch, const Threads& par) {
+  const auto add = [&](int32_t e, std::vector<int32_t>& out) {
+    if (!cx.edge_non_hex[e]) return;
+    for (int32_t c : cx.edge_cells[e])
+      if (cx.cell_non_hex[c]) out.push_back(cx.cell_kind[c]);
+  };
+  return detail::parallel_rows_of<int32_t, std::vector<int32_t>>(
+      ch.edges.rows(), par, [&](size_t c, Csr<int32_t>& out, std::vector<int32_t>& kinds) {
+        kinds.clear();
+        for (int32_t e : ch.edges[c]) add(e, kinds);
+        const auto vs = ch.verts[c];
+        if (vs.front() != vs.back())
+          for (int32_t v : {vs.front(), vs.back()})
+            for (int32_t e : cx.vert_edges[v]) add(e, kinds);
+        sort_unique(kinds);
+        out.items.insert(out.items.end(), kinds.begin(), kinds.end());
+      });
+}
+
 // Closed complex edges (curves without corners) are chains by themselves when seeded.
 void add_closed(const CellComplex& cx, const std::vector<uint8_t>& seed, Chains& ch) {
   for (size_t e = 0; e < seed.size(); ++e) {
@@ -865,6 +888,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   flag_edges_at(cx, w.vert_singular, seeds, par, any);
   const Chains complete = valence_chains(r, seeds, w.vert_singular, par);
   fill_complete(r, complete, par, w);
+  w.non_hex = chain_kinds(cx, complete, par);
 
   // Simplification.
   std::vector<uint8_t> parallel(ne, 0);
@@ -880,6 +904,7 @@ VsgWireframe vsg_wireframe_graph(const CellComplex& cx, const WireframeOptions& 
   const Chains simple = final_chains(r, complete, cl.kept, par);
   w.simplified_edges = simple.edges;
   w.simplified_polylines = polylines(cx, simple, par);
+  w.simplified_non_hex = chain_kinds(cx, simple, par);
   const std::vector<uint8_t> on = edge_flags(cx, simple.edges);
   w.shown.assign(w.size(), 0);
   detail::parallel_ranges(w.size(), par, [&](size_t b, size_t end, int) {
