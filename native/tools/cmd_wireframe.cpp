@@ -5,6 +5,7 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <span>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -44,6 +45,14 @@ void append_real(std::string& out, double v) {
   out += buf;
 }
 
+// A chain's non-hex kinds (docs/concepts.md): each as its cell type's name and its face count.
+Json non_hex_json(std::span<const int32_t> kinds) {
+  Json out = Json::array();
+  for (int32_t k : kinds)
+    out.push_back(Json{{"type", cell_type_name(non_hex_kind_type(k))}, {"faces", non_hex_kind_faces(k)}});
+  return out;
+}
+
 Json edge_json(const Mesh& m, const VsgWireframe& w, size_t i) {
   const auto poly = w.polylines[i];
   Json points = Json::array();
@@ -60,7 +69,19 @@ Json edge_json(const Mesh& m, const VsgWireframe& w, size_t i) {
           {"color", w.style.color[i]},
           {"vertices", Json(std::vector<int32_t>(poly.begin(), poly.end()))},
           {"points", std::move(points)},
-          {"opacity", Json(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(poly.size())))}};
+          {"opacity", Json(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(poly.size())))},
+          {"non_hex", non_hex_json(w.non_hex[i])}};
+}
+
+// The simplified wireframe's polylines (mesh vertices) with their non-hex kinds.
+Json simplified_json(const VsgWireframe& w) {
+  Json out = Json::array();
+  for (size_t i = 0; i < w.simplified_polylines.rows(); ++i) {
+    const auto poly = w.simplified_polylines[i];
+    out.push_back(Json{{"vertices", Json(std::vector<int32_t>(poly.begin(), poly.end()))},
+                       {"non_hex", non_hex_json(w.simplified_non_hex[i])}});
+  }
+  return out;
 }
 
 std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeOptions& opt, const VsgWireframe& w,
@@ -77,6 +98,7 @@ std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeO
   for (size_t i = 0; i < counts.size(); ++i) j[std::string(counts[i].key)] = wireframe_count(w, i);
   j["seconds_vsg_wireframe"] = seconds;
   j["edges"] = std::move(edges);
+  j["simplified_polylines"] = simplified_json(w);
   return cli::json_text(j);
 }
 

@@ -79,4 +79,4 @@ def test_every_csr_is_offsets_and_items():
         items = {n[:-len("_items")] for n in names if n.endswith("_items")}
         assert offsets == items, (cls.__name__, offsets ^ items)
         pairs += len(offsets)
-    assert pairs == 28  # Mesh 3, SingularityGraph 2, BaseComplex 5, Subsheets 7, Wireframe 2, Analysis 9
+    assert pairs == 30  # Mesh 3, SingularityGraph 2, BaseComplex 5, Subsheets 7, Wireframe 4, Analysis 9

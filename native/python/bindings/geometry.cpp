@@ -59,6 +59,11 @@ void bind_wireframe(py::module_& m) {
   wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
   wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
+  def_csr(c, "non_hex", [](const PyWireframe& p) -> auto& { return p.w->non_hex; }, "count",
+          "int32 non-hex kinds of each polyline, sorted (docs/concepts.md): code >> 16 indexes "
+          "CELL_TYPES, code & 0xffff is the face count.");
+  def_csr(c, "simplified_non_hex", [](const PyWireframe& p) -> auto& { return p.w->simplified_non_hex; },
+          "counts['wireframe_edges_simplified']", "int32 non-hex kinds of each simplified polyline, as non_hex.");
   c.def_property_readonly(
       "counts",
       [](const PyWireframe& p) { return wireframe_counts(*p.w); },

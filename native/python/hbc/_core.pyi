@@ -491,6 +491,19 @@ class Wireframe:
     def color_class(self) -> I32:
         """(count,)"""
     @property
+    def non_hex_offsets(self) -> I32:
+        """(count + 1,)"""
+    @property
+    def non_hex_items(self) -> I32:
+        """(non_hex_offsets[-1],) non-hex kinds of each polyline, sorted: code >> 16 indexes
+        CELL_TYPES, code & 0xffff is the face count (docs/concepts.md)."""
+    @property
+    def simplified_non_hex_offsets(self) -> I32:
+        """(counts['wireframe_edges_simplified'] + 1,)"""
+    @property
+    def simplified_non_hex_items(self) -> I32:
+        """(simplified_non_hex_offsets[-1],) non-hex kinds of each simplified polyline, as non_hex."""
+    @property
     def counts(self) -> WireframeCounts: ...
 
 class Analysis:
