@@ -29,7 +29,8 @@ fs::path regressions_dir() { return fs::path(__FILE__).parent_path().parent_path
 // load + analyze.
 const std::map<std::string, Format> kReaderHarnesses = {
     {"ovm", Format::Ovm},       {"ovmb", Format::Ovmb}, {"medit", Format::Medit}, {"hybrid", Format::Hybrid},
-    {"hedra", Format::Hedra},   {"msh", Format::Msh},   {"vtk", Format::Vtk},     {"vtu", Format::Vtu}};
+    {"hedra", Format::Hedra},   {"msh", Format::Msh},   {"vtk", Format::Vtk},     {"vtu", Format::Vtu},
+    {"foam", Format::Foam}};
 const std::string kAnalyzeHarness = "analyze";
 
 std::optional<Format> format_of_harness(const std::string& h) {

@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,analyze}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,analyze}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -28,6 +28,16 @@ done < <(find "$DATA" -type f -size -100k | sort)
 for f in "$HERE"/../data/formats/*.{msh,vtk,vtu} "$HERE"/../data/formats/real/*.{msh,vtk,vtu}; do
   [ -f "$f" ] || continue
   cp "$f" "$OUT/${f##*.}/src_$(basename "$f")"
+done
+
+# OpenFOAM cases (tests/data/formats/foam): the harness takes points, faces, owner and neighbour
+# in one input, each ended by a line "#-#-#" (fuzz_targets.hpp); .gz files go in inflated.
+for c in "$HERE"/../data/formats/foam/*/constant/polyMesh; do
+  name=$(basename "$(dirname "$(dirname "$c")")")
+  for f in points faces owner neighbour; do
+    if [ -f "$c/$f" ]; then cat "$c/$f"; else gzip -dc "$c/$f.gz"; fi
+    printf '\n#-#-#\n'
+  done > "$OUT/foam/src_$name"
 done
 
 # Generated meshes: every generator, every split kind, sizes that stay a few KB. Grids and
@@ -65,6 +75,6 @@ for dir in ovm ovmb medit hybrid hedra msh vtk vtu; do
   done
   sel=$((sel + 1))
 done
-for dir in ovm ovmb medit hybrid hedra msh vtk vtu analyze; do
+for dir in ovm ovmb medit hybrid hedra msh vtk vtu foam analyze; do
   echo "corpus $dir: $(ls "$OUT/$dir" | wc -l) files, $(du -sk "$OUT/$dir" | cut -f1) KB"
 done
