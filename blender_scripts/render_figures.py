@@ -84,7 +84,8 @@ def highlights_shown(colls, subsheets=None):
 
 
 def legend_of(subject, key, highlights=()):
-    return plan.panel_legend(subject.addon.P, key, subject.s.legend_facts(), highlights)
+    return plan.panel_legend(subject.addon.P, key, subject.s.legend_facts(), highlights,
+                             subject.args.wire_colors == "kind")
 
 
 def add_legends(items, args, name, written):

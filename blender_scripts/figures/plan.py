@@ -85,6 +85,9 @@ def parser():
     ap.add_argument("--azimuth", type=float, default=-50.0, help="view azimuth in degrees around up")
     ap.add_argument("--elevation", type=float, default=25.0, help="view elevation in degrees")
     ap.add_argument("--rho", type=float, default=0.8, help="partial-parallel threshold of the wireframe colours")
+    ap.add_argument("--wire-colors", choices=("class", "kind"), default="class",
+                    help="colour the VSG wireframes by partial-parallel class (the paper's) or by the non-hex "
+                         "kinds of their chains (the cell types they end at or run beside)")
     ap.add_argument("--addon", default=None,
                     help="the add-on package folder (default: $HBC_ADDON_DIR, else <repo>/build/addon/"
                          "hybrid_base_complex)")
@@ -381,15 +384,23 @@ LEGEND_LAYERS = {
 }
 
 
-def panel_legend(P, key, facts, highlights=()):
+#: The panels whose wireframes a colouring by non-hex kind colours, with the layer whose legend
+#: then names the kinds (planning.legend's wire_by_kind).
+WIRE_PANELS = {"wireframe": "wireframe", "mesh_wireframe": "wireframe", "subsheets": "subsheets"}
+
+
+def panel_legend(P, key, facts, highlights=(), wire_by_kind=False):
     """[(colour key, words, linear RGBA)] of panel `key`: the add-on's legend (P: its planning
     module, the one place that defines the colours and words) for the layers the panel shows.
-    facts: Structure.legend_facts(); highlights: the sheet highlights the panel draws."""
+    facts: Structure.legend_facts(); highlights: the sheet highlights the panel draws;
+    wire_by_kind: the wireframes are coloured by non-hex kind (--wire-colors kind)."""
     layers = LEGEND_LAYERS.get(key, ())
+    if wire_by_kind and key in WIRE_PANELS:
+        layers = tuple(dict.fromkeys(layers + (WIRE_PANELS[key],)))
     if not layers:
         return []
     return [(k, words, tuple(float(c) for c in P.LEGEND_COLORS[k]))
-            for k, words in P.legend(layers, highlights=set(highlights), **facts)]
+            for k, words in P.legend(layers, highlights=set(highlights), wire_by_kind=wire_by_kind, **facts)]
 
 
 @dataclass

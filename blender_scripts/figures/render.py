@@ -295,7 +295,8 @@ class Subject:
         line = max(0.0035, 1.3 * self.pixel / self.length)
         dot = max(0.006, 3.0 * self.pixel / self.length)
         base = dict(line_radius=line, dot_radius=dot, shrink=0.08, split_max=1000, spread=False,
-                    sheet_index=self.sheet if self.sheet is not None else 0)
+                    sheet_index=self.sheet if self.sheet is not None else 0,
+                    wireframe_colors=getattr(self.args, "wire_colors", "class").upper())
         base.update(kw)
         return self.addon.settings(**base)
 

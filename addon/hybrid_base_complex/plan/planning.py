@@ -135,6 +135,51 @@ def palette_color(index) -> np.ndarray:
     return out
 
 
+#: Colouring the wireframe by the non-hex kinds of its chains (hbc.Wireframe.non_hex_*; docs/concepts.md,
+#: "Non-hex kinds"): a chain whose kinds are all of one cell type takes that type's colour
+#: (CELL_TYPE_COLORS, as the direct view's cells), one with kinds of several types WIRE_SEVERAL_COLOR,
+#: one with none (hex cells only around it and at its ends) WIRE_HEX_COLOR.
+WIRE_SEVERAL_COLOR = (0.05, 0.05, 0.05, 1.0)
+WIRE_HEX_COLOR = (0.62, 0.62, 0.62, 1.0)
+#: The wireframe's colourings (the add-on's "Colour" setting, the figures' --wire-colors).
+WIRE_COLORINGS = (("CLASS", "Class", "Colour classes of partially parallel chains (paper section 6.2)"),
+                  ("KIND", "Non-hex", "The cell types of the non-hex cells each chain ends at or runs beside"))
+
+
+def kind_types(items) -> np.ndarray:
+    """The cell type (index of hbc.CELL_TYPES) of non-hex kind codes."""
+    return np.asarray(items, np.int64) >> 16
+
+
+def kind_faces(items) -> np.ndarray:
+    """The face count of non-hex kind codes."""
+    return np.asarray(items, np.int64) & 0xFFFF
+
+
+def chain_kind_types(offsets, items) -> np.ndarray:
+    """(n,) per chain of a kinds CSR: the one cell type of its kinds, 0 (hex) for none, -1 for
+    several types."""
+    offsets = np.asarray(offsets, np.int64)
+    n = len(offsets) - 1
+    out = np.zeros(n, np.int64)
+    rows = np.flatnonzero(np.diff(offsets) > 0)
+    if rows.size:
+        types = kind_types(items)
+        lo = np.minimum.reduceat(types, offsets[rows])
+        hi = np.maximum.reduceat(types, offsets[rows])
+        out[rows] = np.where(lo == hi, lo, -1)
+    return out
+
+
+def chain_kind_colors(offsets, items) -> np.ndarray:
+    """(n,4) colours of n chains by their non-hex kinds (see WIRE_SEVERAL_COLOR)."""
+    t = chain_kind_types(offsets, items)
+    out = CELL_TYPE_COLORS[np.clip(t, 0, 4)].copy()
+    out[t == 0] = WIRE_HEX_COLOR
+    out[t < 0] = WIRE_SEVERAL_COLOR
+    return out
+
+
 def spread_ids(ids) -> np.ndarray:
     """Permutes ids so that consecutive ids (often neighbours) get distant palette entries."""
     return (np.asarray(ids, np.int64) * 7) % PALETTE_SIZE
@@ -482,6 +527,8 @@ LEGEND_COLORS = {
     "shared": SHARED_COLOR,
     "self_parallel": SELF_PARALLEL_EDGE_COLOR,
     "self_intersecting": SELF_INTERSECTING_COLOR,
+    "wire_several": WIRE_SEVERAL_COLOR,
+    "wire_hex": WIRE_HEX_COLOR,
 }
 
 
@@ -497,12 +544,21 @@ SHEET_HIGHLIGHTS = (
 )
 
 
+def wire_kind_legend(non_hex_types=()):
+    """The legend of a wireframe coloured by non-hex kind (chain_kind_colors): one entry per cell
+    type of the mesh's non-hex cells, then several types and none."""
+    out = [(CELL_TYPE_NAMES[t], f"Wire at {CELL_TYPE_NAMES[t]}") for t in non_hex_types]
+    return out + [("wire_several", "Wire at 2+ types"), ("wire_hex", "Wire at hexes only")]
+
+
 def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_hex_types=(),
-           has_non_hex_blocks=True, highlights=None):
+           has_non_hex_blocks=True, highlights=None, wire_by_kind=False):
     """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
     edge means (the swatch gives the colour, the words what it marks). The add-on's Legend panel and
     the figure script's legend strip (blender_scripts/figures) both show exactly this.
-    highlights: the sheet highlights drawn (keys of SHEET_HIGHLIGHTS), None for all of them."""
+    highlights: the sheet highlights drawn (keys of SHEET_HIGHLIGHTS), None for all of them.
+    wire_by_kind: the wireframes (the wireframe layer, the subsheets' wireframes) are coloured by
+    non-hex kind; the palette's class colours mean nothing beyond telling chains apart."""
     out = []
     if "direct" in layers:
         out.append(("hex", "Boundary, hex cells"))
@@ -519,6 +575,8 @@ def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_he
         out.append(("non_hex_block", "Non-hex component"))
     if "sheet" in layers or "subsheets" in layers:
         out += [(key, words) for key, words in SHEET_HIGHLIGHTS if highlights is None or key in highlights]
+    if wire_by_kind and ("wireframe" in layers or "subsheets" in layers):
+        out += wire_kind_legend(non_hex_types)
     return out
 
 

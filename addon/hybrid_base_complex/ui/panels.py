@@ -229,6 +229,7 @@ def _subsheets_options(self, col, st):
 
 def _wireframe_options(self, col, st):
     col.row().prop(st, "wireframe_scope", expand=True)
+    col.row().prop(st, "wireframe_colors", expand=True)
     for name in ("opacity_floor", "simplified", "line_radius"):
         col.prop(st, name)
 
@@ -267,7 +268,8 @@ def legend_entries(context):
         return P.legend(shown)
     highlights = {ob.get("hbc_highlight") for layer in ("sheet", "subsheets") if layer in shown
                   for ob in S.objects_in(S.find_layer(root, layer))}
-    return P.legend(shown, highlights=highlights, **s.legend_facts())
+    by_kind = context.scene.hbc.wireframe_colors == "KIND"
+    return P.legend(shown, highlights=highlights, wire_by_kind=by_kind, **s.legend_facts())
 
 
 def panel_legend(context):
