@@ -18,10 +18,11 @@ if command -v ccache >/dev/null; then
   HBC_CMAKE_ARGS+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 # Debian packages scripts/env/deps.sh installs; hbc_missing_packages prints those not installed.
+# openfoam and openfoam-examples make the real snappyHexMesh cases (scripts/env/foam_cases.sh).
 HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3-pytest pybind11-dev
   python3-pybind11 libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev
   libbenchmark-dev blender libpugixml-dev zlib1g-dev python3-meshio libcli11-dev nlohmann-json3-dev
-  python3-venv ccache)
+  python3-venv ccache openfoam openfoam-examples)
 hbc_missing_packages() {
   local p
   for p in "${HBC_DEBIAN_PACKAGES[@]}"; do
