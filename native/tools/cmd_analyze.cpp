@@ -17,6 +17,7 @@ struct AnalyzeArgs {
   bool json = false, csv = false, no_sheets = false, no_wireframe = false;
   std::string level = "complex";
   double rho = WireframeOptions{}.rho;
+  std::string subsheets = "layers";
 };
 
 void run_analyze(const AnalyzeArgs& args) {
@@ -26,6 +27,7 @@ void run_analyze(const AnalyzeArgs& args) {
   opt.wireframe = !args.no_wireframe;
   opt.wireframe_options.rho = args.rho;
   opt.sheet_level = opt.wireframe_level = level_from_name(args.level);
+  opt.subsheet_options.rule = *subsheet_rule_from_name(args.subsheets);
   double t_load = 0;
   std::vector<DroppedCell> dropped;
   Mesh m = load_for_cli(args.input, &t_load, &dropped);
@@ -64,6 +66,10 @@ void add_analyze(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_flag("--no-sheets", args->no_sheets, "skip the sheet stages");
+  cmd->add_option("--subsheets", args->subsheets,
+                  "decomposition of self-intersecting sheets: layers (the paper's authors' rule) or fewest")
+      ->check(CLI::IsMember({"layers", "fewest"}))
+      ->capture_default_str();
   cmd->add_flag("--no-wireframe", args->no_wireframe, "skip the wireframe stage");
   cmd->callback([args] { run_analyze(*args); });
 }

@@ -18,6 +18,7 @@ namespace hbc {
 struct AnalysisOptions {
   bool sheets = true;     // sheets and their classification
   bool subsheets = true;  // decomposition of every self-intersecting sheet (needs sheets)
+  SubsheetOptions subsheet_options;  // which decomposition (the authors' layers by default)
   Level sheet_level = Level::Complex;
   bool wireframe = true;  // whole-mesh VSG wireframe
   Level wireframe_level = Level::Complex;
@@ -40,6 +41,7 @@ struct SheetStage {
   std::optional<int32_t> largest_self_intersecting;  // the sheet id, when there is such a sheet
   // The subsheet stage ran: one decomposition per self-intersecting sheet, in sheet order.
   std::optional<std::vector<Subsheets>> subsheets;
+  std::vector<double> subsheet_seconds;  // wall-clock seconds of each decomposition, in the same order
 
   // The decomposition of sheet s; nullptr when s is not self-intersecting or the subsheet stage
   // did not run.

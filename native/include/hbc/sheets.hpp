@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "hbc/base_complex.hpp"
@@ -87,23 +88,44 @@ Sheets extract_sheets(const Mesh& mesh, const SheetDomain& domain, const Threads
 SheetClass classify_sheet(const SheetDomain& domain, const std::vector<int32_t>& curves,
                           const std::vector<int32_t>& blocks);
 
+// How a self-intersecting sheet is split into subsheets (docs/validation.md).
+//  - Layers: the rule of the paper's authors. From each curve not yet covered, a layer grows
+//    depth-first over parallel curves block by block; a curve meeting the layer inside one block
+//    takes its blocks out of the layer. Subsheets may share blocks and curves.
+//  - Fewest: a split of the sheet's curves into as few subsheets as possible, each connected over
+//    parallel curves and without two curves that meet in one block (so never type 3), with a
+//    lower bound that proves it minimal when the two meet.
+enum class SubsheetRule : uint8_t { Layers = 0, Fewest = 1 };
+const char* subsheet_rule_name(SubsheetRule r);  // "layers", "fewest"
+std::optional<SubsheetRule> subsheet_rule_from_name(std::string_view name);
+
+struct SubsheetOptions {
+  SubsheetRule rule = SubsheetRule::Layers;
+  // Fewest: steps of the exact search per sheet (under a second per sheet on the paper's meshes).
+  // A count of steps, not a time, so that the answer does not depend on the machine's load.
+  int64_t node_budget = 100'000;
+};
+
 struct Subsheets {
   int32_t sheet = -1;
+  SubsheetRule rule = SubsheetRule::Layers;
   Csr<int32_t> curves;   // per subsheet, sorted
   Csr<int32_t> blocks;    // per subsheet, sorted
   Csr<int32_t> cells;    // per subsheet, mesh hex cells, sorted
   std::vector<SheetClass> classes;
+  // Fewest: no split has fewer subsheets than lower_bound; proven when the count meets it (the
+  // search either met the bound or ruled out every smaller split). Layers: 0 and false.
+  int32_t lower_bound = 0;
+  bool proven = false;
   size_t size() const { return classes.size(); }
 
   // Every member compared, so that a member added later cannot escape the thread-count tests.
   bool operator==(const Subsheets&) const = default;
 };
 
-// Breadth-first decomposition of one sheet (paper §4.3): grow from the lowest unused curve over
-// parallel curves, never adding a curve that shares an end with a curve already taken inside one
-// block of the sheet; the blocks around a rejected curve leave the subsheet, and curves left with no
-// block seed later subsheets (docs/validation.md).
-Subsheets decompose_sheet(const SheetDomain& domain, const Sheets& sheets, int32_t sheet);
+// The subsheets of one self-intersecting sheet by `options.rule` (subsheets.cpp).
+Subsheets decompose_sheet(const SheetDomain& domain, const Sheets& sheets, int32_t sheet,
+                          const SubsheetOptions& options = {});
 
 // The self-intersecting sheet with most cells (ties: lowest id); none without such a sheet.
 std::optional<int32_t> largest_self_intersecting(const Sheets& sheets);

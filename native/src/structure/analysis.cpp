@@ -36,7 +36,11 @@ SheetStage sheet_stage(const Mesh& mesh, const BaseComplex& complex, const Analy
     t = std::chrono::steady_clock::now();
     st.subsheets.emplace();
     for (size_t s = 0; s < st.sheets.size(); ++s)
-      if (st.sheets.classes[s].type3) st.subsheets->push_back(decompose_sheet(st.domain, st.sheets, static_cast<int32_t>(s)));
+      if (st.sheets.classes[s].type3) {
+        const auto ts = std::chrono::steady_clock::now();
+        st.subsheets->push_back(decompose_sheet(st.domain, st.sheets, static_cast<int32_t>(s), opt.subsheet_options));
+        st.subsheet_seconds.push_back(since(ts));
+      }
     timings.subsheets = since(t);
   }
   return st;
