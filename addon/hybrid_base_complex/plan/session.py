@@ -43,11 +43,12 @@ def load(path: str, scale: float = 1.0, log=print, offset=(0.0, 0.0, 0.0)) -> St
     return s
 
 
-def analyze(structure: Structure, rho: float = 0.8, log=print) -> Structure:
-    """Runs the whole analysis on a loaded mesh (sheets, subsheets, wireframe)."""
+def analyze(structure: Structure, rho: float = 0.8, log=print, subsheet_rule: str = "layers") -> Structure:
+    """Runs the whole analysis on a loaded mesh (sheets, subsheets, wireframe); subsheet_rule:
+    'layers' (the paper's authors' decomposition) or 'fewest' (docs/validation.md)."""
     t = time.perf_counter()
     structure.analysis = structure.mesh.analyze(rho=rho, level="complex", sheets=True, subsheets=True,
-                                                wireframe=True)
+                                                wireframe=True, subsheet_rule=subsheet_rule)
     structure.rho = rho
     log(f"hbc: analyzed in {time.perf_counter() - t:.2f} s")
     return structure

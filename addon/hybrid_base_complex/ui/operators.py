@@ -196,7 +196,7 @@ class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
         t0 = time.perf_counter()
         try:
             s = structure_of(root, False, log)
-            session.analyze(s, st.rho, log)
+            session.analyze(s, st.rho, log, subsheet_rule=st.subsheet_rule)
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)
         root["hbc_rho"] = float(st.rho)

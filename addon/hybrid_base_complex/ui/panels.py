@@ -111,6 +111,7 @@ class HBC_PT_main(_Base, bpy.types.Panel):
         except sources.SourceMissing:
             layout.label(text="Source missing", icon="ERROR")
         layout.prop(st, "rho")
+        layout.prop(st, "subsheet_rule")
         row = layout.row(align=True)
         row.operator("hbc.analyze", text="Analyze" if s is None or s.analysis is None else "Re-analyze",
                      icon="VIEWZOOM")

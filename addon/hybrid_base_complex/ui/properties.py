@@ -73,6 +73,11 @@ class HBCSettings(bpy.types.PropertyGroup):
     rho: FloatProperty(name="ρ", default=0.8, min=0.0, max=1.0,
                        description="Threshold of the wireframe's colour classes (partial-parallel fraction; "
                                    "only colours depend on it), used when the mesh is analyzed (again)")
+    subsheet_rule: EnumProperty(
+        name="Subsheets", default="layers",
+        items=[("layers", "Layers", "The paper's authors' decomposition of self-intersecting sheets"),
+               ("fewest", "Fewest", "The fewest subsheets, with a lower bound that proves it when they meet")],
+        description="How self-intersecting sheets are split into subsheets, used when the mesh is analyzed (again)")
     opacity_floor: FloatProperty(name="Floor", default=0.15, min=0.0, max=1.0,
                                  description="Opacity of the faintest (farthest) wireframe lines")
     simplified: BoolProperty(name="Simplified", default=True,

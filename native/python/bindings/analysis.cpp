@@ -93,7 +93,11 @@ void class_arrays(py::class_<H, Opts...>& cls, const std::string& row, const std
 }
 
 PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool sheets, bool subsheets,
-                      bool wireframe, const py::object& threads) {
+                      bool wireframe, const py::object& threads, const std::string& subsheet_rule,
+                      int64_t search_steps) {
+  const auto rule = subsheet_rule_from_name(subsheet_rule);
+  if (!rule) throw std::invalid_argument("subsheet_rule must be 'layers' or 'fewest', not '" + subsheet_rule + "'");
+  if (search_steps < 0) throw std::invalid_argument("search_steps must be non-negative");
   if (!(rho >= 0.0 && rho <= 1.0)) throw std::invalid_argument("rho must be in [0, 1], not " + std::to_string(rho));
   const int nthreads = threads.is_none() ? 0 : threads.cast<int>();
   if (nthreads < 0 || (!threads.is_none() && nthreads == 0)) throw py::value_error("threads must be a positive number or None");
@@ -106,6 +110,8 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
   o.wireframe_options.rho = rho;
   o.sheets = sheets;
   o.subsheets = sheets && subsheets;
+  o.subsheet_options.rule = *rule;
+  o.subsheet_options.node_budget = search_steps;
   o.wireframe = wireframe;
   o.threads = nthreads;
   {
@@ -219,6 +225,12 @@ void bind_subsheets(py::module_& m) {
   const auto sub = [](const SubsheetsView& v) -> const Subsheets& { return v.a->decompositions()[v.index]; };
   c.def_property_readonly("sheet", [sub](const SubsheetsView& v) { return sub(v).sheet; });
   c.def_property_readonly("count", [sub](const SubsheetsView& v) { return sub(v).size(); });
+  c.def_property_readonly("rule", [sub](const SubsheetsView& v) { return subsheet_rule_name(sub(v).rule); },
+                          "'layers' or 'fewest': how the sheet was split.");
+  c.def_property_readonly("lower_bound", [sub](const SubsheetsView& v) { return sub(v).lower_bound; },
+                          "'fewest': no split has fewer subsheets; 0 for 'layers'.");
+  c.def_property_readonly("proven", [sub](const SubsheetsView& v) { return sub(v).proven; },
+                          "'fewest': count equals lower_bound (the count is the minimum).");
   const auto flat = [](const SubsheetsView& v) -> const PyAnalysis::Sub& { return v.a->subsheets[v.index]; };
   def_csr(c, "subsheet_components", [flat](const SubsheetsView& v) -> auto& { return flat(v).components; }, "count",
           "base-complex components of each subsheet, sorted.");
@@ -299,10 +311,13 @@ void bind_analysis(py::module_& m) {
   auto mesh_cls = py::reinterpret_borrow<py::class_<PyMesh, PyMeshPtr>>(m.attr("Mesh"));
   mesh_cls.def("analyze", &analyze, py::arg("rho") = 0.8, py::arg("level") = "complex", py::arg("sheets") = true,
                py::arg("subsheets") = true, py::arg("wireframe") = true, py::arg("threads") = py::none(),
+               py::arg("subsheet_rule") = "layers", py::arg("search_steps") = SubsheetOptions{}.node_budget,
                "Runs the structure analysis (GIL released). rho in [0, 1]: the threshold of the wireframes' "
                "colour classes (paper §6.2; no count depends on it). level: 'complex' (the paper's) or 'mesh'. "
                "threads: how many threads the stages may use (results are the same for any number; "
-               "None: HBC_THREADS, else every core).");
+               "None: HBC_THREADS, else every core). subsheet_rule: 'layers' (the paper's authors' "
+               "decomposition) or 'fewest' (the fewest subsheets with a lower bound; search_steps caps its "
+               "exact search per sheet).");
 }
 
 }  // namespace hbc::python

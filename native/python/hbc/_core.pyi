@@ -122,10 +122,14 @@ class Mesh:
         subsheets: bool = True,
         wireframe: bool = True,
         threads: int | None = None,
+        subsheet_rule: Literal["layers", "fewest"] = "layers",
+        search_steps: int = 100000,
     ) -> Analysis:
         """The structure analysis (GIL released); rho in [0, 1]: the wireframes' colour-class
         threshold (presentation only, no count depends on it); threads for the stages (None:
-        HBC_THREADS, else every core; results do not depend on it)."""
+        HBC_THREADS, else every core; results do not depend on it); subsheet_rule: 'layers' (the
+        paper's authors' decomposition) or 'fewest' (the fewest subsheets with a lower bound;
+        search_steps caps the exact search per sheet)."""
     @staticmethod
     def from_arrays(
         points: npt.ArrayLike,
@@ -395,6 +399,14 @@ class Subsheets:
     def sheet(self) -> int: ...
     @property
     def count(self) -> int: ...
+    @property
+    def rule(self) -> Literal["layers", "fewest"]: ...
+    @property
+    def lower_bound(self) -> int:
+        """'fewest': no split has fewer subsheets; 0 for 'layers'."""
+    @property
+    def proven(self) -> bool:
+        """'fewest': count equals lower_bound (the count is the minimum)."""
     @property
     def subsheet_type(self) -> U8:
         """(count,) 0 perfect, 1 type 1 (non-hex), 2 type 2 (self-parallel), 3 type 3 (self-intersecting)."""
