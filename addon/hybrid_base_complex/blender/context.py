@@ -41,7 +41,8 @@ def structure_of(root, analyzed, log, rho=0.8):
     if os.path.normpath(bpy.path.abspath(root["hbc_source"])) != path:
         root["hbc_source"] = sources.stored(path)
     return session.ensure(root.name, path, float(root.get("hbc_scale", 1.0)),
-                          float(root.get("hbc_rho", rho)), analyzed, log, tuple(root.get("hbc_offset", (0, 0, 0))))
+                          float(root.get("hbc_rho", rho)), analyzed, log, tuple(root.get("hbc_offset", (0, 0, 0))),
+                          bool(root.get("hbc_skip_invalid", False)))
 
 
 def fill_sheet_list(settings, structure):

@@ -32,12 +32,24 @@ def names():
     return list(_SESSIONS)
 
 
-def load(path: str, scale: float = 1.0, log=print, offset=(0.0, 0.0, 0.0)) -> Structure:
-    """Reads a mesh (raises hbc.MeshFormatError / OSError on a bad file)."""
+def dropped_text(dropped) -> str:
+    """What hbc.load(skip_invalid=True) dropped (Mesh.dropped, docs/check.md), in one line for a
+    report: "dropped 5 cells (2 few_faces, 3 open_cells)"; empty when none was."""
+    if not dropped or not dropped["count"]:
+        return ""
+    reasons = ", ".join(f"{n} {key}" for key, n in dropped["by_reason"].items())
+    return f"dropped {dropped['count']} cell{'s' if dropped['count'] != 1 else ''} ({reasons})"
+
+
+def load(path: str, scale: float = 1.0, log=print, offset=(0.0, 0.0, 0.0), skip_invalid: bool = False) -> Structure:
+    """Reads a mesh (raises hbc.MeshFormatError / OSError on a bad file). skip_invalid: drop the
+    cells that cannot be volumes instead (structure.mesh.dropped says which)."""
     hbc = import_hbc()
     t = time.perf_counter()
-    mesh = hbc.load(path)
+    mesh = hbc.load(path, skip_invalid=skip_invalid)
     log(f"hbc: loaded {path}: {mesh.num_cells} cells in {time.perf_counter() - t:.2f} s")
+    if dropped_text(mesh.dropped):
+        log(f"hbc: {path}: {dropped_text(mesh.dropped)}")
     s = Structure(mesh, None, scale, offset)
     s.source = path
     return s
@@ -55,12 +67,12 @@ def analyze(structure: Structure, rho: float = 0.8, log=print, subsheet_rule: st
 
 
 def ensure(name: str, path: str, scale: float, rho: float, analyzed: bool, log=print,
-           offset=(0.0, 0.0, 0.0)) -> Structure:
+           offset=(0.0, 0.0, 0.0), skip_invalid: bool = False) -> Structure:
     """The cached structure of `name`, re-read from `path` when the cache lost it or the mesh was
     pointed at another file."""
     s = _SESSIONS.get(name)
     if s is None or getattr(s, "source", path) != path:
-        s = load(path, scale, log, offset)
+        s = load(path, scale, log, offset, skip_invalid)
         _SESSIONS[name] = s
     if analyzed and s.analysis is None:
         analyze(s, rho, log)

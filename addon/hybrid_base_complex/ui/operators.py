@@ -140,6 +140,9 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
     beside: BoolProperty(name="Place beside", default=True,
                          description="Place the mesh to the right of the meshes already imported")
     frame: BoolProperty(name="Frame", default=True, description="Frame the imported mesh in the 3D views")
+    skip_invalid: BoolProperty(name="Skip invalid cells", default=False,
+                               description="Drop the cells that cannot be volumes (one face, open, a face in three "
+                                           "cells; docs/check.md) instead of refusing the file; the report says which")
 
     def execute(self, context):
         path = os.path.abspath(self.filepath)
@@ -153,7 +156,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
         tx = S.Transaction()
         try:
             t0 = time.perf_counter()
-            s = session.load(path, self.scale, log)
+            s = session.load(path, self.scale, log, skip_invalid=self.skip_invalid)
             if self.beside:
                 s.set_offset(P.beside(model_boxes(), *s.bbox()))
             prog.step("loaded")
@@ -167,6 +170,8 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
                 root["hbc_offset"] = [float(x) for x in s.offset]
                 root["hbc_rho"] = float(st.rho)
                 root["hbc_cells"] = int(s.num_cells)
+                if self.skip_invalid:
+                    root["hbc_skip_invalid"] = True  # read again the same way (blender/context.py)
                 for layer in layers:
                     S.swap_layer(root, layer, L.build_into(tx, root, layer, s, st), tx)
                     prog.step(f"built {P.LAYER_TITLES[layer]}")
@@ -180,7 +185,9 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
         if self.frame:
             compat.frame_objects(context, S.objects_in(root))
         push_undo_step(self.bl_label)
-        return self.finish_with(f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s", log)
+        dropped = session.dropped_text(s.mesh.dropped)
+        return self.finish_with(f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s"
+                                + (f"; {dropped}" if dropped else ""), log)
 
 
 class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
