@@ -83,8 +83,16 @@ void cell_loops(const MeshInput& in, size_t c, Csr<int32_t>& loops) {
   }
 }
 
-// The classes cell c falls in on its own; `loops` gets its loops when its indices are sound.
-Mask judge_cell(const MeshInput& in, size_t c, const std::vector<Mask>& face_mask, Csr<int32_t>& loops) {
+// What judge_cell reuses from cell to cell (its vectors keep their room).
+struct CellScratch {
+  Csr<int32_t> loops;
+  std::vector<std::vector<int32_t>> sets;
+  std::vector<uint64_t> edges;
+};
+
+// The classes cell c falls in on its own; `x.loops` gets its loops when its indices are sound.
+Mask judge_cell(const MeshInput& in, size_t c, const std::vector<Mask>& face_mask, CellScratch& x) {
+  Csr<int32_t>& loops = x.loops;
   const auto row = in.cells[c];
   const size_t nv = in.points.size() / 3, nf = in.faces.rows();
   Mask m = 0;
@@ -103,8 +111,10 @@ Mask judge_cell(const MeshInput& in, size_t c, const std::vector<Mask>& face_mas
   if (m & (bit(Defect::BadIndex) | bit(Defect::DegenerateFaces))) return m;
   cell_loops(in, c, loops);
   // Face twice: two loops over one vertex set. Open: an edge not in exactly two loops.
-  std::vector<std::vector<int32_t>> sets(loops.rows());
-  std::vector<uint64_t> edges;
+  auto& sets = x.sets;
+  auto& edges = x.edges;
+  sets.resize(loops.rows());
+  edges.clear();
   for (size_t j = 0; j < loops.rows(); ++j) {
     const auto loop = loops[j];
     sets[j].assign(loop.begin(), loop.end());
@@ -114,7 +124,7 @@ Mask judge_cell(const MeshInput& in, size_t c, const std::vector<Mask>& face_mas
       edges.push_back(static_cast<uint64_t>(std::min(a, b)) << 32 | std::max(a, b));
     }
   }
-  std::sort(sets.begin(), sets.end());
+  std::sort(sets.begin(), sets.end());  // (a cell's few loops)
   if (std::adjacent_find(sets.begin(), sets.end()) != sets.end()) m |= bit(Defect::FaceTwice);
   std::sort(edges.begin(), edges.end());
   for (size_t i = 0; i < edges.size();) {
@@ -126,10 +136,9 @@ Mask judge_cell(const MeshInput& in, size_t c, const std::vector<Mask>& face_mas
   return m;
 }
 
-// Sorted vertex sets as rows, and an order of the rows that puts equal ones next to each other.
+// Sorted vertex sets as rows, and which rows hold the same set.
 struct SortedSets {
   Csr<int32_t> sets;
-  std::vector<int32_t> order;  // rows by (size, vertices), ties by row
   void add(std::span<const int32_t> vs) {
     const size_t at = sets.items.size();
     sets.items.insert(sets.items.end(), vs.begin(), vs.end());
@@ -141,21 +150,32 @@ struct SortedSets {
     const auto x = sets[static_cast<size_t>(a)], y = sets[static_cast<size_t>(b)];
     return std::equal(x.begin(), x.end(), y.begin(), y.end());
   }
-  // group[row] = the lowest row with the same set.
-  std::vector<int32_t> groups() {
-    order.resize(sets.rows());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-      const auto x = sets[static_cast<size_t>(a)], y = sets[static_cast<size_t>(b)];
-      if (x.size() != y.size()) return x.size() < y.size();
-      const int cmp = std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end()) ? -1
-                      : std::equal(x.begin(), x.end(), y.begin(), y.end())                ? 0
-                                                                                           : 1;
-      return cmp != 0 ? cmp < 0 : a < b;
-    });
+  // group[row] = the lowest row with the same set. Rows are sorted by a hash of their set and
+  // their row (contiguous pairs: no lookup per comparison); a run of equal hashes is a handful
+  // of rows, compared in full.
+  std::vector<int32_t> groups() const {
+    std::vector<std::pair<uint64_t, int32_t>> keys(sets.rows());
+    for (size_t r = 0; r < sets.rows(); ++r) {
+      uint64_t h = 1469598103934665603ull ^ sets[r].size();
+      for (int32_t v : sets[r]) h = (h ^ static_cast<uint32_t>(v)) * 1099511628211ull;
+      keys[r] = {h, static_cast<int32_t>(r)};
+    }
+    std::sort(keys.begin(), keys.end());
     std::vector<int32_t> group(sets.rows());
-    for (size_t i = 0; i < order.size(); ++i)
-      group[static_cast<size_t>(order[i])] = i > 0 && same(order[i], order[i - 1]) ? group[static_cast<size_t>(order[i - 1])] : order[i];
+    for (size_t i = 0; i < keys.size();) {
+      size_t e = i;
+      while (e < keys.size() && keys[e].first == keys[i].first) ++e;
+      for (size_t k = i; k < e; ++k) {
+        const int32_t r = keys[k].second;
+        group[static_cast<size_t>(r)] = r;
+        for (size_t q = i; q < k; ++q)
+          if (same(keys[q].second, r)) {
+            group[static_cast<size_t>(r)] = group[static_cast<size_t>(keys[q].second)];
+            break;
+          }
+      }
+      i = e;
+    }
     return group;
   }
 };
@@ -173,11 +193,12 @@ Judgement judge(const MeshInput& in) {
   j.face = judge_faces(in);
   const size_t nc = in.cells.rows();
   j.cell.assign(nc, 0);
-  Csr<int32_t> loops;
+  CellScratch scratch;
+  const Csr<int32_t>& loops = scratch.loops;
   SortedSets faces, cells;   // faces: every slot of the cells that pass alone; cells: their vertex sets
   std::vector<int32_t> slot_cell, sound;
   for (size_t c = 0; c < nc; ++c) {
-    j.cell[c] = judge_cell(in, c, j.face, loops);
+    j.cell[c] = judge_cell(in, c, j.face, scratch);
     if (j.cell[c] & kRefused) continue;
     sound.push_back(static_cast<int32_t>(c));
     for (size_t k = 0; k < loops.rows(); ++k) {
