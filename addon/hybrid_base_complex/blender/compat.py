@@ -273,3 +273,15 @@ def frame_edit_selection(context) -> bool:
         with context.temp_override(window=window, area=area, region=region):
             bpy.ops.view3d.view_selected()
     return bool(regions)
+
+
+def layer_exporter(fmt: str):
+    """(operator, keywords) of Blender's exporter of selected objects, keeping Blender's axes
+    (Z up) so the file has the coordinates the scene shows."""
+    axes = {"forward_axis": "Y", "up_axis": "Z"}
+    if fmt == "OBJ":  # the C++ OBJ exporter, from 3.2 on
+        return bpy.ops.wm.obj_export, dict(export_selected_objects=True, export_materials=False, **axes)
+    if "ply_export" in dir(bpy.ops.wm):  # the C++ PLY exporter, from 3.6 on
+        return bpy.ops.wm.ply_export, dict(export_selected_objects=True, ascii_format=False, **axes)
+    # Blender 3.4/3.5: the io_mesh_ply add-on (enabled in the factory settings).
+    return bpy.ops.export_mesh.ply, dict(use_selection=True, axis_forward="Y", axis_up="Z")

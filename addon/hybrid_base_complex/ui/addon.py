@@ -8,7 +8,7 @@ from bpy.props import PointerProperty
 
 from ..plan import session
 from ..plan.native import module_problem
-from . import handlers, operators, panels, properties
+from . import export_ops, handlers, operators, panels, properties
 
 def _bl_info() -> dict:
     """The package's bl_info (Blender 3.4's Preferences read it from the loaded module)."""
@@ -34,6 +34,8 @@ CLASSES = (
     operators.HBC_OT_help,
     operators.HBC_OT_select_block,
     operators.HBC_OT_add_cut_plane,
+    export_ops.HBC_OT_export_vtu,
+    export_ops.HBC_OT_export_layer,
     panels.HBC_UL_sheets,
     panels.HBC_PT_main,
     panels.HBC_PT_table1,

@@ -116,6 +116,7 @@ class HBC_PT_main(_Base, bpy.types.Panel):
         row.operator("hbc.analyze", text="Analyze" if s is None or s.analysis is None else "Re-analyze",
                      icon="VIEWZOOM")
         row.operator("hbc.build_all", text="Build All", icon="SCENE_DATA")
+        layout.operator("hbc.export_vtu", text="Export VTU", icon="EXPORT")
 
 
 class _Sub(_Base):
@@ -164,6 +165,7 @@ def layer_controls(context, layout, root, layer):
                  icon="ERROR" if stale else "FILE_REFRESH").layer = layer
     if built:
         row.operator("hbc.frame_layer", text="", icon="ZOOM_SELECTED").layer = layer
+        row.operator("hbc.export_layer", text="", icon="EXPORT").layer = layer
         row.operator("hbc.clear_layer", text="", icon="X").layer = layer
     if stale:
         layout.label(text="Stale: rebuild", icon="ERROR")
