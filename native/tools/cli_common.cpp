@@ -28,13 +28,27 @@ CLI::Validator parsed_by(Parse parse, const std::string& description) {
 
 }  // namespace
 
+namespace {
+
+// "a|b|c" of the format names, or ".a, .b, .c" of their extensions (formats(), the one list).
+std::string format_list(bool extensions) {
+  std::string out;
+  for (const FormatInfo& f : formats()) {
+    if (!out.empty()) out += extensions ? ", " : "|";
+    out += extensions ? f.extension : f.name;
+  }
+  return out;
+}
+
+}  // namespace
+
 void add_format(CLI::App& cmd, std::string& format) {
   cmd.add_option("--format", format, "file format (default: by the file's extension)")
-      ->check(parsed_by([](const std::string& s) { format_from_name(s); }, "ovm|ovmb|mesh|hybrid|hedra|msh|vtk|vtu"));
+      ->check(parsed_by([](const std::string& s) { format_from_name(s); }, format_list(false)));
 }
 
 void add_input(CLI::App& cmd, InputArgs& in) {
-  cmd.add_option("FILE", in.file, "mesh file (.ovm, .ovmb, .mesh, .HYBRID, .hedra, .msh, .vtk, .vtu)")->required();
+  cmd.add_option("FILE", in.file, "mesh file (" + format_list(true) + ") or OpenFOAM case folder")->required();
   add_format(cmd, in.format);
   cmd.add_option("--threads", in.threads, "threads for reading and analysing the mesh (default: HBC_THREADS, else every core)")
       ->check(CLI::Range(1, 1024));

@@ -50,8 +50,16 @@ def mesh_extensions():
     return sorted((f["extension"] for f in native.import_hbc().FORMATS), key=len, reverse=True)
 
 
+# Files without a format extension that name a mesh: OpenFOAM's polyMesh/owner stands for its case.
+MESH_FILE_NAMES = ("owner", "owner.gz")
+
+
 def mesh_name_from_path(path: str) -> str:
     base = os.path.basename(path)
+    if base in MESH_FILE_NAMES:
+        # CASE/constant/polyMesh/owner: the case's name.
+        parts = os.path.normpath(os.path.abspath(path)).split(os.sep)
+        return parts[-4] if len(parts) >= 4 and parts[-3:-1] == ["constant", "polyMesh"] else parts[-2]
     for suffix in mesh_extensions():
         if base.lower().endswith(suffix.lower()):
             return base[: -len(suffix)] or base

@@ -25,8 +25,9 @@ from ..blender.context import active_root, fill_sheet_list, find_root, merged_ow
 from ..plan import planning as P
 from ..plan import session
 
-# The file browser's filter: every extension the readers take, as files spell it and in lower case.
-FILTER = ";".join(sorted({f"*{e}" for x in P.mesh_extensions() for e in (x, x.lower())})) or "*"
+# The file browser's filter: every extension the readers take, as files spell it and in lower case,
+# and OpenFOAM's owner file.
+FILTER = ";".join(sorted({f"*{e}" for x in P.mesh_extensions() for e in (x, x.lower())}) + list(P.MESH_FILE_NAMES)) or "*"
 LAYER_ITEMS = [(k, title, f"Build the {title.lower()} layer") for k, title in P.LAYERS]
 
 
