@@ -103,8 +103,8 @@ py::object dropped_dict(const PyMesh& p) {
 void bind_io(py::module_& m) {
   m.def("load", &load, py::arg("path"), py::arg("format") = py::none(), py::kw_only(),
         py::arg("threads") = py::none(), py::arg("skip_invalid") = false,
-        "Reads a volume mesh. format: 'ovm', 'ovmb', 'mesh', 'hybrid', 'hedra' or None to choose by "
-        "the file extension. threads: how many threads read and build it (results are the same for "
+        "Reads a volume mesh: a file, or an OpenFOAM case (its folder, .foam file or polyMesh/owner). "
+        "format: a name of hbc.FORMATS ('ovm', 'mesh', 'foam', ...) or None to choose by the file extension. threads: how many threads read and build it (results are the same for "
         "any number); None: HBC_THREADS, else every core. Raises MeshFormatError (a ValueError) naming file and line on bad "
         "input, ValueError for an unknown format name. skip_invalid: drop the cells that cannot be volumes "
         "instead of raising (docs/check.md); Mesh.dropped then says which.");

@@ -8,7 +8,7 @@ import numpy.typing as npt
 
 __version__: str
 
-Format = Literal["ovm", "ovmb", "mesh", "medit", "hybrid", "hedra", "msh", "vtk", "vtu"]
+Format = Literal["ovm", "ovmb", "mesh", "medit", "hybrid", "hedra", "msh", "vtk", "vtu", "foam", "openfoam"]
 Level = Literal["complex", "mesh"]
 SoupWhat = Literal["cells", "components", "sheets", "subsheets", "sheet", "sheet_non_hex", "non_hex", "boundary", "hex"]
 I32 = npt.NDArray[np.int32]
