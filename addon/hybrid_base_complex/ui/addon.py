@@ -36,6 +36,7 @@ CLASSES = (
     operators.HBC_OT_add_cut_plane,
     export_ops.HBC_OT_export_vtu,
     export_ops.HBC_OT_export_layer,
+    export_ops.HBC_OT_render_figures,
     panels.HBC_UL_sheets,
     panels.HBC_PT_main,
     panels.HBC_PT_table1,

@@ -1,18 +1,22 @@
-"""Export operators of the panel: the active mesh's analysis as VTU (the library's writer) and a
-built layer as OBJ or PLY (Blender's exporters, blender/export.py says why). Both write files
+"""Export operators of the panel: the active mesh's analysis as VTU (the library's writer), a
+built layer as OBJ or PLY (Blender's exporters, blender/export.py says why), and its figures
+(render_figures.py in a separate Blender process, polled by a modal operator). All write files
 only: no undo step, and a failure reports what went wrong and cancels."""
 
 from __future__ import annotations
 
 import os
+import sys
 import time
 
 import bpy
-from bpy.props import BoolProperty, EnumProperty, StringProperty
+from bpy.props import BoolProperty, EnumProperty, IntProperty, StringProperty
 from bpy_extras.io_utils import ExportHelper
 
 from ..blender import export as E
+from ..blender import sources
 from ..blender.context import active_root, structure_of
+from ..plan import figures_job
 from ..plan import planning as P
 from .operators import LAYER_ITEMS, _Reporting, make_log
 
@@ -91,3 +95,102 @@ class HBC_OT_export_layer(_ExportOnActiveMesh, bpy.types.Operator):
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)
         return self.finish_with(f"Wrote {P.LAYER_TITLES[self.layer]} ({n} objects) to {path}", log)
+
+
+def _figures_script():
+    """render_figures.py beside the add-on's sources, or None (plan/figures_job.py)."""
+    return figures_job.find_script(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+class HBC_OT_render_figures(_Reporting, bpy.types.Operator):
+    """Render the paper-style figures of the active mesh (pipeline panels and a contact sheet) into a folder, in a separate Blender process; Esc cancels"""
+
+    bl_idname = "hbc.render_figures"
+    bl_label = "Render Figures"
+    bl_options = {"REGISTER"}  # writes files only
+
+    directory: StringProperty(name="Folder", subtype="DIR_PATH")
+    filter_folder: BoolProperty(default=True, options={"HIDDEN"})
+    engine: EnumProperty(name="Engine", items=[("cycles", "Cycles", "Path traced, denoised where Blender can"),
+                                               ("eevee", "EEVEE", "Rasterized"),
+                                               ("workbench", "Workbench", "Fastest")])
+    width: IntProperty(name="Width", default=640, min=16, max=8192)
+    height: IntProperty(name="Height", default=480, min=16, max=8192)
+    samples: IntProperty(name="Samples", default=16, min=1, max=4096)
+    wait: BoolProperty(name="Wait", default=False, options={"HIDDEN", "SKIP_SAVE"},
+                       description="Run to the end before returning (scripts; always in background mode)")
+
+    @classmethod
+    def poll(cls, context):
+        return active_root(context) is not None
+
+    @classmethod
+    def description(cls, context, properties):
+        if _figures_script() is None:
+            return ("Cannot render figures: blender_scripts/render_figures.py is not beside this add-on "
+                    "(set HBC_FIGURES_SCRIPT to its path)")
+        return cls.__doc__
+
+    def invoke(self, context, event):
+        context.window_manager.fileselect_add(self)
+        return {"RUNNING_MODAL"}
+
+    def execute(self, context):
+        root = active_root(context)
+        script = _figures_script()
+        if script is None:
+            self.report({"ERROR"}, "blender_scripts/render_figures.py not found: set HBC_FIGURES_SCRIPT to its path")
+            return {"CANCELLED"}
+        try:
+            mesh = sources.resolve(root)
+            out = bpy.path.abspath(self.directory) or os.path.dirname(mesh)
+            addon_dir = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+            cmd = figures_job.command(bpy.app.binary_path, sys.executable, script, mesh, out, addon_dir,
+                                      self.engine, (self.width, self.height), self.samples)
+            # The child Blender takes its Python from the first python3 on PATH: this one's.
+            env = dict(os.environ, PATH=os.path.dirname(sys.executable) + os.pathsep + os.environ.get("PATH", ""))
+            self._job = figures_job.Job(cmd, env=env)
+        except Exception as e:  # noqa: BLE001
+            return self.cancel_with(context, e)
+        self._log = make_log(context)
+        self._log(f"hbc: rendering the figures of {root.name} into {out}")
+        self._t0 = time.perf_counter()
+        if self.wait or bpy.app.background:
+            while (status := self._job.poll()) is None:
+                time.sleep(0.1)
+            return self._end(context, status)
+        wm = context.window_manager
+        wm.progress_begin(0, 100)
+        self._timer = wm.event_timer_add(0.25, window=context.window)
+        wm.modal_handler_add(self)
+        return {"RUNNING_MODAL"}
+
+    def modal(self, context, event):
+        if event.type == "ESC":
+            self._job.cancel()
+            return self._end(context, self._job.poll())
+        if event.type != "TIMER":
+            return {"PASS_THROUGH"}
+        status = self._job.poll()
+        context.window_manager.progress_update(int(100 * self._job.fraction))
+        context.workspace.status_text_set(f"Rendering figures ({len(self._job.written)} files, Esc cancels): "
+                                          f"{self._job.last[:80]}")
+        return {"PASS_THROUGH"} if status is None else self._end(context, status)
+
+    def _end(self, context, status):
+        if getattr(self, "_timer", None) is not None:
+            context.window_manager.event_timer_remove(self._timer)
+            context.window_manager.progress_end()
+            context.workspace.status_text_set(None)
+        job, seconds = self._job, time.perf_counter() - self._t0
+        if job.cancelled:
+            self.report({"WARNING"}, f"Figures cancelled after {seconds:.0f} s ({len(job.written)} files written)")
+            return {"CANCELLED"}
+        if status != 0:
+            for line in job.tail:
+                self._log(line)
+            self.report({"ERROR"}, f"Rendering the figures failed (exit {status}): {job.tail[-1] if job.tail else ''}")
+            return {"CANCELLED"}
+        contact = [p for p in job.written if p.endswith("_contact.png")]
+        return self.finish_with(f"Wrote {len(job.written)} figure files in {seconds:.0f} s"
+                                + (f": {contact[0]}" if contact else ""), self._log)

@@ -116,7 +116,9 @@ class HBC_PT_main(_Base, bpy.types.Panel):
         row.operator("hbc.analyze", text="Analyze" if s is None or s.analysis is None else "Re-analyze",
                      icon="VIEWZOOM")
         row.operator("hbc.build_all", text="Build All", icon="SCENE_DATA")
-        layout.operator("hbc.export_vtu", text="Export VTU", icon="EXPORT")
+        row = layout.row(align=True)
+        row.operator("hbc.export_vtu", text="Export VTU", icon="EXPORT")
+        row.operator("hbc.render_figures", text="Figures", icon="RENDER_STILL")
 
 
 class _Sub(_Base):
