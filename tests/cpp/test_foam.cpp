@@ -53,6 +53,24 @@ TEST(Foam, ACaseIsItsFolderItsFoamFileItsPolyMeshOrItsOwnerFile) {
   EXPECT_EQ(format_from_name("openfoam"), Format::Foam);
 }
 
+// snappyHexMesh without -overwrite writes its meshes into time folders: the newest one is read
+// (here 2/, binary), not constant/ (ASCII) nor the older 0.5/ (broken).
+TEST(Foam, TheNewestTimeFolderWithAPolyMeshWins) {
+  const fs::path dir = fs::temp_directory_path() / ("hbc_foam_times_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "constant");
+  fs::create_directories(dir / "0.5" / "polyMesh");
+  fs::create_directories(dir / "10");  // a time folder without a mesh
+  fs::create_directories(dir / "2");
+  fs::copy(foam_case("hex2_ascii") + "/constant/polyMesh", dir / "constant" / "polyMesh");
+  fs::copy(foam_case("hex2_binary") + "/constant/polyMesh", dir / "2" / "polyMesh");
+  std::ofstream(dir / "0.5" / "polyMesh" / "owner") << "broken";
+  EXPECT_EQ(fs::path(foam_mesh_dir(dir.string())), dir / "2" / "polyMesh");
+  const MeshInput in = read_input(dir.string());
+  EXPECT_TRUE(in.binary);
+  expect_hex2(build_mesh(in));
+  fs::remove_all(dir);
+}
+
 TEST(Foam, AFolderThatIsNoCaseIsNamedInTheError) {
   const std::string dir = HBC_FORMATS_DIR;  // a folder of mesh files, no polyMesh
   try {
