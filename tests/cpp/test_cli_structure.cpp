@@ -55,9 +55,34 @@ TEST(CliStructure, SheetsListsEverySheet) {
     if (sheet.contains("subsheets")) subsheets.push_back(sheet["subsheets"].size());
   }
   std::sort(subsheets.begin(), subsheets.end());
-  EXPECT_EQ(subsheets, (std::vector<size_t>{3, 6}));  // the two self-intersecting sheets
+  // The two self-intersecting sheets, by the authors' rule (the default; docs/validation.md).
+  EXPECT_EQ(subsheets, (std::vector<size_t>{3, 4}));
+  EXPECT_EQ(j["subsheet_rule"], "layers");
   const auto& largest = j["sheets"][std::to_string(j["largest_self_intersecting"].get<int>())];
-  EXPECT_EQ(largest["subsheets"].size(), 6u);
+  EXPECT_EQ(largest["subsheets"].size(), 4u);
+}
+
+// --subsheets fewest: every self-intersecting sheet gets its count's lower bound, never above it,
+// and whether the two meet; no other sheet gets one.
+TEST(CliStructure, SheetsFewestGivesABound) {
+  HBC_REQUIRE_DATA("hybrid-base-complex/teapot.hedra");
+  const test::CliRun o = run_cli("sheets " + test::data_path("hybrid-base-complex/teapot.hedra") +
+                                 " --json --subsheets fewest --search-steps 1000");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto j = o.json();
+  EXPECT_EQ(j["subsheet_rule"], "fewest");
+  int bounded = 0;
+  for (const auto& [id, sheet] : j["sheets"].items()) {
+    ASSERT_EQ(sheet.contains("subsheets_lower_bound"), sheet["type3"].get<bool>()) << id;
+    if (!sheet["type3"].get<bool>()) continue;
+    ++bounded;
+    const auto bound = sheet["subsheets_lower_bound"].get<size_t>();
+    EXPECT_GE(bound, 2u) << id;  // a self-intersecting sheet has two curves meeting in a block
+    EXPECT_LE(bound, sheet["subsheets"].size()) << id;
+    EXPECT_EQ(sheet["subsheets_proven"].get<bool>(), bound == sheet["subsheets"].size()) << id;
+  }
+  EXPECT_EQ(bounded, 2);
+  EXPECT_NE(run_cli("sheets " + test::data_path("hybrid-base-complex/teapot.hedra") + " --subsheets greedy").status, 0);
 }
 
 // The table equals each mesh's own `analyze --json`, and a bad file only fails its own row.
