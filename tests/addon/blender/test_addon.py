@@ -599,3 +599,20 @@ def test_module_for_another_python_is_explained(addon, tmp_path, data_dir):
     imported = next(line for line in p.stdout.splitlines() if line.startswith("IMPORT:"))
     assert "built for" in imported or "not in this add-on" in imported, imported
     assert "Traceback" not in p.stdout + p.stderr, p.stderr[-2000:]
+
+
+def test_analyze_with_the_fewest_subsheets(clean_scene, data_dir):
+    """The Subsheets setting beside rho reaches the analysis: 'fewest' splits twistcube_s's
+    self-intersecting sheet with a lower bound, 'layers' (the default) gives the authors' 9."""
+    from hybrid_base_complex.plan import session
+
+    root = import_mesh(data_dir)
+    st = bpy.context.scene.hbc
+    assert st.subsheet_rule == "layers"
+    s = session.get(root.name)
+    big = s.analysis.largest_self_intersecting
+    assert s.analysis.subsheets(big).rule == "layers" and s.analysis.subsheets(big).count == 9
+    st.subsheet_rule = "fewest"
+    assert bpy.ops.hbc.analyze() == {"FINISHED"}
+    sub = session.get(root.name).analysis.subsheets(big)
+    assert sub.rule == "fewest" and 2 <= sub.lower_bound <= sub.count
