@@ -15,13 +15,14 @@ namespace {
 //   cell 0  hex A (x 0..1)                     cell 5  pyramid on the face A|B (face 1), apex 16
 //   cell 1  hex B (x 1..2)                     cell 6  A again (same faces)
 //   cell 2  one face (face 4): few, open       cell 7  a tet far away
-//   cell 3  faces 15 (2 corners) and 0         cell 8  a tet with vertex 25 on an edge: (3,3,4,4)
-//   cell 4  C (x 2..3) without its x=3 face    cell 9  a tet with two edges split: four quads
+//   cell 3  faces 15 (2 corners) and 0         cell 8  a tet with vertex 25 in two faces: (3,3,4,4)
+//   cell 4  C (x 2..3) without its x=3 face    cell 9  a tet with vertices 30, 31 in two faces: four quads
+// (25, 30 and 31 are moved off the straight edge between their neighbours, so the faces fold)
 // vertex 32 sits on vertex 0 and no cell uses it; vertex 33 is used by none.
 // Alone, cells 2, 3, 4 are refused (2: few_faces first, 3: degenerate_faces, 4: open_cells). Face 1
 // is then in cells 0, 1, 5 and 6: 6 repeats 0's vertices and goes first (duplicate_cells); of 0, 1
 // and 5, the third (5) goes (shared_faces). Kept: 0, 1, 7, 8, 9. Cells 8 and 9 have a vertex in 2
-// faces (not_simple); 7, 8, 9 are three pieces apart from cell 0's; vertices 3 7 11 15 (C's far
+// faces off the edge (not_simple); 7, 8, 9 are three pieces apart from cell 0's; vertices 3 7 11 15 (C's far
 // side), 16 (the apex), 32, 33 are in no kept cell.
 std::string defects_file() { return std::string(HBC_FORMATS_DIR) + "/../check/defects.HYBRID"; }
 
@@ -108,6 +109,25 @@ TEST(Check, CleanFilesLoadAsBefore) {
     EXPECT_EQ(build_mesh_skipping_invalid(in, dropped), build_mesh(in));
     EXPECT_TRUE(dropped.empty());
   }
+}
+
+// A unit cube whose edge 0-1 carries vertex 8 at its middle (a hanging node, where snappyHexMesh
+// refined a neighbour across that edge): the two faces at the edge are pentagons and vertex 8 is
+// in only those two. V - E + F = 9 - 13 + 6 = 2 and 8 lies on the straight edge, so the cell is a
+// true polyhedron: no defect. Moved 0.3 off the edge (1.5 0 0.3 after scaling: the faces fold by
+// far more than 10 degrees) the same cell is not_simple.
+std::string cube_with_corner_on_edge(const char* mid) {
+  return std::string("9 6 3\n0 0 0\n2 0 0\n2 2 0\n0 2 0\n0 0 2\n2 0 2\n2 2 2\n0 2 2\n") + mid +
+         "\n5 0 8 1 5 4\n5 0 3 2 1 8\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n4 4 5 6 7\n6 0 1 2 3 4 5\n6 0 0 0 0 0 0\n0\n";
+}
+
+TEST(Check, ACornerOnAStraightEdgeIsNoDefect) {
+  const std::string on = cube_with_corner_on_edge("1 0 0"), off = cube_with_corner_on_edge("1 0 0.3");
+  const CheckReport r_on = check_input(read_hybrid(on, "on.HYBRID"));
+  EXPECT_EQ(r_on[Defect::NotSimple].count, 0);
+  EXPECT_EQ(r_on[Defect::OpenCells].count, 0);
+  const CheckReport r_off = check_input(read_hybrid(off, "off.HYBRID"));
+  EXPECT_EQ(r_off[Defect::NotSimple].count, 1);
 }
 
 }  // namespace

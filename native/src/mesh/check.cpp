@@ -5,6 +5,7 @@
 #include "hbc/check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <bit>
 #include <numeric>
@@ -349,8 +350,36 @@ double volume6(const Mesh& m, size_t c) {
   return vol;
 }
 
-// A closed polyhedral cell that is no simple polyhedron: a vertex in fewer than 3 of its faces, or
-// V - E + F != 2. The standard types are simple by the way build_mesh classifies them.
+// The two corners beside `v` in the first face of cell c that holds it, as (before, after).
+std::array<int32_t, 2> corners_beside(const Mesh& m, size_t c, int32_t v) {
+  for (int32_t f : m.cell_faces[c]) {
+    const auto loop = m.face_verts[static_cast<size_t>(f)];
+    for (size_t k = 0; k < loop.size(); ++k)
+      if (loop[k] == v) return {loop[(k + loop.size() - 1) % loop.size()], loop[(k + 1) % loop.size()]};
+  }
+  return {v, v};
+}
+
+// A corner in only two faces of its cell is a corner on an edge when it lies on the straight line
+// between the corners beside it: snappyHexMesh's split hexahedra have such corners wherever a
+// neighbour was refined (a hanging node), and the cell is a true polyhedron. Folded by more than
+// 10 degrees it is no longer on an edge: the two faces then bound no volume there.
+bool on_straight_edge(const Mesh& m, size_t c, int32_t v) {
+  const auto [a, b] = corners_beside(m, c, v);
+  auto p = [&](int32_t x, int i) { return m.points[3 * static_cast<size_t>(x) + static_cast<size_t>(i)]; };
+  double dot = 0, la = 0, lb = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double u = p(a, i) - p(v, i), w = p(b, i) - p(v, i);
+    dot += u * w, la += u * u, lb += w * w;
+  }
+  constexpr double kCos170 = -0.98480775301220802;
+  return la > 0 && lb > 0 && dot <= kCos170 * std::sqrt(la * lb);
+}
+
+// A closed polyhedral cell that is no simple polyhedron: a vertex in fewer than 3 of its faces
+// that is not a corner on a straight edge, or V - E + F != 2 (a corner on an edge leaves the sum
+// as it is: it adds one vertex and one edge). The standard types are simple by the way build_mesh
+// classifies them.
 bool not_simple(const Mesh& m, size_t c, std::vector<int32_t>& scratch) {
   if (m.cell_type[c] != CellType::Polyhedron) return false;
   scratch.clear();
@@ -361,7 +390,7 @@ bool not_simple(const Mesh& m, size_t c, std::vector<int32_t>& scratch) {
   for (size_t i = 0; i < scratch.size();) {
     size_t k = i;
     while (k < scratch.size() && scratch[k] == scratch[i]) ++k;
-    if (k - i < 3) return true;
+    if (k - i < 2 || (k - i == 2 && !on_straight_edge(m, c, scratch[i]))) return true;
     ++nv, i = k;
   }
   const auto nf = static_cast<int64_t>(m.cell_faces.count(c));
