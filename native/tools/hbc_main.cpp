@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   hbc::cli::add_table(app);
   hbc::cli::add_export_vtu(app);
   hbc::cli::add_quality(app);
+  hbc::cli::add_metrics(app);
   hbc::cli::add_check(app);
   hbc::cli::add_generate(app);
   hbc::cli::add_export_surface(app);

@@ -1,0 +1,65 @@
+#pragma once
+// Structural complexity metrics of a hex-dominant mesh (docs/metrics.md): the census of cell types,
+// the singular structure, the hybrid base complex, the sheets, how the non-hex cells cluster, the
+// scaled Jacobian beside the structure, and one summary that does not change under uniform
+// refinement. A pure function of the mesh and its analysis.
+//
+// Every scalar is described once in metric_fields() (key, label, unit, meaning and how it behaves
+// under uniform refinement), in the style of schema.hpp: the CLI's text, JSON and CSV, the Python
+// binding and docs/metrics.md read that list, and a comparison of meshes can too.
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "hbc/analysis.hpp"
+#include "hbc/mesh.hpp"
+
+namespace hbc {
+
+// How a metric changes when every cell is split into 8 (hex into 8 hexes, prism into 8 prisms):
+// unchanged, times 8 (cell counts), times 2 (lengths counted in mesh edges, edge counts), times 4
+// (face counts), or no rule (geometry-dependent: quality, boundary shares).
+enum class Refinement : uint8_t { Invariant, Cells, Edges, Faces, None };
+const char* refinement_name(Refinement r);  // "invariant", "x8", "x2", "x4", "none"
+
+struct MetricField {
+  std::string_view key;      // JSON key (under its group), CSV column "group.key"
+  std::string_view group;    // census, singular, complex, sheets, non_hex, quality, summary
+  std::string_view label;    // in words
+  std::string_view unit;     // "cells", "edges", ..., "ratio", "id"
+  std::string_view meaning;  // one line
+  Refinement refinement;
+};
+
+// Every scalar metric in output order.
+std::span<const MetricField> metric_fields();
+// The index of group.key in metric_fields(); -1 when there is none.
+int metric_index(std::string_view group, std::string_view key);
+
+struct Metrics {
+  // One value per metric_fields() entry; NaN where it is undefined (a stage that did not run, a
+  // minimum over no cell, the worst sheet of a mesh without sheets).
+  std::vector<double> values;
+  // Distributions behind the scalars.
+  std::vector<int64_t> polyhedra_by_faces;       // [k]: polyhedron cells with k faces
+  std::vector<int64_t> singular_valence_interior;  // [v]: interior singular edges of valence v
+  std::vector<int64_t> singular_valence_boundary;  // [v]: boundary singular edges of valence v
+  std::vector<int32_t> singular_curve_edges;     // per singularity: its mesh edges
+  std::vector<int32_t> component_cells;          // per component of hex cells (kind != NonHex): cells
+  std::vector<int32_t> non_hex_region_cells;     // per face-connected region of non-hex cells, largest first
+  std::vector<int32_t> subsheets_per_sheet;      // per decomposed (self-intersecting) sheet
+  std::vector<double> summary_vector;            // the refinement-invariant vector (summary_fields())
+
+  // The value of group.key; NaN when there is no such metric.
+  double value(std::string_view group, std::string_view key) const;
+};
+
+// The names of summary_vector's entries, in order (docs/metrics.md gives the rationale).
+std::span<const std::string_view> summary_fields();
+
+// Needs the mesh's points (not a mesh given to release_unanalyzed). Sheet metrics are NaN when
+// the analysis has no sheet stage. O(mesh size), deterministic.
+Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis);
+
+}  // namespace hbc

@@ -1,0 +1,453 @@
+// Structural complexity metrics (metrics.hpp; definitions and rationale in docs/metrics.md).
+// Every metric is a count or a share over arrays the analysis already holds, plus one pass over the
+// cells for volumes and the scaled Jacobian, so the whole costs a small part of the analysis.
+#include "hbc/metrics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+#include "hbc/cell_quality.hpp"
+#include "parallel/union_find.hpp"
+
+namespace hbc {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The index of each metric in kFields (same order).
+enum M : int {
+  // census
+  kCells, kHexCells, kPrismCells, kPyramidCells, kTetCells, kPolyCells, kHexRatio, kHexVolumeRatio,
+  // singular
+  kSingEdgesInterior, kSingEdgesBoundary, kPseudoSingEdges, kSingCurves, kSingCurvesClosed,
+  kSingCurvesBoundaryEnds, kSingCurvesNodeEnds, kSingCurvesOnBoundary, kSingCurveEdgesMean, kSingCurveEdgesMax,
+  kSingLength, kSingNodes,
+  // complex
+  kComponents, kHexCellComponents, kCubeComponents, kRingComponents, kOtherComponents, kNonHexComponents,
+  kCorners, kCurves, kPatches, kSelfAdjacentFaces, kCompCellsMin, kCompCellsMedian, kCompCellsMax,
+  kLargestTenthShare,
+  // sheets
+  kSheets, kSheetsPerfect, kSheetsType1, kSheetsType2, kSheetsType3, kPerfectCellShare, kSubsheetsMean,
+  kSubsheetsMax, kSelfIntersections, kSheetComplexity,
+  // non_hex
+  kNonHexCells, kNonHexRegions, kNonHexRegionMax, kNonHexRegionMean, kNonHexBoundaryShare, kNonHexPerComponent,
+  // quality
+  kSjMin, kSjMean, kInverted, kSjMinHex, kSjMinPrism, kSjMinPyramid, kSjMinTet, kSjMinPoly, kWorstComponent,
+  kWorstComponentSj, kWorstSheet, kWorstSheetSj,
+  // summary
+  kScore,
+  kFieldCount
+};
+
+using R = Refinement;
+constexpr MetricField kFields[] = {
+    {"cells", "census", "Cells", "cells", "cells of every type", R::Cells},
+    {"hexahedra", "census", "Hexahedra", "cells", "hexahedral cells", R::Cells},
+    {"prisms", "census", "Prisms", "cells", "prism (wedge) cells", R::Cells},
+    {"pyramids", "census", "Pyramids", "cells", "pyramid cells", R::Cells},
+    {"tetrahedra", "census", "Tetrahedra", "cells", "tetrahedral cells", R::Cells},
+    {"polyhedra", "census", "Polyhedra", "cells", "general polyhedra (by face count in polyhedra_by_faces)", R::Cells},
+    {"hex_ratio", "census", "Hex ratio", "ratio", "hexahedra / cells", R::Invariant},
+    {"hex_volume_ratio", "census", "Hex volume ratio", "ratio", "volume of the hexahedra / volume of the mesh",
+     R::Invariant},
+    {"edges_interior", "singular", "Interior singular edges", "edges",
+     "all-hex interior edges of valence other than 4", R::Edges},
+    {"edges_boundary", "singular", "Boundary singular edges", "edges",
+     "all-hex boundary edges of valence other than 2", R::Edges},
+    {"pseudo_singular_edges", "singular", "Pseudo-singular edges", "edges", "edges touching a non-hex cell", R::Edges},
+    {"curves", "singular", "Singular curves", "curves", "singularities: maximal chains of singular edges of one valence",
+     R::Invariant},
+    {"curves_closed", "singular", "Closed singular curves", "curves", "singular curves that are closed loops",
+     R::Invariant},
+    {"curves_boundary_ends", "singular", "Curves ending on the boundary", "curves",
+     "open singular curves with both ends on the boundary", R::Invariant},
+    {"curves_node_ends", "singular", "Curves ending at a node", "curves",
+     "open singular curves with an end inside the volume (a singular node or a non-hex cell)", R::Invariant},
+    {"curves_on_boundary", "singular", "Curves on the boundary", "curves",
+     "singular curves made of boundary edges only", R::Invariant},
+    {"curve_edges_mean", "singular", "Mean curve length", "edges", "mean mesh edges per singular curve", R::Edges},
+    {"curve_edges_max", "singular", "Longest curve", "edges", "mesh edges of the longest singular curve", R::Edges},
+    {"length", "singular", "Singular length", "ratio",
+     "total length of the singular edges / the diagonal of the bounding box", R::Invariant},
+    {"nodes", "singular", "Singular nodes", "vertices",
+     "singular curve ends that are not pseudo-singular (where curves meet or stop)", R::Invariant},
+    {"components", "complex", "Components", "components", "components of the hybrid base complex", R::Invariant},
+    {"hex_components", "complex", "Components of hexahedra", "components",
+     "components made of hexahedra (cube, ring or other)", R::Invariant},
+    {"cube_components", "complex", "Cube components", "components", "|H_B|: cube-like components of hexahedra",
+     R::Invariant},
+    {"ring_components", "complex", "Ring components", "components", "components of hexahedra cut into a ring",
+     R::Invariant},
+    {"other_components", "complex", "Other components", "components", "components of hexahedra of any other shape",
+     R::Invariant},
+    {"non_hex_components", "complex", "Non-hex components", "components", "components of one non-hex cell each",
+     R::Cells},
+    {"corners", "complex", "Corners", "vertices", "V_B: corners of the base complex", R::Invariant},
+    {"curves", "complex", "Curves", "curves", "E_B: curves of the base complex", R::Invariant},
+    {"patches", "complex", "Patches", "patches", "F_B: patches of the base complex", R::Invariant},
+    {"self_adjacent_faces", "complex", "Self-adjacent faces", "faces",
+     "interior separation faces with one component on both sides", R::Faces},
+    {"component_cells_min", "complex", "Smallest component", "cells", "cells of the smallest component of hexahedra",
+     R::Cells},
+    {"component_cells_median", "complex", "Median component", "cells",
+     "cells of the median component of hexahedra (the lower one of an even count)", R::Cells},
+    {"component_cells_max", "complex", "Largest component", "cells", "cells of the largest component of hexahedra",
+     R::Cells},
+    {"largest_tenth_share", "complex", "Largest tenth's share", "ratio",
+     "share of the hexahedra of components that lie in the largest tenth of them (rounded up)", R::Invariant},
+    {"sheets", "sheets", "Sheets", "sheets", "|G_SH|: sheets of the base complex", R::Invariant},
+    {"perfect", "sheets", "Perfect sheets", "sheets", "sheets of none of the imperfect configurations", R::Invariant},
+    {"type1", "sheets", "Type 1 sheets", "sheets", "sheets whose highest configuration is non-hex (type 1)",
+     R::Invariant},
+    {"type2", "sheets", "Type 2 sheets", "sheets", "sheets whose highest configuration is self-parallel (type 2)",
+     R::Invariant},
+    {"type3", "sheets", "Type 3 sheets", "sheets", "self-intersecting sheets (type 3)", R::Invariant},
+    {"perfect_cell_share", "sheets", "Cells in perfect sheets", "ratio",
+     "share of the hexahedra that lie in at least one perfect sheet", R::Invariant},
+    {"subsheets_mean", "sheets", "Subsheets per self-intersecting sheet", "subsheets",
+     "mean subsheet count over the decomposed self-intersecting sheets", R::Invariant},
+    {"subsheets_max", "sheets", "Most subsheets", "subsheets", "subsheets of the most divided sheet", R::Invariant},
+    {"self_intersections", "sheets", "Self-intersections", "blocks",
+     "blocks holding two parallel curves of one sheet that share an end, summed over the sheets", R::Invariant},
+    {"connectivity_complexity", "sheets", "Sheet connectivity complexity", "ratio",
+     "Xu and Chen's structure complexity on the hex part: mean over sheets of the sheets it meets", R::Invariant},
+    {"cells", "non_hex", "Non-hex cells", "cells", "cells that are not hexahedra", R::Cells},
+    {"regions", "non_hex", "Non-hex regions", "regions", "face-connected regions of non-hex cells", R::Invariant},
+    {"region_cells_max", "non_hex", "Largest non-hex region", "cells", "cells of the largest non-hex region",
+     R::Cells},
+    {"region_cells_mean", "non_hex", "Mean non-hex region", "cells", "mean cells per non-hex region", R::Cells},
+    {"boundary_share", "non_hex", "Non-hex cells on the boundary", "ratio",
+     "share of the non-hex cells with a boundary face", R::None},
+    {"per_hex_component", "non_hex", "Non-hex cells per component", "cells",
+     "non-hex cells / components of hexahedra", R::Cells},
+    {"sj_min", "quality", "Minimum scaled Jacobian", "ratio", "lowest scaled Jacobian over all cells", R::None},
+    {"sj_mean", "quality", "Mean scaled Jacobian", "ratio", "mean scaled Jacobian over all cells", R::None},
+    {"inverted", "quality", "Inverted cells", "cells", "cells with a negative scaled Jacobian", R::None},
+    {"sj_min_hexahedron", "quality", "Minimum SJ, hexahedra", "ratio", "lowest scaled Jacobian of a hexahedron",
+     R::None},
+    {"sj_min_prism", "quality", "Minimum SJ, prisms", "ratio", "lowest scaled Jacobian of a prism", R::None},
+    {"sj_min_pyramid", "quality", "Minimum SJ, pyramids", "ratio", "lowest scaled Jacobian of a pyramid", R::None},
+    {"sj_min_tetrahedron", "quality", "Minimum SJ, tetrahedra", "ratio", "lowest scaled Jacobian of a tetrahedron",
+     R::None},
+    {"sj_min_polyhedron", "quality", "Minimum SJ, polyhedra", "ratio", "lowest scaled Jacobian of a polyhedron",
+     R::None},
+    {"worst_component", "quality", "Worst component", "id",
+     "the component of hexahedra holding the lowest scaled Jacobian (lowest id on ties)", R::None},
+    {"worst_component_sj", "quality", "Worst component's SJ", "ratio", "its lowest scaled Jacobian", R::None},
+    {"worst_sheet", "quality", "Worst sheet", "id", "the sheet holding the lowest scaled Jacobian (lowest id on ties)",
+     R::None},
+    {"worst_sheet_sj", "quality", "Worst sheet's SJ", "ratio", "its lowest scaled Jacobian", R::None},
+    {"score", "summary", "Structural complexity score", "ratio",
+     "sum of summary.vector: 0 for one perfect block of hexahedra, larger for a more complex structure",
+     R::Invariant},
+};
+static_assert(std::size(kFields) == kFieldCount);
+
+constexpr std::string_view kSummary[] = {"non_hex_volume_share", "log10_1_plus_interior_curves",
+                                         "log10_hex_components", "imperfect_sheet_share", "cells_outside_perfect_sheets"};
+
+using Vec3 = std::array<double, 3>;
+Vec3 point(const Mesh& m, int32_t v) { return {m.points[3 * v], m.points[3 * v + 1], m.points[3 * v + 2]}; }
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double triple(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// Volume of cell c by the divergence theorem over its face loops as the cell sees them (outward,
+// mesh.hpp), each fanned from its first vertex, relative to one corner of the cell so that
+// coordinates far from the origin lose no digits.
+double cell_volume(const Mesh& m, size_t c) {
+  const auto faces = m.cell_faces[c];
+  const Vec3 o = point(m, m.face_verts[faces[0]][0]);
+  double six = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const auto loop = m.face_verts[faces[i]];
+    const bool flip = m.cell_face_flip[m.cell_faces.offsets[c] + i];
+    const size_t n = loop.size();
+    auto at = [&](size_t k) { return sub(point(m, loop[flip ? (n - k) % n : k]), o); };
+    const Vec3 a = at(0);
+    for (size_t k = 1; k + 1 < n; ++k) six += triple(a, at(k), at(k + 1));
+  }
+  return six / 6;
+}
+
+void census(const Mesh& m, Metrics& out) {
+  auto& v = out.values;
+  std::array<int64_t, 5> by_type{};
+  double hex_volume = 0, volume = 0;
+  for (size_t c = 0; c < m.num_cells(); ++c) {
+    const CellType t = m.cell_type[c];
+    ++by_type[static_cast<size_t>(t)];
+    if (t == CellType::Polyhedron) {
+      const size_t k = m.cell_faces.count(c);
+      if (out.polyhedra_by_faces.size() <= k) out.polyhedra_by_faces.resize(k + 1, 0);
+      ++out.polyhedra_by_faces[k];
+    }
+    const double vol = cell_volume(m, c);
+    volume += vol;
+    if (t == CellType::Hex) hex_volume += vol;
+  }
+  const double nc = static_cast<double>(m.num_cells());
+  v[kCells] = nc;
+  v[kHexCells] = static_cast<double>(by_type[0]);
+  v[kTetCells] = static_cast<double>(by_type[1]);
+  v[kPrismCells] = static_cast<double>(by_type[2]);
+  v[kPyramidCells] = static_cast<double>(by_type[3]);
+  v[kPolyCells] = static_cast<double>(by_type[4]);
+  v[kHexRatio] = nc > 0 ? by_type[0] / nc : kNaN;
+  v[kHexVolumeRatio] = volume > 0 ? hex_volume / volume : kNaN;
+}
+
+void singular_structure(const Mesh& m, const SingularityGraph& g, Metrics& out) {
+  auto& v = out.values;
+  int64_t interior = 0, boundary = 0;
+  for (int32_t e : g.chain_edges.items) {
+    const int32_t val = m.edge_valence(e);
+    auto& hist = m.edge_boundary[e] ? out.singular_valence_boundary : out.singular_valence_interior;
+    if (hist.size() <= static_cast<size_t>(val)) hist.resize(val + 1, 0);
+    ++hist[val];
+    ++(m.edge_boundary[e] ? boundary : interior);
+  }
+  Vec3 lo{}, hi{};
+  for (size_t i = 0; i < m.num_vertices(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double x = m.points[3 * i + k];
+      lo[k] = i == 0 ? x : std::min(lo[k], x);
+      hi[k] = i == 0 ? x : std::max(hi[k], x);
+    }
+  const Vec3 d = sub(hi, lo);
+  const double diagonal = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  double length = 0;
+  int64_t closed = 0, boundary_ends = 0, node_ends = 0, on_boundary = 0, most = 0;
+  for (size_t s = 0; s < g.num_singularities(); ++s) {
+    const auto edges = g.chain_edges[s];
+    const auto verts = g.chain_verts[s];
+    out.singular_curve_edges.push_back(static_cast<int32_t>(edges.size()));
+    most = std::max<int64_t>(most, edges.size());
+    for (int32_t e : edges) {
+      const Vec3 a = sub(point(m, m.edge_verts[e][1]), point(m, m.edge_verts[e][0]));
+      length += std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    }
+    on_boundary += g.chain_boundary[s];
+    if (g.chain_closed[s]) {
+      ++closed;
+    } else if (m.vert_boundary[verts.front()] && m.vert_boundary[verts.back()]) {
+      ++boundary_ends;
+    } else {
+      ++node_ends;
+    }
+  }
+  const double ns = static_cast<double>(g.num_singularities());
+  v[kSingEdgesInterior] = static_cast<double>(interior);
+  v[kSingEdgesBoundary] = static_cast<double>(boundary);
+  v[kPseudoSingEdges] = static_cast<double>(g.pseudo_singular_edges.size());
+  v[kSingCurves] = ns;
+  v[kSingCurvesClosed] = static_cast<double>(closed);
+  v[kSingCurvesBoundaryEnds] = static_cast<double>(boundary_ends);
+  v[kSingCurvesNodeEnds] = static_cast<double>(node_ends);
+  v[kSingCurvesOnBoundary] = static_cast<double>(on_boundary);
+  v[kSingCurveEdgesMean] = ns > 0 ? static_cast<double>(g.num_singular_edges()) / ns : 0;
+  v[kSingCurveEdgesMax] = static_cast<double>(most);
+  v[kSingLength] = diagonal > 0 ? length / diagonal : 0;
+  v[kSingNodes] = static_cast<double>(g.singular_vertices.size());
+}
+
+void base_complex_metrics(const BaseComplex& bc, Metrics& out) {
+  auto& v = out.values;
+  std::array<int64_t, 4> by_kind{};
+  for (size_t k = 0; k < bc.num_components(); ++k) {
+    ++by_kind[static_cast<size_t>(bc.component_kind[k])];
+    if (bc.component_kind[k] != ComponentKind::NonHex)
+      out.component_cells.push_back(static_cast<int32_t>(bc.component_cells.count(k)));
+  }
+  v[kComponents] = static_cast<double>(bc.num_components());
+  v[kHexCellComponents] = static_cast<double>(out.component_cells.size());
+  v[kCubeComponents] = static_cast<double>(by_kind[0]);
+  v[kRingComponents] = static_cast<double>(by_kind[1]);
+  v[kOtherComponents] = static_cast<double>(by_kind[2]);
+  v[kNonHexComponents] = static_cast<double>(by_kind[3]);
+  v[kCorners] = static_cast<double>(bc.corners.size());
+  v[kCurves] = static_cast<double>(bc.num_curves());
+  v[kPatches] = static_cast<double>(bc.num_patches());
+  v[kSelfAdjacentFaces] = static_cast<double>(bc.self_adjacent_faces.size());
+  std::vector<int32_t> sizes = out.component_cells;
+  if (sizes.empty()) {
+    v[kCompCellsMin] = v[kCompCellsMedian] = v[kCompCellsMax] = v[kLargestTenthShare] = kNaN;
+    return;
+  }
+  std::sort(sizes.begin(), sizes.end(), std::greater<>());
+  const size_t n = sizes.size(), tenth = (n + 9) / 10;
+  int64_t total = 0, top = 0;
+  for (size_t i = 0; i < n; ++i) (i < tenth ? top : total) += sizes[i];
+  total += top;
+  v[kCompCellsMax] = sizes.front();
+  v[kCompCellsMin] = sizes.back();
+  v[kCompCellsMedian] = sizes[n / 2];  // descending order: the lower median of an even count
+  v[kLargestTenthShare] = static_cast<double>(top) / static_cast<double>(total);
+}
+
+void sheet_metrics(const Mesh& m, const SheetStage& st, Metrics& out) {
+  auto& v = out.values;
+  const Sheets& sh = st.sheets;
+  v[kSheets] = static_cast<double>(sh.size());
+  v[kSheetsPerfect] = static_cast<double>(sh.count(SheetType::Perfect));
+  v[kSheetsType1] = static_cast<double>(sh.count(SheetType::Type1));
+  v[kSheetsType2] = static_cast<double>(sh.count(SheetType::Type2));
+  v[kSheetsType3] = static_cast<double>(sh.count(SheetType::Type3));
+  std::vector<uint8_t> in_perfect(m.num_cells(), 0);
+  int64_t perfect_cells = 0, crossings = 0;
+  for (size_t s = 0; s < sh.size(); ++s) {
+    crossings += static_cast<int64_t>(sh.classes[s].self_intersecting_blocks.size());
+    if (sh.classes[s].type != SheetType::Perfect) continue;
+    for (int32_t c : sh.sheet_cells[s]) {
+      perfect_cells += !in_perfect[c];
+      in_perfect[c] = 1;
+    }
+  }
+  const size_t hexes = m.num_hex_cells();
+  v[kPerfectCellShare] = hexes > 0 ? static_cast<double>(perfect_cells) / static_cast<double>(hexes) : kNaN;
+  v[kSelfIntersections] = static_cast<double>(crossings);
+  if (st.subsheets) {
+    int64_t sum = 0, most = 0;
+    for (const Subsheets& d : *st.subsheets) {
+      out.subsheets_per_sheet.push_back(static_cast<int32_t>(d.size()));
+      sum += static_cast<int64_t>(d.size());
+      most = std::max<int64_t>(most, d.size());
+    }
+    const size_t n = st.subsheets->size();
+    v[kSubsheetsMean] = n > 0 ? static_cast<double>(sum) / static_cast<double>(n) : 0;
+    v[kSubsheetsMax] = static_cast<double>(most);
+  }
+}
+
+void non_hex_clustering(const Mesh& m, const BaseComplex& bc, Metrics& out) {
+  auto& v = out.values;
+  const size_t nc = m.num_cells();
+  detail::UnionFind uf(nc);
+  for (const auto& fc : m.face_cells)
+    if (fc[1] >= 0 && !m.is_hex(fc[0]) && !m.is_hex(fc[1])) uf.unite(fc[0], fc[1]);
+  std::vector<int32_t> size(nc, 0);
+  int64_t non_hex = 0, on_boundary = 0;
+  for (size_t c = 0; c < nc; ++c) {
+    if (m.is_hex(c)) continue;
+    ++non_hex;
+    ++size[uf.find(static_cast<int32_t>(c))];
+    bool touches = false;
+    for (int32_t f : m.cell_faces[c]) touches |= m.face_boundary[f] != 0;
+    on_boundary += touches;
+  }
+  for (int32_t s : size)
+    if (s > 0) out.non_hex_region_cells.push_back(s);
+  std::sort(out.non_hex_region_cells.begin(), out.non_hex_region_cells.end(), std::greater<>());
+  const double regions = static_cast<double>(out.non_hex_region_cells.size());
+  v[kNonHexCells] = static_cast<double>(non_hex);
+  v[kNonHexRegions] = regions;
+  v[kNonHexRegionMax] = regions > 0 ? out.non_hex_region_cells.front() : 0;
+  v[kNonHexRegionMean] = regions > 0 ? static_cast<double>(non_hex) / regions : 0;
+  v[kNonHexBoundaryShare] = non_hex > 0 ? static_cast<double>(on_boundary) / static_cast<double>(non_hex) : kNaN;
+  const size_t hex_components = bc.num_components() - bc.num_non_hex_components();
+  v[kNonHexPerComponent] =
+      hex_components > 0 ? static_cast<double>(non_hex) / static_cast<double>(hex_components) : kNaN;
+}
+
+// The owner (component or sheet) whose cells hold the lowest scaled Jacobian; ties to the lowest id.
+std::pair<double, double> worst_owner(const Csr<int32_t>& owner_cells, const std::vector<double>& sj,
+                                      auto&& keep) {
+  double id = kNaN, worst = kNaN;
+  for (size_t k = 0; k < owner_cells.rows(); ++k) {
+    if (!keep(k)) continue;
+    for (int32_t c : owner_cells[k])
+      if (!(sj[c] >= worst)) {
+        worst = sj[c];
+        id = static_cast<double>(k);
+      }
+  }
+  return {id, worst};
+}
+
+void quality_metrics(const Mesh& m, const Analysis& a, Metrics& out) {
+  auto& v = out.values;
+  const CellQuality q = cell_quality(m);
+  const auto& sj = q.scaled_jacobian;
+  std::array<double, 5> type_min;
+  type_min.fill(kNaN);
+  double lowest = kNaN, sum = 0;
+  int64_t inverted = 0;
+  for (size_t c = 0; c < sj.size(); ++c) {
+    double& tm = type_min[static_cast<size_t>(m.cell_type[c])];
+    if (!(sj[c] >= tm)) tm = sj[c];
+    if (!(sj[c] >= lowest)) lowest = sj[c];
+    sum += sj[c];
+    inverted += sj[c] < 0;
+  }
+  v[kSjMin] = lowest;
+  v[kSjMean] = sj.empty() ? kNaN : sum / static_cast<double>(sj.size());
+  v[kInverted] = static_cast<double>(inverted);
+  v[kSjMinHex] = type_min[0];
+  v[kSjMinTet] = type_min[1];
+  v[kSjMinPrism] = type_min[2];
+  v[kSjMinPyramid] = type_min[3];
+  v[kSjMinPoly] = type_min[4];
+  const BaseComplex& bc = a.complex;
+  std::tie(v[kWorstComponent], v[kWorstComponentSj]) =
+      worst_owner(bc.component_cells, sj, [&](size_t k) { return bc.component_kind[k] != ComponentKind::NonHex; });
+  if (a.sheet_stage)
+    std::tie(v[kWorstSheet], v[kWorstSheetSj]) =
+        worst_owner(a.sheet_stage->sheets.sheet_cells, sj, [](size_t) { return true; });
+}
+
+// Each entry is 0 for one perfect block of hexahedra (a box: its 12 boundary curves are forced by
+// its shape, so only curves off the boundary count) and unchanged by uniform refinement.
+void summary(Metrics& out) {
+  const auto& v = out.values;
+  const double sheets = v[kSheets];
+  out.summary_vector = {1 - v[kHexVolumeRatio],
+                        std::log10(1 + v[kSingCurves] - v[kSingCurvesOnBoundary]),
+                        std::log10(std::max(1.0, v[kHexCellComponents])),
+                        sheets > 0 ? 1 - v[kSheetsPerfect] / sheets : sheets == 0 ? 0 : kNaN,
+                        1 - v[kPerfectCellShare]};
+  double score = 0;
+  for (double x : out.summary_vector) score += x;
+  out.values[kScore] = score;
+}
+
+}  // namespace
+
+const char* refinement_name(Refinement r) {
+  constexpr const char* kNames[] = {"invariant", "x8", "x2", "x4", "none"};
+  return kNames[static_cast<int>(r)];
+}
+
+std::span<const MetricField> metric_fields() { return kFields; }
+
+std::span<const std::string_view> summary_fields() { return kSummary; }
+
+int metric_index(std::string_view group, std::string_view key) {
+  for (size_t i = 0; i < std::size(kFields); ++i)
+    if (kFields[i].group == group && kFields[i].key == key) return static_cast<int>(i);
+  return -1;
+}
+
+double Metrics::value(std::string_view group, std::string_view key) const {
+  const int i = metric_index(group, key);
+  return i < 0 || static_cast<size_t>(i) >= values.size() ? kNaN : values[i];
+}
+
+Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis) {
+  Metrics out;
+  out.values.assign(kFieldCount, kNaN);
+  census(mesh, out);
+  singular_structure(mesh, analysis.graph, out);
+  base_complex_metrics(analysis.complex, out);
+  if (analysis.sheet_stage) sheet_metrics(mesh, *analysis.sheet_stage, out);
+  out.values[kSheetComplexity] = kNaN;  // filled below when the sheet stage ran
+  non_hex_clustering(mesh, analysis.complex, out);
+  quality_metrics(mesh, analysis, out);
+  summary(out);
+  return out;
+}
+
+}  // namespace hbc

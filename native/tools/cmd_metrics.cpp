@@ -1,0 +1,126 @@
+// hbc metrics FILE [--json|--csv]: structural complexity metrics of a hex-dominant mesh
+// (hbc/metrics.hpp; every metric defined in docs/metrics.md). Keys, labels and units come from
+// metric_fields(), so the text, JSON and CSV outputs and the Python binding cannot drift apart.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "hbc/analysis.hpp"
+#include "hbc/metrics.hpp"
+#include "json.hpp"
+
+namespace hbc::cli {
+namespace {
+
+struct MetricsArgs {
+  InputArgs input;
+  bool json = false, csv = false;
+  std::string subsheets = "layers";
+};
+
+// A histogram indexed by value (valence, face count) as {"value": count} without the empty bins.
+Json by_value(const std::vector<int64_t>& hist) {
+  Json j = Json::object();
+  for (size_t i = 0; i < hist.size(); ++i)
+    if (hist[i] != 0) j[std::to_string(i)] = hist[i];
+  return j;
+}
+
+Json metrics_json(const std::string& file, const Metrics& m, double seconds) {
+  Json j = {{"file", file}};
+  const auto fields = metric_fields();
+  for (size_t i = 0; i < fields.size(); ++i) {
+    Json& group = j[std::string(fields[i].group)];
+    const double v = m.values[i];
+    // Counts and ids as integers, so that JSON readers see 12 rather than 12.0.
+    if (std::isfinite(v) && fields[i].unit != "ratio" && v == std::floor(v) && std::fabs(v) < 9e15)
+      group[std::string(fields[i].key)] = static_cast<int64_t>(v);
+    else
+      group[std::string(fields[i].key)] = v;
+  }
+  j["census"]["polyhedra_by_faces"] = by_value(m.polyhedra_by_faces);
+  j["singular"]["valence_interior"] = by_value(m.singular_valence_interior);
+  j["singular"]["valence_boundary"] = by_value(m.singular_valence_boundary);
+  j["singular"]["curve_edges"] = m.singular_curve_edges;
+  j["complex"]["component_cells"] = m.component_cells;
+  j["sheets"]["subsheets_per_sheet"] = m.subsheets_per_sheet;
+  j["non_hex"]["region_cells"] = m.non_hex_region_cells;
+  Json& summary = j["summary"];
+  summary["vector"] = m.summary_vector;
+  summary["vector_keys"] = Json::array();
+  for (std::string_view k : summary_fields()) summary["vector_keys"].push_back(std::string(k));
+  j["timings"] = {{"metrics", seconds}};
+  return j;
+}
+
+std::string number_text(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string csv_quoted(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+void run_metrics(const MetricsArgs& args) {
+  AnalysisOptions opt;
+  opt.threads = args.input.threads;
+  opt.wireframe = false;  // no metric reads the wireframe
+  opt.subsheet_options.rule = *subsheet_rule_from_name(args.subsheets);
+  const Mesh mesh = load_for_cli(args.input);
+  const Analysis analysis = analyze(mesh, opt);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Metrics m = compute_metrics(mesh, analysis);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto fields = metric_fields();
+  const std::string& file = args.input.file;
+  if (args.json) {
+    write_output(json_text(metrics_json(file, m, seconds)), std::nullopt);
+  } else if (args.csv) {
+    std::string head = "mesh", row = csv_quoted(file);
+    for (size_t i = 0; i < fields.size(); ++i) {
+      head.append(",").append(fields[i].group).append(".").append(fields[i].key);
+      row.append(",").append(number_text(m.values[i]));
+    }
+    std::printf("%s\n%s\n", head.c_str(), row.c_str());
+  } else {
+    std::printf("%s\n", file.c_str());
+    std::string_view group;
+    for (size_t i = 0; i < fields.size(); ++i) {
+      if (fields[i].group != group) {
+        group = fields[i].group;
+        std::printf("%.*s\n", static_cast<int>(group.size()), group.data());
+      }
+      const std::string v = number_text(m.values[i]);
+      std::printf("  %-40.*s %14s  %.*s\n", static_cast<int>(fields[i].label.size()), fields[i].label.data(),
+                  v.empty() ? "-" : v.c_str(), static_cast<int>(fields[i].unit.size()), fields[i].unit.data());
+    }
+  }
+}
+
+}  // namespace
+
+void add_metrics(CLI::App& app) {
+  auto args = std::make_shared<MetricsArgs>();
+  CLI::App* cmd = add_mesh_command(app, "metrics",
+                                   "structural complexity metrics: census, singular structure, base complex, sheets, "
+                                   "non-hex clustering, quality beside structure (docs/metrics.md)",
+                                   args->input, args->json, "print the metrics as JSON, grouped, with distributions");
+  cmd->add_flag("--csv", args->csv, "print one CSV header (group.key) and row")->excludes("--json");
+  cmd->add_option("--subsheets", args->subsheets,
+                  "decomposition of self-intersecting sheets: layers (the paper's authors' rule) or fewest")
+      ->check(CLI::IsMember({"layers", "fewest"}))
+      ->capture_default_str();
+  cmd->callback([args] { run_metrics(*args); });
+}
+
+}  // namespace hbc::cli
