@@ -159,16 +159,19 @@ def layer_controls(context, layout, root, layer):
     """Build / Rebuild and Clear for one layer; greyed out (reason in the tooltip) when the layer
     cannot be built now."""
     coll = S.find_layer(root, layer)
-    row = layout.row(align=True)
-    row.enabled = unavailable(context, layer) is None
     built = coll is not None
+    # A row shares its width equally: beside three icon buttons "Rebuild" would get a quarter of
+    # the default sidebar and be cut, so the icons share the split's narrower side.
+    row = layout.split(factor=0.55, align=True) if built else layout.row(align=True)
+    row.enabled = unavailable(context, layer) is None
     stale = built and bool(coll.get("hbc_stale"))
     row.operator("hbc.build_layer", text="Rebuild" if built else "Build",
                  icon="ERROR" if stale else "FILE_REFRESH").layer = layer
     if built:
-        row.operator("hbc.frame_layer", text="", icon="ZOOM_SELECTED").layer = layer
-        row.operator("hbc.export_layer", text="", icon="EXPORT").layer = layer
-        row.operator("hbc.clear_layer", text="", icon="X").layer = layer
+        icons = row.row(align=True)
+        icons.operator("hbc.frame_layer", text="", icon="ZOOM_SELECTED").layer = layer
+        icons.operator("hbc.export_layer", text="", icon="EXPORT").layer = layer
+        icons.operator("hbc.clear_layer", text="", icon="X").layer = layer
     if stale:
         layout.label(text="Stale: rebuild", icon="ERROR")
     return coll
