@@ -5,6 +5,8 @@
 #include <limits>
 #include <span>
 
+#include "parallel/parallel.hpp"
+
 namespace hbc {
 
 namespace {
@@ -50,12 +52,21 @@ void collect_corners(const Mesh& m, size_t c, std::vector<Corner>& out) {
     auto loop = m.face_verts[static_cast<size_t>(m.cell_faces.items[static_cast<size_t>(i)])];
     const bool flip = m.cell_face_flip[static_cast<size_t>(i)] != 0;
     const size_t n = loop.size();
-    auto seen = [&](size_t k) { return loop[flip ? (n - k % n) % n : k % n]; };
+    // The loop as the cell sees it, indexed k = 0 .. n+1 (wrapping) without a division per corner.
+    auto seen = [&](size_t k) {
+      if (k >= n) k -= n;
+      return loop[flip && k != 0 ? n - k : k];
+    };
     for (size_t k = 0; k < n; ++k) out.push_back({seen(k), seen(k + n - 1), seen(k + 1), seen(k + 2)});
   }
-  std::sort(out.begin(), out.end(), [](const Corner& a, const Corner& b) {
-    return a.v != b.v ? a.v < b.v : a.prev < b.prev;
-  });
+  // Insertion sort: a cell has a few dozen corners, and (v, prev) is unique in a closed cell, so
+  // the order is the one any sort gives.
+  for (size_t i = 1; i < out.size(); ++i) {
+    const Corner x = out[i];
+    size_t j = i;
+    for (; j > 0 && (out[j - 1].v != x.v ? out[j - 1].v > x.v : out[j - 1].prev > x.prev); --j) out[j] = out[j - 1];
+    out[j] = x;
+  }
 }
 
 // The cyclic order e_0, e_1, ... of the corner's neighbours (face i runs e_i -> v -> e_{i+1}).
@@ -197,6 +208,16 @@ CellQuality cell_quality(const Mesh& mesh) {
     q.edge_ratio[c] = edge_ratio(mesh, c);
   }
   return q;
+}
+
+std::vector<double> scaled_jacobians(const Mesh& mesh, const Threads& threads) {
+  std::vector<double> sj(mesh.num_cells());
+  detail::parallel_ranges(sj.size(), resolved(threads), [&](size_t b, size_t e, int) {
+    std::vector<Corner> corners;  // each range its own scratch
+    std::vector<int32_t> ring;
+    for (size_t c = b; c < e; ++c) sj[c] = scaled_jacobian(mesh, c, corners, ring);
+  });
+  return sj;
 }
 
 namespace {
