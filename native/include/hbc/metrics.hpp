@@ -14,6 +14,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/mesh.hpp"
+#include "hbc/threads.hpp"
 
 namespace hbc {
 
@@ -59,7 +60,8 @@ struct Metrics {
 std::span<const std::string_view> summary_fields();
 
 // Needs the mesh's points (not a mesh given to release_unanalyzed). Sheet metrics are NaN when
-// the analysis has no sheet stage. O(mesh size), deterministic.
-Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis);
+// the analysis has no sheet stage. O(mesh size); the per-cell volumes and scaled Jacobians are
+// split over `threads`, the same result for any count.
+Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Threads& threads = {});
 
 }  // namespace hbc

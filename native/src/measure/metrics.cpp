@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "hbc/cell_quality.hpp"
+#include "parallel/parallel.hpp"
 #include "parallel/union_find.hpp"
 
 namespace hbc {
@@ -174,7 +175,11 @@ double cell_volume(const Mesh& m, size_t c) {
   return six / 6;
 }
 
-void census(const Mesh& m, Metrics& out) {
+void census(const Mesh& m, const Threads& threads, Metrics& out) {
+  std::vector<double> volumes(m.num_cells());
+  detail::parallel_ranges(volumes.size(), resolved(threads), [&](size_t b, size_t e, int) {
+    for (size_t c = b; c < e; ++c) volumes[c] = cell_volume(m, c);
+  });
   auto& v = out.values;
   std::array<int64_t, 5> by_type{};
   double hex_volume = 0, volume = 0;
@@ -186,7 +191,7 @@ void census(const Mesh& m, Metrics& out) {
       if (out.polyhedra_by_faces.size() <= k) out.polyhedra_by_faces.resize(k + 1, 0);
       ++out.polyhedra_by_faces[k];
     }
-    const double vol = cell_volume(m, c);
+    const double vol = volumes[c];  // summed in cell order: the same for any thread count
     volume += vol;
     if (t == CellType::Hex) hex_volume += vol;
   }
@@ -368,10 +373,9 @@ std::pair<double, double> worst_owner(const Csr<int32_t>& owner_cells, const std
   return {id, worst};
 }
 
-void quality_metrics(const Mesh& m, const Analysis& a, Metrics& out) {
+void quality_metrics(const Mesh& m, const Analysis& a, const Threads& threads, Metrics& out) {
   auto& v = out.values;
-  const CellQuality q = cell_quality(m);
-  const auto& sj = q.scaled_jacobian;
+  const std::vector<double> sj = scaled_jacobians(m, threads);
   std::array<double, 5> type_min;
   type_min.fill(kNaN);
   double lowest = kNaN, sum = 0;
@@ -436,16 +440,16 @@ double Metrics::value(std::string_view group, std::string_view key) const {
   return i < 0 || static_cast<size_t>(i) >= values.size() ? kNaN : values[i];
 }
 
-Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis) {
+Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Threads& threads) {
   Metrics out;
   out.values.assign(kFieldCount, kNaN);
-  census(mesh, out);
+  census(mesh, threads, out);
   singular_structure(mesh, analysis.graph, out);
   base_complex_metrics(analysis.complex, out);
   if (analysis.sheet_stage) sheet_metrics(mesh, *analysis.sheet_stage, out);
   out.values[kSheetComplexity] = kNaN;  // filled below when the sheet stage ran
   non_hex_clustering(mesh, analysis.complex, out);
-  quality_metrics(mesh, analysis, out);
+  quality_metrics(mesh, analysis, threads, out);
   summary(out);
   return out;
 }
