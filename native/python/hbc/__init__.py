@@ -17,7 +17,9 @@ from ._core import (
     CELL_TYPES,
     COMPONENT_KINDS,
     FORMATS,
+    METRIC_FIELDS,
     SHEET_TYPES,
+    SUMMARY_FIELDS,
     STAT_FIELDS,
     TABLE1_COLUMNS,
     TIMING_FIELDS,
@@ -25,6 +27,7 @@ from ._core import (
     Analysis,
     Field,
     BaseComplex,
+    MetricField,
     Mesh,
     MeshFormatError,
     SingularityGraph,
@@ -47,4 +50,5 @@ __all__ = [
     "cell_quality", "cell_depth", "cell_centroids", "kept_surface_soup",
     "Field", "STAT_FIELDS", "TIMING_FIELDS", "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS",
     "SHEET_TYPES", "CELL_TYPES", "COMPONENT_KINDS", "FORMATS",
+    "MetricField", "METRIC_FIELDS", "SUMMARY_FIELDS",
 ]

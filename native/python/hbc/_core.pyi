@@ -1,7 +1,7 @@
 """Type stubs for hbc._core (the compiled half of the hbc package)."""
 
 import os
-from typing import Literal, TypedDict
+from typing import Any, Literal, TypedDict
 
 import numpy as np
 import numpy.typing as npt
@@ -212,6 +212,27 @@ STAT_FIELDS: tuple[Field, ...]
 TIMING_FIELDS: tuple[Field, ...]
 WIREFRAME_COUNT_FIELDS: tuple[Field, ...]
 TABLE1_COLUMNS: tuple[tuple[Field, bool], ...]
+
+class MetricField:
+    """One structural metric (docs/metrics.md), described once in the library (hbc/metrics.hpp)."""
+
+    @property
+    def key(self) -> str: ...
+    @property
+    def group(self) -> Literal["census", "singular", "complex", "sheets", "non_hex", "quality", "summary"]: ...
+    @property
+    def label(self) -> str: ...
+    @property
+    def unit(self) -> str: ...
+    @property
+    def meaning(self) -> str: ...
+    @property
+    def refinement(self) -> Literal["invariant", "x8", "x2", "x4", "none"]: ...
+
+# Every scalar of Analysis.metrics() (and `hbc metrics --json`) in output order, as
+# metrics()[field.group][field.key]; the names of metrics()["summary"]["vector"]'s entries.
+METRIC_FIELDS: tuple[MetricField, ...]
+SUMMARY_FIELDS: tuple[str, ...]
 # Name tables, index = the value stored in the arrays: SHEET_TYPES[t] = (JSON name, label);
 # CELL_TYPES[t] and COMPONENT_KINDS[k] = names; FORMATS: every format the readers take.
 SHEET_TYPES: tuple[tuple[str, str], ...]
@@ -540,6 +561,9 @@ class Analysis:
         """The whole-mesh wireframe stage ran (else wireframe() computes it on demand)."""
     @property
     def stats(self) -> AnalysisStats: ...
+    def metrics(self, threads: int | None = None) -> dict[str, dict[str, Any]]:
+        """Structural complexity metrics (docs/metrics.md): `hbc metrics --json` without "file" and
+        "timings"; NaN values are None. Computed with the GIL released."""
     @property
     def graph(self) -> SingularityGraph: ...
     @property
