@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <tuple>
 
@@ -113,8 +114,8 @@ constexpr MetricField kFields[] = {
     {"subsheets_max", "sheets", "Most subsheets", "subsheets", "subsheets of the most divided sheet", R::Invariant},
     {"self_intersections", "sheets", "Self-intersections", "blocks",
      "blocks holding two parallel curves of one sheet that share an end, summed over the sheets", R::Invariant},
-    {"connectivity_complexity", "sheets", "Sheet connectivity complexity", "ratio",
-     "Xu and Chen's structure complexity on the hex part: mean over sheets of the sheets it meets", R::Invariant},
+    {"connectivity_complexity", "sheets", "Sheet connectivity complexity", "pairs",
+     "Xu and Chen's sheet connectivity on the hex part: pairs of sheets that intersect or neighbour", R::Invariant},
     {"cells", "non_hex", "Non-hex cells", "cells", "cells that are not hexahedra", R::Cells},
     {"regions", "non_hex", "Non-hex regions", "regions", "face-connected regions of non-hex cells", R::Invariant},
     {"region_cells_max", "non_hex", "Largest non-hex region", "cells", "cells of the largest non-hex region",
@@ -328,6 +329,46 @@ void sheet_metrics(const Mesh& m, const SheetStage& st, Metrics& out) {
   }
 }
 
+// Xu and Chen's sheet connectivity (IEEE TVCG 2019, and their code's "complexity of all sheets"):
+// two sheets are connected when they intersect (hold a common block) or are neighbours (an
+// interior patch lies on the boundary of both, i.e. each holds exactly one of its two sides).
+// Counted as unordered pairs at the complex level, on the hex part (blocks are hex components).
+double sheet_connectivity_pairs(const BaseComplex& bc, const SheetStage& st) {
+  const SheetDomain& d = st.domain;
+  const Sheets& sh = st.sheets;
+  if (d.level != Level::Complex) return kNaN;
+  Csr<int32_t> block_sheets;  // per block, the sheets holding it (increasing)
+  std::vector<int32_t> count(d.block_cells.rows() + 1, 0);
+  for (int32_t b : sh.sheet_blocks.items) ++count[b + 1];
+  for (size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
+  block_sheets.offsets = count;
+  block_sheets.items.resize(sh.sheet_blocks.items.size());
+  for (size_t s = 0; s < sh.size(); ++s)
+    for (int32_t b : sh.sheet_blocks[s]) block_sheets.items[count[b]++] = static_cast<int32_t>(s);
+  std::vector<uint64_t> pairs;
+  auto all_pairs = [&](const std::vector<int32_t>& ids) {
+    for (size_t i = 0; i < ids.size(); ++i)
+      for (size_t j = i + 1; j < ids.size(); ++j)
+        pairs.push_back(static_cast<uint64_t>(std::min(ids[i], ids[j])) << 32 | static_cast<uint32_t>(std::max(ids[i], ids[j])));
+  };
+  std::vector<int32_t> ids;
+  for (size_t b = 0; b < block_sheets.rows(); ++b) {
+    ids.assign(block_sheets[b].begin(), block_sheets[b].end());
+    all_pairs(ids);
+  }
+  auto block_of = [&](int32_t k) { return k < 0 ? -1 : d.cell_block[bc.component_cells[k][0]]; };
+  for (const auto& pc : bc.patch_components) {
+    const int32_t a = block_of(pc[0]), b = block_of(pc[1]);
+    if (a < 0 || b < 0 || a == b) continue;  // a boundary patch, or one beside a non-hex cell
+    ids.clear();
+    std::set_symmetric_difference(block_sheets[a].begin(), block_sheets[a].end(), block_sheets[b].begin(),
+                                  block_sheets[b].end(), std::back_inserter(ids));
+    all_pairs(ids);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return static_cast<double>(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
+}
+
 void non_hex_clustering(const Mesh& m, const BaseComplex& bc, Metrics& out) {
   auto& v = out.values;
   const size_t nc = m.num_cells();
@@ -446,8 +487,10 @@ Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Thread
   census(mesh, threads, out);
   singular_structure(mesh, analysis.graph, out);
   base_complex_metrics(analysis.complex, out);
-  if (analysis.sheet_stage) sheet_metrics(mesh, *analysis.sheet_stage, out);
-  out.values[kSheetComplexity] = kNaN;  // filled below when the sheet stage ran
+  if (analysis.sheet_stage) {
+    sheet_metrics(mesh, *analysis.sheet_stage, out);
+    out.values[kSheetComplexity] = sheet_connectivity_pairs(analysis.complex, *analysis.sheet_stage);
+  }
   non_hex_clustering(mesh, analysis.complex, out);
   quality_metrics(mesh, analysis, threads, out);
   summary(out);

@@ -1,0 +1,119 @@
+"""Structural complexity metrics (docs/metrics.md): the CLI and Python agree, every metric is
+defined in the doc, `hbc metrics` works on every shared mesh, and uniform refinement (every hex
+into 8) leaves the invariant metrics equal and scales the others as their field says."""
+
+import json
+import math
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+from conftest import MESHES
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+REFINE = REPO / "scripts" / "bench" / "refine_medit_hexes.py"
+FACTOR = {"invariant": 1, "x8": 8, "x2": 2, "x4": 4}
+
+
+def cli_metrics(hbc_cli, path):
+    out = subprocess.run([hbc_cli, "metrics", str(path), "--json"], capture_output=True, text=True, check=True)
+    return json.loads(out.stdout)
+
+
+@pytest.mark.parametrize("name", MESHES)
+def test_python_matches_cli(name, analyzed, hbc_cli, shared_data_dir):
+    import hbc
+
+    _, analysis = analyzed[name]
+    from_cli = cli_metrics(hbc_cli, shared_data_dir / name)
+    del from_cli["file"], from_cli["timings"]
+    assert analysis.metrics() == from_cli
+    assert analysis.metrics(threads=1) == from_cli  # the same for any thread count
+    for f in hbc.METRIC_FIELDS:
+        assert f.key in from_cli[f.group]
+
+
+def test_every_metric_is_defined_in_the_doc():
+    import hbc
+
+    doc = (REPO / "docs" / "metrics.md").read_text()
+    missing = [f"{f.group}.{f.key}" for f in hbc.METRIC_FIELDS if f"`{f.group}.{f.key}`" not in doc]
+    missing += [k for k in hbc.SUMMARY_FIELDS if f"`{k}`" not in doc]
+    assert not missing, f"docs/metrics.md does not define {missing}"
+
+
+def test_metrics_on_every_shared_mesh(shared_mesh, hbc_cli):
+    m = cli_metrics(hbc_cli, shared_mesh)
+    c = m["census"]
+    assert c["cells"] == c["hexahedra"] + c["prisms"] + c["pyramids"] + c["tetrahedra"] + c["polyhedra"]
+    assert sum(m["census"]["polyhedra_by_faces"].values()) == c["polyhedra"]
+    assert 0 <= c["hex_ratio"] <= 1 and 0 <= c["hex_volume_ratio"] <= 1 + 1e-12
+    s = m["singular"]
+    assert s["curves"] == s["curves_closed"] + s["curves_boundary_ends"] + s["curves_node_ends"]
+    assert sum(s["valence_interior"].values()) == s["edges_interior"]
+    assert sum(s["valence_boundary"].values()) == s["edges_boundary"]
+    x = m["complex"]
+    assert x["components"] == x["hex_components"] + x["non_hex_components"]
+    assert sum(x["component_cells"]) + x["non_hex_components"] == c["cells"]
+    n = m["non_hex"]
+    assert n["cells"] == c["cells"] - c["hexahedra"] == sum(n["region_cells"])
+    assert len(m["summary"]["vector"]) == len(m["summary"]["vector_keys"])
+    assert m["summary"]["score"] >= 0
+
+
+def refined_pair(hbc_cli, tmp_path, source):
+    """(metrics of `source`, metrics of its uniform refinement), `source` an all-hex MEDIT file."""
+    fine = tmp_path / "fine.mesh"
+    subprocess.run([sys.executable, str(REFINE), str(source), str(fine), "2"], check=True, capture_output=True)
+    return cli_metrics(hbc_cli, source), cli_metrics(hbc_cli, fine)
+
+
+def generated(hbc_cli, tmp_path, *args):
+    out = tmp_path / "coarse.mesh"
+    subprocess.run([hbc_cli, "generate", *args, "-o", str(out)], check=True, capture_output=True)
+    return out
+
+
+# Hex-only meshes: a valence-5 sector (one interior singular curve), a twisted ring with a
+# quarter turn, and a real mesh with many components and curves.
+CASES = {
+    "sector": ["sector", "--valence", "5", "--rings", "2", "--layers", "3"],
+    "twisted-ring": ["twisted-ring", "--section", "4", "--sections", "8", "--quarter-turns", "1"],
+    "rockerarm": None,
+}
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_refinement_invariance(case, hbc_cli, tmp_path, shared_data_dir):
+    import hbc
+
+    source = shared_data_dir / "cinolib/rockerarm.mesh" if CASES[case] is None else generated(hbc_cli, tmp_path, *CASES[case])
+    coarse, fine = refined_pair(hbc_cli, tmp_path, source)
+    assert fine["census"]["cells"] == 8 * coarse["census"]["cells"]
+    checked = 0
+    for f in hbc.METRIC_FIELDS:
+        if f.refinement == "none":
+            continue
+        a, b = coarse[f.group][f.key], fine[f.group][f.key]
+        if a is None:
+            assert b is None, f"{f.group}.{f.key}"
+            continue
+        assert math.isclose(b, FACTOR[f.refinement] * a, rel_tol=1e-9, abs_tol=1e-12), \
+            f"{f.group}.{f.key}: {a} -> {b}, expected {f.refinement}"
+        checked += 1
+    assert checked > 40
+    assert fine["summary"]["vector"] == pytest.approx(coarse["summary"]["vector"], rel=1e-9, abs=1e-12)
+
+
+def test_doc_tables_are_current():
+    """docs/metrics.md's tables are what scripts/metrics_doc.py writes from hbc.METRIC_FIELDS."""
+    sys.path.insert(0, str(REPO / "scripts"))
+    try:
+        import metrics_doc
+    finally:
+        sys.path.pop(0)
+    doc = (REPO / "docs" / "metrics.md").read_text()
+    current = doc.split(metrics_doc.BEGIN, 1)[1].split(metrics_doc.END, 1)[0]
+    assert current == "\n" + metrics_doc.table(), "run scripts/metrics_doc.py"
