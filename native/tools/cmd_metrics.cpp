@@ -18,7 +18,7 @@ namespace {
 
 struct MetricsArgs {
   InputArgs input;
-  bool json = false, csv = false;
+  bool json = false, csv = false, no_quality = false;
   std::string subsheets = "layers";
 };
 
@@ -81,7 +81,9 @@ void run_metrics(const MetricsArgs& args) {
   const auto t0 = std::chrono::steady_clock::now();
   const Analysis analysis = analyze(mesh, opt);
   const auto t1 = std::chrono::steady_clock::now();
-  const Metrics m = compute_metrics(mesh, analysis, args.input.load_threads());
+  MetricsOptions mo;
+  mo.quality = !args.no_quality;
+  const Metrics m = compute_metrics(mesh, analysis, args.input.load_threads(), mo);
   const auto t2 = std::chrono::steady_clock::now();
   // The load, the analysis (its stages as in `hbc analyze`, without the wireframe) and the metrics.
   const Json timings = {{"load", t_load},
@@ -122,6 +124,8 @@ void add_metrics(CLI::App& app) {
                                    "non-hex clustering, quality beside structure (docs/metrics.md)",
                                    args->input, args->json, "print the metrics as JSON, grouped, with distributions");
   cmd->add_flag("--csv", args->csv, "print one CSV header (group.key) and row")->excludes("--json");
+  cmd->add_flag("--no-quality", args->no_quality,
+                "skip the quality group (the scaled Jacobian of every cell, most of the metrics' time): its values are null");
   cmd->add_option("--subsheets", args->subsheets,
                   "decomposition of self-intersecting sheets: layers (the paper's authors' rule) or fewest")
       ->check(CLI::IsMember({"layers", "fewest"}))

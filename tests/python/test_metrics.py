@@ -117,3 +117,22 @@ def test_doc_tables_are_current():
     doc = (REPO / "docs" / "metrics.md").read_text()
     current = doc.split(metrics_doc.BEGIN, 1)[1].split(metrics_doc.END, 1)[0]
     assert current == "\n" + metrics_doc.table(), "run scripts/metrics_doc.py"
+
+
+def test_without_quality(analyzed, hbc_cli, shared_data_dir):
+    """--no-quality / quality=False: the quality group is null, every other value as with it."""
+    import hbc
+
+    name = MESHES[0]
+    _, analysis = analyzed[name]
+    out = subprocess.run([hbc_cli, "metrics", str(shared_data_dir / name), "--json", "--no-quality"],
+                         capture_output=True, text=True, check=True)
+    from_cli = json.loads(out.stdout)
+    del from_cli["file"], from_cli["timings"]
+    assert analysis.metrics(quality=False) == from_cli
+    full = analysis.metrics()
+    for f in hbc.METRIC_FIELDS:
+        if f.group == "quality":
+            assert from_cli["quality"][f.key] is None
+        else:
+            assert from_cli[f.group][f.key] == full[f.group][f.key], f"{f.group}.{f.key}"

@@ -39,7 +39,7 @@ def test_package_reexports_core():
                                 "block_soup", "polylines", "cell_quality", "cell_depth", "cell_centroids",
                                 "kept_surface_soup", "Field", "STAT_FIELDS", "TIMING_FIELDS",
                                 "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS", "SHEET_TYPES", "CELL_TYPES",
-                                "COMPONENT_KINDS", "FORMATS"}
+                                "COMPONENT_KINDS", "FORMATS", "MetricField", "METRIC_FIELDS", "SUMMARY_FIELDS"}
     for name in hbc.__all__:
         assert getattr(hbc, name) is getattr(_core, name)
     assert issubclass(hbc.MeshFormatError, ValueError)

@@ -59,9 +59,16 @@ struct Metrics {
 // The names of summary_vector's entries, in order (docs/metrics.md gives the rationale).
 std::span<const std::string_view> summary_fields();
 
+struct MetricsOptions {
+  // The quality group (a scaled Jacobian per cell: most of the metrics' time at 10^6 cells); off,
+  // its values are NaN.
+  bool quality = true;
+};
+
 // Needs the mesh's points (not a mesh given to release_unanalyzed). Sheet metrics are NaN when
 // the analysis has no sheet stage. O(mesh size); the per-cell volumes and scaled Jacobians are
 // split over `threads`, the same result for any count.
-Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Threads& threads = {});
+Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Threads& threads = {},
+                        const MetricsOptions& options = {});
 
 }  // namespace hbc

@@ -52,7 +52,7 @@ py::dict metrics_dict(const Metrics& m) {
   return d;
 }
 
-py::dict analysis_metrics(const PyAnalysisPtr& p, const py::object& threads) {
+py::dict analysis_metrics(const PyAnalysisPtr& p, const py::object& threads, bool quality) {
   Threads t;
   if (!threads.is_none()) {
     t.count = threads.cast<int>();
@@ -61,7 +61,9 @@ py::dict analysis_metrics(const PyAnalysisPtr& p, const py::object& threads) {
   Metrics m;
   {
     py::gil_scoped_release unlocked;  // the metrics touch no Python object
-    m = compute_metrics(p->mesh->mesh, p->analysis, t);
+    MetricsOptions o;
+    o.quality = quality;
+    m = compute_metrics(p->mesh->mesh, p->analysis, t, o);
   }
   return metrics_dict(m);
 }
@@ -91,9 +93,10 @@ void bind_metrics(py::module_& m) {
   for (size_t i = 0; i < s.size(); ++i) s[i] = std::string(summary_fields()[i]);
   m.attr("SUMMARY_FIELDS") = s;
   auto cls = py::reinterpret_borrow<py::class_<PyAnalysis, PyAnalysisPtr>>(m.attr("Analysis"));
-  cls.def("metrics", &analysis_metrics, py::arg("threads") = py::none(),
+  cls.def("metrics", &analysis_metrics, py::arg("threads") = py::none(), py::arg("quality") = true,
           "Structural complexity metrics (docs/metrics.md), computed with the GIL released: the "
-          "`hbc metrics --json` object without 'file' and 'timings', a dict of groups.");
+          "`hbc metrics --json` object without 'file' and 'timings', a dict of groups. quality=False "
+          "skips the scaled Jacobians (the quality group is then None), as --no-quality does.");
 }
 
 }  // namespace hbc::python

@@ -561,9 +561,10 @@ class Analysis:
         """The whole-mesh wireframe stage ran (else wireframe() computes it on demand)."""
     @property
     def stats(self) -> AnalysisStats: ...
-    def metrics(self, threads: int | None = None) -> dict[str, dict[str, Any]]:
+    def metrics(self, threads: int | None = None, quality: bool = True) -> dict[str, dict[str, Any]]:
         """Structural complexity metrics (docs/metrics.md): `hbc metrics --json` without "file" and
-        "timings"; NaN values are None. Computed with the GIL released."""
+        "timings"; NaN values are None. Computed with the GIL released. quality=False skips the
+        scaled Jacobians (the quality group's values are None), as `--no-quality` does."""
     @property
     def graph(self) -> SingularityGraph: ...
     @property

@@ -481,7 +481,8 @@ double Metrics::value(std::string_view group, std::string_view key) const {
   return i < 0 || static_cast<size_t>(i) >= values.size() ? kNaN : values[i];
 }
 
-Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Threads& threads) {
+Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Threads& threads,
+                        const MetricsOptions& options) {
   Metrics out;
   out.values.assign(kFieldCount, kNaN);
   census(mesh, threads, out);
@@ -492,7 +493,7 @@ Metrics compute_metrics(const Mesh& mesh, const Analysis& analysis, const Thread
     out.values[kSheetComplexity] = sheet_connectivity_pairs(analysis.complex, *analysis.sheet_stage);
   }
   non_hex_clustering(mesh, analysis.complex, out);
-  quality_metrics(mesh, analysis, threads, out);
+  if (options.quality) quality_metrics(mesh, analysis, threads, out);
   summary(out);
   return out;
 }
