@@ -64,9 +64,15 @@ def test_metrics_on_every_shared_mesh(shared_mesh, hbc_cli):
 
 
 def refined_pair(hbc_cli, tmp_path, source):
-    """(metrics of `source`, metrics of its uniform refinement), `source` an all-hex MEDIT file."""
+    """(metrics of `source`, metrics of its uniform refinement), `source` an all-hex MEDIT file.
+    The refinement script is imported, not run: inside Blender sys.executable is Blender."""
+    sys.path.insert(0, str(REFINE.parent))
+    try:
+        import refine_medit_hexes as refine
+    finally:
+        sys.path.pop(0)
     fine = tmp_path / "fine.mesh"
-    subprocess.run([sys.executable, str(REFINE), str(source), str(fine), "2"], check=True, capture_output=True)
+    refine.write_medit_hexes(fine, *refine.refine(*refine.read_medit_hexes(source), 2))
     return cli_metrics(hbc_cli, source), cli_metrics(hbc_cli, fine)
 
 
