@@ -55,7 +55,7 @@ def test_metrics_on_every_shared_mesh(shared_mesh, hbc_cli):
     assert sum(s["valence_interior"].values()) == s["edges_interior"]
     assert sum(s["valence_boundary"].values()) == s["edges_boundary"]
     x = m["complex"]
-    assert x["components"] == x["hex_components"] + x["non_hex_components"]
+    assert x["components"] == x["blocks"] + x["non_hex_components"]
     assert sum(x["component_cells"]) + x["non_hex_components"] == c["cells"]
     n = m["non_hex"]
     assert n["cells"] == c["cells"] - c["hexahedra"] == sum(n["region_cells"])

@@ -28,7 +28,7 @@ enum M : int {
   kSingCurvesBoundaryEnds, kSingCurvesNodeEnds, kSingCurvesOnBoundary, kSingCurveEdgesMean, kSingCurveEdgesMax,
   kSingLength, kSingNodes,
   // complex
-  kComponents, kHexCellComponents, kCubeComponents, kRingComponents, kOtherComponents, kNonHexComponents,
+  kComponents, kBlocks, kCubeComponents, kRingComponents, kOtherComponents, kNonHexComponents,
   kCorners, kCurves, kPatches, kSelfAdjacentFaces, kCompCellsMin, kCompCellsMedian, kCompCellsMax,
   kLargestTenthShare,
   // sheets
@@ -78,8 +78,8 @@ constexpr MetricField kFields[] = {
     {"nodes", "singular", "Singular nodes", "vertices",
      "singular curve ends that are not pseudo-singular (where curves meet or stop)", R::Invariant},
     {"components", "complex", "Components", "components", "components of the hybrid base complex", R::Invariant},
-    {"hex_components", "complex", "Components of hexahedra", "components",
-     "components made of hexahedra (cube, ring or other)", R::Invariant},
+    {"blocks", "complex", "Blocks", "components",
+     "components made of hexahedra (cube, ring or other): the blocks sheets run through", R::Invariant},
     {"cube_components", "complex", "Cube components", "components", "|H_B|: cube-like components of hexahedra",
      R::Invariant},
     {"ring_components", "complex", "Ring components", "components", "components of hexahedra cut into a ring",
@@ -124,8 +124,8 @@ constexpr MetricField kFields[] = {
     {"region_cells_mean", "non_hex", "Mean non-hex region", "cells", "mean cells per non-hex region", R::Cells},
     {"boundary_share", "non_hex", "Non-hex cells on the boundary", "ratio",
      "share of the non-hex cells with a boundary face", R::None},
-    {"per_hex_component", "non_hex", "Non-hex cells per component", "cells",
-     "non-hex cells / components of hexahedra", R::Cells},
+    {"per_block", "non_hex", "Non-hex cells per block", "cells",
+     "non-hex cells / blocks (components of hexahedra)", R::Cells},
     {"sj_min", "quality", "Minimum scaled Jacobian", "ratio", "lowest scaled Jacobian over all cells", R::None},
     {"sj_mean", "quality", "Mean scaled Jacobian", "ratio", "mean scaled Jacobian over all cells", R::None},
     {"inverted", "quality", "Inverted cells", "cells", "cells with a negative scaled Jacobian", R::None},
@@ -150,7 +150,7 @@ constexpr MetricField kFields[] = {
 static_assert(std::size(kFields) == kFieldCount);
 
 constexpr std::string_view kSummary[] = {"non_hex_volume_share", "log10_1_plus_interior_curves",
-                                         "log10_hex_components", "imperfect_sheet_share", "cells_outside_perfect_sheets"};
+                                         "log10_blocks", "imperfect_sheet_share", "cells_outside_perfect_sheets"};
 
 using Vec3 = std::array<double, 3>;
 Vec3 point(const Mesh& m, int32_t v) { return {m.points[3 * v], m.points[3 * v + 1], m.points[3 * v + 2]}; }
@@ -271,7 +271,7 @@ void base_complex_metrics(const BaseComplex& bc, Metrics& out) {
       out.component_cells.push_back(static_cast<int32_t>(bc.component_cells.count(k)));
   }
   v[kComponents] = static_cast<double>(bc.num_components());
-  v[kHexCellComponents] = static_cast<double>(out.component_cells.size());
+  v[kBlocks] = static_cast<double>(out.component_cells.size());
   v[kCubeComponents] = static_cast<double>(by_kind[0]);
   v[kRingComponents] = static_cast<double>(by_kind[1]);
   v[kOtherComponents] = static_cast<double>(by_kind[2]);
@@ -452,7 +452,7 @@ void summary(Metrics& out) {
   const double sheets = v[kSheets];
   out.summary_vector = {1 - v[kHexVolumeRatio],
                         std::log10(1 + v[kSingCurves] - v[kSingCurvesOnBoundary]),
-                        std::log10(std::max(1.0, v[kHexCellComponents])),
+                        std::log10(std::max(1.0, v[kBlocks])),
                         sheets > 0 ? 1 - v[kSheetsPerfect] / sheets : sheets == 0 ? 0 : kNaN,
                         1 - v[kPerfectCellShare]};
   double score = 0;
