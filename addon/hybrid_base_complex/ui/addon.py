@@ -11,8 +11,9 @@ from ..plan.native import module_problem
 from . import export_ops, handlers, operators, panels, properties
 
 def _bl_info() -> dict:
-    """The package's bl_info (Blender 3.4's Preferences read it from the loaded module)."""
-    return sys.modules[__package__.rpartition(".")[0]].bl_info
+    """The package's bl_info (Blender 3.4's Preferences read it from the loaded module); an
+    empty dict in an extension, whose packing leaves bl_info out (the manifest stands for it)."""
+    return getattr(sys.modules[__package__.rpartition(".")[0]], "bl_info", {})
 
 
 #: Every class, in registration order: a property group after the groups it points to, a panel
