@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Builds the browser viewer (web/) into one self-contained HTML file:
+#   bash scripts/build_web.sh [OUT]        (default OUT: build/web)
+# OUT/viewer.html (= OUT/index.html) holds the page's JS (three.js), the worker with the
+# WebAssembly core, the add-on's colours and words (scripts/export_legend.py) and the CSS; it
+# fetches nothing. `hbc export-html` fills the same file with a mesh (docs/web.md).
+# Runs scripts/build_wasm.sh first when build-wasm/ is missing or older than native/ or the
+# script; `npm ci` only when web/node_modules does not match the lockfile (so an offline machine
+# that has node_modules builds). HBC_PYTHON: the Python with numpy for the legend.
+set -euo pipefail
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+OUT=$(realpath -m "${1:-$ROOT/build/web}")
+WASM_DIR=$ROOT/build-wasm/web
+PY=${HBC_PYTHON:-/usr/bin/python3}
+
+stamp=$WASM_DIR/hbc_core.js
+if [[ ! -f $stamp ]] || [[ -n $(find "$ROOT/native" "$ROOT/scripts/build_wasm.sh" -newer "$stamp" -type f -print -quit 2>/dev/null) ]]; then
+  echo "build_web: building the WebAssembly core (scripts/build_wasm.sh)"
+  bash "$ROOT/scripts/build_wasm.sh"
+fi
+
+cd "$ROOT/web"
+if [[ ! -f node_modules/.package-lock.json ]] || [[ package-lock.json -nt node_modules/.package-lock.json ]]; then
+  npm ci --no-audit --no-fund --prefer-offline
+fi
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+"$PY" "$ROOT/scripts/export_legend.py" "$tmp/legend.json"
+node build.mjs --out "$OUT" --legend "$tmp/legend.json" --wasm "$WASM_DIR"

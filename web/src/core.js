@@ -1,0 +1,157 @@
+// The one place that knows how the WebAssembly module (scripts/build_wasm.sh, createHbcModule)
+// spells things. The binding follows the Python names (native/python/hbc/_core.pyi); whether a
+// name is a property or a method, and whether an array is a view into the wasm heap, is settled
+// here, so the worker reads every array as a plain copy it may transfer.
+
+/** The value of `name` on an embind object: a property, or a method without arguments. */
+function get(obj, name) {
+  const v = obj[name];
+  return typeof v === 'function' ? v.call(obj) : v;
+}
+
+/** A typed array copied out of the wasm heap: views die when the heap grows, and only a copy can
+ *  be transferred to the page. Embind vectors (size/get) are read element by element. */
+function copy(v) {
+  if (v == null) return v;
+  if (ArrayBuffer.isView(v)) return v.slice();
+  if (Array.isArray(v)) return v;
+  if (typeof v.size === 'function' && typeof v.get === 'function') {
+    const n = v.size();
+    const out = new Array(n);
+    for (let i = 0; i < n; i++) out[i] = v.get(i);
+    if (typeof v.delete === 'function') v.delete();
+    return out;
+  }
+  return v;
+}
+
+export function arr(obj, name) {
+  return copy(get(obj, name));
+}
+
+/** A CSR as {offsets, items} from `<name>_offsets` and `<name>_items`. */
+export function csr(obj, name) {
+  return { offsets: Int32Array.from(arr(obj, `${name}_offsets`)), items: Int32Array.from(arr(obj, `${name}_items`)) };
+}
+
+/** The text of a thrown C++ InputError (or any error) as the CLI prints it. */
+export function errorText(M, e) {
+  if (e && typeof e === 'object' && 'message' in e && e.message) return String(e.message);
+  // A raw C++ exception pointer (exceptions without JS wrapping): ask the module for its text.
+  if (typeof e === 'number') {
+    if (typeof M.getExceptionMessage === 'function') {
+      try { return M.getExceptionMessage(e).filter(Boolean).join(': '); } catch (_) { /* fall through */ }
+    }
+    if (typeof M.lastError === 'function') return M.lastError();
+  }
+  return String(e);
+}
+
+export class Core {
+  constructor(M) { this.M = M; }
+
+  /** The format extensions the readers take (the file picker's filter), longest first. */
+  extensions() {
+    const f = this.M.FORMATS ? copy(get(this.M, 'FORMATS')) : null;
+    if (!f) return [];
+    const list = (typeof f === 'string' ? JSON.parse(f) : f).map((x) => x.extension).filter(Boolean);
+    return list.sort((a, b) => b.length - a.length);
+  }
+
+  /** Table 1's columns from the module's schema, [{key, notation, meaning, timing}], or null. */
+  table1() {
+    const t = this.M.TABLE1_COLUMNS ? copy(get(this.M, 'TABLE1_COLUMNS')) : null;
+    if (!t) return null;
+    const rows = typeof t === 'string' ? JSON.parse(t) : t;
+    return rows.map((r) => Array.isArray(r)
+      ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}`, timing: !!r[1] }
+      : r);
+  }
+
+  writeFiles(files) {
+    const FS = this.M.FS;
+    for (const f of files) {
+      const parts = f.path.split('/').filter(Boolean);
+      let dir = '';
+      for (const p of parts.slice(0, -1)) {
+        dir += '/' + p;
+        try { FS.mkdir(dir); } catch (_) { /* exists */ }
+      }
+      FS.writeFile('/' + parts.join('/'), new Uint8Array(f.buffer));
+    }
+  }
+
+  removeTree(path) {
+    const FS = this.M.FS;
+    let st;
+    try { st = FS.stat(path); } catch (_) { return; }
+    if (FS.isDir(st.mode)) {
+      for (const n of FS.readdir(path)) if (n !== '.' && n !== '..') this.removeTree(`${path}/${n}`);
+      FS.rmdir(path);
+    } else FS.unlink(path);
+  }
+
+  load(path) { return this.M.load(path); }
+
+  analyze(mesh) {
+    return typeof mesh.analyze === 'function' ? mesh.analyze() : this.M.analyze(mesh);
+  }
+
+  /** `hbc analyze FILE --json` as text, from the library's own JSON writer. */
+  analysisJson(mesh, analysis, file) {
+    const M = this.M;
+    if (typeof M.analysis_json === 'function') return M.analysis_json(mesh, analysis, file);
+    if (typeof M.analyze_json === 'function') return M.analyze_json(mesh, analysis, file);
+    if (typeof analysis.stats_json === 'function') return analysis.stats_json(file);
+    const stats = get(analysis, 'stats');
+    const obj = typeof stats === 'string' ? JSON.parse(stats) : stats;
+    return JSON.stringify({ file, ...obj });
+  }
+
+  graph(a) { return get(a, 'graph'); }
+  complex(a) { return get(a, 'complex'); }
+
+  blockSoup(mesh, analysis, what, sheet, shrink) {
+    const s = this.M.block_soup(mesh, analysis, what, sheet == null ? -1 : sheet, shrink);
+    const out = {
+      positions: Float32Array.from(arr(s, 'positions')),
+      offsets: Int32Array.from(arr(s, 'face_vertices_offsets')),
+      items: Int32Array.from(arr(s, 'face_vertices_items')),
+      owner: Int32Array.from(arr(s, 'face_owner')),
+      cell: Int32Array.from(arr(s, 'face_cell')),
+    };
+    if (typeof s.delete === 'function') s.delete();
+    return out;
+  }
+
+  keptSurface(mesh, kept, shrink) {
+    const s = this.M.kept_surface_soup(mesh, kept, shrink);
+    const out = {
+      positions: Float32Array.from(arr(s, 'positions')),
+      offsets: Int32Array.from(arr(s, 'face_vertices_offsets')),
+      items: Int32Array.from(arr(s, 'face_vertices_items')),
+      owner: Int32Array.from(arr(s, 'face_owner')),
+      cell: Int32Array.from(arr(s, 'face_cell')),
+    };
+    if (typeof s.delete === 'function') s.delete();
+    return out;
+  }
+
+  polylines(mesh, offsets, items) {
+    return Float32Array.from(copy(this.M.polylines(mesh, offsets, items)));
+  }
+
+  centroids(mesh) {
+    return Float32Array.from(copy(this.M.cell_centroids(mesh)));
+  }
+
+  subsheets(a, sheet) { return a.subsheets(sheet); }
+
+  wireframe(a, sheet, subsheet) {
+    return a.wireframe(sheet == null ? -1 : sheet, subsheet == null ? -1 : subsheet);
+  }
+
+  free(...objs) {
+    for (const o of objs) if (o && typeof o.delete === 'function') { try { o.delete(); } catch (_) { /* freed */ } }
+  }
+}

@@ -1,0 +1,538 @@
+// The page: opening a mesh (picker, folder, drop, ?mesh=URL, the embedded mesh), the layers and
+// their settings, the sheet list, the legend and Table 1, the state for tests (#hbc-results,
+// body[data-state]) and the view in the URL fragment.
+/* global __HBC_WORKER_SOURCE__ */
+import { Viewer } from './scene.js';
+import { L, css } from './colors.js';
+
+const $ = (id) => document.getElementById(id);
+const LAYERS = L.layers.map(([key]) => key);
+const LAYER_TITLES = Object.fromEntries(L.layers);
+
+const state = {
+  layers: { direct: true, graph: true, blocks: false, sheets: false, sheet: false, subsheets: false, wireframe: false },
+  shrink: 0.1,
+  boundaryOpacity: 0.25,
+  sheet: -1,
+  sort: 'TYPE',
+  wireScope: 'all',
+  simplified: true,
+  byKind: false,
+  floor: L.wire_floor,
+  spread: true,
+  plane: { on: false, axis: 0, t: 0.5 },
+  types: [true, true, true, true, true],
+};
+let info = null; // the worker's summary of the open mesh
+let results = null;
+let timings = null;
+let table1 = null;
+let pendingView = null;
+const requests = new Map(); // layer -> latest request id
+let nextId = 1;
+
+const viewer = new Viewer($('hbc-canvas'));
+viewer.onView = () => saveFragment();
+
+// -- the worker ------------------------------------------------------------------------------
+const worker = new Worker(URL.createObjectURL(new Blob([__HBC_WORKER_SOURCE__], { type: 'text/javascript' })));
+worker.onmessage = (ev) => {
+  const m = ev.data;
+  if (m.type === 'progress') showProgress(m.fraction, m.text);
+  else if (m.type === 'ready') ready(m);
+  else if (m.type === 'error') failed(m.message);
+  else if (m.type === 'layer') layerArrived(m);
+  else if (m.type === 'layer-error') layerFailed(m);
+};
+worker.onerror = (e) => failed(`The worker stopped: ${e.message || 'unknown error'}`);
+
+function setState(s) {
+  document.body.dataset.state = s;
+  $('hbc-results').dataset.state = s;
+}
+
+function showProgress(fraction, text) {
+  $('progress').hidden = false;
+  $('progress-bar').value = fraction;
+  $('status').textContent = text;
+}
+
+/** Opens files [{path, buffer}] named `name` (a file name, or a case folder's). */
+function openFiles(name, files) {
+  setState('loading');
+  $('hbc-results').textContent = '';
+  $('hbc-error').hidden = true;
+  $('hbc-error').textContent = '';
+  viewer.clearAll();
+  info = null;
+  results = null;
+  $('mesh-name').textContent = name;
+  document.title = `${name} — hbc viewer`;
+  showProgress(0.02, 'Reading ' + name);
+  worker.postMessage({ type: 'open', name, files }, files.map((f) => f.buffer));
+}
+
+function ready(m) {
+  info = m.info;
+  timings = m.timings ?? null;
+  results = m.results;
+  table1 = m.table1;
+  $('hbc-results').textContent = JSON.stringify(results, null, 2);
+  $('progress').hidden = true;
+  $('status').textContent = `${info.cells} cells analysed`;
+  if (pendingView) applyFragment(pendingView);
+  else viewer.frame(info.bbox);
+  pendingView = null;
+  sheetList();
+  showTable1();
+  syncControls();
+  rebuildAll();
+  setState('ready');
+}
+
+function failed(message) {
+  $('progress').hidden = true;
+  $('status').textContent = 'Could not open the mesh';
+  $('hbc-error').textContent = message;
+  $('hbc-error').hidden = false;
+  $('hbc-results').textContent = '';
+  setState('error');
+}
+
+// -- layers ----------------------------------------------------------------------------------
+function layerParams(layer) {
+  const p = { shrink: state.shrink };
+  if (layer === 'direct') {
+    p.shrink = 0;
+    p.types = state.types;
+    if (state.plane.on) p.plane = { axis: state.plane.axis, pos: planePos() };
+  }
+  if (layer === 'sheet' || layer === 'subsheets') p.sheet = state.sheet;
+  if (layer === 'subsheets') Object.assign(p, { subsheetWires: true, floor: state.floor, simplified: state.simplified, byKind: state.byKind });
+  if (layer === 'wireframe') {
+    Object.assign(p, { floor: state.floor, simplified: state.simplified, byKind: state.byKind });
+    p.sheet = state.wireScope === 'sheet' ? state.sheet : -1;
+  }
+  return p;
+}
+
+function build(layer) {
+  if (!info) return;
+  if (!state.layers[layer] || ((layer === 'sheet' || layer === 'subsheets') && state.sheet < 0)) {
+    viewer.clearLayer(layer);
+    requests.delete(layer);
+    layerNote(layer, '');
+    legend();
+    return;
+  }
+  const id = nextId++;
+  requests.set(layer, id);
+  layerNote(layer, 'building…');
+  worker.postMessage({ type: 'layer', id, layer, params: layerParams(layer) });
+}
+
+function rebuildAll() {
+  for (const layer of LAYERS) build(layer);
+  legend();
+}
+
+function layerArrived(m) {
+  if (requests.get(m.layer) !== m.id) return; // a newer request is on its way
+  const style = { boundaryOpacity: state.boundaryOpacity };
+  if (m.layer === 'subsheets' && state.spread && info) {
+    // planning.spread_translation: side by side along x, each wireframe one row beneath.
+    const [lo, hi] = info.bbox;
+    const dx = (hi[0] - lo[0]) * (1 + L.spread_gap);
+    const dz = -(hi[2] - lo[2]) * (1 + L.spread_gap);
+    style.offset = (p) => (p.subsheet >= 0 ? [dx * p.subsheet, 0, dz] : [0, 0, 0]);
+  }
+  viewer.setLayer(m.layer, m.parts, style);
+  const sub = m.parts.find((p) => p.subsheets !== undefined);
+  layerNote(m.layer, m.layer === 'subsheets' && sub ? `${sub.subsheets} subsheets` : '');
+  legend();
+}
+
+function layerFailed(m) {
+  if (requests.get(m.layer) !== m.id) return;
+  viewer.clearLayer(m.layer);
+  layerNote(m.layer, m.message);
+}
+
+function layerNote(layer, text) {
+  const el = document.querySelector(`[data-note="${layer}"]`);
+  if (el) el.textContent = text;
+}
+
+function planePos() {
+  const [lo, hi] = info ? info.bbox : [[0, 0, 0], [1, 1, 1]];
+  const a = state.plane.axis;
+  // Just beyond the ends so that 0 hides everything and 1 nothing.
+  const span = hi[a] - lo[a] || 1;
+  return lo[a] - 1e-6 * span + state.plane.t * span * (1 + 2e-6);
+}
+
+let directTimer = null;
+function planeChanged() {
+  viewer.setClip(state.plane.on, state.plane.axis, planePos());
+  viewer.setTypeMask(state.types);
+  clearTimeout(directTimer);
+  directTimer = setTimeout(() => build('direct'), 120); // the cut surface, recomputed by the core
+  saveFragment();
+}
+
+// -- sheet list ------------------------------------------------------------------------------
+/** planning.sheet_order: by type then size (largest first), by size, or by index. */
+function sheetOrder(sheets, by) {
+  const s = [...sheets];
+  if (by === 'TYPE') s.sort((a, b) => a.type - b.type || b.cells - a.cells || a.id - b.id);
+  else if (by === 'SIZE') s.sort((a, b) => b.cells - a.cells || a.id - b.id);
+  return s;
+}
+
+function sheetList() {
+  const body = $('sheet-rows');
+  body.textContent = '';
+  if (!info) return;
+  const rows = sheetOrder(info.sheets, state.sort).slice(0, 5000);
+  const frag = document.createDocumentFragment();
+  for (const s of rows) {
+    const tr = document.createElement('tr');
+    tr.dataset.sheet = s.id;
+    if (s.id === state.sheet) tr.className = 'picked';
+    const sw = `<span class="sw" style="background:${css(L.palette[L.spread[s.id % L.spread.length]])}"></span>`;
+    tr.innerHTML = `<td>${sw}${s.id}</td><td>${L.sheet_type_short[s.type]}</td><td>${s.cells}</td><td>${s.blocks}</td>`;
+    frag.appendChild(tr);
+  }
+  body.appendChild(frag);
+  $('sheet-count').textContent = `${info.sheets.length} sheets`;
+}
+
+function pickSheet(id) {
+  state.sheet = id;
+  state.layers.sheet = true;
+  if (info && info.sheets[id] && info.sheets[id].type === 3) state.layers.subsheets = state.layers.subsheets || false;
+  sheetList();
+  syncControls();
+  build('sheet');
+  build('subsheets');
+  if (state.wireScope === 'sheet') build('wireframe');
+  saveFragment();
+}
+
+// -- legend and Table 1 ------------------------------------------------------------------------
+/** planning.legend for the layers shown and this mesh's facts, then planning.palette_legend. */
+function legendEntries() {
+  const shown = LAYERS.filter((l) => state.layers[l] && viewer.layers.has(l));
+  const f = info ? info.facts : { non_hex_types: [], valences: [] };
+  const G = L.legend;
+  const out = [];
+  if (shown.includes('direct')) {
+    out.push(...G.direct);
+    for (const t of f.non_hex_types) out.push(...G.cell_type[t]);
+  }
+  if (shown.includes('graph')) {
+    for (const v of f.valences) out.push(...(G.valence[v] ?? [['valence_other', `Valence ${v} edge`]]));
+    if (f.has_pseudo) out.push(...G.pseudo);
+    if (f.has_non_manifold) out.push(...G.non_manifold);
+  }
+  if (shown.includes('blocks') && f.has_non_hex_blocks) out.push(...G.blocks);
+  if (shown.includes('sheet') || shown.includes('subsheets')) out.push(...G.highlights);
+  if (state.byKind && (shown.includes('wireframe') || shown.includes('subsheets'))) {
+    for (const t of f.non_hex_types) out.push(...G.wire_kind_type[t]);
+    out.push(...G.wire_kind_rest);
+  }
+  const seen = new Set();
+  for (const layer of shown) {
+    if (layer === 'wireframe' && state.byKind) continue;
+    for (const e of G.palette[layer] ?? []) {
+      if (!seen.has(e.join())) {
+        seen.add(e.join());
+        out.push(e);
+      }
+    }
+  }
+  return out;
+}
+
+function legend() {
+  const el = $('legend');
+  el.textContent = '';
+  for (const [key, words] of legendEntries()) {
+    const c = L.legend_colors[key];
+    const li = document.createElement('li');
+    li.innerHTML = `<span class="sw" style="background:${css(c)}"></span>`;
+    li.appendChild(document.createTextNode(words));
+    el.appendChild(li);
+  }
+}
+
+/** planning.table1_row: counts as integers, ratios as percentages, times in ms, missing as '-'. */
+function showTable1() {
+  const t = $('table1');
+  t.textContent = '';
+  if (!table1 || !results) return;
+  const stats = { ...results };
+  if (!('hex_component_ratio' in stats) && stats.components) stats.hex_component_ratio = (stats.hex_components ?? 0) / stats.components;
+  const head = document.createElement('tr');
+  const row = document.createElement('tr');
+  for (const c of table1) {
+    const th = document.createElement('th');
+    th.textContent = c.notation;
+    th.title = c.meaning;
+    head.appendChild(th);
+    const v = (c.timing ? timings ?? {} : stats)[c.key];
+    let text;
+    if (v == null || (Number.isInteger(v) && v < 0)) text = '-';
+    else if (c.timing) text = `${Math.round(1000 * v)} ms`;
+    else if (Number.isInteger(v)) text = String(v);
+    else text = `${(100 * v).toFixed(1)}%`;
+    const td = document.createElement('td');
+    td.textContent = text;
+    row.appendChild(td);
+  }
+  t.append(head, row);
+}
+
+// -- controls ------------------------------------------------------------------------------
+function syncControls() {
+  for (const layer of LAYERS) {
+    const box = document.querySelector(`input[data-layer="${layer}"]`);
+    if (box) box.checked = !!state.layers[layer];
+  }
+  $('shrink').value = state.shrink;
+  $('boundary-opacity').value = state.boundaryOpacity;
+  $('plane-on').checked = state.plane.on;
+  $('plane-axis').value = String(state.plane.axis);
+  $('plane-pos').value = state.plane.t;
+  $('wire-scope').value = state.wireScope;
+  $('wire-simplified').checked = state.simplified;
+  $('wire-kind').value = state.byKind ? 'KIND' : 'CLASS';
+  $('wire-floor').value = state.floor;
+  $('spread').checked = state.spread;
+  $('sheet-sort').value = state.sort;
+  document.querySelectorAll('input[data-type]').forEach((b) => { b.checked = state.types[+b.dataset.type]; });
+  const t = info && state.sheet >= 0 ? info.sheets[state.sheet] : null;
+  $('picked').textContent = t ? `Sheet ${t.id}: ${L.sheet_type_short[t.type]}, ${t.cells} cells, ${t.blocks} blocks` : 'No sheet picked';
+  viewer.setClip(state.plane.on, state.plane.axis, planePos());
+  viewer.setTypeMask(state.types);
+}
+
+function buildControls() {
+  const list = $('layers');
+  for (const layer of LAYERS) {
+    const li = document.createElement('li');
+    li.innerHTML = `<label><input type="checkbox" data-layer="${layer}"> ${LAYER_TITLES[layer]}</label> <span class="note" data-note="${layer}"></span>`;
+    list.appendChild(li);
+  }
+  list.addEventListener('change', (e) => {
+    const layer = e.target.dataset.layer;
+    if (!layer) return;
+    state.layers[layer] = e.target.checked;
+    build(layer);
+    saveFragment();
+  });
+  const types = $('types');
+  L.cell_type_names.forEach((name, t) => {
+    const label = document.createElement('label');
+    label.innerHTML = `<input type="checkbox" data-type="${t}" checked> <span class="sw" style="background:${css(L.cell_type_colors[t])}"></span>${name}`;
+    types.appendChild(label);
+  });
+  types.addEventListener('change', (e) => {
+    if (e.target.dataset.type === undefined) return;
+    state.types[+e.target.dataset.type] = e.target.checked;
+    planeChanged();
+  });
+  $('shrink').addEventListener('change', (e) => {
+    state.shrink = +e.target.value;
+    for (const l of ['blocks', 'sheets', 'sheet', 'subsheets']) build(l);
+    saveFragment();
+  });
+  $('boundary-opacity').addEventListener('input', (e) => {
+    state.boundaryOpacity = +e.target.value;
+    viewer.setBoundaryOpacity(state.boundaryOpacity);
+    saveFragment();
+  });
+  $('plane-on').addEventListener('change', (e) => { state.plane.on = e.target.checked; planeChanged(); });
+  $('plane-axis').addEventListener('change', (e) => { state.plane.axis = +e.target.value; planeChanged(); });
+  $('plane-pos').addEventListener('input', (e) => { state.plane.t = +e.target.value; planeChanged(); });
+  const wire = () => { build('wireframe'); build('subsheets'); saveFragment(); };
+  $('wire-scope').addEventListener('change', (e) => { state.wireScope = e.target.value; wire(); });
+  $('wire-simplified').addEventListener('change', (e) => { state.simplified = e.target.checked; wire(); });
+  $('wire-kind').addEventListener('change', (e) => { state.byKind = e.target.value === 'KIND'; wire(); });
+  $('wire-floor').addEventListener('change', (e) => { state.floor = +e.target.value; wire(); });
+  $('spread').addEventListener('change', (e) => { state.spread = e.target.checked; build('subsheets'); saveFragment(); });
+  $('sheet-sort').addEventListener('change', (e) => { state.sort = e.target.value; sheetList(); });
+  $('sheet-rows').addEventListener('click', (e) => {
+    const tr = e.target.closest('tr');
+    if (tr) pickSheet(+tr.dataset.sheet);
+  });
+  $('snapshot').addEventListener('click', snapshot);
+  $('reset-view').addEventListener('click', () => info && viewer.frame(info.bbox));
+}
+
+function snapshot() {
+  const a = document.createElement('a');
+  a.href = viewer.snapshot();
+  a.download = `${($('mesh-name').textContent || 'hbc').replace(/[^\w.-]+/g, '_')}.png`;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+}
+
+// -- the view in the URL fragment ------------------------------------------------------------
+// Keys: cam (position, target, up: 9 numbers), layers (keys shown), sheet, shrink, opacity,
+// plane (axis x|y|z and position 0..1, absent when off), types (5 digits 0/1 by cell type),
+// wire (all|sheet), simplified (0|1), colors (class|kind), floor, spread (0|1).
+let fragTimer = null;
+function saveFragment() {
+  if (!info) return;
+  clearTimeout(fragTimer);
+  fragTimer = setTimeout(() => {
+    const q = new URLSearchParams();
+    q.set('cam', viewer.getView().map((x) => +x.toPrecision(6)).join(','));
+    q.set('layers', LAYERS.filter((l) => state.layers[l]).join(','));
+    if (state.sheet >= 0) q.set('sheet', state.sheet);
+    q.set('shrink', state.shrink);
+    q.set('opacity', state.boundaryOpacity);
+    if (state.plane.on) q.set('plane', `${'xyz'[state.plane.axis]},${state.plane.t}`);
+    q.set('types', state.types.map((b) => (b ? 1 : 0)).join(''));
+    q.set('wire', state.wireScope);
+    q.set('simplified', state.simplified ? 1 : 0);
+    q.set('colors', state.byKind ? 'kind' : 'class');
+    q.set('floor', state.floor);
+    q.set('spread', state.spread ? 1 : 0);
+    history.replaceState(null, '', `${location.pathname}${location.search}#${q.toString().replace(/%2C/g, ',')}`);
+  }, 200);
+}
+
+function applyFragment(text) {
+  const q = new URLSearchParams(text);
+  const num = (k, d) => (q.has(k) && Number.isFinite(+q.get(k)) ? +q.get(k) : d);
+  if (q.has('layers')) {
+    const on = new Set(q.get('layers').split(',').filter(Boolean));
+    for (const l of LAYERS) state.layers[l] = on.has(l);
+  }
+  state.sheet = info && num('sheet', -1) < info.sheets.length ? Math.trunc(num('sheet', -1)) : -1;
+  state.shrink = num('shrink', state.shrink);
+  state.boundaryOpacity = num('opacity', state.boundaryOpacity);
+  if (q.has('plane')) {
+    const [axis, t] = q.get('plane').split(',');
+    state.plane = { on: true, axis: Math.max(0, 'xyz'.indexOf(axis)), t: Number.isFinite(+t) ? +t : 0.5 };
+  } else state.plane.on = false;
+  if (q.has('types')) state.types = [...q.get('types').padEnd(5, '1')].slice(0, 5).map((c) => c !== '0');
+  if (q.has('wire')) state.wireScope = q.get('wire') === 'sheet' ? 'sheet' : 'all';
+  state.simplified = num('simplified', 1) !== 0;
+  state.byKind = q.get('colors') === 'kind';
+  state.floor = num('floor', state.floor);
+  state.spread = num('spread', 1) !== 0;
+  viewer.frame(info.bbox);
+  if (q.has('cam')) viewer.setView(q.get('cam').split(',').map(Number));
+}
+
+// -- opening -------------------------------------------------------------------------------
+async function filesFromList(list) {
+  const all = [...list].map((f) => ({ file: f, path: f.webkitRelativePath || f.name }));
+  return keepMeshFiles(all);
+}
+
+/** Of a folder's files, an OpenFOAM case's polyMesh (and .foam file) when there is one. */
+async function keepMeshFiles(all) {
+  let files = all;
+  if (all.length > 1) {
+    const poly = all.filter((f) => /(^|\/)polyMesh\/[^/]+$/.test(f.path) || /\.foam$/i.test(f.path));
+    if (poly.length) files = poly;
+  }
+  return Promise.all(files.map(async (f) => ({ path: f.path, buffer: await f.file.arrayBuffer() })));
+}
+
+function nameOf(files) {
+  if (files.length === 1) return files[0].path.split('/').pop();
+  return files[0].path.split('/')[0] || 'case';
+}
+
+async function openList(list) {
+  if (!list || !list.length) return;
+  const files = await filesFromList(list);
+  openFiles(nameOf(files), files);
+}
+
+/** Dropped entries, folders read recursively (an OpenFOAM case dropped as a folder). */
+async function droppedFiles(items) {
+  const out = [];
+  const walk = async (entry, prefix) => {
+    if (entry.isFile) {
+      out.push({ file: await new Promise((res, rej) => entry.file(res, rej)), path: prefix + entry.name });
+    } else if (entry.isDirectory) {
+      const reader = entry.createReader();
+      for (;;) {
+        const batch = await new Promise((res, rej) => reader.readEntries(res, rej));
+        if (!batch.length) break;
+        for (const e of batch) await walk(e, prefix + entry.name + '/');
+      }
+    }
+  };
+  const entries = [...items].map((i) => (i.webkitGetAsEntry ? i.webkitGetAsEntry() : null)).filter(Boolean);
+  for (const e of entries) await walk(e, '');
+  return keepMeshFiles(out);
+}
+
+function setupOpening() {
+  $('file').addEventListener('change', (e) => { openList(e.target.files); e.target.value = ''; });
+  $('folder').addEventListener('change', (e) => { openList(e.target.files); e.target.value = ''; });
+  const drop = $('drop');
+  window.addEventListener('dragover', (e) => { e.preventDefault(); drop.hidden = false; });
+  window.addEventListener('dragleave', (e) => { if (!e.relatedTarget) drop.hidden = true; });
+  window.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    drop.hidden = true;
+    const files = e.dataTransfer.items ? await droppedFiles(e.dataTransfer.items) : await filesFromList(e.dataTransfer.files);
+    if (files.length) openFiles(nameOf(files), files);
+  });
+}
+
+function base64Bytes(text) {
+  const bin = atob(text.replace(/\s+/g, ''));
+  const bytes = new Uint8Array(bin.length);
+  for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+  return bytes;
+}
+
+async function start() {
+  buildControls();
+  setupOpening();
+  syncControls();
+  legend();
+  if (location.hash.length > 1) pendingView = location.hash.slice(1);
+  const embedded = $('hbc-embedded-mesh');
+  const params = new URLSearchParams(location.search);
+  if (embedded && embedded.textContent.trim()) {
+    const name = embedded.dataset.name || 'mesh';
+    if (embedded.dataset.title) document.title = embedded.dataset.title;
+    const bytes = base64Bytes(embedded.textContent);
+    openFiles(name, [{ path: name, buffer: bytes.buffer }]);
+  } else if (params.has('mesh')) {
+    const url = params.get('mesh');
+    const name = params.get('name') || decodeURIComponent(url.split(/[?#]/)[0].split('/').pop() || 'mesh');
+    setState('loading');
+    showProgress(0.01, 'Fetching ' + url);
+    try {
+      const r = await fetch(url);
+      if (!r.ok) throw new Error(`${url}: ${r.status} ${r.statusText}`);
+      openFiles(name, [{ path: name, buffer: await r.arrayBuffer() }]);
+    } catch (e) {
+      failed(`${url}: could not be fetched (${e.message})`);
+    }
+  } else {
+    setState('idle');
+    $('status').textContent = 'Open a mesh: drop a file or folder here, or use the buttons.';
+  }
+}
+
+window.hbcViewer = {
+  load: (name, buffer) => openFiles(name, [{ path: name, buffer }]),
+  get state() { return document.body.dataset.state; },
+  get results() { return results; },
+  viewer,
+};
+
+start();
