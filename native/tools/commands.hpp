@@ -19,6 +19,7 @@ namespace hbc::cli {
 void add_info(CLI::App& app);
 void add_generate(CLI::App& app);
 void add_export_surface(CLI::App& app);
+void add_export_html(CLI::App& app);
 void add_analyze(CLI::App& app);
 void add_wireframe(CLI::App& app);
 void add_sheets(CLI::App& app);

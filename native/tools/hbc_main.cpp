@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   hbc::cli::add_check(app);
   hbc::cli::add_generate(app);
   hbc::cli::add_export_surface(app);
+  hbc::cli::add_export_html(app);
   hbc::cli::add_wireframe(app);
   try {
     app.parse(argc, argv);  // runs the chosen command's callback
