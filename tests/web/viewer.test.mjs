@@ -1,0 +1,248 @@
+// The web viewer (build/web/viewer.html, made by scripts/build_web.sh) in a real browser: Debian's
+// chromium driven by playwright-core. The page's contract: `viewer.html?mesh=URL` loads a mesh from
+// its own origin, a page written by `hbc export-html` loads the mesh embedded in it; when the
+// analysis is done, body[data-state] is "ready" and #hbc-results holds the keys and values of
+// `hbc analyze --json` minus `timings`; a refused file gives state "error" and the CLI's message in
+// #hbc-error; #plane-on / #plane-pos move a slicing plane. Every test also asserts that the page
+// logged no console error and threw no uncaught error.
+//
+// Run: node tests/web/viewer.test.mjs (ctest's web_viewer does). Environment: HBC_CLI (the hbc
+// binary), HBC_VIEWER (the page), HBC_DATA_DIR (the shared meshes), HBC_CHROMIUM (the browser).
+// Without the page the run is skipped (exit 77, which ctest reports as skipped) unless
+// HBC_WEB_REQUIRED=1 (scripts/test.sh builds the page, so there it fails).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync, mkdirSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve, sep } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { decodePng, nonBackgroundShare, changedShare } from './png.mjs';
+
+const HERE = dirname(fileURLToPath(import.meta.url));
+const ROOT = resolve(HERE, '../..');
+const VIEWER = resolve(process.env.HBC_VIEWER || join(ROOT, 'build/web/viewer.html'));
+const CLI = process.env.HBC_CLI || join(ROOT, 'build/bin/hbc');
+const DATA = process.env.HBC_DATA_DIR || resolve(ROOT, '../shared/data');
+const CHROMIUM = process.env.HBC_CHROMIUM || '/usr/bin/chromium';
+const TEAPOT = join(DATA, 'hybrid-base-complex/teapot.hedra');
+const LOAD_TIMEOUT = 120_000;
+
+if (!existsSync(VIEWER)) {
+  const why = `no viewer page at ${VIEWER}; build it with \`bash scripts/build_web.sh\``;
+  if (process.env.HBC_WEB_REQUIRED === '1') {
+    console.error(`web_viewer: FAILED: ${why} (HBC_WEB_REQUIRED=1)`);
+    process.exit(1);
+  }
+  console.log(`web_viewer: SKIPPED: ${why}`);
+  process.exit(77);
+}
+for (const [what, path] of [['hbc (HBC_CLI)', CLI], ['chromium (HBC_CHROMIUM)', CHROMIUM], ['teapot', TEAPOT]])
+  if (!existsSync(path)) throw new Error(`${what} not found at ${path}`);
+let chromium;
+try {
+  ({ chromium } = await import('playwright-core'));
+} catch (e) {
+  throw new Error(`playwright-core is not installed: run \`npm ci\` in tests/web (${e.message})`);
+}
+
+// -- fixtures: a folder served over HTTP, the meshes in it, the CLI's answers -------------------
+const work = mkdtempSync(join(tmpdir(), 'hbc-webtest-'));
+let server, origin, browser;
+
+function hbc(args, options = {}) {
+  return execFileSync(CLI, args, { cwd: work, encoding: 'utf8', ...options });
+}
+
+// `hbc analyze --json NAME` run in the served folder, so its file name is the page's; minus timings.
+function expectedResults(name) {
+  const json = JSON.parse(hbc(['analyze', '--json', name]));
+  delete json.timings;
+  return json;
+}
+
+// The CLI's message for a file it refuses, without its "hbc: error: " prefix.
+function cliError(name) {
+  const r = spawnSync(CLI, ['analyze', name], { cwd: work, encoding: 'utf8' });
+  assert.equal(r.status, 2, `hbc analyze ${name} should refuse the file: ${r.stderr}`);
+  return r.stderr.trim().replace(/^hbc: error: /, '');
+}
+
+function serve(root) {
+  const types = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript' };
+  return createServer((req, res) => {
+    const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    if (path === '/favicon.ico') return res.writeHead(204).end();
+    const file = resolve(root, '.' + path);
+    if (!file.startsWith(root + sep) || !existsSync(file)) return res.writeHead(404).end();
+    const ext = file.slice(file.lastIndexOf('.'));
+    res.writeHead(200, { 'content-type': types[ext] ?? 'application/octet-stream' }).end(readFileSync(file));
+  });
+}
+
+before(async () => {
+  symlinkSync(VIEWER, join(work, 'viewer.html'));
+  symlinkSync(TEAPOT, join(work, 'teapot.hedra'));
+  // A small mesh with pyramids among its hexahedra: the non-hex paths of every stage.
+  hbc(['generate', 'split', '--size', '4', '3', '3', '--split', 'pyramids', '--random', '5', '--seed', '7',
+       '-o', 'split.mesh']);
+  // The same mesh with one vertex index of a cell spoiled: refused with its line.
+  const lines = readFileSync(join(work, 'split.mesh'), 'utf8').split('\n');
+  const at = lines.findIndex((l) => /^\s*Hexahedra\s*$/.test(l)) + 2;
+  assert.ok(at > 1, 'split.mesh has a Hexahedra section');
+  lines[at] = lines[at].replace(/^\s*\d+/, 'x');
+  writeFileSync(join(work, 'broken.mesh'), lines.join('\n'));
+  server = serve(work);
+  await new Promise((ok) => server.listen(0, '127.0.0.1', ok));
+  origin = `http://127.0.0.1:${server.address().port}`;
+  // SwiftShader: WebGL without a GPU, as on the test machines.
+  browser = await chromium.launch({
+    executablePath: CHROMIUM,
+    args: ['--no-sandbox', '--enable-unsafe-swiftshader', '--use-angle=swiftshader', '--ignore-gpu-blocklist'],
+  });
+});
+
+after(async () => {
+  await browser?.close();
+  server?.close();
+  rmSync(work, { recursive: true, force: true });
+});
+
+// -- the page -----------------------------------------------------------------------------------
+// A fresh page that records console errors and uncaught errors (the page's and its workers').
+async function openPage(url) {
+  const context = await browser.newContext({ viewport: { width: 1200, height: 800 } });
+  const page = await context.newPage();
+  const errors = [];
+  const onConsole = (m) => { if (m.type() === 'error') errors.push(`console.error: ${m.text()}`); };
+  page.on('console', onConsole);
+  page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
+  page.on('worker', (w) => w.on('console', onConsole));
+  await page.goto(url);
+  return { page, errors, close: () => context.close() };
+}
+
+// Waits until the page is no longer loading; returns its state.
+async function settled(page) {
+  await page.waitForFunction(() => ['ready', 'error'].includes(document.body.dataset.state), null,
+    { timeout: LOAD_TIMEOUT });
+  return page.evaluate(() => document.body.dataset.state);
+}
+
+async function pageResults(page) {
+  const text = await page.locator('#hbc-results').textContent();
+  return JSON.parse(text);
+}
+
+// The page's results equal the CLI's, key order included.
+function assertSameResults(got, want) {
+  assert.deepStrictEqual(got, want);
+  assert.deepStrictEqual(Object.keys(got), Object.keys(want));
+}
+
+async function canvasShot(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  return decodePng(await page.locator('#hbc-canvas canvas').first().screenshot());
+}
+
+// Screenshots until `ok(image)` holds (the layers arrive from the worker after the analysis).
+async function shotUntil(page, ok, what) {
+  const end = Date.now() + 60_000;
+  let img;
+  do {
+    img = await canvasShot(page);
+    if (ok(img)) return img;
+    await page.waitForTimeout(250);
+  } while (Date.now() < end);
+  assert.fail(`the canvas never showed ${what}`);
+}
+
+// A screenshot once the picture has stopped changing (the cut layer comes from the worker): two
+// shots 400 ms apart equal.
+async function stableShot(page) {
+  let last = await canvasShot(page);
+  for (let i = 0; i < 100; i++) {
+    await page.waitForTimeout(400);
+    const img = await canvasShot(page);
+    if (changedShare(last, img) === 0) return img;
+    last = img;
+  }
+  assert.fail('the canvas never settled');
+}
+
+// -- the tests ----------------------------------------------------------------------------------
+test('teapot by ?mesh=: #hbc-results equals hbc analyze --json minus timings', { timeout: 180_000 }, async () => {
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=teapot.hedra`);
+  assert.equal(await settled(page), 'ready', await page.locator('#hbc-error').textContent());
+  assertSameResults(await pageResults(page), expectedResults('teapot.hedra'));
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+test('a generated mesh with pyramids: #hbc-results equals hbc analyze --json', { timeout: 180_000 }, async () => {
+  const want = expectedResults('split.mesh');
+  assert.ok(JSON.stringify(want).length > 0);
+  const info = JSON.parse(hbc(['info', '--json', 'split.mesh']));
+  assert.ok(JSON.stringify(info).includes('pyramid'), 'the generated mesh holds pyramids');
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=split.mesh`);
+  assert.equal(await settled(page), 'ready', await page.locator('#hbc-error').textContent());
+  assertSameResults(await pageResults(page), want);
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+test('the canvas shows the mesh, and moving the slicing plane changes the picture', { timeout: 180_000 }, async () => {
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=teapot.hedra`);
+  assert.equal(await settled(page), 'ready');
+  // Not blank: at least 2% of the pixels are not the background colour, in more than 16 colours.
+  const drawn = (img) => { const s = nonBackgroundShare(img); return s.share > 0.02 && s.colours > 16; };
+  await shotUntil(page, drawn, 'the mesh');
+  await page.locator('#plane-on').check();
+  const setPlane = (t) => page.evaluate((t) => {
+    const input = document.getElementById('plane-pos');
+    input.value = String(t);
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+  }, t);
+  await setPlane(0.7);
+  const cutAt07 = await stableShot(page);
+  assert.ok(drawn(cutAt07), 'the cut mesh is drawn');
+  await setPlane(0.3);
+  // Moved: more than 0.5% of the pixels change colour.
+  await shotUntil(page, (img) => changedShare(cutAt07, img) > 0.005, 'a change after moving the plane');
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+test('a page written by hbc export-html opens from file:// with the same #hbc-results', { timeout: 180_000 }, async () => {
+  mkdirSync(join(work, 'exported'), { recursive: true });
+  // The viewer found through HBC_VIEWER for one, --viewer for the other.
+  hbc(['export-html', 'teapot.hedra', '-o', 'exported/teapot.html'], { env: { ...process.env, HBC_VIEWER: VIEWER } });
+  hbc(['export-html', 'split.mesh', '-o', 'exported/split.html', '--viewer', VIEWER]);
+  for (const name of ['teapot', 'split']) {
+    const ext = name === 'teapot' ? '.hedra' : '.mesh';
+    const { page, errors, close } = await openPage(pathToFileURL(join(work, 'exported', name + '.html')).href);
+    assert.equal(await settled(page), 'ready', await page.locator('#hbc-error').textContent());
+    assertSameResults(await pageResults(page), expectedResults(name + ext));
+    assert.deepEqual(errors, []);
+    await close();
+  }
+});
+
+test('a broken file shows the CLI error text with file and line; then a good file opens', { timeout: 180_000 }, async () => {
+  const message = cliError('broken.mesh');
+  assert.match(message, /^broken\.mesh:\d+/, 'the CLI names file and line');
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=broken.mesh`);
+  assert.equal(await settled(page), 'error');
+  const shown = await page.locator('#hbc-error').textContent();
+  assert.ok(shown.includes(message), `#hbc-error says\n  ${shown}\nthe CLI says\n  ${message}`);
+  assert.equal(await page.locator('#hbc-error').isVisible(), true);
+  // The page keeps working: a good file through the file picker.
+  await page.locator('#file').setInputFiles(TEAPOT);
+  await page.waitForFunction(() => document.body.dataset.state !== 'error', null, { timeout: LOAD_TIMEOUT });
+  assert.equal(await settled(page), 'ready', await page.locator('#hbc-error').textContent());
+  assertSameResults(await pageResults(page), expectedResults('teapot.hedra'));
+  assert.equal(await page.locator('#hbc-error').isVisible(), false);
+  assert.deepEqual(errors, []);
+  await close();
+});
