@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "hbc/error.hpp"
 
 namespace hbc::cli {
 namespace {
@@ -104,9 +105,16 @@ struct Embedded {
 };
 Embedded embedded_mesh(const InputArgs& in, const Mesh& mesh) {
   const fs::path path(in.file);
-  const Format format = fs::is_regular_file(path) ? format_from_path(in.file) : Format::Foam;
-  const bool as_read = format != Format::Foam && !in.skip_invalid &&
-                       (in.format.empty() || in.parsed_format() == format);
+  Format by_name = Format::Foam;  // a folder is a case
+  if (fs::is_regular_file(path)) {
+    try {
+      by_name = format_from_path(in.file);
+    } catch (const InputError&) {
+      by_name = Format::Auto;  // read by --format; its name would not tell the page the format
+    }
+  }
+  const bool as_read = by_name != Format::Foam && by_name != Format::Auto && !in.skip_invalid &&
+                       (in.format.empty() || in.parsed_format() == by_name);
   if (as_read) return {path.filename().string(), read_file_bytes(in.file)};
   std::string stem = fs::is_directory(path) ? fs::absolute(path).lexically_normal().filename().string() : path.stem().string();
   if (stem.empty()) stem = "mesh";

@@ -114,6 +114,23 @@ TEST_F(CliExportHtml, EmbedsAFoamCaseAsOvm) {
   EXPECT_EQ(from_page, from_case);
 }
 
+// A file whose name does not tell its format (read with --format) is embedded as .ovm too: the page
+// picks the reader by the name's extension.
+TEST_F(CliExportHtml, EmbedsAFileReadByFormatAsOvm) {
+  write_file(dir_ / "s.txt", mesh_text_);
+  const test::CliRun r =
+      run_cli("export-html " + q(dir_ / "s.txt") + " --format mesh -o " + q(dir_ / "t.html") + " --viewer " + q(tpl_));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Embedded e = embedded(dir_ / "t.html");
+  EXPECT_EQ(e.name, "s.ovm");
+  write_file(dir_ / e.name, e.bytes);
+  nlohmann::json from_page = run_cli("info --json " + q(dir_ / e.name)).json();
+  nlohmann::json from_file = run_cli("info --json --format mesh " + q(dir_ / "s.txt")).json();
+  from_page.erase("file");
+  from_file.erase("file");
+  EXPECT_EQ(from_page, from_file);
+}
+
 // A bad mesh fails as in every other command (exit 2, file and line), before any page is written.
 TEST_F(CliExportHtml, BadMeshExits2WithItsLine) {
   write_file(dir_ / "bad.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\nx\n");
