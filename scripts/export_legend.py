@@ -44,6 +44,14 @@ def table1():
         return None
 
 
+def subsheet_notes():
+    """planning.subsheets_unavailable per sheet type (its words name the type: the compiled module)."""
+    try:
+        return {str(t): P.subsheets_unavailable(t) for t in range(len(P.SHEET_TYPE_SHORT))}
+    except Exception:
+        return None
+
+
 def main(out: str) -> None:
     types = range(1, len(P.CELL_TYPE_NAMES))
     data = {
@@ -85,6 +93,7 @@ def main(out: str) -> None:
             "palette": {layer: entries(P.palette_legend([layer])) for layer, _ in P.LAYERS},
         },
         "table1": table1(),
+        "subsheets_unavailable": subsheet_notes(),
     }
     pathlib.Path(out).write_text(json.dumps(data, separators=(",", ":")) + "\n")
 

@@ -28,6 +28,7 @@ let results = null;
 let timings = null;
 let table1 = null;
 let pendingView = null;
+let firstFrame = null; // layers still to arrive before the page says "ready"
 const requests = new Map(); // layer -> latest request id
 let nextId = 1;
 
@@ -59,6 +60,7 @@ function showProgress(fraction, text) {
 
 /** Opens files [{path, buffer}] named `name` (a file name, or a case folder's). */
 function openFiles(name, files) {
+  firstFrame = null;
   setState('loading');
   $('hbc-results').textContent = '';
   $('hbc-error').hidden = true;
@@ -86,7 +88,19 @@ function ready(m) {
   sheetList();
   showTable1();
   syncControls();
+  // "ready" once the first layers are drawn: a screenshot taken then shows the mesh.
+  firstFrame = new Set(LAYERS.filter((l) => state.layers[l] && !((l === 'sheet' || l === 'subsheets') && state.sheet < 0)));
   rebuildAll();
+  settle();
+}
+
+/** Marks the page ready when no first layer is still on its way. */
+function settle(layer) {
+  if (!firstFrame) return;
+  if (layer) firstFrame.delete(layer);
+  if (firstFrame.size) return;
+  firstFrame = null;
+  viewer.renderNow();
   setState('ready');
 }
 
@@ -144,18 +158,25 @@ function layerArrived(m) {
     const [lo, hi] = info.bbox;
     const dx = (hi[0] - lo[0]) * (1 + L.spread_gap);
     const dz = -(hi[2] - lo[2]) * (1 + L.spread_gap);
-    style.offset = (p) => (p.subsheet >= 0 ? [dx * p.subsheet, 0, dz] : [0, 0, 0]);
+    style.offset = (p) => (p.subsheet >= 0 ? [dx * p.subsheet, 0, p.below ? dz : 0] : [0, 0, 0]);
   }
   viewer.setLayer(m.layer, m.parts, style);
   const sub = m.parts.find((p) => p.subsheets !== undefined);
-  layerNote(m.layer, m.layer === 'subsheets' && sub ? `${sub.subsheets} subsheets` : '');
+  let note = '';
+  if (m.layer === 'subsheets') {
+    const t = info.sheets[state.sheet]?.type;
+    note = sub ? `${sub.subsheets} subsheets` : L.subsheets_unavailable?.[t] ?? 'only self-intersecting (type 3) sheets have subsheets';
+  }
+  layerNote(m.layer, note);
   legend();
+  settle(m.layer);
 }
 
 function layerFailed(m) {
   if (requests.get(m.layer) !== m.id) return;
   viewer.clearLayer(m.layer);
   layerNote(m.layer, m.message);
+  settle(m.layer);
 }
 
 function layerNote(layer, text) {

@@ -54,7 +54,7 @@ async function open({ name, files }) {
   c.removeTree('/in');
   c.M.FS.mkdir('/in');
   progress(0.1, 'Reading ' + name);
-  c.writeFiles(files.map((f) => ({ path: f.path, buffer: f.buffer })));
+  c.writeFiles(files.map((f) => ({ path: 'in/' + f.path, buffer: f.buffer })));
   const path = loadPath(files);
   let mesh;
   let analysis;
@@ -280,13 +280,15 @@ function buildSubsheets(p) {
   const sub = core.subsheets(S.analysis, i);
   const count = Number(sub.count ?? arr(sub, 'count'));
   const soup = core.blockSoup(S.mesh, S.analysis, 'subsheets', i, p.shrink);
-  const parts = [soupPart(soup, (o) => spreadColor(o), { cellTypes: S.cellTypes, name: 'subsheets' })];
   const un = csr(sub, 'subsheet_unmatched_vertices');
-  const all = [];
-  for (let k = 0; k < count; k++) all.push(...row(un, k));
-  if (all.length) parts.push(dotsPart(S.points, all, L.unmatched_color, 'unmatched'));
-  if (p.subsheetWires) {
-    for (let k = 0; k < count; k++) parts.push(...buildWireframe({ ...p, sheet: i, subsheet: k }));
+  const parts = [];
+  // One part per subsheet, so that the page can lay them out side by side.
+  for (let k = 0; k < count; k++) {
+    const one = selectOwners(soup, new Set([k]));
+    parts.push({ ...soupPart(one, () => spreadColor(k), { cellTypes: S.cellTypes, name: `subsheet ${k}` }), subsheet: k });
+    const dots = row(un, k);
+    if (dots.length) parts.push({ ...dotsPart(S.points, dots, L.unmatched_color, `subsheet ${k} unmatched`), subsheet: k });
+    if (p.subsheetWires) parts.push(...buildWireframe({ ...p, sheet: i, subsheet: k }).map((w) => ({ ...w, below: true })));
   }
   core.free(sub);
   return parts.map((q) => ({ ...q, subsheets: count }));
