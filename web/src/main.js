@@ -135,6 +135,7 @@ function build(layer) {
   if (!state.layers[layer] || ((layer === 'sheet' || layer === 'subsheets') && state.sheet < 0)) {
     viewer.clearLayer(layer);
     requests.delete(layer);
+    if (layer === 'subsheets') subsheetList([]);
     layerNote(layer, '');
     legend();
     return;
@@ -165,11 +166,24 @@ function layerArrived(m) {
   let note = '';
   if (m.layer === 'subsheets') {
     const t = info.sheets[state.sheet]?.type;
-    note = sub ? `${sub.subsheets} subsheets` : L.subsheets_unavailable?.[t] ?? 'only self-intersecting (type 3) sheets have subsheets';
+    note = sub ? `${sub.subsheets.length} subsheets` : L.subsheets_unavailable?.[t] ?? 'only self-intersecting (type 3) sheets have subsheets';
+    subsheetList(sub ? sub.subsheets : []);
   }
   layerNote(m.layer, note);
   legend();
   settle(m.layer);
+}
+
+/** The picked sheet's subsheets: class and cells, in the colours the layer draws them. */
+function subsheetList(list) {
+  const el = $('subsheet-list');
+  el.textContent = '';
+  list.forEach((s, k) => {
+    const li = document.createElement('li');
+    li.innerHTML = `<span class="sw" style="background:${css(L.palette[L.spread[k % L.spread.length]])}"></span>`;
+    li.appendChild(document.createTextNode(`subsheet ${k}: ${L.sheet_type_short[s.type]}, ${s.cells} cells`));
+    el.appendChild(li);
+  });
 }
 
 function layerFailed(m) {

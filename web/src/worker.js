@@ -194,7 +194,7 @@ function buildBlocks(p) {
 function buildSheets(p) {
   const sc = csr(S.analysis, 'sheet_cells');
   const total = sc.offsets[sc.offsets.length - 1];
-  if (total > (p.maxCells ?? 3e6)) {
+  if (total > (p.maxCells ?? 1.5e6)) {
     throw new Error(`All sheets together hold ${total} cells, too many to draw at once here: pick a sheet instead.`);
   }
   const soup = core.blockSoup(S.mesh, S.analysis, 'sheets', -1, p.shrink);
@@ -281,6 +281,9 @@ function buildSubsheets(p) {
   const count = Number(sub.count ?? arr(sub, 'count'));
   const soup = core.blockSoup(S.mesh, S.analysis, 'subsheets', i, p.shrink);
   const un = csr(sub, 'subsheet_unmatched_vertices');
+  const types = arr(sub, 'subsheet_type');
+  const cells = csr(sub, 'subsheet_cells').offsets;
+  const list = Array.from({ length: count }, (_, k) => ({ type: types[k], cells: cells[k + 1] - cells[k] }));
   const parts = [];
   // One part per subsheet, so that the page can lay them out side by side.
   for (let k = 0; k < count; k++) {
@@ -291,7 +294,7 @@ function buildSubsheets(p) {
     if (p.subsheetWires) parts.push(...buildWireframe({ ...p, sheet: i, subsheet: k }).map((w) => ({ ...w, below: true })));
   }
   core.free(sub);
-  return parts.map((q) => ({ ...q, subsheets: count }));
+  return parts.map((q) => ({ ...q, subsheets: list }));
 }
 
 /** A VSG wireframe (of the mesh, a sheet or a subsheet): colour class or non-hex kind, per-point
