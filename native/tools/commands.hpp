@@ -28,6 +28,7 @@ void add_export_vtu(CLI::App& app);
 void add_quality(CLI::App& app);
 void add_check(CLI::App& app);
 void add_metrics(CLI::App& app);
+void add_compare(CLI::App& app);
 
 // The mesh file every reading command takes: FILE, --format NAME (default: by extension) and
 // --threads N (default: HBC_THREADS, else every core; the results are the same for any number).

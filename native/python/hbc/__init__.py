@@ -43,6 +43,7 @@ from ._core import (
     load,
     polylines,
 )
+from .comparison import compare  # hbc compare from Python (docs/compare.md)
 
 __all__ = [
     "Mesh", "MeshFormatError", "load", "check", "__version__",
@@ -50,5 +51,5 @@ __all__ = [
     "cell_quality", "cell_depth", "cell_centroids", "kept_surface_soup",
     "Field", "STAT_FIELDS", "TIMING_FIELDS", "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS",
     "SHEET_TYPES", "CELL_TYPES", "COMPONENT_KINDS", "FORMATS",
-    "MetricField", "METRIC_FIELDS", "SUMMARY_FIELDS",
+    "MetricField", "METRIC_FIELDS", "SUMMARY_FIELDS", "compare",
 ]

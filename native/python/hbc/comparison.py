@@ -1,0 +1,54 @@
+"""``hbc.compare``: the ``hbc compare`` command from Python (docs/compare.md).
+
+Runs the command, which measures the meshes (one child process each), writes metrics.json,
+metrics.csv, metrics.tex and, through ``python -m hbc.report``, report.html; returns metrics.json.
+Imports nothing beyond the standard library, so ``import hbc`` stays as light as before.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+
+class CompareError(RuntimeError):
+    """hbc compare could not run, or (with check=True) a mesh or the report failed."""
+
+
+def find_cli() -> str:
+    """The ``hbc`` command: $HBC_CLI, else BUILD/bin/hbc beside this package's build folder, else PATH."""
+    env = os.environ.get("HBC_CLI")
+    if env:
+        return env
+    beside = pathlib.Path(__file__).resolve().parent.parent.parent / "bin" / "hbc"
+    if beside.is_file():
+        return str(beside)
+    found = shutil.which("hbc")
+    if found:
+        return found
+    raise CompareError("the hbc command is not found (set HBC_CLI to its path)")
+
+
+def compare(paths, out, names=None, figures: bool = False, jobs: int = 2, check: bool = False) -> dict:
+    """Runs ``hbc compare`` on ``paths`` into the folder ``out`` and returns its metrics.json as a
+    dict (``["errors"]`` names the meshes that failed; their values are None). The report is drawn
+    by this interpreter unless HBC_PYTHON says otherwise. With check=True a failed mesh or report
+    raises CompareError; otherwise the outputs are returned as they are."""
+    cmd = [find_cli(), "compare", *map(str, paths), "-o", str(out), "-j", str(jobs)]
+    if names:
+        cmd += ["--names", ",".join(names)]
+    if figures:
+        cmd.append("--figures")
+    env = dict(os.environ)
+    env.setdefault("HBC_PYTHON", sys.executable)
+    run = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    if run.returncode not in (0, 2) or (check and run.returncode != 0):
+        raise CompareError(f"hbc compare failed (exit status {run.returncode}):\n{run.stderr}")
+    p = pathlib.Path(out) / "metrics.json"
+    if not p.is_file():
+        raise CompareError(f"hbc compare wrote no metrics.json:\n{run.stderr}")
+    return json.loads(p.read_text(encoding="utf-8"))

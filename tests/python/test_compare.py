@@ -1,0 +1,252 @@
+"""`hbc compare` (docs/compare.md): three meshes of three meshers and one broken file.
+
+The three meshes are the paper's test data (SOURCES.md of the shared data): cube_twist-comp.obj.HYBRID
+from Robust Hex-Dominant Meshing, teapot.hedra from LoopyCuts, twistcube_s.mesh from At-Most-Hexa.
+The broken file is a MEDIT file whose vertex section ends early. The comparison runs once per
+module; the tests read its outputs. The report is drawn by Debian's Python (HBC_PYTHON, default
+/usr/bin/python3, which has python3-matplotlib: scripts/env/deps.sh) and opened in headless
+Chromium (Debian's chromium, same list).
+"""
+
+import csv
+from html import escape as html_escape
+import json
+import math
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from hbc import report
+
+MESHES = [("RHDM cube_twist", "hybrid-base-complex/cube_twist-comp.obj.HYBRID"),
+          ("LoopyCuts teapot", "hybrid-base-complex/teapot.hedra"),
+          ("At-Most-Hexa_twistcube 100%", "hybrid-base-complex/twistcube_s.mesh")]
+BROKEN_NAME = "broken & cut"
+# A MEDIT file announcing 3 vertices and giving 1: the reader names the file and the line.
+BROKEN = "MeshVersionFormatted 1\nDimension 3\nVertices\n3\n0 0 0 0\n"
+REPO = pathlib.Path(__file__).resolve().parents[2]
+
+
+def report_env(extra=None):
+    env = dict(os.environ)
+    env.setdefault("HBC_PYTHON", "/usr/bin/python3")
+    env.update(extra or {})
+    return env
+
+
+@pytest.fixture(scope="module")
+def compared(hbc_cli, shared_data_dir, tmp_path_factory):
+    """(out dir, completed process, the files in column order) of one `hbc compare` run."""
+    tmp = tmp_path_factory.mktemp("compare")
+    broken = tmp / "broken.mesh"
+    broken.write_text(BROKEN)
+    files = [str(shared_data_dir / rel) for _, rel in MESHES]
+    files.insert(1, str(broken))  # a failure in the middle: the columns after it must still be there
+    names = [n for n, _ in MESHES]
+    names.insert(1, BROKEN_NAME)
+    out = tmp / "out"
+    run = subprocess.run([hbc_cli, "compare", *files, "-o", str(out), "--names", ",".join(names)],
+                         capture_output=True, text=True, env=report_env())
+    return out, run, files, names
+
+
+def test_a_broken_file_fails_its_column_alone(compared):
+    out, run, files, names = compared
+    assert run.returncode == 2, run.stderr
+    assert "1 of 4 mesh(es) failed" in run.stderr
+    # Progress: one line per mesh.
+    assert len(re.findall(r"hbc compare: \[\d/4\]", run.stderr)) == 4, run.stderr
+    data = json.loads((out / "metrics.json").read_text())
+    assert list(data["errors"]) == [BROKEN_NAME]
+    # The reader's message: file and line (line 4 announces 3 vertices; the file holds 1).
+    assert data["errors"][BROKEN_NAME].startswith(f"{files[1]}:4: ")
+    assert [m["name"] for m in data["meshes"]] == names
+    assert data["metrics"][1] is None and data["scaled_jacobian_histograms"]["by_type"][1] is None
+    for i in (0, 2, 3):
+        assert data["meshes"][i]["error"] is None
+        assert data["values"]["census.cells"][i] > 0
+    for name in ("metrics.csv", "metrics.tex", "report.html"):
+        assert (out / name).stat().st_size > 0, name
+    html = (out / "report.html").read_text()
+    assert "broken.mesh" in html and "Failed meshes" in html
+
+
+def cli_metrics(hbc_cli, path):
+    run = subprocess.run([hbc_cli, "metrics", path, "--json"], capture_output=True, text=True, check=True)
+    m = json.loads(run.stdout)
+    del m["timings"]
+    return m
+
+
+def same(a, b):
+    if a is None or b is None:
+        return a is None and b is None
+    return a == b or math.isclose(a, b, rel_tol=1e-9, abs_tol=0)
+
+
+def test_json_and_csv_equal_hbc_metrics(compared, hbc_cli):
+    out, _, files, names = compared
+    data = json.loads((out / "metrics.json").read_text())
+    with open(out / "metrics.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert [r["name"] for r in rows] == names
+    keys = [f["key"] for f in data["fields"]]
+    assert keys == [f"{f.group}.{f.key}" for f in __import__("hbc").METRIC_FIELDS]
+    for i, path in enumerate(files):
+        if i == 1:
+            assert all(rows[i][k] == "" for k in keys) and rows[i]["error"] == data["errors"][BROKEN_NAME]
+            continue
+        ref = cli_metrics(hbc_cli, path)
+        got = dict(data["metrics"][i])
+        got.pop("timings")
+        assert got == ref  # the whole `hbc metrics --json` object, distributions included
+        for k in keys:
+            group, key = k.split(".")
+            assert same(data["values"][k][i], ref[group][key]), k
+            assert same(float(rows[i][k]) if rows[i][k] else None, ref[group][key]), k
+        assert rows[i]["error"] == "" and rows[i]["mesh"] == path
+        # The scaled Jacobian histograms count every cell once, by type.
+        census = {"hex": "hexahedra", "prism": "prisms", "pyramid": "pyramids", "tet": "tetrahedra",
+                  "polyhedron": "polyhedra"}
+        hist = data["scaled_jacobian_histograms"]["by_type"][i]
+        for t, counts in hist.items():
+            assert len(counts) == 20 and sum(counts) == ref["census"][census[t]], t
+
+
+def latex_rows(tex):
+    body = tex[tex.index("\\toprule"):tex.index("\\end{tabular}")]
+    return [ln for ln in body.splitlines() if ln and not re.fullmatch(r"\\(toprule|midrule|bottomrule)", ln)]
+
+
+def test_latex_table(compared):
+    out, _, _, names = compared
+    tex = (out / "metrics.tex").read_text()
+    ncol = 2 + len(names)
+    spec = re.search(r"\\begin\{tabular\}\{([a-z]+)\}", tex).group(1)
+    assert len(spec) == ncol
+    for rule in ("\\toprule", "\\midrule", "\\bottomrule"):
+        assert rule in tex
+    # Names escaped: _ % & of the column names.
+    assert "At-Most-Hexa\\_twistcube 100\\%" in tex and "broken \\& cut" in tex
+    for ln in latex_rows(tex):
+        assert ln.endswith("\\\\"), ln
+        cells = re.split(r"(?<!\\)&", ln[:-2])
+        if ln.startswith("\\multicolumn"):
+            assert len(cells) == 1 and ln.startswith(f"\\multicolumn{{{ncol}}}"), ln
+        else:
+            assert len(cells) == ncol, ln
+        assert ln.count("{") == ln.count("}"), ln
+    if shutil.which("pdflatex"):
+        doc = out / "doc.tex"
+        doc.write_text("\\documentclass{article}\\usepackage{booktabs}\\usepackage[margin=1cm,landscape]"
+                       "{geometry}\\begin{document}\\input{metrics.tex}\\end{document}\n")
+        run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "doc.tex"], cwd=out,
+                             capture_output=True, text=True)
+        assert run.returncode == 0, run.stdout[-2000:]
+
+
+def test_report_is_self_contained(compared):
+    out, _, _, _ = compared
+    html = (out / "report.html").read_text()
+    # Nothing fetched on opening: no external script, style sheet, image or font.
+    assert not re.search(r"<(link|iframe|object|embed)\b", html)
+    assert not re.search(r"""\bsrc\s*=\s*["'](?!data:)""", html)
+    assert "url(" not in html and "@import" not in html
+    imgs = re.findall(r'<img class="plot"[^>]*src="data:image/png;base64,', html)
+    assert len(imgs) == 4  # bar charts, valences, component sizes, scaled Jacobian per type
+    data = json.loads((out / "metrics.json").read_text())
+    for f in data["fields"]:
+        assert html_escape(f["meaning"]) in html, f["key"]
+    # Each group links to its heading in docs/metrics.md, and that heading exists.
+    doc = (REPO / "docs" / "metrics.md").read_text()
+    for group, title in report.GROUP_TITLES.items():
+        assert f"#### {title}" in doc
+        assert f"metrics.md#{report.anchor(group)}" in html
+
+
+def test_missing_matplotlib_still_writes_the_tables(hbc_cli, shared_data_dir, tmp_path):
+    fake = tmp_path / "fake"
+    (fake / "matplotlib").mkdir(parents=True)
+    (fake / "matplotlib" / "__init__.py").write_text("raise ImportError('no matplotlib here')\n")
+    out = tmp_path / "out"
+    env = report_env({"PYTHONPATH": f"{fake}:{os.environ.get('PYTHONPATH', '')}"})
+    run = subprocess.run([hbc_cli, "compare", str(shared_data_dir / MESHES[0][1]), "-o", str(out)],
+                         capture_output=True, text=True, env=env)
+    assert run.returncode == 2
+    assert "matplotlib is not installed" in run.stderr and "report.html not written" in run.stderr
+    for name in ("metrics.json", "metrics.csv", "metrics.tex"):
+        assert (out / name).is_file()
+    assert not (out / "report.html").exists()
+
+
+def test_python_compare(shared_data_dir, hbc_cli, tmp_path, monkeypatch):
+    monkeypatch.setenv("HBC_CLI", hbc_cli)
+    monkeypatch.setenv("HBC_PYTHON", os.environ.get("HBC_PYTHON", "/usr/bin/python3"))
+    import hbc
+
+    data = hbc.compare([shared_data_dir / MESHES[0][1], shared_data_dir / MESHES[1][1]], tmp_path / "o",
+                          names=["a", "b"], check=True)
+    assert [m["name"] for m in data["meshes"]] == ["a", "b"] and data["errors"] == {}
+    assert (tmp_path / "o" / "report.html").is_file()
+
+
+# ---- Chromium ------------------------------------------------------------------------------
+
+def chromium():
+    exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    if not exe:
+        pytest.fail("chromium is not installed (scripts/env/deps.sh installs it)")
+    return exe
+
+
+def chromium_run(url, tmp_path, *args):
+    # No network (every host unresolvable), so that a fetch the report should not make fails and
+    # shows up as a console error; logging of the page's console to stderr.
+    cmd = [chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+           f"--user-data-dir={tmp_path / 'profile'}", "--host-resolver-rules=MAP * ~NOTFOUND",
+           "--enable-logging=stderr", "--v=0", "--force-device-scale-factor=1", *args, url]
+    env = {k: v for k, v in os.environ.items() if k != "LD_PRELOAD"}  # the sanitizer runtimes are for hbc
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=120, env=env)
+
+
+def console_messages(stderr):
+    return [ln for ln in stderr.splitlines() if "CONSOLE" in ln or "Uncaught" in ln or "net::ERR" in ln]
+
+
+def test_report_in_chromium(compared, tmp_path):
+    out, _, _, _ = compared
+    url = (out / "report.html").resolve().as_uri()
+    # The scan below must catch a console error: check it on a copy that makes one.
+    bad = out / "bad.html"
+    bad.write_text((out / "report.html").read_text().replace("</body>", "<script>console.error('x')</script></body>"))
+    assert console_messages(chromium_run(bad.resolve().as_uri(), tmp_path, "--dump-dom").stderr)
+    dom = chromium_run(url + "#layout", tmp_path, "--dump-dom", "--virtual-time-budget=5000")
+    assert dom.returncode == 0, dom.stderr[-2000:]
+    assert console_messages(dom.stderr) == []
+    title = re.search(r"<title>layout:(.*?)</title>", dom.stdout)
+    assert title, dom.stdout[:500]
+    rects = json.loads(title.group(1))
+    assert len(rects) == 4
+    width = 1300
+    height = max(y + h for _, y, _, h in rects) + 20
+    shot = tmp_path / "report.png"
+    run = chromium_run(url + "#layout", tmp_path, f"--screenshot={shot}", f"--window-size={width},{height}")
+    assert run.returncode == 0 and shot.is_file(), run.stderr[-2000:]
+    assert console_messages(run.stderr) == []
+    import numpy as np
+    from matplotlib import image
+    pixels = image.imread(str(shot))[..., :3]
+    gray = pixels.mean(axis=2)
+    for x, y, w, h in rects:
+        assert w > 200 and h > 100, (x, y, w, h)
+        region = gray[y:y + h, x:x + w]
+        assert region.shape == (h, w), "the image lies outside the screenshot"
+        # A drawn plot: its pixels vary (a blank or broken image is one colour) and a part of them
+        # is ink (bars, lines, text), not paper.
+        assert region.std() > 0.05 and (region < 0.8).mean() > 0.01, (x, y, w, h)
+    shutil.copy(shot, out / "report_screenshot.png")
