@@ -4,7 +4,7 @@
 // here, so the worker reads every array as a plain copy it may transfer.
 
 /** The value of `name` on an embind object: a property, or a method without arguments. */
-function get(obj, name) {
+export function get(obj, name) {
   const v = obj[name];
   return typeof v === 'function' ? v.call(obj) : v;
 }

@@ -61,6 +61,7 @@ function showProgress(fraction, text) {
 /** Opens files [{path, buffer}] named `name` (a file name, or a case folder's). */
 function openFiles(name, files) {
   firstFrame = null;
+  state.sheet = -1; // a new mesh has other sheets (a view link sets it again once analysed)
   setState('loading');
   $('hbc-results').textContent = '';
   $('hbc-error').hidden = true;

@@ -2,7 +2,7 @@
 // in-memory file system (every format the CLI reads, OpenFOAM case folders too), analyses it as
 // `hbc analyze` does, and builds each layer's buffers, which go to the page by transfer.
 /* global createHbcModule, __HBC_WASM_BASE64__ */
-import { Core, arr, csr, errorText } from './core.js';
+import { Core, arr, csr, get, errorText } from './core.js';
 import { L, paletteColor, spreadColor, componentColor, valenceColor, cellTypeColor, kindColor } from './colors.js';
 import { soupPart, linesPart, dotsPart, opacityAlpha, transferList, row } from './geometry.js';
 
@@ -278,7 +278,7 @@ function buildSubsheets(p) {
   const i = p.sheet;
   if (!(i >= 0 && i < S.sheetType.length) || S.sheetType[i] !== 3) return [];
   const sub = core.subsheets(S.analysis, i);
-  const count = Number(sub.count ?? arr(sub, 'count'));
+  const count = Number(get(sub, 'count'));
   const soup = core.blockSoup(S.mesh, S.analysis, 'subsheets', i, p.shrink);
   const un = csr(sub, 'subsheet_unmatched_vertices');
   const types = arr(sub, 'subsheet_type');
