@@ -539,6 +539,14 @@ async function start() {
   syncControls();
   legend();
   if (location.hash.length > 1) pendingView = location.hash.slice(1);
+  // A view link pasted into the open page: the same mesh, the new view.
+  window.addEventListener('hashchange', () => {
+    if (!info || location.hash.length < 2) return;
+    applyFragment(location.hash.slice(1));
+    sheetList();
+    syncControls();
+    rebuildAll();
+  });
   const embedded = $('hbc-embedded-mesh');
   const params = new URLSearchParams(location.search);
   if (embedded && embedded.textContent.trim()) {

@@ -61,15 +61,15 @@ async function open({ name, files }) {
   try {
     mesh = c.load(path);
   } catch (e) {
-    // The CLI names the file as given; the page's file is the one the user opened.
-    throw new Error(errorText(c.M, e).split(path).join(files.length === 1 ? files[0].path : name));
+    // The core names the file by its path in the in-memory file system: name it as the user did.
+    throw new Error(errorText(c.M, e).split('/in/').join(''));
   }
   try {
     progress(0.4, 'Analysing (singularity graph, base complex, sheets, subsheets, wireframe)');
     analysis = c.analyze(mesh);
   } catch (e) {
     core.free(mesh);
-    throw new Error(errorText(c.M, e));
+    throw new Error(errorText(c.M, e).split('/in/').join(''));
   }
   progress(0.85, 'Preparing the layers');
   const results = JSON.parse(c.analysisJson(mesh, analysis, name));
