@@ -7,7 +7,8 @@
 // logged no console error and threw no uncaught error.
 //
 // Run: node tests/web/viewer.test.mjs (ctest's web_viewer does). Environment: HBC_CLI (the hbc
-// binary), HBC_VIEWER (the page), HBC_DATA_DIR (the shared meshes), HBC_CHROMIUM (the browser).
+// binary), HBC_VIEWER (the page), HBC_DATA_DIR (the shared meshes), HBC_CHROMIUM (the browser),
+// HBC_WEB_SHOTS (a folder that keeps the screenshots).
 // Without the page the run is skipped (exit 77, which ctest reports as skipped) unless
 // HBC_WEB_REQUIRED=1 (scripts/test.sh builds the page, so there it fails).
 import { test, before, after } from 'node:test';
@@ -141,9 +142,13 @@ function assertSameResults(got, want) {
   assert.deepStrictEqual(Object.keys(got), Object.keys(want));
 }
 
+// HBC_WEB_SHOTS=DIR keeps every screenshot there, to look at what the tests saw.
+let shots = 0;
 async function canvasShot(page) {
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-  return decodePng(await page.locator('#hbc-canvas canvas').first().screenshot());
+  const png = await page.locator('#hbc-canvas canvas').first().screenshot();
+  if (process.env.HBC_WEB_SHOTS) writeFileSync(join(process.env.HBC_WEB_SHOTS, `shot-${String(shots++).padStart(3, '0')}.png`), png);
+  return decodePng(png);
 }
 
 // Screenshots until `ok(image)` holds (the layers arrive from the worker after the analysis).
