@@ -148,8 +148,9 @@ def valence_histograms(data: dict, ok: list[int]) -> str:
         series = [data["metrics"][i]["singular"][key] for i in ok]
         _grouped_bars(ax, series, names, [colors[i] for i in ok], "valence (hexahedra around the edge)")
         ax.set_title(title)
-    axes[1].legend(loc="upper right", frameon=False)
-    fig.tight_layout()
+    handles = [plt.Rectangle((0, 0), 1, 1, color=colors[i]) for i in ok]
+    fig.legend(handles, names, loc="upper center", ncol=min(len(ok), 5), frameon=False, bbox_to_anchor=(0.5, 1.0))
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.3 / 2.8 * math.ceil(len(ok) / 5)))
     return _png(fig)
 
 
@@ -160,19 +161,20 @@ def component_histogram(data: dict, ok: list[int]) -> str:
     top = max([max(s) for s in sizes if s] + [1])
     edges = [2 ** k for k in range(0, max(1, math.ceil(math.log2(top + 1))) + 1)]
     fig, ax = plt.subplots(figsize=(10, 2.8))
+    # Shares of each mesh's components, so meshes of 10^3 and 10^5 cells read on one axis.
     for j, (i, s) in enumerate(zip(ok, sizes)):
         counts = [0] * (len(edges) - 1)
         for v in s:
             b = min(len(counts) - 1, max(0, int(math.floor(math.log2(max(v, 1))))))
             counts[b] += 1
         w = 0.8 / len(ok)
-        ax.bar([x + (j - (len(ok) - 1) / 2) * w for x in range(len(counts))], counts, w, color=colors[i],
-               label=data["meshes"][i]["name"])
+        ax.bar([x + (j - (len(ok) - 1) / 2) * w for x in range(len(counts))], [c / max(1, len(s)) for c in counts],
+               w, color=colors[i], label=f"{data['meshes'][i]['name']} ({len(s)})")
     ax.set_xticks(range(len(edges) - 1))
     ax.set_xticklabels([f"{edges[k]}-{edges[k + 1] - 1}" if edges[k + 1] - 1 > edges[k] else str(edges[k])
                         for k in range(len(edges) - 1)], rotation=30, ha="right", fontsize=7)
     ax.set_xlabel("cells per component of hexahedra (base complex)")
-    ax.set_ylabel("components")
+    ax.set_ylabel("share of the components")
     ax.set_title("Component sizes")
     ax.grid(axis="y", alpha=0.3)
     ax.legend(frameon=False)
@@ -189,7 +191,11 @@ def jacobian_histograms(data: dict, ok: list[int]) -> str:
     types = {"hex": "hexahedra", "prism": "prisms", "pyramid": "pyramids", "tet": "tetrahedra",
              "polyhedron": "polyhedra"}
     present = [t for t in types if any(t in (sj["by_type"][i] or {}) for i in ok)]
-    fig, axes = plt.subplots(1, max(1, len(present)), figsize=(max(5.0, 3.2 * len(present)), 2.8), squeeze=False)
+    cols = min(3, max(1, len(present)))
+    rows = max(1, math.ceil(len(present) / cols))
+    fig, axes = plt.subplots(rows, cols, figsize=(max(5.0, 3.4 * cols), 2.9 * rows), squeeze=False)
+    for ax in list(axes.flat)[len(present):]:
+        ax.set_visible(False)
     for ax, t in zip(axes.flat, present):
         for i in ok:
             counts = (sj["by_type"][i] or {}).get(t)
@@ -271,7 +277,7 @@ def render_panels(data: dict, ok: list[int], out: pathlib.Path, args) -> list[tu
         if run.returncode != 0 or not compare_png:
             tail = "\n".join((run.stdout + run.stderr).splitlines()[-15:])
             raise ReportError(f"--figures: Blender failed on {files}:\n{tail}")
-        caption = " vs ".join(data["meshes"][i]["name"] for i in pair)
+        caption = ", ".join(f"({chr(97 + k)}) {data['meshes'][i]['name']}" for k, i in enumerate(pair))
         figures.append((caption, base64.b64encode(pathlib.Path(compare_png[-1]).read_bytes()).decode("ascii")))
     shutil.rmtree(cfg, ignore_errors=True)
     return figures
@@ -401,7 +407,8 @@ def build_html(data: dict, plots: list[tuple[str, str, str]], panels: list[tuple
         parts += [_img(b64, alt, cap) for alt, b64, cap in plots]
     if panels:
         parts.append("<h2>Structure side by side (Blender)</h2>")
-        parts += [_img(b64, cap, f"{e(cap)}: rows mesh, singularity graph, base complex, VSG wireframe, sheet")
+        parts += [_img(b64, cap, f"{e(cap)}; rows: the mesh, its singularity graph, base complex, VSG wireframe "
+                                 "and a sheet (blender_scripts/render_figures.py --compare)")
                   for cap, b64 in panels]
     parts += ["<h2>Definitions</h2>", definitions(data, docs), "</body></html>\n"]
     return "\n".join(parts)
@@ -422,7 +429,8 @@ def write_report(out, figures: bool = False, args=None) -> pathlib.Path:
                  ("singular edge valences", valence_histograms(data, ok),
                   "Singular edges by valence: interior (regular 4) and boundary (regular 2)."),
                  ("component sizes", component_histogram(data, ok),
-                  "Components of hexahedra of the hybrid base complex by cell count (bins of powers of 2)."),
+                  "Components of hexahedra of the hybrid base complex by cell count (bins of powers of 2; share of "
+                  "each mesh's components, their number in the legend)."),
                  ("scaled Jacobian per cell type", jacobian_histograms(data, ok),
                   "Scaled Jacobian per cell type (share of that type's cells per bin of 0.1; cell count in "
                   "the legend; below 0: inverted).")]
