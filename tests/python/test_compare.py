@@ -195,6 +195,56 @@ def test_python_compare(shared_data_dir, hbc_cli, tmp_path, monkeypatch):
     assert (tmp_path / "o" / "report.html").is_file()
 
 
+STUB_BLENDER = """#!/usr/bin/env python3
+# Stands in for Blender: records its command line and HBC_ADDON_DIR, writes the comparison figure
+# render_figures.py --compare would write (a copy of PNG) and says so as render_figures.py does.
+import json, os, shutil, sys
+args = sys.argv[1:]
+with open(@LOG@, "a") as f:
+    f.write(json.dumps({"argv": args, "addon": os.environ.get("HBC_ADDON_DIR")}) + "\\n")
+a, b = args[args.index("--compare") + 1:args.index("--compare") + 3]
+out = args[args.index("--out") + 1]
+stem = lambda p: os.path.basename(p).split(".")[0]
+path = os.path.join(out, f"compare_{stem(a)}_{stem(b)}.png")
+shutil.copy(@PNG@, path)
+print("wrote " + path)
+"""
+
+
+def test_figures_run_render_figures_per_pair(compared, hbc_cli, tmp_path):
+    """--figures: render_figures.py --compare on the measured meshes two by two (the failed one left
+    out; the odd last beside the first), each figure embedded. Blender itself is stubbed here (the
+    panels are tested in tests/figures/)."""
+    out, _, files, _ = compared
+    work = tmp_path / "out"
+    shutil.copytree(out, work)
+    png = work / "panel.png"
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib import pyplot as plt
+    fig = plt.figure(figsize=(2, 1))
+    fig.text(0.5, 0.5, "panel")
+    fig.savefig(png)
+    log = tmp_path / "blender.log"
+    stub = tmp_path / "blender"
+    stub.write_text(STUB_BLENDER.replace("@LOG@", repr(str(log))).replace("@PNG@", repr(str(png))))
+    stub.chmod(0o755)
+    run = subprocess.run([sys.executable, "-m", "hbc.report", str(work), "--figures", "--blender", str(stub),
+                          "--cli", hbc_cli], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    calls = [json.loads(ln) for ln in log.read_text().splitlines()]
+    pairs = [c["argv"][c["argv"].index("--compare") + 1:][:2] for c in calls]
+    assert pairs == [[files[0], files[2]], [files[3], files[0]]]
+    for c in calls:
+        script = pathlib.Path(c["argv"][c["argv"].index("--python") + 1])
+        assert script == REPO / "blender_scripts" / "render_figures.py"
+        assert c["addon"] == str(pathlib.Path(hbc_cli).resolve().parent.parent / "addon" / "hybrid_base_complex")
+    html = (work / "report.html").read_text()
+    import base64
+    embedded = base64.b64encode(png.read_bytes()).decode("ascii")
+    assert html.count(embedded) == 2 and "Structure side by side" in html
+
+
 # ---- Chromium ------------------------------------------------------------------------------
 
 def chromium():
