@@ -86,15 +86,34 @@ def _colors(n: int):
     return [cmap(i % cmap.N) for i in range(n)]
 
 
+LEGEND_COLUMNS = 5
+LEGEND_ROW_IN = 0.2  # inches per legend row
+
+
+def _legend_rows(n: int) -> int:
+    return math.ceil(n / LEGEND_COLUMNS)
+
+
+def _legend_on_top(fig, colors, labels, height_in: float):
+    """One legend of colour swatches above the panels, and the panels laid out under it."""
+    import matplotlib.pyplot as plt
+    handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in colors]
+    fig.legend(handles, labels, loc="upper center", ncol=min(len(labels), LEGEND_COLUMNS), frameon=False,
+               bbox_to_anchor=(0.5, 1.0))
+    fig.tight_layout(rect=(0, 0, 1, 1 - (0.1 + LEGEND_ROW_IN * _legend_rows(len(labels))) / height_in))
+
+
 def bar_charts(data: dict, ok: list[int]) -> str:
     plt = _pyplot()
     fields = {f["key"]: f for f in data["fields"]}
     keys = [k for k in KEY_METRICS if k in fields]
     colors = _colors(len(data["meshes"]))
-    cols = 4
+    # Panels wide enough for their bars; as many a row as fit in about 11 inches.
+    panel_w = max(2.5, 0.22 * len(ok) + 0.8)
+    cols = max(1, min(4, int(11 // panel_w)))
     rows = math.ceil(len(keys) / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(max(10.0, 0.45 * len(ok) * cols + 2), 2.2 * rows + 0.5),
-                             squeeze=False)
+    height = 2.2 * rows + 0.1 + LEGEND_ROW_IN * _legend_rows(len(ok))
+    fig, axes = plt.subplots(rows, cols, figsize=(cols * panel_w, height), squeeze=False)
     for ax, key in zip(axes.flat, keys):
         vals = [data["values"][key][i] for i in ok]
         f = fields[key]
@@ -104,19 +123,17 @@ def bar_charts(data: dict, ok: list[int]) -> str:
             text = "–" if v is None else _fmt(v, f["unit"]).replace("\u2009", "")
             y = b.get_height()
             ax.annotate(text, (b.get_x() + b.get_width() / 2, y), xytext=(0, 2 if y >= 0 else -2),
-                        textcoords="offset points", ha="center", va="bottom" if y >= 0 else "top", fontsize=7)
+                        textcoords="offset points", ha="center", va="bottom" if y >= 0 else "top",
+                        fontsize=7 if len(ok) <= 10 else 6, rotation=0 if len(ok) <= 10 else 90)
         unit = "" if f["unit"] == "ratio" else f" ({f['unit']})"
         ax.set_title(f["label"] + unit)
         ax.set_xticks([])
         ax.axhline(0, color="0.3", linewidth=0.8)
-        ax.margins(y=0.15)
+        ax.margins(y=0.15 if len(ok) <= 10 else 0.3)
         ax.grid(axis="y", alpha=0.3)
     for ax in list(axes.flat)[len(keys):]:
         ax.set_visible(False)
-    handles = [plt.Rectangle((0, 0), 1, 1, color=colors[i]) for i in ok]
-    fig.legend(handles, [data["meshes"][i]["name"] for i in ok], loc="upper center", ncol=min(len(ok), 5),
-               frameon=False, bbox_to_anchor=(0.5, 1.0))
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.35 / (2.2 * rows + 0.5) * math.ceil(len(ok) / 5)))
+    _legend_on_top(fig, [colors[i] for i in ok], [data["meshes"][i]["name"] for i in ok], height)
     return _png(fig)
 
 
@@ -142,15 +159,14 @@ def valence_histograms(data: dict, ok: list[int]) -> str:
     plt = _pyplot()
     colors = _colors(len(data["meshes"]))
     names = [data["meshes"][i]["name"] for i in ok]
-    fig, axes = plt.subplots(1, 2, figsize=(10, 2.8))
+    height = 2.8 + LEGEND_ROW_IN * _legend_rows(len(ok))
+    fig, axes = plt.subplots(1, 2, figsize=(10, height))
     for ax, key, title in ((axes[0], "valence_interior", "Interior singular edges by valence"),
                            (axes[1], "valence_boundary", "Boundary singular edges by valence")):
         series = [data["metrics"][i]["singular"][key] for i in ok]
         _grouped_bars(ax, series, names, [colors[i] for i in ok], "valence (hexahedra around the edge)")
         ax.set_title(title)
-    handles = [plt.Rectangle((0, 0), 1, 1, color=colors[i]) for i in ok]
-    fig.legend(handles, names, loc="upper center", ncol=min(len(ok), 5), frameon=False, bbox_to_anchor=(0.5, 1.0))
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.3 / 2.8 * math.ceil(len(ok) / 5)))
+    _legend_on_top(fig, [colors[i] for i in ok], names, height)
     return _png(fig)
 
 
@@ -160,7 +176,8 @@ def component_histogram(data: dict, ok: list[int]) -> str:
     sizes = [data["metrics"][i]["complex"]["component_cells"] for i in ok]
     top = max([max(s) for s in sizes if s] + [1])
     edges = [2 ** k for k in range(0, max(1, math.ceil(math.log2(top + 1))) + 1)]
-    fig, ax = plt.subplots(figsize=(10, 2.8))
+    height = 2.8 + LEGEND_ROW_IN * _legend_rows(len(ok))
+    fig, ax = plt.subplots(figsize=(10, height))
     # Shares of each mesh's components, so meshes of 10^3 and 10^5 cells read on one axis.
     for j, (i, s) in enumerate(zip(ok, sizes)):
         counts = [0] * (len(edges) - 1)
@@ -169,7 +186,7 @@ def component_histogram(data: dict, ok: list[int]) -> str:
             counts[b] += 1
         w = 0.8 / len(ok)
         ax.bar([x + (j - (len(ok) - 1) / 2) * w for x in range(len(counts))], [c / max(1, len(s)) for c in counts],
-               w, color=colors[i], label=f"{data['meshes'][i]['name']} ({len(s)})")
+               w, color=colors[i])
     ax.set_xticks(range(len(edges) - 1))
     ax.set_xticklabels([f"{edges[k]}-{edges[k + 1] - 1}" if edges[k + 1] - 1 > edges[k] else str(edges[k])
                         for k in range(len(edges) - 1)], rotation=30, ha="right", fontsize=7)
@@ -177,8 +194,8 @@ def component_histogram(data: dict, ok: list[int]) -> str:
     ax.set_ylabel("share of the components")
     ax.set_title("Component sizes")
     ax.grid(axis="y", alpha=0.3)
-    ax.legend(frameon=False)
-    fig.tight_layout()
+    _legend_on_top(fig, [colors[i] for i in ok],
+                   [f"{data['meshes'][i]['name']} ({len(s)})" for i, s in zip(ok, sizes)], height)
     return _png(fig)
 
 
@@ -193,7 +210,10 @@ def jacobian_histograms(data: dict, ok: list[int]) -> str:
     present = [t for t in types if any(t in (sj["by_type"][i] or {}) for i in ok)]
     cols = min(3, max(1, len(present)))
     rows = max(1, math.ceil(len(present) / cols))
-    fig, axes = plt.subplots(rows, cols, figsize=(max(5.0, 3.4 * cols), 2.9 * rows), squeeze=False)
+    # Up to 6 meshes a legend per panel with each mesh's cells of that type; more, one on top.
+    many = len(ok) > 6
+    height = 2.9 * rows + (LEGEND_ROW_IN * _legend_rows(len(ok)) if many else 0)
+    fig, axes = plt.subplots(rows, cols, figsize=(max(5.0, 3.4 * cols), height), squeeze=False)
     for ax in list(axes.flat)[len(present):]:
         ax.set_visible(False)
     for ax, t in zip(axes.flat, present):
@@ -209,8 +229,12 @@ def jacobian_histograms(data: dict, ok: list[int]) -> str:
         ax.axvline(0, color="0.6", linewidth=0.8, linestyle=":")
         ax.set_xlabel("scaled Jacobian")
         ax.set_ylabel("share of the type's cells")
-        ax.legend(loc="upper left", frameon=False, fontsize=7)
-    fig.tight_layout()
+        if not many:
+            ax.legend(loc="upper left", frameon=False, fontsize=7)
+    if many:
+        _legend_on_top(fig, [colors[i] for i in ok], [data["meshes"][i]["name"] for i in ok], height)
+    else:
+        fig.tight_layout()
     return _png(fig)
 
 
@@ -297,7 +321,8 @@ padding-top:.8em;border-bottom:1px solid #ccc} tbody tr:hover{background:#f4f6fa
 td.failed{color:#b00;text-align:center} .errors{background:#fff3f3;border:1px solid #e0b0b0;padding:.5em 1em}
 .swatch{display:inline-block;width:.8em;height:.8em;margin-right:.3em;vertical-align:baseline}
 figure{margin:1em 0} figure img{max-width:100%;border:1px solid #eee} figcaption{color:#555;font-size:.9em}
-table.defs td{vertical-align:top;border-bottom:1px solid #eee} table.defs th{text-align:left} code{font-size:.9em}
+.scroll{overflow-x:auto;max-width:100%} #metrics td:first-child,#metrics td:nth-child(2){white-space:nowrap}
+#metrics thead th{white-space:nowrap} table.defs td{vertical-align:top;border-bottom:1px solid #eee} table.defs th{text-align:left} code{font-size:.9em}
 """
 
 
@@ -335,8 +360,9 @@ def metrics_table(data: dict, docs: str) -> str:
                 cells.append(f'<td class="num">{_fmt(data["values"][f["key"]][i], f["unit"])}</td>')
         unit = "" if f["unit"] == "ratio" else f["unit"]
         rows.append(f'<tr><td title="{e(f["meaning"])}">{e(f["label"])}</td><td>{e(unit)}</td>{"".join(cells)}</tr>')
-    return (f'<table id="metrics"><thead><tr><th>metric</th><th>unit</th>{head}</tr></thead>'
-            f'<tbody>{"".join(rows)}</tbody></table>')
+    # Many meshes make a wide table: it scrolls on its own, the page does not.
+    return (f'<div class="scroll"><table id="metrics"><thead><tr><th>metric</th><th>unit</th>{head}</tr></thead>'
+            f'<tbody>{"".join(rows)}</tbody></table></div>')
 
 
 def definitions(data: dict, docs: str) -> str:
@@ -400,7 +426,8 @@ def build_html(data: dict, plots: list[tuple[str, str, str]], panels: list[tuple
              f"<h1>Structure of {len(meshes)} hex-dominant meshes</h1>",
              f'<p class="meta">hbc {e(str(data.get("hbc_version", "")))} · {when} · metric definitions: '
              f'<a href="{e(docs)}">docs/metrics.md</a> (hover a label for its meaning)</p>',
-             f"<ul class=\"meta\">{files}</ul>", err,
+             f"<details{' open' if len(meshes) <= 6 else ''} class=\"meta\"><summary>{len(meshes)} files</summary>"
+             f"<ul>{files}</ul></details>", err,
              "<h2>Metrics</h2>", metrics_table(data, docs)]
     if plots:
         parts.append("<h2>Key metrics and distributions</h2>")
