@@ -300,3 +300,12 @@ def test_report_in_chromium(compared, tmp_path):
         # is ink (bars, lines, text), not paper.
         assert region.std() > 0.05 and (region < 0.8).mean() > 0.01, (x, y, w, h)
     shutil.copy(shot, out / "report_screenshot.png")
+
+
+def test_names_must_match_the_files(hbc_cli, shared_data_dir, tmp_path):
+    # A malformed command line (exit 1), found before any mesh is measured or anything written.
+    f = str(shared_data_dir / MESHES[0][1])
+    run = subprocess.run([hbc_cli, "compare", f, f, "-o", str(tmp_path / "o"), "--names", "a"],
+                         capture_output=True, text=True)
+    assert run.returncode == 1 and "--names gives 1 names for 2 files" in run.stderr
+    assert not (tmp_path / "o").exists()
