@@ -85,6 +85,7 @@ function serve(root) {
 before(async () => {
   symlinkSync(VIEWER, join(work, 'viewer.html'));
   symlinkSync(TEAPOT, join(work, 'teapot.hedra'));
+  symlinkSync(join(ROOT, 'tests/data/formats/foam/hex2_ascii'), join(work, 'hex2_ascii'));
   // A small mesh with pyramids among its hexahedra: the non-hex paths of every stage.
   hbc(['generate', 'split', '--size', '4', '3', '3', '--split', 'pyramids', '--random', '5', '--seed', '7',
        '-o', 'split.mesh']);
@@ -221,15 +222,18 @@ test('the canvas shows the mesh, and moving the slicing plane changes the pictur
 
 test('a page written by hbc export-html opens from file:// with the same #hbc-results', { timeout: 180_000 }, async () => {
   mkdirSync(join(work, 'exported'), { recursive: true });
-  // The viewer found through HBC_VIEWER for one, --viewer for the other.
+  // The viewer found through HBC_VIEWER for one, --viewer for the others. An OpenFOAM case (a
+  // folder) is embedded as one .ovm file: its results are the case's, under the embedded name.
   hbc(['export-html', 'teapot.hedra', '-o', 'exported/teapot.html'], { env: { ...process.env, HBC_VIEWER: VIEWER } });
   hbc(['export-html', 'split.mesh', '-o', 'exported/split.html', '--viewer', VIEWER]);
-  for (const name of ['teapot', 'split']) {
-    const ext = name === 'teapot' ? '.hedra' : '.mesh';
-    const { page, errors, close } = await openPage(pathToFileURL(join(work, 'exported', name + '.html')).href);
+  hbc(['export-html', 'hex2_ascii', '-o', 'exported/foam.html', '--viewer', VIEWER]);
+  const foam = { ...expectedResults('hex2_ascii'), file: 'hex2_ascii.ovm' };
+  for (const [page_name, want] of [['teapot', expectedResults('teapot.hedra')], ['split', expectedResults('split.mesh')],
+                                   ['foam', foam]]) {
+    const { page, errors, close } = await openPage(pathToFileURL(join(work, 'exported', page_name + '.html')).href);
     assert.equal(await settled(page), 'ready', await page.locator('#hbc-error').textContent());
-    assertSameResults(await pageResults(page), expectedResults(name + ext));
-    assert.deepEqual(errors, []);
+    assertSameResults(await pageResults(page), want);
+    assert.deepEqual(errors, [], page_name);
     await close();
   }
 });
