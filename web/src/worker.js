@@ -194,10 +194,13 @@ function buildBlocks(p) {
 function buildSheets(p) {
   const sc = csr(S.analysis, 'sheet_cells');
   const total = sc.offsets[sc.offsets.length - 1];
-  if (total > (p.maxCells ?? 1.5e6)) {
+  if (total > (p.maxCells ?? 6e6)) {
     throw new Error(`All sheets together hold ${total} cells, too many to draw at once here: pick a sheet instead.`);
   }
   const soup = core.blockSoup(S.mesh, S.analysis, 'sheets', -1, p.shrink);
+  if (soup.owner.length > 4e6) {
+    throw new Error(`All sheets together have ${soup.owner.length} faces, too many to draw at once here: pick a sheet instead.`);
+  }
   return [soupPart(soup, (o) => spreadColor(o), { cellTypes: S.cellTypes, name: 'sheets' })];
 }
 
