@@ -6,17 +6,23 @@
 # fetches nothing. `hbc export-html` fills the same file with a mesh (docs/web.md).
 # Runs scripts/build_wasm.sh first when build-wasm/ is missing or older than native/ or the
 # script; `npm ci` only when web/node_modules does not match the lockfile (so an offline machine
-# that has node_modules builds). HBC_PYTHON: the Python with numpy for the legend.
+# that has node_modules builds). HBC_PYTHON: the Python with numpy for the legend. HBC_WASM_DIR:
+# a folder holding hbc_core.js (+ .wasm) built elsewhere, taken as it is (no rebuild).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 OUT=$(realpath -m "${1:-$ROOT/build/web}")
-WASM_DIR=$ROOT/build-wasm/web
 PY=${HBC_PYTHON:-/usr/bin/python3}
 
-stamp=$WASM_DIR/hbc_core.js
-if [[ ! -f $stamp ]] || [[ -n $(find "$ROOT/native" "$ROOT/scripts/build_wasm.sh" -newer "$stamp" -type f -print -quit 2>/dev/null) ]]; then
-  echo "build_web: building the WebAssembly core (scripts/build_wasm.sh)"
-  bash "$ROOT/scripts/build_wasm.sh"
+if [[ -n ${HBC_WASM_DIR:-} ]]; then
+  WASM_DIR=$(realpath "$HBC_WASM_DIR")
+  [[ -f $WASM_DIR/hbc_core.js ]] || { echo "build_web: no hbc_core.js in HBC_WASM_DIR=$WASM_DIR" >&2; exit 2; }
+else
+  WASM_DIR=$ROOT/build-wasm/web
+  stamp=$WASM_DIR/hbc_core.js
+  if [[ ! -f $stamp ]] || [[ -n $(find "$ROOT/native" "$ROOT/scripts/build_wasm.sh" -newer "$stamp" -type f -print -quit 2>/dev/null) ]]; then
+    echo "build_web: building the WebAssembly core (scripts/build_wasm.sh)"
+    bash "$ROOT/scripts/build_wasm.sh"
+  fi
 fi
 
 cd "$ROOT/web"
