@@ -85,6 +85,8 @@ def parser():
     ap.add_argument("--azimuth", type=float, default=-50.0, help="view azimuth in degrees around up")
     ap.add_argument("--elevation", type=float, default=25.0, help="view elevation in degrees")
     ap.add_argument("--rho", type=float, default=0.8, help="partial-parallel threshold of the wireframe colours")
+    ap.add_argument("--subsheet-rule", choices=("layers", "fewest"), default="layers",
+                    help="how self-intersecting sheets are split into subsheets (the add-on's Subsheets setting)")
     ap.add_argument("--wire-colors", choices=("class", "kind"), default="class",
                     help="colour the VSG wireframes by partial-parallel class (the paper's) or by the non-hex "
                          "kinds of their chains (the cell types they end at or run beside)")

@@ -267,7 +267,7 @@ class Subject:
         self.name = addon.P.mesh_name_from_path(path)
         t = time.perf_counter()
         s = addon.session.load(path, 1.0, log)
-        addon.session.analyze(s, args.rho, log)
+        addon.session.analyze(s, args.rho, log, getattr(args, "subsheet_rule", "layers"))
         self.s = s
         self.t_analysis = time.perf_counter() - t
         self.points = s.points

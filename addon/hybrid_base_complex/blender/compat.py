@@ -266,6 +266,20 @@ def frame_objects(context, objects) -> bool:
     return bool(regions)
 
 
+def redraw_status(context) -> bool:
+    """Draws the window now, so the status bar and the progress counter show a step of a long
+    operator while it still runs (Blender redraws only after an operator returns). Nothing to draw
+    in background mode (False). `wm.redraw_timer` is the one call that draws from inside an
+    operator in every supported version."""
+    if bpy.app.background or not getattr(context.window_manager, "windows", None):
+        return False
+    try:
+        bpy.ops.wm.redraw_timer(type="DRAW_WIN_SWAP", iterations=1)
+    except RuntimeError:  # no window to draw in this context
+        return False
+    return True
+
+
 def frame_edit_selection(context) -> bool:
     """Frames the selected elements of the mesh in edit mode in every 3D viewport."""
     regions = list(view3d_regions(context))

@@ -34,15 +34,52 @@ def active_root(context):
     return root
 
 
+def subsheet_rule(scene=None) -> str:
+    """The rule every analysis splits self-intersecting sheets by: the panel's Subsheets setting
+    (Scene.hbc.subsheet_rule). The one place that decides it: import, Analyze, the layers, Export
+    VTU, the Metrics box and Figures all ask here."""
+    st = getattr(scene if scene is not None else bpy.context.scene, "hbc", None)
+    return str(getattr(st, "subsheet_rule", "layers"))
+
+
 def structure_of(root, analyzed, log, rho=0.8):
-    """The mesh's Structure, read again from its source (sources.resolve) when not in memory; a
-    source found beside a moved .blend is stored as found."""
+    """The mesh's Structure, read again from its source (sources.resolve) when not in memory, and
+    with `analyzed` analyzed by the panel's subsheet rule (again when it was by the other); a source
+    found beside a moved .blend is stored as found."""
     path = sources.resolve(root)
     if os.path.normpath(bpy.path.abspath(root["hbc_source"])) != path:
         root["hbc_source"] = sources.stored(path)
-    return session.ensure(root.name, path, float(root.get("hbc_scale", 1.0)),
-                          float(root.get("hbc_rho", rho)), analyzed, log, tuple(root.get("hbc_offset", (0, 0, 0))),
-                          bool(root.get("hbc_skip_invalid", False)))
+    s = session.ensure(root.name, path, float(root.get("hbc_scale", 1.0)),
+                       float(root.get("hbc_rho", rho)), analyzed, log, tuple(root.get("hbc_offset", (0, 0, 0))),
+                       bool(root.get("hbc_skip_invalid", False)), subsheet_rule())
+    if analyzed:
+        refresh_subsheets_stale(root, picked_sheet())
+    return s
+
+
+def rule_of(root):
+    """The subsheet rule of the mesh's analysis in memory, None when there is none."""
+    s = session.get(root.name)
+    return s.subsheet_rule if s is not None and s.analysis is not None else None
+
+
+def refresh_subsheets_stale(root, sheet_index):
+    """Marks the subsheets layer stale (the panel says: rebuild) and hides it while it shows
+    another sheet than the picked one, or subsheets by another rule than the analysis in memory;
+    shows it again when it is current."""
+    coll = S.find_layer(root, "subsheets")
+    if coll is None:
+        return
+    rule = rule_of(root)
+    stale = (any(ob.get("hbc_sheet") != sheet_index for ob in S.objects_in(coll))
+             or (rule is not None and coll.get(SUBSHEET_RULE_PROP, rule) != rule))
+    if stale != bool(coll.get("hbc_stale")):  # hidden while stale, shown again when current
+        coll.hide_viewport = stale
+    coll["hbc_stale"] = stale
+
+
+#: The subsheet rule a subsheets layer was built by (on its collection).
+SUBSHEET_RULE_PROP = "hbc_subsheet_rule"
 
 
 def fill_sheet_list(settings, structure):
@@ -89,3 +126,22 @@ def merged_owner_faces(ob):
         return bm, None, None
     face = bm.faces.active
     return bm, layer, (int(face[layer]) if face is not None else None)
+
+
+def select_owner(ob, owner) -> int:
+    """Selects every face of `owner` (a component or sheet id) in a merged mesh in edit mode, one of
+    them the active face; returns how many faces that is."""
+    bm, layer, _ = merged_owner_faces(ob)
+    if layer is None:
+        return 0
+    n = 0
+    for f in bm.faces:
+        mine = f[layer] == owner
+        f.select_set(mine)
+        if mine:
+            if n == 0:
+                bm.faces.active = f
+            n += 1
+    bm.select_flush_mode()
+    bmesh.update_edit_mesh(ob.data)
+    return n

@@ -16,6 +16,7 @@ import numpy as np
 from ..plan import planning as P
 from . import inspect
 from . import scene as S
+from .context import SUBSHEET_RULE_PROP
 
 
 def _props(name, layer, **extra):
@@ -181,6 +182,7 @@ def build_subsheets(tx, coll, s, st, name):
             S.lines_object(tx, coll, f"{name} sheet {i} subsheet {k} wireframe", lines, st.line_radius * s.length,
                            _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_wireframe=True))
             made += 1
+    coll[SUBSHEET_RULE_PROP] = s.subsheet_rule  # stale once the mesh is analyzed by the other rule
     return made
 
 

@@ -46,15 +46,18 @@ def find_script(addon_dir: str, env=os.environ):
 
 
 def command(blender: str, python: str, script: str, mesh: str, out: str, addon_dir: str, engine="cycles",
-            resolution=(640, 480), samples=None, sheet=None):
+            resolution=(640, 480), samples=None, sheet=None, subsheet_rule=None):
     """The command line: Blender's executable runs the script in background mode; with Blender as a
-    Python module (no executable: blender is empty) that module's Python runs it directly."""
+    Python module (no executable: blender is empty) that module's Python runs it directly.
+    subsheet_rule: the rule the child analyzes by (the panel's Subsheets setting)."""
     args = [mesh, "--out", out, "--addon", addon_dir, "--engine", engine,
             "--resolution", str(resolution[0]), str(resolution[1])]
     if samples:
         args += ["--samples", str(samples)]
     if sheet is not None:
         args += ["--sheet", str(sheet)]
+    if subsheet_rule is not None:
+        args += ["--subsheet-rule", subsheet_rule]
     if blender:
         return [blender, "-b", "--factory-startup", "--python-exit-code", "1", "--python", script, "--", *args]
     return [python, script, *args]

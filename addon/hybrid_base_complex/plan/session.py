@@ -55,25 +55,34 @@ def load(path: str, scale: float = 1.0, log=print, offset=(0.0, 0.0, 0.0), skip_
     return s
 
 
+#: The subsheet rules (Mesh.analyze's subsheet_rule): the paper's authors' decomposition, or the
+#: fewest subsheets (docs/validation.md).
+SUBSHEET_RULES = ("layers", "fewest")
+
+
 def analyze(structure: Structure, rho: float = 0.8, log=print, subsheet_rule: str = "layers") -> Structure:
     """Runs the whole analysis on a loaded mesh (sheets, subsheets, wireframe); subsheet_rule:
-    'layers' (the paper's authors' decomposition) or 'fewest' (docs/validation.md)."""
+    one of SUBSHEET_RULES. The structure remembers the rule (Structure.subsheet_rule)."""
+    if subsheet_rule not in SUBSHEET_RULES:
+        raise ValueError(f"Unknown subsheet rule {subsheet_rule!r}: expected one of {', '.join(SUBSHEET_RULES)}")
     t = time.perf_counter()
     structure.analysis = structure.mesh.analyze(rho=rho, level="complex", sheets=True, subsheets=True,
                                                 wireframe=True, subsheet_rule=subsheet_rule)
     structure.rho = rho
-    log(f"hbc: analyzed in {time.perf_counter() - t:.2f} s")
+    structure.subsheet_rule = subsheet_rule
+    log(f"hbc: analyzed in {time.perf_counter() - t:.2f} s (subsheets: {subsheet_rule})")
     return structure
 
 
 def ensure(name: str, path: str, scale: float, rho: float, analyzed: bool, log=print,
-           offset=(0.0, 0.0, 0.0), skip_invalid: bool = False) -> Structure:
+           offset=(0.0, 0.0, 0.0), skip_invalid: bool = False, subsheet_rule: str = "layers") -> Structure:
     """The cached structure of `name`, re-read from `path` when the cache lost it or the mesh was
-    pointed at another file."""
+    pointed at another file; with `analyzed`, analyzed by `subsheet_rule` (again, when the cached
+    analysis used the other rule: every path that reads subsheets gets the rule it asks for)."""
     s = _SESSIONS.get(name)
     if s is None or getattr(s, "source", path) != path:
         s = load(path, scale, log, offset, skip_invalid)
         _SESSIONS[name] = s
-    if analyzed and s.analysis is None:
-        analyze(s, rho, log)
+    if analyzed and (s.analysis is None or s.subsheet_rule != subsheet_rule):
+        analyze(s, rho, log, subsheet_rule)
     return s

@@ -29,6 +29,8 @@ class Structure:
         self.scale = float(scale)
         self.set_offset(offset)
         self._component_sheets = None
+        self.subsheet_rule = "layers"  # the rule the analysis split sheets by (session.analyze sets it)
+        self._metrics = (None, None)  # (the analysis they were computed on, Analysis.metrics())
 
     def set_offset(self, offset):
         """Moves the model (every position made from now on) to `offset`."""
@@ -74,6 +76,18 @@ class Structure:
             return dict(self.analysis.stats)
         info = self.mesh.info()
         return {"cells": info["cells"], "hex_ratio": info["hex_ratio"]}
+
+    def metrics(self) -> dict | None:
+        """Analysis.metrics() (docs/metrics.md; `hbc metrics --json` without file and timings),
+        computed once per analysis (the scaled Jacobians take a pass over the cells); None before
+        the mesh is analyzed."""
+        if self.analysis is None:
+            return None
+        done_on, metrics = self._metrics
+        if done_on is not self.analysis:
+            metrics = self.analysis.metrics()
+            self._metrics = (self.analysis, metrics)
+        return metrics
 
     @property
     def length(self) -> float:

@@ -15,7 +15,7 @@ from bpy_extras.io_utils import ExportHelper
 
 from ..blender import export as E
 from ..blender import sources
-from ..blender.context import active_root, structure_of
+from ..blender.context import active_root, structure_of, subsheet_rule
 from ..plan import figures_job
 from ..plan import planning as P
 from .operators import LAYER_ITEMS, _Reporting, make_log
@@ -146,7 +146,8 @@ class HBC_OT_render_figures(_Reporting, bpy.types.Operator):
             out = bpy.path.abspath(self.directory) or os.path.dirname(mesh)
             addon_dir = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
             cmd = figures_job.command(bpy.app.binary_path, sys.executable, script, mesh, out, addon_dir,
-                                      self.engine, (self.width, self.height), self.samples)
+                                      self.engine, (self.width, self.height), self.samples,
+                                      subsheet_rule=subsheet_rule(context.scene))
             # The child Blender takes its Python from the first python3 on PATH: this one's.
             env = dict(os.environ, PATH=os.path.dirname(sys.executable) + os.pathsep + os.environ.get("PATH", ""))
             self._job = figures_job.Job(cmd, env=env)

@@ -9,7 +9,6 @@ import os
 import pathlib
 import time
 
-import bmesh
 import bpy
 import mathutils
 import numpy as np
@@ -21,7 +20,9 @@ from ..blender import inspect
 from ..blender import layers as L
 from ..blender import scene as S
 from ..blender import sources
-from ..blender.context import active_root, fill_sheet_list, find_root, merged_owner_faces, structure_of, unavailable
+from ..blender.context import (active_root, fill_sheet_list, find_root, merged_owner_faces,
+                               refresh_subsheets_stale, select_owner, structure_of, subsheet_rule, unavailable)
+from ..plan import metrics_box as MB
 from ..plan import planning as P
 from ..plan import session
 
@@ -45,17 +46,34 @@ def make_log(context):
 
 
 class _Progress:
+    """Long work in steps: the window manager's progress (the cursor's counter), the step in the
+    status bar (printed in background mode), and how long each step took. `begin` names the step
+    about to run (what the user waits for), `step` ends it."""
+
     def __init__(self, context, total):
+        self.context = context
         self.wm = context.window_manager
         self.log = make_log(context)
         self.p = P.Progress(total, self._report)
+        self.times: dict[str, float] = {}  # seconds per step, by the name its begin gave
+        self._running = None
         self.wm.progress_begin(0, 100)
 
     def _report(self, fraction, message):
         self.wm.progress_update(int(100 * fraction))
         self.log(f"hbc: [{int(100 * fraction):3d}%] {message}")
+        compat.redraw_status(self.context)
+
+    def begin(self, name, message):
+        """Starts the step `name`: says `message` (at the share done so far) and starts its clock."""
+        self._running = (name, time.perf_counter())
+        self._report(min(self.p.done / self.p.total, 1.0), message)
 
     def step(self, message):
+        if self._running is not None:
+            name, t = self._running
+            self.times[name] = self.times.get(name, 0.0) + time.perf_counter() - t
+            self._running = None
         self.p.step(message)
 
     def end(self, context):
@@ -153,42 +171,57 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
             return {"CANCELLED"}
         layers = ["direct"] + (["graph", "blocks", "wireframe"] if self.build_layers and self.analyze else [])
         prog = _Progress(context, 1 + (1 if self.analyze else 0) + len(layers))
-        st = context.scene.hbc
-        tx = S.Transaction()
+        t0 = time.perf_counter()
         try:
-            t0 = time.perf_counter()
-            s = session.load(path, self.scale, log, skip_invalid=self.skip_invalid)
-            if self.beside:
-                s.set_offset(P.beside(model_boxes(), *s.bbox()))
-            prog.step("loaded")
-            if self.analyze:
-                session.analyze(s, st.rho, log)
-                prog.step("analyzed")
-            with tx:
-                root = tx.collection(P.mesh_name_from_path(path))
-                root["hbc_source"] = sources.stored(path)
-                root["hbc_scale"] = float(self.scale)
-                root["hbc_offset"] = [float(x) for x in s.offset]
-                root["hbc_rho"] = float(st.rho)
-                root["hbc_cells"] = int(s.num_cells)
-                if self.skip_invalid:
-                    root["hbc_skip_invalid"] = True  # read again the same way (blender/context.py)
-                for layer in layers:
-                    S.swap_layer(root, layer, L.build_into(tx, root, layer, s, st), tx)
-                    prog.step(f"built {P.LAYER_TITLES[layer]}")
-                context.scene.collection.children.link(root)
+            s = self._load_and_analyze(context, path, prog, log)
+            root = self._build_scene(context, path, s, layers, prog)
         except Exception as e:  # noqa: BLE001 - any failure must cancel cleanly
             return self.cancel_with(context, e, prog, wrap=True)
         prog.end(context)
+        st = context.scene.hbc
         session.put(root.name, s)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
         if self.frame:
             compat.frame_objects(context, S.objects_in(root))
         push_undo_step(self.bl_label)
-        dropped = session.dropped_text(s.mesh.dropped)
-        return self.finish_with(f"Imported {root.name}: {s.num_cells} cells in {time.perf_counter() - t0:.2f} s"
-                                + (f"; {dropped}" if dropped else ""), log)
+        return self.finish_with(P.import_report(root.name, s.num_cells, s.num_components if s.has_analysis else None,
+                                                s.num_sheets if s.has_analysis else None,
+                                                len(S.objects_in(root)), prog.times, time.perf_counter() - t0,
+                                                session.dropped_text(s.mesh.dropped)), log)
+
+    def _load_and_analyze(self, context, path, prog, log):
+        """Reads the mesh (placed beside the others) and analyzes it, each a step of `prog`."""
+        prog.begin("load", f"loading {os.path.basename(path)}")
+        s = session.load(path, self.scale, log, skip_invalid=self.skip_invalid)
+        if self.beside:
+            s.set_offset(P.beside(model_boxes(), *s.bbox()))
+        prog.step(f"loaded {s.num_cells} cells")
+        if self.analyze:
+            prog.begin("analysis", f"analyzing {s.num_cells} cells")
+            session.analyze(s, context.scene.hbc.rho, log, subsheet_rule(context.scene))
+            prog.step(f"analyzed: {s.num_components} components, {s.num_sheets} sheets")
+        return s
+
+    def _build_scene(self, context, path, s, layers, prog):
+        """The mesh's collection with its layers, linked at the end: all or nothing (the
+        transaction removes what was made when a step fails)."""
+        st = context.scene.hbc
+        with S.Transaction() as tx:
+            root = tx.collection(P.mesh_name_from_path(path))
+            root["hbc_source"] = sources.stored(path)
+            root["hbc_scale"] = float(self.scale)
+            root["hbc_offset"] = [float(x) for x in s.offset]
+            root["hbc_rho"] = float(st.rho)
+            root["hbc_cells"] = int(s.num_cells)
+            if self.skip_invalid:
+                root["hbc_skip_invalid"] = True  # read again the same way (blender/context.py)
+            for layer in layers:
+                prog.begin("scene", f"building {P.LAYER_TITLES[layer]}")
+                S.swap_layer(root, layer, L.build_into(tx, root, layer, s, st), tx)
+                prog.step(f"built {P.LAYER_TITLES[layer]}")
+            context.scene.collection.children.link(root)
+        return root
 
 
 class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
@@ -204,12 +237,13 @@ class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
         t0 = time.perf_counter()
         try:
             s = structure_of(root, False, log)
-            session.analyze(s, st.rho, log, subsheet_rule=st.subsheet_rule)
+            session.analyze(s, st.rho, log, subsheet_rule(context.scene))
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)
         root["hbc_rho"] = float(st.rho)
         st.active_mesh = root.name
         fill_sheet_list(st, s)
+        refresh_subsheets_stale(root, st.sheet_index)
         return self.finish_with(f"Analyzed {root.name}: {s.num_components} components, {s.num_sheets} sheets "
                                 f"in {time.perf_counter() - t0:.2f} s")
 
@@ -433,20 +467,85 @@ class HBC_OT_select_block(bpy.types.Operator):
 
     def execute(self, context):
         ob = context.active_object
-        bm, layer, owner = merged_owner_faces(ob)
+        _, layer, owner = merged_owner_faces(ob)
         if owner is None:
             self.report({"ERROR"}, "Pick a face of the component or sheet first")
             return {"CANCELLED"}
-        n = 0
-        for f in bm.faces:
-            f.select_set(f[layer] == owner)
-            n += f[layer] == owner
-        bm.select_flush_mode()
-        bmesh.update_edit_mesh(ob.data)
+        n = select_owner(ob, owner)
         if self.frame:
             compat.frame_edit_selection(context)
         self.report({"INFO"}, f"Selected {ob['hbc_owner']} {owner}: {n} faces")
         return {"FINISHED"}
+
+
+class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
+    """Show, select and frame the block (component of hexahedra) or the sheet holding the active mesh's lowest scaled Jacobian"""
+
+    bl_idname = "hbc.show_worst"
+    bl_label = "Show Worst"
+
+    kind: EnumProperty(name="What", items=[("component", "Block", "The worst component of hexahedra"),
+                                           ("sheet", "Sheet", "The worst sheet")])
+
+    def execute(self, context):
+        root = active_root(context)
+        st = context.scene.hbc
+        log = make_log(context)
+        try:
+            s = structure_of(root, True, log, st.rho)
+            which = {kind: i for kind, i, _, _ in MB.worst(s.metrics())}[self.kind]
+            if which is None:
+                raise ValueError(f"The mesh has no worst {self.kind}: no {self.kind} of hexahedra")
+            if self.kind == "sheet":
+                n = self._show_sheet(context, root, s, which, log)
+            else:
+                n = self._show_component(context, root, s, which, log)
+        except Exception as e:  # noqa: BLE001
+            return self.cancel_with(context, e)
+        st.active_mesh = root.name
+        word = "block" if self.kind == "component" else "sheet"
+        return self.finish_with(f"{root.name}: worst {word} {which} shown and selected ({n} objects or faces)")
+
+    @staticmethod
+    def _show_sheet(context, root, s, sheet, log):
+        """Picks the sheet in the list (the sheets layer shows it) and shows the picked-sheet layer
+        (its highlights) with it, selected and framed."""
+        st = context.scene.hbc
+        if len(st.sheets) != s.num_sheets:
+            fill_sheet_list(st, s)
+        st.sheet_index = sheet  # its update shows the sheet in the sheets layer (and rebuilds "sheet")
+        coll = S.find_layer(root, "sheet")
+        if coll is None or any(ob.get("hbc_sheet") != sheet for ob in S.objects_in(coll)):
+            coll, _ = L.build_layer(root, "sheet", s, st, log)
+        coll.hide_viewport = False
+        objects = [ob for ob in S.objects_in(coll) if not ob.hide_viewport]
+        compat.frame_objects(context, objects)
+        return len(objects)
+
+    @staticmethod
+    def _show_component(context, root, s, component, log):
+        """Selects the component's object in the Blocks layer (built when missing) and frames it;
+        in a merged Blocks mesh, its faces in edit mode (as Select Block does)."""
+        st = context.scene.hbc
+        coll = S.find_layer(root, "blocks")
+        if coll is None:
+            coll, _ = L.build_layer(root, "blocks", s, st, log)
+        coll.hide_viewport = False
+        objects = S.objects_in(coll)
+        mine = [ob for ob in objects if ob.get("hbc_component") == component]
+        if mine:
+            mine[0].hide_viewport = False
+            compat.frame_objects(context, mine)
+            return 1
+        merged = next(ob for ob in objects if ob.get("hbc_owner") == "component")
+        if context.object is not None and context.object.mode != "OBJECT":
+            bpy.ops.object.mode_set(mode="OBJECT")
+        compat.frame_objects(context, [merged])
+        bpy.ops.object.mode_set(mode="EDIT")
+        bpy.ops.mesh.select_mode(type="FACE")
+        n = select_owner(merged, component)
+        compat.frame_edit_selection(context)
+        return n
 
 
 class HBC_OT_add_cut_plane(bpy.types.Operator):

@@ -1,4 +1,4 @@
-"""The "Hex Structure" sidebar (3D view > N): the mesh, its Table 1 row, one sub-panel per layer,
+"""The "Hex Structure" sidebar (3D view > N): the mesh, its Table 1 row, its key metrics, one sub-panel per layer,
 a legend, and the selection. Laid out for the sidebar's default width: one short-labelled
 property per row, icons for actions, longer words in tooltips. Panel order is fixed (bl_order) and
 no panel appears or disappears with the selection, so buttons never move under the cursor."""
@@ -15,9 +15,10 @@ from ..blender import scene as S
 from ..blender import sources
 from ..blender.context import active_root, merged_owner_faces, unavailable
 from ..plan import inspection as IP
+from ..plan import metrics_box as MB
 from ..plan import planning as P
 from ..plan import session
-from ..plan.native import module_problem
+from ..plan.native import import_hbc, module_problem
 
 #: Longest label a row may carry at the default sidebar width (about 30 characters across, a
 #: property's value taking the rest); tests/addon/blender checks every drawn label against it.
@@ -155,6 +156,54 @@ class HBC_PT_table1(_Sub, bpy.types.Panel):
         row.operator("hbc.copy_table1", text="CSV", icon="COPYDOWN").format = "CSV"
 
 
+def _value_row(col, label, tip, text):
+    """A label (a button whose tooltip says what it means) and its value at the right."""
+    split = col.split(factor=0.5, align=True)
+    split.operator("hbc.explain", text=label, emboss=False).text = tip
+    right = split.row()
+    right.alignment = "RIGHT"
+    right.label(text=text)
+
+
+class HBC_PT_metrics(_Sub, bpy.types.Panel):
+    """The key structural metrics of the active mesh (plan/metrics_box.py, docs/metrics.md), and
+    buttons that show its worst component and worst sheet. Closed at first: the metrics are
+    computed when the box is first drawn open (a pass over the cells for the scaled Jacobians)."""
+
+    bl_idname = "HBC_PT_metrics"
+    bl_label = "Metrics"
+    bl_order = 2
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        layout = self.layout
+        root = active_root(context)
+        s = session.get(root.name)
+        if s is None or s.analysis is None:
+            layout.label(text="Analyze first" if s is not None else "Not in memory", icon="INFO")
+            return
+        try:
+            metrics = s.metrics()
+        except Exception as e:  # noqa: BLE001 - a panel cannot report; say it where the values would be
+            layout.label(text="No metrics", icon="ERROR")
+            for line in textwrap.wrap(P.describe_error(e), 30):
+                layout.label(text=line)
+            return
+        col = layout.column(align=True)
+        for label, text, tip, indented, _ in MB.rows(metrics, import_hbc().METRIC_FIELDS):
+            _value_row(col, ("  " if indented else "") + label, tip, text)
+        col = layout.column(align=True)
+        worst = MB.worst(metrics)
+        for kind, _, text, label in worst:
+            _value_row(col, label, f"The {kind} holding the lowest scaled Jacobian (its value in brackets)", text)
+        row = layout.row(align=True)
+        for kind, i, _, _ in worst:
+            sub = row.row(align=True)
+            sub.enabled = i is not None
+            sub.operator("hbc.show_worst", text=f"Show {'block' if kind == 'component' else kind}",
+                         icon="RESTRICT_SELECT_OFF").kind = kind
+
+
 def layer_controls(context, layout, root, layer):
     """Build / Rebuild and Clear for one layer; greyed out (reason in the tooltip) when the layer
     cannot be built now."""
@@ -207,7 +256,7 @@ def visibility_icon(coll) -> str:
 class HBC_PT_layers(_Sub, bpy.types.Panel):
     bl_idname = "HBC_PT_layers"
     bl_label = "Layers"
-    bl_order = 2
+    bl_order = 3
 
     def draw(self, context):
         pass
@@ -304,7 +353,7 @@ class HBC_PT_legend(_Sub, bpy.types.Panel):
 
     bl_idname = "HBC_PT_legend"
     bl_label = "Legend"
-    bl_order = 3
+    bl_order = 4
 
     def draw(self, context):
         st = context.scene.hbc
@@ -340,7 +389,7 @@ class HBC_PT_selection(_Base, bpy.types.Panel):
     bl_idname = "HBC_PT_selection"
     bl_label = "Selection"
     bl_parent_id = "HBC_PT_main"
-    bl_order = 4
+    bl_order = 5
 
     def draw(self, context):
         layout = self.layout
@@ -391,7 +440,7 @@ class HBC_PT_inspect(_Sub, bpy.types.Panel):
     bl_idname = "HBC_PT_inspect"
     bl_label = "Look inside"
     # Below the layers and closed at first: an import shows the layers without scrolling.
-    bl_order = 5
+    bl_order = 6
     bl_options = {"DEFAULT_CLOSED"}
 
     def draw(self, context):

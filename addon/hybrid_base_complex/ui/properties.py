@@ -10,7 +10,7 @@ from bpy.props import (BoolProperty, CollectionProperty, EnumProperty, FloatProp
 from ..blender import inspect
 from ..blender import layers
 from ..blender import scene
-from ..blender.context import active_root, find_root
+from ..blender.context import active_root, find_root, refresh_subsheets_stale
 from ..plan import inspection as IP
 from ..plan import planning as P
 from ..plan import session
@@ -77,7 +77,8 @@ class HBCSettings(bpy.types.PropertyGroup):
         name="Subsheets", default="layers",
         items=[("layers", "Layers", "The paper's authors' decomposition of self-intersecting sheets"),
                ("fewest", "Fewest", "The fewest subsheets, with a lower bound that proves it when they meet")],
-        description="How self-intersecting sheets are split into subsheets, used when the mesh is analyzed (again)")
+        description="How self-intersecting sheets are split into subsheets, in every analysis: the import, Analyze, "
+                    "and a mesh analyzed again for a layer, Export VTU, the Metrics box or Figures")
     opacity_floor: FloatProperty(name="Floor", default=0.15, min=0.0, max=1.0,
                                  description="Opacity of the faintest (farthest) wireframe lines")
     simplified: BoolProperty(name="Simplified", default=True,
@@ -107,12 +108,7 @@ def _sheet_picked(settings, context):
     if root is None:
         return
     _sheets_visibility(settings)
-    sub = scene.find_layer(root, "subsheets")
-    if sub is not None:
-        stale = any(ob.get("hbc_sheet") != settings.sheet_index for ob in scene.objects_in(sub))
-        if stale != bool(sub.get("hbc_stale")):  # hidden while stale, shown again when current
-            sub.hide_viewport = stale
-        sub["hbc_stale"] = stale
+    refresh_subsheets_stale(root, settings.sheet_index)
     s = session.get(settings.active_mesh)
     if not settings.auto_show or s is None or s.analysis is None or scene.find_layer(root, "sheet") is None:
         return

@@ -510,7 +510,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     for cls in sidebar_panels():
         by_parent.setdefault(getattr(cls, "bl_parent_id", ""), []).append((cls.bl_order, cls.bl_label))
     assert [label for _, label in sorted(by_parent["HBC_PT_main"])] == [
-        "Table 1", "Layers", "Legend", "Selection"]
+        "Table 1", "Metrics", "Layers", "Legend", "Selection"]
     assert [label for _, label in sorted(by_parent["HBC_PT_layers"])] == [
         "Direct view", "Singularities", "Blocks", "Sheets", "Picked sheet", "Subsheets", "Wireframe"]
     assert "poll" not in panels.HBC_PT_selection.__dict__

@@ -2,6 +2,7 @@
 job's progress, exit status and cancel on stand-in processes (a Python printing what the script
 prints)."""
 import os
+import pathlib
 import sys
 import time
 
@@ -25,6 +26,22 @@ def test_command_for_blender_and_for_the_bpy_module():
                            "--resolution", "64", "48", "--samples", "2"]
     module = F.command("", "/venv/bin/python", "s.py", "m.mesh", "out", "addon")
     assert module[:3] == ["/venv/bin/python", "s.py", "m.mesh"] and "--" not in module
+    assert "--subsheet-rule" not in module  # the script's default (layers) unless the panel says
+    fewest = F.command("", "/py", "s.py", "m.mesh", "out", "addon", subsheet_rule="fewest")
+    assert fewest[-2:] == ["--subsheet-rule", "fewest"]
+
+
+def test_figure_script_takes_the_subsheet_rule():
+    """render_figures.py's options (blender_scripts/figures/plan.py) take the rule the job passes."""
+    import sys
+
+    sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[3] / "blender_scripts"))
+    try:
+        from figures import plan
+    finally:
+        sys.path.pop(0)
+    args = plan.parse(F.command("", "/py", "s.py", "m.mesh", "out", "addon", subsheet_rule="fewest")[2:])
+    assert args.subsheet_rule == "fewest" and plan.parse(["m.mesh", "--out", "o"]).subsheet_rule == "layers"
 
 
 def test_script_found_beside_the_sources_and_through_a_build_tree(tmp_path):
