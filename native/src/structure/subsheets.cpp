@@ -228,10 +228,12 @@ std::vector<Part> layers(const SheetView& v) {
   std::vector<Part> parts;
   std::vector<uint8_t> visited(v.size(), 0);
   Marks reach(v.size()), scope(v.size());
-  // Seeds from the highest curve id down. A few seeds (4 of 512 on teapot's larger sheet) start
-  // a layer inside a turn and grow a larger one, which changes the split; the authors' own order
-  // (their edge numbering) avoids them, and so does this one on every sheet we hold, where the
-  // lowest-first order does not (docs/validation.md).
+  // Seeds from the highest curve id down, and grow_layer pops the highest id first. The split
+  // depends on the visiting order; the authors' code visits in CPython's set order over its own
+  // edge ids, which no geometric rule describes, so the order here is fixed and documented rather
+  // than copied (docs/validation.md). Driven with this order their code gives these subsheets. A
+  // few seeds (4 of 512 on teapot's larger sheet) start a layer inside a turn and grow a larger
+  // one; highest-first meets none of them on the sheets we hold, lowest-first does.
   for (size_t k = v.size(); k-- > 0;) {
     const auto seed = static_cast<int32_t>(k);
     if (parallels_visited(v, seed, visited)) continue;
