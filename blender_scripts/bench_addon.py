@@ -23,10 +23,19 @@ one update of the sliced direct view: the slicing plane (an Empty through the me
 moved and the scene evaluated, which rebuilds the live surface, median of --repeat moves (column
 `slice`; target 0.2 s at 10^6 cells). --no-analysis imports without analysing (the
 direct view needs none), e.g. for `hbc generate grid --size 100 100 100 -o grid100.ovm`.
+
+Column `metrics` times the Metrics box's first drawing (Analysis.metrics()); `cpu` is the
+process's CPU seconds for the mesh (all threads: on a busy machine it says more than the
+wall-clock columns); `peak MB` is the process's peak resident memory after the mesh (it never goes
+down, so with several meshes each row is the peak so far); the import's own report (printed)
+splits its time into load, analysis and scene. --layers names the layers timed (default all; e.g.
+`blocks,sheets` for a 10^6-cell mesh, whose wireframe and subsheets take long);
+--rebuilds 0 skips the rebuild timing.
 """
 
 import argparse
 import os
+import resource
 import sys
 import time
 
@@ -47,6 +56,8 @@ def parse():
     ap.add_argument("--surface-above", type=int, default=None,
                     help="the add-on's live-surface threshold (cells) for --inspect; a large value times "
                          "the geometry-nodes filter on every cell instead")
+    ap.add_argument("--layers", default=None,
+                    help="comma-separated layers to time after the import (default: every one that applies)")
     ap.add_argument("meshes", nargs="+")
     return ap.parse_args(argv)
 
@@ -118,6 +129,7 @@ def main():
         st = bpy.context.scene.hbc
         if args.split_max is not None:
             st.split_max = args.split_max
+        cpu0 = time.process_time()
         t = time.perf_counter()
         assert bpy.ops.import_mesh.hbc(filepath=path, analyze=analyzed) == {"FINISHED"}
         t_import = time.perf_counter() - t
@@ -133,11 +145,18 @@ def main():
             layers.append("sheet")
             if int(s.sheet_types()[st.sheet_index]) == 3:
                 layers.append("subsheets")
+        if analyzed:  # the Metrics box, the first time it is drawn open
+            t = time.perf_counter()
+            s.metrics()
+            times["metrics"] = time.perf_counter() - t
+        if args.layers is not None:
+            wanted = args.layers.split(",")
+            layers = [layer for layer in layers if layer in wanted]
         for layer in layers:
             t = time.perf_counter()
             assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}, layer
             times[layer] = time.perf_counter() - t
-        if "blocks" in layers:
+        if "blocks" in layers and args.rebuilds > 0:
             first, again = time_rebuilds(st, max(args.rebuilds, 1))
             times["rebuild blocks"] = again
             rebuilds.append((os.path.basename(path), len(S.find_layer(root, "blocks").objects), first, again))
@@ -149,10 +168,12 @@ def main():
             if args.surface_above is not None:
                 bpy.context.scene.hbc_inspect.surface_above = args.surface_above
             times.update(time_slice(root, s, args.repeat))
-        total = sum(v for k, v in times.items() if k not in ("slice", "rebuild blocks"))
+        total = sum(v for k, v in times.items() if k not in ("slice", "rebuild blocks", "cpu", "peak MB"))
         if args.inspect and not args.no_targets and s.num_cells >= 10 ** 6 and times["slice"] > 0.2:
             failed = True
             print(f"bench_addon: {path}: slice update {times['slice']:.2f} s is over the 0.2 s target", flush=True)
+        times["cpu"] = time.process_time() - cpu0  # every thread of the process
+        times["peak MB"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0  # kB on Linux
         rows.append((os.path.basename(path), s.num_cells, len(bpy.data.objects), times, total))
         cells = s.num_cells
         limit = 2.0 if cells < 20000 else 20.0
@@ -160,13 +181,15 @@ def main():
             failed = True
             print(f"bench_addon: {path}: {total:.2f} s is over the {limit:.0f} s target", flush=True)
 
-    keys = ["import", "graph", "blocks", "sheets", "wireframe", "sheet", "subsheets", "rebuild blocks", "evaluate"]
+    keys = ["import", "metrics", "graph", "blocks", "sheets", "wireframe", "sheet", "subsheets", "rebuild blocks", "evaluate"]
     if args.inspect:
         keys += ["cells", "slice"]
+    keys += ["cpu", "peak MB"]
     print("\n| mesh | cells | objects | " + " | ".join(keys) + " | total (s) |")
     print("|---|---:|---:|" + "---:|" * len(keys) + "---:|")
     for name, cells, objects, times, total in rows:
-        cols = " | ".join(f"{times[k]:.2f}" if k in times else "-" for k in keys)
+        cols = " | ".join((f"{times[k]:.0f}" if k == "peak MB" else f"{times[k]:.2f}") if k in times else "-"
+                          for k in keys)
         print(f"| {name} | {cells} | {objects} | {cols} | {total:.2f} |")
     if rebuilds:
         n = max(args.rebuilds, 1)
