@@ -32,5 +32,9 @@ fi
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-"$PY" "$ROOT/scripts/export_legend.py" "$tmp/legend.json"
+# Table 1's columns come from the compiled hbc module when this Python finds one (the Release
+# build's, build/python, if nothing else); without it the page asks the WebAssembly core.
+pypath=${PYTHONPATH:-}
+[[ -d $ROOT/build/python/hbc ]] && pypath=${pypath:+$pypath:}$ROOT/build/python
+PYTHONPATH=$pypath "$PY" "$ROOT/scripts/export_legend.py" "$tmp/legend.json"
 node build.mjs --out "$OUT" --legend "$tmp/legend.json" --wasm "$WASM_DIR"

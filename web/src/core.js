@@ -25,13 +25,22 @@ function copy(v) {
   return v;
 }
 
-export function arr(obj, name) {
-  return copy(get(obj, name));
+/** The first of `names` the object has, copied; undefined when it has none. */
+export function arr(obj, ...names) {
+  for (const name of names) {
+    if (obj != null && name in obj) return copy(get(obj, name));
+  }
+  return undefined;
 }
 
-/** A CSR as {offsets, items} from `<name>_offsets` and `<name>_items`. */
-export function csr(obj, name) {
-  return { offsets: Int32Array.from(arr(obj, `${name}_offsets`)), items: Int32Array.from(arr(obj, `${name}_items`)) };
+/** A CSR as {offsets, items} from `<name>_offsets` and `<name>_items` (the first of `names` the
+ *  object has); empty when it has none (a highlight an older core does not give). */
+export function csr(obj, ...names) {
+  for (const name of names) {
+    const o = arr(obj, `${name}_offsets`);
+    if (o !== undefined) return { offsets: Int32Array.from(o), items: Int32Array.from(arr(obj, `${name}_items`)) };
+  }
+  return { offsets: new Int32Array(1), items: new Int32Array(0) };
 }
 
 /** The text of a thrown C++ InputError (or any error) as the CLI prints it. */
@@ -45,6 +54,14 @@ export function errorText(M, e) {
     if (typeof M.lastError === 'function') return M.lastError();
   }
   return String(e);
+}
+
+/** The path the core loads: the one file, or for several files (an OpenFOAM case) the owner file. */
+function loadPath(files) {
+  if (files.length === 1) return '/in/' + files[0].path;
+  const owner = files.find((f) => /(^|\/)owner(\.gz)?$/.test(f.path));
+  const foam = files.find((f) => /\.foam$/i.test(f.path));
+  return '/in/' + (owner ?? foam ?? files[0]).path;
 }
 
 export class Core {
@@ -91,15 +108,41 @@ export class Core {
     } else FS.unlink(path);
   }
 
-  load(path) { return this.M.load(path); }
+  /** The mesh of some files [{path, buffer}]: one mesh file, or an OpenFOAM case's files. The
+   *  binding reads bytes with a name (the name's extension picks the reader), or paths in its
+   *  file system when it exports one. */
+  open(files) {
+    const M = this.M;
+    if (M.FS && typeof M.load_path === 'function') {
+      this.removeTree('/in');
+      M.FS.mkdir('/in');
+      this.writeFiles(files.map((f) => ({ path: 'in/' + f.path, buffer: f.buffer })));
+      return M.load_path(loadPath(files));
+    }
+    if (files.length > 1 && typeof M.load_case === 'function') {
+      return M.load_case(files.map((f) => ({ name: f.path, bytes: new Uint8Array(f.buffer) })));
+    }
+    if (files.length > 1) {
+      throw new Error('This build of the core reads one file at a time: open the case\'s files one by one is not possible; use the CLI for OpenFOAM cases.');
+    }
+    return M.load(new Uint8Array(files[0].buffer), files[0].path, false);
+  }
 
   analyze(mesh) {
-    return typeof mesh.analyze === 'function' ? mesh.analyze() : this.M.analyze(mesh);
+    if (typeof mesh.analyze !== 'function') return this.M.analyze(mesh);
+    try {
+      return mesh.analyze({});
+    } catch (e) {
+      // A binding whose analyze() takes no options (embind checks the argument count).
+      if (/argument|parameter/i.test(String(e && e.message))) return mesh.analyze();
+      throw e;
+    }
   }
 
   /** `hbc analyze FILE --json` as text, from the library's own JSON writer. */
   analysisJson(mesh, analysis, file) {
     const M = this.M;
+    if (typeof analysis.stats_json === 'function') return analysis.stats_json();
     if (typeof M.analysis_json === 'function') return M.analysis_json(mesh, analysis, file);
     if (typeof M.analyze_json === 'function') return M.analyze_json(mesh, analysis, file);
     if (typeof analysis.stats_json === 'function') return analysis.stats_json(file);
@@ -108,11 +151,15 @@ export class Core {
     return JSON.stringify({ file, ...obj });
   }
 
-  graph(a) { return get(a, 'graph'); }
-  complex(a) { return get(a, 'complex'); }
+  // The graph's and the base complex's arrays: on their own objects (Python) or on the analysis.
+  graph(a) { return 'graph' in a ? get(a, 'graph') : a; }
+  complex(a) { return 'complex' in a ? get(a, 'complex') : a; }
 
   blockSoup(mesh, analysis, what, sheet, shrink) {
-    const s = this.M.block_soup(mesh, analysis, what, sheet == null ? -1 : sheet, shrink);
+    const id = sheet == null ? -1 : sheet;
+    const s = typeof this.M.block_soup === 'function'
+      ? this.M.block_soup(mesh, analysis, what, id, shrink)
+      : analysis.block_soup(what, id, shrink);
     const out = {
       positions: Float32Array.from(arr(s, 'positions')),
       offsets: Int32Array.from(arr(s, 'face_vertices_offsets')),
@@ -148,7 +195,19 @@ export class Core {
   subsheets(a, sheet) { return a.subsheets(sheet); }
 
   wireframe(a, sheet, subsheet) {
-    return a.wireframe(sheet == null ? -1 : sheet, subsheet == null ? -1 : subsheet);
+    const s = sheet == null ? -1 : sheet;
+    const k = subsheet == null ? -1 : subsheet;
+    try {
+      return a.wireframe(s, k);
+    } catch (e) {
+      if (!/argument|parameter/i.test(String(e && e.message))) throw e;
+    }
+    if (s >= 0) throw new Error("This build of the core draws the whole mesh's wireframe only.");
+    return a.wireframe();
+  }
+
+  hasCut() {
+    return typeof this.M.kept_surface_soup === 'function' && typeof this.M.cell_centroids === 'function';
   }
 
   free(...objs) {

@@ -33,14 +33,6 @@ async function module() {
   return core;
 }
 
-/** The path the core loads: the one file, or for several files (an OpenFOAM case) the owner file. */
-function loadPath(files) {
-  if (files.length === 1) return '/in/' + files[0].path;
-  const owner = files.find((f) => /(^|\/)owner(\.gz)?$/.test(f.path));
-  const foam = files.find((f) => /\.foam$/i.test(f.path));
-  return '/in/' + (owner ?? foam ?? files[0]).path;
-}
-
 function closeMesh() {
   if (!S) return;
   core.free(S.analysis, S.mesh);
@@ -51,15 +43,11 @@ async function open({ name, files }) {
   progress(0.05, 'Starting the WebAssembly core');
   const c = await module();
   closeMesh();
-  c.removeTree('/in');
-  c.M.FS.mkdir('/in');
   progress(0.1, 'Reading ' + name);
-  c.writeFiles(files.map((f) => ({ path: 'in/' + f.path, buffer: f.buffer })));
-  const path = loadPath(files);
   let mesh;
   let analysis;
   try {
-    mesh = c.load(path);
+    mesh = c.open(files);
   } catch (e) {
     // The core names the file by its path in the in-memory file system: name it as the user did.
     throw new Error(errorText(c.M, e).split('/in/').join(''));
@@ -80,9 +68,9 @@ async function open({ name, files }) {
   S.cellTypes = Uint8Array.from(arr(mesh, 'cell_types'));
   const cx = c.complex(analysis);
   S.componentKind = Uint8Array.from(arr(cx, 'component_kind'));
-  S.sheetType = Uint8Array.from(arr(analysis, 'sheet_type'));
+  S.sheetType = Uint8Array.from(arr(analysis, 'sheet_type', 'sheet_types') ?? []);
   const sc = csr(analysis, 'sheet_cells');
-  const sp = csr(analysis, 'sheet_components');
+  const sp = csr(analysis, 'sheet_components', 'sheet_blocks');
   const sheets = [];
   for (let i = 0; i < S.sheetType.length; i++) {
     sheets.push({ id: i, type: S.sheetType[i], cells: sc.offsets[i + 1] - sc.offsets[i], blocks: sp.offsets[i + 1] - sp.offsets[i] });
@@ -133,7 +121,7 @@ function centroids() {
 }
 
 function hasKept() {
-  return typeof core.M.kept_surface_soup === 'function' && typeof core.M.cell_centroids === 'function';
+  return core.hasCut();
 }
 
 /** The direct view: the boundary (of the cells kept by the plane and the type filter, when the
@@ -153,7 +141,7 @@ function buildDirect(p) {
     boundary = core.keptSurface(S.mesh, kept, 0);
     parts.push({ ...soupPart(boundary, (o) => cellTypeColor(S.cellTypes[o]), { cellTypes: S.cellTypes, name: 'cut' }), cut: true });
   } else {
-    boundary = core.blockSoup(S.mesh, null, 'boundary', -1, 0);
+    boundary = core.blockSoup(S.mesh, S.analysis, 'boundary', -1, 0);
     parts.push({ ...soupPart(boundary, () => L.cell_type_colors[0], { cellTypes: S.cellTypes, name: 'boundary' }), boundary: true });
   }
   if (S.cellTypes.some((t) => t !== 0)) {
@@ -284,17 +272,24 @@ function buildSubsheets(p) {
   const count = Number(get(sub, 'count'));
   const soup = core.blockSoup(S.mesh, S.analysis, 'subsheets', i, p.shrink);
   const un = csr(sub, 'subsheet_unmatched_vertices');
-  const types = arr(sub, 'subsheet_type');
+  const types = arr(sub, 'subsheet_type', 'subsheet_types');
   const cells = csr(sub, 'subsheet_cells').offsets;
   const list = Array.from({ length: count }, (_, k) => ({ type: types[k], cells: cells[k + 1] - cells[k] }));
   const parts = [];
+  let wiresOk = true;
   // One part per subsheet, so that the page can lay them out side by side.
   for (let k = 0; k < count; k++) {
     const one = selectOwners(soup, new Set([k]));
     parts.push({ ...soupPart(one, () => spreadColor(k), { cellTypes: S.cellTypes, name: `subsheet ${k}` }), subsheet: k });
     const dots = row(un, k);
     if (dots.length) parts.push({ ...dotsPart(S.points, dots, L.unmatched_color, `subsheet ${k} unmatched`), subsheet: k });
-    if (p.subsheetWires) parts.push(...buildWireframe({ ...p, sheet: i, subsheet: k }).map((w) => ({ ...w, below: true })));
+    if (p.subsheetWires && wiresOk) {
+      try {
+        parts.push(...buildWireframe({ ...p, sheet: i, subsheet: k }).map((w) => ({ ...w, below: true })));
+      } catch (e) {
+        wiresOk = false; // a core without per-subsheet wireframes: the subsheets still draw
+      }
+    }
   }
   core.free(sub);
   return parts.map((q) => ({ ...q, subsheets: list }));
