@@ -8,6 +8,7 @@
 #include "hbc/io.hpp"
 #include "io/detail/gunzip.hpp"
 #include "platform/file_map.hpp"
+#include "platform/charconv.hpp"
 
 namespace hbc {
 namespace {
@@ -24,7 +25,7 @@ bool is_mesh_dir(const fs::path& dir) { return has_file(dir, "owner"); }
 // A time folder's value ("0.5", "100"), or false for any other name.
 bool time_value(const std::string& name, double& t) {
   const char* e = name.data() + name.size();
-  auto r = std::from_chars(name.data(), e, t);
+  auto r = ::hbc::detail::from_chars(name.data(), e, t);
   return r.ec == std::errc() && r.ptr == e;
 }
 

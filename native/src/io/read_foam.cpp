@@ -18,6 +18,7 @@
 
 #include "hbc/io.hpp"
 #include "io/detail/text_scanner.hpp"
+#include "platform/charconv.hpp"
 
 namespace hbc {
 namespace {
@@ -133,7 +134,7 @@ class FoamText {
     const char* b = t_.data() + pos_;
     const char* e = t_.data() + t_.size();
     int64_t v = 0;
-    auto r = std::from_chars(b, e, v);
+    auto r = ::hbc::detail::from_chars(b, e, v);
     if (r.ec != std::errc() || (r.ptr != e && !ends_number(*r.ptr))) fail(std::string(what) + " (an integer)");
     pos_ += static_cast<size_t>(r.ptr - b);
     return v;
@@ -143,7 +144,7 @@ class FoamText {
     const char* b = t_.data() + pos_;
     const char* e = t_.data() + t_.size();
     double v = 0;
-    auto r = std::from_chars(b, e, v);
+    auto r = ::hbc::detail::from_chars(b, e, v);
     if (r.ptr == b || (r.ptr != e && !ends_number(*r.ptr))) fail(std::string(what) + " (a number)");
     if (r.ec != std::errc() || !std::isfinite(v)) fail(std::string(what) + " (a finite number)");
     pos_ += static_cast<size_t>(r.ptr - b);

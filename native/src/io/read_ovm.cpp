@@ -15,6 +15,7 @@
 
 #include "hbc/io.hpp"
 #include "io/detail/text_scanner.hpp"
+#include "platform/charconv.hpp"
 
 namespace hbc {
 namespace {
@@ -92,7 +93,7 @@ class OvmLines {
     const char* b = t.data();
     const char* e = b + t.size();
     if (b != e && *b == '+') ++b;
-    auto r = std::from_chars(b, e, v);
+    auto r = ::hbc::detail::from_chars(b, e, v);
     if (r.ec != std::errc() || r.ptr != e) fail(what + " (an integer), found " + shown(t));
     return v;
   }
@@ -108,7 +109,7 @@ class OvmLines {
     const char* b = t.data();
     const char* e = b + t.size();
     if (b != e && *b == '+') ++b;
-    auto r = std::from_chars(b, e, v);
+    auto r = ::hbc::detail::from_chars(b, e, v);
     if (r.ec == std::errc() && r.ptr == e && std::isfinite(v)) return v;
     if (r.ptr == e && (r.ec == std::errc::result_out_of_range || !std::isfinite(v)))
       fail(what + " (a finite number), found " + shown(t));

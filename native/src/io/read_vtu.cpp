@@ -18,6 +18,7 @@
 #include "io/detail/base64.hpp"
 #include "io/detail/byte_cursor.hpp"
 #include "io/detail/vtk_cells.hpp"
+#include "platform/charconv.hpp"
 
 namespace hbc {
 namespace {
@@ -175,7 +176,7 @@ std::vector<T> VtuReader::array(const pugi::xml_node& a, int64_t count) {
       while (p < e && (*p == ' ' || *p == '\n' || *p == '\r' || *p == '\t')) ++p;
       if (p == e) break;
       T v{};
-      const auto r = std::from_chars(p, e, v);
+      const auto r = ::hbc::detail::from_chars(p, e, v);
       if (r.ec != std::errc() || (r.ptr < e && !std::isspace(static_cast<unsigned char>(*r.ptr))))
         fail(at, std::string(std::is_integral_v<T> ? "an integer" : "a number") + " in the ascii DataArray, found '" + std::string(p, std::min<size_t>(20, static_cast<size_t>(e - p))) + "'");
       out.push_back(v);

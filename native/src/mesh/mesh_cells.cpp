@@ -13,6 +13,7 @@
 #include "platform/huge_pages.hpp"
 #include "parallel/parallel.hpp"
 #include "parallel/small_table.hpp"
+#include "platform/atomic_ref.hpp"
 
 namespace hbc::mesh_steps {
 namespace {
@@ -141,7 +142,7 @@ CellType classify(Mesh& m, const CellCorners& cc) {
     const auto& v = cc.verts.at(i);
     three_each = three_each && v.count == 3;
     // Cells of several ranges may mark the same vertex: the same value, stored atomically.
-    if (v.count < 3) std::atomic_ref<uint8_t>(m.vert_non_manifold[static_cast<size_t>(v.key)]).store(1, std::memory_order_relaxed);
+    if (v.count < 3) ::hbc::detail::atomic_ref<uint8_t>(m.vert_non_manifold[static_cast<size_t>(v.key)]).store(1, std::memory_order_relaxed);
   }
   const size_t nec = cc.corner.size() / 2;
   if (nfc == 6 && quads == 6 && nvc == 8 && nec == 12 && three_each) return CellType::Hex;

@@ -7,6 +7,7 @@
 #include "mesh/mesh_steps.hpp"
 #include "platform/huge_pages.hpp"
 #include "parallel/parallel.hpp"
+#include "platform/atomic_ref.hpp"
 
 namespace hbc {
 namespace {
@@ -103,7 +104,7 @@ void mark_boundary(Mesh& m, const Threads& par) {
   m.vert_boundary.assign(m.num_vertices(), 0);
   // Ranges of faces; an edge or vertex of faces in two ranges may be marked by both, with the
   // same value, hence the atomic stores.
-  auto mark = [](uint8_t& flag) { std::atomic_ref<uint8_t>(flag).store(1, std::memory_order_relaxed); };
+  auto mark = [](uint8_t& flag) { ::hbc::detail::atomic_ref<uint8_t>(flag).store(1, std::memory_order_relaxed); };
   detail::parallel_ranges(m.num_faces(), par, [&](size_t fb, size_t fe, int) {
     for (size_t f = fb; f < fe; ++f) {
       if (m.face_cells[f][1] >= 0) continue;
@@ -224,7 +225,7 @@ class HalfEdgeSets {
   }
 
  private:
-  std::atomic_ref<int32_t> at(int32_t x) { return std::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
+  ::hbc::detail::atomic_ref<int32_t> at(int32_t x) { return ::hbc::detail::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
   detail::RawArray<int32_t> parent_;  // every entry set by the iota above
   bool shared_;
 };
@@ -295,11 +296,11 @@ void non_manifold_vertices(Mesh& m, const CellCheck& cells, const Threads& par) 
         const auto v = static_cast<size_t>(m.edge_verts[e][static_cast<size_t>(j)]);
         const int32_t r = sets.find(static_cast<int32_t>(2 * e) + j);
         // Most ends meet a vertex already set: a plain load spares them the locked operation.
-        std::atomic_ref<int32_t> at(first[v]);
+        ::hbc::detail::atomic_ref<int32_t> at(first[v]);
         int32_t seen = at.load(std::memory_order_relaxed);
         if (seen < 0 && at.compare_exchange_strong(seen, r, std::memory_order_relaxed)) seen = r;
-        if (r != seen) std::atomic_ref<uint8_t>(split[v]).store(1, std::memory_order_relaxed);
-        if (!m.edge_fan_ok(e)) std::atomic_ref<uint8_t>(suspect[v]).store(1, std::memory_order_relaxed);
+        if (r != seen) ::hbc::detail::atomic_ref<uint8_t>(split[v]).store(1, std::memory_order_relaxed);
+        if (!m.edge_fan_ok(e)) ::hbc::detail::atomic_ref<uint8_t>(suspect[v]).store(1, std::memory_order_relaxed);
       }
   });
   for (int32_t v : cells.pinched) suspect[static_cast<size_t>(v)] = 1;
@@ -312,9 +313,14 @@ void drop_declared_edges(Mesh& m, const MeshInput& in) {
   if (in.declared_edges.empty()) return;
   const Csr<int32_t> ve = vertex_edges(m, {}, Threads{1});
   const auto nv = static_cast<int32_t>(m.num_vertices());
-  for (auto [a, b] : in.declared_edges) {
-    const bool known = a >= 0 && b >= 0 && a < nv && b < nv &&
-                       std::ranges::any_of(ve[static_cast<size_t>(a)], [&](int32_t e) { return m.other_vertex(e, a) == b; });
+  for (const auto& ab : in.declared_edges) {
+    const int32_t a = ab[0], b = ab[1];  // not a structured binding: clang 14 cannot capture one
+    if (a < 0 || b < 0 || a >= nv || b >= nv) {
+      ++m.dropped_edges;
+      continue;
+    }
+    const auto row = ve[static_cast<size_t>(a)];
+    const bool known = std::any_of(row.begin(), row.end(), [&](int32_t e) { return m.other_vertex(e, a) == b; });
     m.dropped_edges += !known;
   }
   if (m.dropped_edges > 0) m.warnings.push_back(std::to_string(m.dropped_edges) + " edge(s) used by no face dropped");

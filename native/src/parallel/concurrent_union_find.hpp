@@ -11,6 +11,7 @@
 
 #include "hbc/csr.hpp"
 #include "parallel/parallel.hpp"
+#include "platform/atomic_ref.hpp"
 
 namespace hbc::detail {
 
@@ -45,7 +46,7 @@ class ConcurrentUnionFind {
   std::vector<int32_t>& parents() { return parent_; }
 
  private:
-  std::atomic_ref<int32_t> at(int32_t x) { return std::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
+  ::hbc::detail::atomic_ref<int32_t> at(int32_t x) { return ::hbc::detail::atomic_ref<int32_t>(parent_[static_cast<size_t>(x)]); }
   std::vector<int32_t> parent_;
 };
 
@@ -68,7 +69,7 @@ void number_classes(ConcurrentUnionFind& uf, size_t n, const Threads& par, Take 
       if (!take(x)) continue;
       const int32_t root = uf.find(static_cast<int32_t>(x));
       if (root == static_cast<int32_t>(x)) ++count;
-      else std::atomic_ref<int32_t>(p[x]).store(root, std::memory_order_relaxed);
+      else ::hbc::detail::atomic_ref<int32_t>(p[x]).store(root, std::memory_order_relaxed);
     }
     roots[static_cast<size_t>(r) + 1] = count;
   });

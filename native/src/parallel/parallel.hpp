@@ -18,6 +18,7 @@
 #include "hbc/threads.hpp"
 #include "platform/huge_pages.hpp"
 #include "platform/worker_pool.hpp"
+#include "platform/atomic_ref.hpp"
 
 namespace hbc::detail {
 
@@ -25,7 +26,7 @@ namespace hbc::detail {
 // through relaxed atomic stores, so the result does not depend on which thread wrote it.
 template <class Index>
 void set_flag(std::vector<uint8_t>& v, Index i, uint8_t value = 1) {
-  std::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(value, std::memory_order_relaxed);
+  ::hbc::detail::atomic_ref<uint8_t>(v[static_cast<size_t>(i)]).store(value, std::memory_order_relaxed);
 }
 
 // Number of ranges parallel_ranges will use for n items: one per thread, each of at least
@@ -54,8 +55,9 @@ void parallel_ranges(size_t n, const Threads& par, F&& f) {
       errors[static_cast<size_t>(r)] = std::current_exception();
     }
   };
-  if (nr == 1) {
-    run(0);
+  if (nr == 1 || !kThreadsAvailable) {
+    // Without threads (HBC_SINGLE_THREADED) the same ranges run in order: same results.
+    for (int r = 0; r < nr; ++r) run(r);
   } else if (!par.pool || !par.pool->run(nr, run)) {
     std::vector<std::thread> pool;
     pool.reserve(static_cast<size_t>(nr - 1));
@@ -122,7 +124,7 @@ inline Threads with_grain(const Threads& par, int grain) {
 // Runs independent jobs, one per thread when threads > 1.
 template <class... F>
 void parallel_invoke(const Threads& par, F&&... jobs) {
-  if (par.count <= 1) {
+  if (par.count <= 1 || !kThreadsAvailable) {
     (jobs(), ...);
     return;
   }
@@ -152,7 +154,7 @@ void parallel_invoke(const Threads& par, F&&... jobs) {
 inline void touch_pages(void* p, size_t bytes, const Threads& par) {
   constexpr size_t kPage = 4096;
   const size_t npages = bytes / kPage;
-  if (par.count <= 1 || npages < 1024) return;  // under 4 MB: not worth a thread
+  if (par.count <= 1 || !kThreadsAvailable || npages < 1024) return;  // under 4 MB: not worth a thread
   auto* b = static_cast<volatile char*>(p);
   parallel_ranges(npages, with_grain(par, 256), [&](size_t pb, size_t pe, int) {
     for (size_t i = pb; i < pe; ++i) b[i * kPage] = 0;

@@ -15,7 +15,11 @@ int resolve_threads(const Threads& threads) {
     const char* end = env + std::strlen(env);
     if (std::from_chars(env, end, n).ptr == end && n > 0) return n;
   }
+#if defined(HBC_SINGLE_THREADED)
+  return 1;  // an explicit count above still splits the ranges as it would with threads
+#else
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+#endif
 }
 
 Threads resolved(const Threads& threads) {

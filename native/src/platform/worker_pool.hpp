@@ -18,6 +18,14 @@
 
 namespace hbc::detail {
 
+// False in a build without threads (HBC_SINGLE_THREADED, e.g. WebAssembly without pthreads): the
+// parallel helpers then run every range on the calling thread, in order, and no pool is made.
+#if defined(HBC_SINGLE_THREADED)
+inline constexpr bool kThreadsAvailable = false;
+#else
+inline constexpr bool kThreadsAvailable = true;
+#endif
+
 class WorkerPool {
  public:
   explicit WorkerPool(int workers) {
@@ -130,7 +138,7 @@ class WorkerPool {
 class RunOptions {
  public:
   explicit RunOptions(const Threads& threads) : par_(resolved(threads)) {
-    if (!par_.pool && par_.count > 1) par_.pool = &own_.emplace(par_.count - 1);
+    if (kThreadsAvailable && !par_.pool && par_.count > 1) par_.pool = &own_.emplace(par_.count - 1);
   }
   RunOptions(const RunOptions&) = delete;
   RunOptions& operator=(const RunOptions&) = delete;

@@ -6,6 +6,7 @@
 #include "parallel/concurrent_union_find.hpp"
 #include "parallel/parallel.hpp"
 #include "parallel/row_collector.hpp"
+#include "platform/atomic_ref.hpp"
 
 namespace hbc {
 
@@ -167,7 +168,7 @@ int32_t regular_straight_face(const Mesh& m, int32_t e, int32_t f, size_t i, con
 constexpr uint8_t kSep = 1, kPending = 2;
 
 uint8_t load(const std::vector<uint8_t>& state, int32_t f) {
-  return std::atomic_ref<const uint8_t>(state[static_cast<size_t>(f)]).load(std::memory_order_relaxed);
+  return ::hbc::detail::atomic_ref<const uint8_t>(state[static_cast<size_t>(f)]).load(std::memory_order_relaxed);
 }
 
 // Grows the surfaces from pending face f across its Regular inside edges: marks every face reached
@@ -175,7 +176,7 @@ uint8_t load(const std::vector<uint8_t>& state, int32_t f) {
 template <class Reached>
 void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uint8_t>& state, const HexFaceTable& table,
             Reached reached) {
-  std::atomic_ref<uint8_t> own(state[static_cast<size_t>(f)]);
+  ::hbc::detail::atomic_ref<uint8_t> own(state[static_cast<size_t>(f)]);
   const size_t from = static_cast<size_t>(own.load(std::memory_order_relaxed) >> 2);
   own.store(kSep, std::memory_order_relaxed);
   const auto fe = m.face_edges(static_cast<size_t>(f));
@@ -187,7 +188,7 @@ void spread(const Mesh& m, const SingularityGraph& g, int32_t f, std::vector<uin
     const auto ne = m.face_edges(static_cast<size_t>(next));
     const size_t at = ne.size() == 4 ? HexFaceTable::slot_of(ne.data(), 4, e) + 1 : 0;
     uint8_t expected = 0;
-    if (std::atomic_ref<uint8_t>(state[static_cast<size_t>(next)])
+    if (::hbc::detail::atomic_ref<uint8_t>(state[static_cast<size_t>(next)])
             .compare_exchange_strong(expected, static_cast<uint8_t>(kSep | kPending | at << 2), std::memory_order_relaxed))
       reached(next);
   }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "parallel/parallel.hpp"
+#include "platform/atomic_ref.hpp"
 
 namespace hbc {
 
@@ -294,7 +295,7 @@ void count_corner_components(const Mesh& m, const BaseComplex& bc, const std::ve
             const int32_t x = vmap[static_cast<size_t>(v)];
             if (x < 0 || stamp[static_cast<size_t>(v)] == static_cast<int32_t>(k)) continue;
             stamp[static_cast<size_t>(v)] = static_cast<int32_t>(k);
-            std::atomic_ref<int32_t>(count[static_cast<size_t>(x)]).fetch_add(1, std::memory_order_relaxed);
+            ::hbc::detail::atomic_ref<int32_t>(count[static_cast<size_t>(x)]).fetch_add(1, std::memory_order_relaxed);
           }
     }
   });

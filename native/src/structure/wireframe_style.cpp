@@ -11,6 +11,7 @@
 
 #include "parallel/concurrent_union_find.hpp"
 #include "parallel/parallel.hpp"
+#include "platform/atomic_ref.hpp"
 
 namespace hbc {
 
@@ -107,12 +108,12 @@ void hop_distances(const CellComplex& cx, int32_t horizon, const Threads& par, s
         int32_t my_reach = 0;  // local, stored once: the ranges' entries share a cache line
         bool my_same = false;
         for (size_t v = b; v < end; ++v) {
-          if (std::atomic_ref<int32_t>(dv[v]).load(std::memory_order_relaxed) != d) continue;
+          if (::hbc::detail::atomic_ref<int32_t>(dv[v]).load(std::memory_order_relaxed) != d) continue;
           for (int32_t e : cx.vert_edges[v]) {
             const int32_t u = cx.other_vertex(e, static_cast<int32_t>(v));
             const int32_t nd = d + cx.edge_points.count(e) - 1;
             if (nd > horizon) continue;
-            std::atomic_ref<int32_t> du(dv[static_cast<size_t>(u)]);
+            ::hbc::detail::atomic_ref<int32_t> du(dv[static_cast<size_t>(u)]);
             int32_t old = du.load(std::memory_order_relaxed);
             while (nd < old && !du.compare_exchange_weak(old, nd, std::memory_order_relaxed)) {
             }
@@ -143,7 +144,7 @@ void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWirefr
     for (size_t e = b; e < end; ++e) {
       source[e] = wf.edge_vsg[e] || cx.edge_non_hex[e];
       if (!source[e] || cx.closed(e)) continue;
-      for (int32_t v : cx.edge_verts[e]) std::atomic_ref<int32_t>(dv[static_cast<size_t>(v)]).store(0, std::memory_order_relaxed);
+      for (int32_t v : cx.edge_verts[e]) ::hbc::detail::atomic_ref<int32_t>(dv[static_cast<size_t>(v)]).store(0, std::memory_order_relaxed);
     }
   });
   hop_distances(cx, horizon, par, dv);

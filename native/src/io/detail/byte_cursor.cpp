@@ -1,4 +1,5 @@
 #include "io/detail/byte_cursor.hpp"
+#include "platform/charconv.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -17,7 +18,7 @@ static std::string shown(std::string_view t) {
 template <class T>
 static bool parse_whole(std::string_view t, T& v) {
   const char* b = t.data() + (t.front() == '+' ? 1 : 0);
-  const auto r = std::from_chars(b, t.data() + t.size(), v);
+  const auto r = ::hbc::detail::from_chars(b, t.data() + t.size(), v);
   return r.ec == std::errc() && r.ptr == t.data() + t.size();
 }
 

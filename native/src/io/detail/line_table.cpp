@@ -11,6 +11,7 @@
 #endif
 
 #include "parallel/parallel.hpp"
+#include "platform/charconv.hpp"
 
 namespace hbc::detail {
 namespace {
@@ -101,7 +102,7 @@ bool number(const char*& p, const char* end, T& v) {
       return true;
     }
   }
-  auto r = std::from_chars(p, end, v);
+  auto r = ::hbc::detail::from_chars(p, end, v);
   if (r.ec != std::errc() || r.ptr == p) return false;
   p = r.ptr;
   return p == end || is_blank(*p) || *p == '\n';

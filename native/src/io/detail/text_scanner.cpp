@@ -1,4 +1,5 @@
 #include "io/detail/text_scanner.hpp"
+#include "platform/charconv.hpp"
 
 #include <bit>
 #include <cctype>
@@ -130,7 +131,7 @@ int64_t TextScanner::integer(const char* expected) {
   const char* b = t.data();
   const char* e = t.data() + t.size();
   if (b != e && *b == '+') ++b;
-  auto r = std::from_chars(b, e, v);
+  auto r = ::hbc::detail::from_chars(b, e, v);
   if (r.ec != std::errc() || r.ptr != e) fail(std::string(expected) + " (an integer), found " + shown(t));
   return v;
 }
@@ -141,7 +142,7 @@ double TextScanner::real(const char* expected) {
   const char* b = t.data();
   const char* e = t.data() + t.size();
   if (b != e && *b == '+') ++b;
-  auto r = std::from_chars(b, e, v);
+  auto r = ::hbc::detail::from_chars(b, e, v);
   if (r.ec == std::errc::result_out_of_range) fail(std::string(expected) + " (a finite number), found " + shown(t));
   if (r.ec != std::errc() || r.ptr != e) fail(std::string(expected) + " (a number), found " + shown(t));
   if (!std::isfinite(v)) fail(std::string(expected) + " (a finite number), found " + shown(t));

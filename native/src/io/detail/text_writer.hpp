@@ -5,12 +5,13 @@
 #include <cstdint>
 #include <string>
 
+#include "platform/charconv.hpp"
+
 namespace hbc::detail {
 
 inline void append_real(std::string& out, double x) {
   char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
+  out.append(buf, to_chars_shortest(buf, buf + sizeof buf, x));
 }
 
 inline void append_int(std::string& out, int64_t x) {
