@@ -8,6 +8,7 @@
 #   tsan_build    the C++ suite with TSan (scripts/check/tsan.sh, build-tsan/)
 #   tsan_run      ... and its run over the parallel parts
 #   release_build the Release build (scripts/build.sh, build/), configured for the whole matrix
+#   web_build     the browser viewer, build/web/viewer.html (scripts/build_web.sh, WebAssembly core included)
 #   wheels        the hbc wheels for CPython 3.11 and 3.13 and the Blender extension (scripts/wheels.sh)
 #   ctest         the Release build's suite: GoogleTest, pytest, and the Blender-side suites in every
 #                 Blender of the matrix (Debian's blender and each bpy wheel)
@@ -21,6 +22,7 @@
 #   HBC_SKIP_SANITIZED=1     leaves out the four sanitizer parts
 #   HBC_BPY_VERSIONS="4.5"   only these bpy wheels in the matrix (default: every one)
 #   HBC_CTEST_ARGS="-R foo"  extra ctest arguments
+#   HBC_SKIP_WEB=1           leaves out the browser viewer's build (web_build); its browser tests skip
 #   HBC_DATA_DIR, HBC_PYTHON, HBC_ENV_DIR: see scripts/env/common.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -161,6 +163,13 @@ fi
 
 release_ok=1
 part_run release_build bash scripts/build.sh -DHBC_BPY_PYTHONS="$pairs" || release_ok=0
+# The browser viewer: scripts/build_web.sh writes build/web/viewer.html (building the WebAssembly
+# core into build-wasm/ first when that is out of date: only its binding, hbc_core, unless
+# HBC_WASM_TARGETS says more) beside the wheels; ctest's browser tests (tests/web/) open it in
+# chromium, and with the page built here they fail rather than skip without it.
+if [ "${HBC_SKIP_WEB:-0}" != 1 ]; then
+  part_start web_build env HBC_WASM_TARGETS="${HBC_WASM_TARGETS:-hbc_core}" bash scripts/build_web.sh
+fi
 
 if [ "$QUICK" != 1 ]; then
   if [ $release_ok = 1 ]; then
@@ -173,6 +182,11 @@ if [ "$QUICK" != 1 ]; then
     part_skip wheels "release_build failed"
   fi
   part_wait bpy_envs || true
+fi
+
+if [ "${HBC_SKIP_WEB:-0}" != 1 ]; then
+  part_wait web_build || true
+  export HBC_WEB_REQUIRED=1
 fi
 
 if [ $release_ok = 1 ]; then
