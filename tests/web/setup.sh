@@ -4,6 +4,7 @@
 # Debian's chromium (scripts/env/deps.sh), so Playwright downloads none.
 set -euo pipefail
 cd "$(dirname "$0")"
+command -v npm >/dev/null || { echo "tests/web: npm is missing (Debian: apt-get install -y npm)" >&2; exit 1; }
 want=$(node -p "require('./package-lock.json').packages['node_modules/playwright-core'].version")
 have=$(node -p "try { require('./node_modules/playwright-core/package.json').version } catch { '' }")
 if [ "$want" != "$have" ]; then
