@@ -306,7 +306,13 @@ function legend() {
 function showTable1() {
   const t = $('table1');
   t.textContent = '';
-  if (!table1 || !results) return;
+  if (!results) return;
+  if (!table1) {
+    // The columns come from the library's schema: the build had no compiled hbc module and the
+    // WebAssembly core gives none.
+    t.innerHTML = '<tr><td>Table 1\'s columns are not in this build (see web/README.md).</td></tr>';
+    return;
+  }
   const stats = { ...results };
   if (!('hex_component_ratio' in stats) && stats.components) stats.hex_component_ratio = (stats.hex_components ?? 0) / stats.components;
   const head = document.createElement('tr');
