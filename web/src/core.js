@@ -123,7 +123,7 @@ export class Core {
       return M.load_case(files.map((f) => ({ name: f.path, bytes: new Uint8Array(f.buffer) })));
     }
     if (files.length > 1) {
-      throw new Error('This build of the core reads one file at a time: open the case\'s files one by one is not possible; use the CLI for OpenFOAM cases.');
+      throw new Error('An OpenFOAM case (several files) needs a newer WebAssembly core: this one reads one file at a time.');
     }
     return M.load(new Uint8Array(files[0].buffer), files[0].path, false);
   }

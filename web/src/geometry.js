@@ -19,9 +19,9 @@ export function fanIndex(offsets) {
  * A soup as a mesh part. colorOf(owner) gives an RGB(A) array; shade(owner) an optional factor.
  * Each point is coloured by the first face that uses it (a soup's points belong to one owner).
  * anchor: per point, the centroid of its owner (the slicing plane hides whole owners: cells,
- * blocks, sheets); ctype: per point, the cell type of its face's cell (the cell-type filter).
+ * blocks, sheets), or with anchorAtPoint the point itself (the plane cuts the surface); ctype: per point, the cell type of its face's cell (the cell-type filter).
  */
-export function soupPart(soup, colorOf, { cellTypes = null, shade = null, name = '' } = {}) {
+export function soupPart(soup, colorOf, { cellTypes = null, shade = null, name = '', anchorAtPoint = false } = {}) {
   const { positions, offsets, items, owner, cell } = soup;
   const np = positions.length / 3;
   const nf = owner.length;
@@ -77,7 +77,8 @@ export function soupPart(soup, colorOf, { cellTypes = null, shade = null, name =
       ctype[p] = type;
     }
   }
-  return { kind: 'mesh', name, position: positions, index, color, anchor, ctype };
+  // A surface cut where it is (the boundary): each point is its own anchor.
+  return { kind: 'mesh', name, position: positions, index, color, anchor: anchorAtPoint ? positions : anchor, ctype };
 }
 
 /**
