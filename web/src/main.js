@@ -246,7 +246,6 @@ function sheetList() {
 function pickSheet(id) {
   state.sheet = id;
   state.layers.sheet = true;
-  if (info && info.sheets[id] && info.sheets[id].type === 3) state.layers.subsheets = state.layers.subsheets || false;
   sheetList();
   syncControls();
   build('sheet');
