@@ -19,9 +19,10 @@ export function fanIndex(offsets) {
  * A soup as a mesh part. colorOf(owner) gives an RGB(A) array; shade(owner) an optional factor.
  * Each point is coloured by the first face that uses it (a soup's points belong to one owner).
  * anchor: per point, the centroid of its owner (the slicing plane hides whole owners: cells,
- * blocks, sheets), or with anchorAtPoint the point itself (the plane cuts the surface); ctype: per point, the cell type of its face's cell (the cell-type filter).
+ * blocks, sheets), or with anchorAtPoint the point itself (the plane cuts the surface); owner:
+ * per point, what a click picks (the face's owner, or with pickCell its cell); ctype: per point, the cell type of its face's cell (the cell-type filter).
  */
-export function soupPart(soup, colorOf, { cellTypes = null, shade = null, name = '', anchorAtPoint = false } = {}) {
+export function soupPart(soup, colorOf, { cellTypes = null, shade = null, name = '', anchorAtPoint = false, pickCell = false } = {}) {
   const { positions, offsets, items, owner, cell } = soup;
   const np = positions.length / 3;
   const nf = owner.length;
@@ -57,6 +58,7 @@ export function soupPart(soup, colorOf, { cellTypes = null, shade = null, name =
   const color = new Uint8Array(3 * np);
   const anchor = new Float32Array(3 * np);
   const ctype = new Uint8Array(np);
+  const pointOwner = new Int32Array(np); // what a click on the point picks (sheet, block, cell)
   const seen = new Uint8Array(np);
   for (let f = 0; f < nf; f++) {
     const c = colorOf(owner[f]);
@@ -75,10 +77,11 @@ export function soupPart(soup, colorOf, { cellTypes = null, shade = null, name =
       anchor[3 * p + 1] = sums[4 * o + 1] / w;
       anchor[3 * p + 2] = sums[4 * o + 2] / w;
       ctype[p] = type;
+      pointOwner[p] = pickCell ? cell[f] : owner[f];
     }
   }
   // A surface cut where it is (the boundary): each point is its own anchor.
-  return { kind: 'mesh', name, position: positions, index, color, anchor: anchorAtPoint ? positions : anchor, ctype };
+  return { kind: 'mesh', name, position: positions, index, color, anchor: anchorAtPoint ? positions : anchor, ctype, owner: pointOwner };
 }
 
 /**
@@ -160,7 +163,7 @@ export function opacityAlpha(opacity, floor) {
 export function transferList(parts) {
   const out = [];
   for (const p of parts) {
-    for (const key of ['position', 'index', 'color', 'anchor', 'ctype']) {
+    for (const key of ['position', 'index', 'color', 'anchor', 'ctype', 'owner']) {
       if (p[key] && p[key].buffer && !out.includes(p[key].buffer)) out.push(p[key].buffer);
     }
   }

@@ -411,6 +411,26 @@ function buildControls() {
   $('reset-view').addEventListener('click', () => info && viewer.frame(info.bbox));
 }
 
+/** A click (not a drag) on the view: a sheet of the sheets layer is picked; a block, a cell or a
+ *  subsheet is named in the status line. */
+function setupPicking() {
+  const el = $('hbc-canvas');
+  let down = null;
+  el.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; });
+  el.addEventListener('pointerup', (e) => {
+    if (!down || !info || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
+    const r = el.getBoundingClientRect();
+    const hit = viewer.pick(e.clientX - r.left, e.clientY - r.top, ['sheets', 'blocks', 'sheet', 'subsheets', 'direct']);
+    if (!hit) return;
+    if (hit.layer === 'sheets') {
+      pickSheet(hit.owner);
+      return;
+    }
+    const what = { blocks: 'component', sheet: 'component', subsheets: 'subsheet', direct: 'cell' }[hit.layer];
+    $('status').textContent = `${LAYER_TITLES[hit.layer]}: ${what} ${hit.owner}`;
+  });
+}
+
 function snapshot() {
   const a = document.createElement('a');
   a.href = viewer.snapshot();
@@ -541,6 +561,7 @@ function base64Bytes(text) {
 async function start() {
   buildControls();
   setupOpening();
+  setupPicking();
   syncControls();
   legend();
   if (location.hash.length > 1) pendingView = location.hash.slice(1);

@@ -202,6 +202,32 @@ ${typed ? 'varying float vType;' : ''}`)
     this.request();
   }
 
+  /** The first visible face under the pointer (x, y in pixels of the canvas) among the layers
+   *  given, as {layer, owner}; faces the plane or the type filter hide are skipped. */
+  pick(x, y, layers) {
+    const el = this.renderer.domElement;
+    const ndc = new THREE.Vector2((x / el.clientWidth) * 2 - 1, -(y / el.clientHeight) * 2 + 1);
+    const ray = new THREE.Raycaster();
+    ray.setFromCamera(ndc, this.camera);
+    const objects = [];
+    for (const l of layers) {
+      const g = this.layers.get(l);
+      if (g) g.traverse((o) => { if (o.isMesh && o.userData.part?.owner) objects.push(o); });
+    }
+    const U = this.uniforms;
+    const axis = U.uClipAxis.value;
+    for (const hit of ray.intersectObjects(objects, false)) {
+      const p = hit.object.userData.part;
+      const v = hit.face.a;
+      const anchor = p.anchor;
+      const along = anchor[3 * v] * axis.x + anchor[3 * v + 1] * axis.y + anchor[3 * v + 2] * axis.z;
+      if (U.uClipOn.value > 0.5 && along > U.uClipPos.value && !p.cut) continue;
+      if (!((U.uTypeMask.value >> p.ctype[v]) & 1)) continue;
+      return { layer: hit.object.parent.name, owner: p.owner[v], part: p.name };
+    }
+    return null;
+  }
+
   snapshot() {
     this.renderNow();
     return this.renderer.domElement.toDataURL('image/png');

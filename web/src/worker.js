@@ -143,7 +143,7 @@ function buildDirect(p) {
   } else {
     boundary = core.blockSoup(S.mesh, S.analysis, 'boundary', -1, 0);
     // Without the core's cut surface the see-through boundary is cut where the plane passes.
-    parts.push({ ...soupPart(boundary, () => L.cell_type_colors[0], { cellTypes: S.cellTypes, name: 'boundary', anchorAtPoint: true }), boundary: true });
+    parts.push({ ...soupPart(boundary, () => L.cell_type_colors[0], { cellTypes: S.cellTypes, name: 'boundary', anchorAtPoint: true, pickCell: true }), boundary: true });
   }
   if (S.cellTypes.some((t) => t !== 0)) {
     const soup = core.blockSoup(S.mesh, S.analysis, 'non_hex', -1, p.shrink ?? 0);

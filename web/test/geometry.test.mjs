@@ -22,6 +22,10 @@ test('a quad and a triangle of two owners: fan triangles, colours and owner cent
   assert.deepEqual([...p.anchor.subarray(12, 15)], [1, 1, 3]);
   // The cell type of each point's face's cell: hex for the quad's, prism (2) for the triangle's.
   assert.deepEqual([...p.ctype], [0, 0, 0, 0, 2, 2, 2]);
+  // A click picks the owner, or with pickCell the face's cell.
+  assert.deepEqual([...p.owner], [5, 5, 5, 5, 9, 9, 9]);
+  const byCell = soupPart(soup, (o) => colors[o], { pickCell: true });
+  assert.deepEqual([...byCell.owner], [0, 0, 0, 0, 1, 1, 1]);
 });
 
 test('polylines: segments between consecutive points, a closed one joined back, a filtered one dropped', () => {
