@@ -8,6 +8,9 @@
 #   tsan_build    the C++ suite with TSan (scripts/check/tsan.sh, build-tsan/)
 #   tsan_run      ... and its run over the parallel parts
 #   release_build the Release build (scripts/build.sh, build/), configured for the whole matrix
+#   wasm_build    the library, CLI, C++ suite and JS binding in WebAssembly (scripts/build_wasm.sh, build-wasm/)
+#   wasm_tests    ... run under node: the C++ suite, the CLI against the native one on every shared mesh,
+#                 the binding (ctest --test-dir build-wasm; docs/wasm.md)
 #   web_build     the browser viewer, build/web/viewer.html (scripts/build_web.sh, WebAssembly core included)
 #   wheels        the hbc wheels for CPython 3.11 and 3.13 and the Blender extension (scripts/wheels.sh)
 #   ctest         the Release build's suite: GoogleTest, pytest, and the Blender-side suites in every
@@ -22,6 +25,7 @@
 #   HBC_SKIP_SANITIZED=1     leaves out the four sanitizer parts
 #   HBC_BPY_VERSIONS="4.5"   only these bpy wheels in the matrix (default: every one)
 #   HBC_CTEST_ARGS="-R foo"  extra ctest arguments
+#   HBC_SKIP_WASM=1          leaves out wasm_build and wasm_tests
 #   HBC_SKIP_WEB=1           leaves out the browser viewer's build (web_build); its browser tests skip
 #   HBC_DATA_DIR, HBC_PYTHON, HBC_ENV_DIR: see scripts/env/common.sh
 set -euo pipefail
@@ -161,14 +165,25 @@ if [ $SANITIZED = 1 ]; then
   fi
 fi
 
+# WebAssembly beside the Release build; web_build waits for it (both would build build-wasm/).
+WASM=1; [ "${HBC_SKIP_WASM:-0}" = 1 ] && WASM=0
+if [ $WASM = 1 ]; then part_start wasm_build bash scripts/build_wasm.sh; fi
 release_ok=1
 part_run release_build bash scripts/build.sh -DHBC_BPY_PYTHONS="$pairs" || release_ok=0
+wasm_ok=0
+if [ $WASM = 1 ] && part_wait wasm_build; then wasm_ok=1; fi
 # The browser viewer: scripts/build_web.sh writes build/web/viewer.html (building the WebAssembly
 # core into build-wasm/ first when that is out of date: only its binding, hbc_core, unless
 # HBC_WASM_TARGETS says more) beside the wheels; ctest's browser tests (tests/web/) open it in
 # chromium, and with the page built here they fail rather than skip without it.
 if [ "${HBC_SKIP_WEB:-0}" != 1 ]; then
   part_start web_build env HBC_WASM_TARGETS="${HBC_WASM_TARGETS:-hbc_core}" bash scripts/build_web.sh
+fi
+# The node runs compare with the Release build's hbc.
+if [ $WASM = 1 ] && [ $wasm_ok = 1 ] && [ $release_ok = 1 ]; then
+  part_start wasm_tests ctest --test-dir build-wasm --output-on-failure -j2
+elif [ $WASM = 1 ]; then
+  part_skip wasm_tests "wasm_build or release_build failed"
 fi
 
 if [ "$QUICK" != 1 ]; then
@@ -202,6 +217,6 @@ else
   part_skip ctest "release_build failed"
 fi
 
-for name in asan_run tsan_run; do
+for name in asan_run tsan_run wasm_tests; do
   if [ -n "${PID[$name]:-}" ]; then part_wait "$name" || true; fi
 done

@@ -1,0 +1,345 @@
+// The JavaScript binding (embind): the same names as the Python binding (native/python/hbc/_core.pyi),
+// typed arrays in place of numpy arrays. Every array is a copy (a view into the wasm heap would be
+// invalidated when the heap grows). Errors are JS Errors whose message is the CLI's text
+// ("file:line: expected ..."). hbc_core.d.ts documents each function and array shape.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "../tools/json.hpp"
+#include "../tools/stats_format.hpp"
+#include "hbc/analysis.hpp"
+#include "hbc/check.hpp"
+#include "hbc/error.hpp"
+#include "hbc/io.hpp"
+#include "hbc/render_geometry.hpp"
+#include "hbc/version.hpp"
+
+using emscripten::val;
+
+namespace hbc::js {
+namespace {
+
+template <class T> const char* array_name();
+template <> const char* array_name<float>() { return "Float32Array"; }
+template <> const char* array_name<double>() { return "Float64Array"; }
+template <> const char* array_name<int32_t>() { return "Int32Array"; }
+template <> const char* array_name<uint8_t>() { return "Uint8Array"; }
+
+// A JS typed array holding a copy of n values at p.
+template <class T>
+val copy(const T* p, size_t n) {
+  return val::global(array_name<T>()).new_(emscripten::typed_memory_view(n, p));
+}
+template <class T>
+val copy(const std::vector<T>& v) {
+  if constexpr (std::is_enum_v<T>) return copy(reinterpret_cast<const uint8_t*>(v.data()), v.size());
+  else return copy(v.data(), v.size());
+}
+template <class T, size_t K>
+val copy_flat(const std::vector<std::array<T, K>>& v) { return copy(reinterpret_cast<const T*>(v.data()), v.size() * K); }
+
+[[noreturn]] void throw_js(const std::string& message) { val::global("Error").new_(message).throw_(); }
+
+// Runs f, turning C++ exceptions into JS Errors with the same text the CLI prints.
+template <class F>
+auto guarded(F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::bad_alloc&) {
+    throw_js("out of memory");
+  } catch (const std::exception& e) {
+    throw_js(e.what());
+  }
+}
+
+struct LoadedMesh {
+  Mesh mesh;
+  std::vector<DroppedCell> dropped;
+  bool skip_invalid = false;
+  std::string name;
+};
+
+class JsAnalysis;
+
+class JsMesh {
+ public:
+  explicit JsMesh(std::shared_ptr<LoadedMesh> m) : m_(std::move(m)) {}
+  int num_vertices() const { return static_cast<int>(mesh().num_vertices()); }
+  int num_edges() const { return static_cast<int>(mesh().num_edges()); }
+  int num_faces() const { return static_cast<int>(mesh().num_faces()); }
+  int num_cells() const { return static_cast<int>(mesh().num_cells()); }
+  std::string source() const { return m_->name; }
+  val points() const {  // float32 (3 nv), as the Python binding's points
+    const auto& p = mesh().points;
+    std::vector<float> f(p.begin(), p.end());
+    return copy(f);
+  }
+  val points64() const { return copy(mesh().points); }
+  val edges() const { return copy_flat(mesh().edge_verts); }
+  val face_vertices_offsets() const { return copy(mesh().face_verts.offsets); }
+  val face_vertices_items() const { return copy(mesh().face_verts.items); }
+  val face_cells() const { return copy_flat(mesh().face_cells); }
+  val cell_faces_offsets() const { return copy(mesh().cell_faces.offsets); }
+  val cell_faces_items() const { return copy(mesh().cell_faces.items); }
+  val cell_types() const { return copy(mesh().cell_type); }
+  val face_boundary() const { return copy(mesh().face_boundary); }
+  // info() of the Python binding and the CLI's `hbc info --json` keys, as a JSON string.
+  std::string info_json() const;
+  JsAnalysis analyze(val options) const;
+  const Mesh& mesh() const { return m_->mesh; }
+  const std::shared_ptr<LoadedMesh>& loaded() const { return m_; }
+
+ private:
+  std::shared_ptr<LoadedMesh> m_;
+};
+
+class JsAnalysis {
+ public:
+  JsAnalysis(std::shared_ptr<LoadedMesh> m, std::shared_ptr<Analysis> a) : m_(std::move(m)), a_(std::move(a)) {}
+  // `hbc analyze --json` of this mesh, the same keys and values ("file" is the name given to load).
+  std::string stats_json() const {
+    cli::Json j = {{"file", m_->name}};
+    cli::add_stats_json(j, compute_stats(m_->mesh, *a_));
+    cli::add_dropped_json(j, m_->skip_invalid, m_->dropped);
+    return cli::json_text(j);
+  }
+  // Singularity graph (SingularityGraph in _core.pyi).
+  val edge_class() const { return copy(a_->graph.edge_class); }
+  val edge_chain() const { return copy(a_->graph.edge_chain); }
+  val chain_vertices_offsets() const { return copy(a_->graph.chain_verts.offsets); }
+  val chain_vertices_items() const { return copy(a_->graph.chain_verts.items); }
+  val chain_edges_offsets() const { return copy(a_->graph.chain_edges.offsets); }
+  val chain_edges_items() const { return copy(a_->graph.chain_edges.items); }
+  val chain_valence() const { return copy(a_->graph.chain_valence); }
+  val chain_boundary() const { return copy(a_->graph.chain_boundary); }
+  val chain_closed() const { return copy(a_->graph.chain_closed); }
+  val singular_vertices() const { return copy(a_->graph.singular_vertices); }
+  val pseudo_singular_vertices() const { return copy(a_->graph.pseudo_singular_vertices); }
+  int num_singularities() const { return static_cast<int>(a_->graph.num_singularities()); }
+  // Base complex (BaseComplex in _core.pyi).
+  val cell_component() const { return copy(a_->complex.cell_component); }
+  val component_kind() const { return copy(a_->complex.component_kind); }
+  val component_cells_offsets() const { return copy(a_->complex.component_cells.offsets); }
+  val component_cells_items() const { return copy(a_->complex.component_cells.items); }
+  val face_patch() const { return copy(a_->complex.face_patch); }
+  val curve_vertices_offsets() const { return copy(a_->complex.curve_verts.offsets); }
+  val curve_vertices_items() const { return copy(a_->complex.curve_verts.items); }
+  val curve_closed() const { return copy(a_->complex.curve_closed); }
+  val corners() const { return copy(a_->complex.corners); }
+  int num_components() const { return static_cast<int>(a_->complex.num_components()); }
+  int num_curves() const { return static_cast<int>(a_->complex.curve_closed.size()); }
+  int num_patches() const { return static_cast<int>(a_->complex.patch_faces.rows()); }
+  // Sheets: cells per sheet and the class arrays (Analysis.sheet_* in _core.pyi).
+  int num_sheets() const { return a_->sheet_stage ? static_cast<int>(a_->sheet_stage->sheets.size()) : 0; }
+  val sheet_cells_offsets() const { return copy(sheets().sheet_cells.offsets); }
+  val sheet_cells_items() const { return copy(sheets().sheet_cells.items); }
+  val sheet_blocks_offsets() const { return copy(sheets().sheet_blocks.offsets); }
+  val sheet_blocks_items() const { return copy(sheets().sheet_blocks.items); }
+  val sheet_types() const { return copy(flatten_classes(a_->sheet_stage->domain, sheets().classes).type); }
+  // The subsheets of one self-intersecting sheet: {count, subsheet_cells_offsets, _items, subsheet_types};
+  // null when the sheet has none.
+  val subsheets(int sheet) const {
+    sheets();
+    const Subsheets* s = a_->sheet_stage->subsheets_of(sheet);
+    if (!s) return val::null();
+    val o = val::object();
+    o.set("sheet", s->sheet);
+    o.set("count", static_cast<int>(s->size()));
+    o.set("subsheet_cells_offsets", copy(s->cells.offsets));
+    o.set("subsheet_cells_items", copy(s->cells.items));
+    o.set("subsheet_blocks_offsets", copy(s->blocks.offsets));
+    o.set("subsheet_blocks_items", copy(s->blocks.items));
+    o.set("subsheet_types", copy(flatten_classes(a_->sheet_stage->domain, s->classes).type));
+    return o;
+  }
+  // The whole-mesh VSG wireframe (Wireframe in _core.pyi), or null when it did not run.
+  val wireframe() const {
+    if (!a_->wireframe_stage) return val::null();
+    const VsgWireframe& w = a_->wireframe_stage->wireframe;
+    val o = val::object();
+    o.set("count", static_cast<int>(w.size()));
+    o.set("polylines_offsets", copy(w.polylines.offsets));
+    o.set("polylines_items", copy(w.polylines.items));
+    o.set("point_opacity", copy(w.style.point_opacity));
+    o.set("kind", copy(w.kind));
+    o.set("shown", copy(w.shown));
+    o.set("color", copy(w.style.color));
+    o.set("color_class", copy(w.style.color_class));
+    o.set("non_hex_offsets", copy(w.non_hex.offsets));
+    o.set("non_hex_items", copy(w.non_hex.items));
+    o.set("simplified_polylines_offsets", copy(w.simplified_polylines.offsets));
+    o.set("simplified_polylines_items", copy(w.simplified_polylines.items));
+    o.set("simplified_non_hex_offsets", copy(w.simplified_non_hex.offsets));
+    o.set("simplified_non_hex_items", copy(w.simplified_non_hex.items));
+    return o;
+  }
+  // block_soup(what, sheet, shrink) of _core.pyi: a BlockSoup object of typed arrays. sheet < 0: none.
+  val block_soup(const std::string& what, int sheet, double shrink) const {
+    return guarded([&] {
+      const SoupKind kind = soup_kind_from_name(what);
+      std::optional<int32_t> s;
+      if (sheet >= 0) s = sheet;
+      return soup_object(hbc::block_soup(m_->mesh, *a_, kind, s, shrink));
+    });
+  }
+  static val soup_object(const BlockSoup& b) {
+    val o = val::object();
+    o.set("positions", copy(b.positions));
+    o.set("point_vertex", copy(b.point_vertex));
+    o.set("face_vertices_offsets", copy(b.face_vertices.offsets));
+    o.set("face_vertices_items", copy(b.face_vertices.items));
+    o.set("face_owner", copy(b.face_owner));
+    o.set("face_source", copy(b.face_source));
+    o.set("face_cell", copy(b.face_cell));
+    return o;
+  }
+
+ private:
+  const Sheets& sheets() const {
+    if (!a_->sheet_stage) throw_js("the analysis ran without sheets");
+    return a_->sheet_stage->sheets;
+  }
+  std::shared_ptr<LoadedMesh> m_;
+  std::shared_ptr<Analysis> a_;
+};
+
+std::string JsMesh::info_json() const {
+  const Mesh& m = mesh();
+  cli::Json j = {{"file", m_->name}, {"vertices", m.num_vertices()}, {"edges", m.num_edges()},
+                 {"faces", m.num_faces()}, {"cells", m.num_cells()}};
+  cli::Json types = cli::Json::object();
+  std::array<int64_t, 5> count{};
+  for (CellType t : m.cell_type) ++count[static_cast<size_t>(t)];
+  for (size_t t = 0; t < count.size(); ++t) types[cell_type_name(static_cast<CellType>(t))] = count[t];
+  j["cell_types"] = types;
+  return cli::json_text(j);
+}
+
+// options: {level: "complex"|"mesh", subsheet_rule: "layers"|"fewest", rho, sheets, subsheets, wireframe}.
+JsAnalysis JsMesh::analyze(val options) const {
+  return guarded([&] {
+    AnalysisOptions opt;
+    opt.threads = 1;
+    auto get = [&](const char* k) { return options.isUndefined() || options.isNull() ? val::undefined() : options[k]; };
+    if (val v = get("level"); !v.isUndefined()) opt.sheet_level = opt.wireframe_level = level_from_name(v.as<std::string>());
+    if (val v = get("subsheet_rule"); !v.isUndefined()) {
+      const auto rule = subsheet_rule_from_name(v.as<std::string>());
+      if (!rule) throw std::invalid_argument("subsheet_rule: 'layers' or 'fewest', not '" + v.as<std::string>() + "'");
+      opt.subsheet_options.rule = *rule;
+    }
+    if (val v = get("rho"); !v.isUndefined()) opt.wireframe_options.rho = v.as<double>();
+    if (val v = get("sheets"); !v.isUndefined()) opt.sheets = v.as<bool>();
+    if (val v = get("subsheets"); !v.isUndefined()) opt.subsheets = v.as<bool>();
+    if (val v = get("wireframe"); !v.isUndefined()) opt.wireframe = v.as<bool>();
+    return JsAnalysis(m_, std::make_shared<Analysis>(hbc::analyze(m_->mesh, opt)));
+  });
+}
+
+// load(bytes, name, skip_invalid): the bytes are written to the in-memory file system under `name`
+// and read by the same readers as the CLI, so the format comes from the name and messages name it.
+JsMesh load(const std::string& bytes, const std::string& name, bool skip_invalid) {
+  return guarded([&] {
+    const std::string path = name.empty() ? std::string("mesh") : name;
+    {
+      std::ofstream f(path, std::ios::binary);
+      if (!f) throw std::runtime_error(path + ": cannot be written to the in-memory file system");
+      f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    }
+    auto m = std::make_shared<LoadedMesh>();
+    m->name = path;
+    m->skip_invalid = skip_invalid;
+    Threads one;
+    one.count = 1;
+    try {
+      m->mesh = skip_invalid ? load_mesh_skipping_invalid(path, m->dropped, Format::Auto, one)
+                             : load_mesh(path, Format::Auto, one);
+    } catch (...) {
+      std::remove(path.c_str());
+      throw;
+    }
+    std::remove(path.c_str());
+    return JsMesh(m);
+  });
+}
+
+// polylines(mesh, offsets, items) of _core.pyi: float32 positions (3 per entry).
+val polylines(const JsMesh& m, val offsets, val items) {
+  return guarded([&] {
+    const auto o = emscripten::convertJSArrayToNumberVector<int32_t>(offsets);
+    const auto i = emscripten::convertJSArrayToNumberVector<int32_t>(items);
+    return copy(polyline_positions(m.mesh(), o, i));
+  });
+}
+
+std::string version_string() { return std::string(version()); }
+
+}  // namespace
+}  // namespace hbc::js
+
+EMSCRIPTEN_BINDINGS(hbc_core) {
+  using namespace emscripten;
+  using namespace hbc::js;
+  class_<JsMesh>("Mesh")
+      .property("num_vertices", &JsMesh::num_vertices)
+      .property("num_edges", &JsMesh::num_edges)
+      .property("num_faces", &JsMesh::num_faces)
+      .property("num_cells", &JsMesh::num_cells)
+      .property("source", &JsMesh::source)
+      .property("points", &JsMesh::points)
+      .property("points64", &JsMesh::points64)
+      .property("edges", &JsMesh::edges)
+      .property("face_vertices_offsets", &JsMesh::face_vertices_offsets)
+      .property("face_vertices_items", &JsMesh::face_vertices_items)
+      .property("face_cells", &JsMesh::face_cells)
+      .property("cell_faces_offsets", &JsMesh::cell_faces_offsets)
+      .property("cell_faces_items", &JsMesh::cell_faces_items)
+      .property("cell_types", &JsMesh::cell_types)
+      .property("face_boundary", &JsMesh::face_boundary)
+      .function("info_json", &JsMesh::info_json)
+      .function("analyze", &JsMesh::analyze);
+  class_<JsAnalysis>("Analysis")
+      .function("stats_json", &JsAnalysis::stats_json)
+      .property("edge_class", &JsAnalysis::edge_class)
+      .property("edge_chain", &JsAnalysis::edge_chain)
+      .property("chain_vertices_offsets", &JsAnalysis::chain_vertices_offsets)
+      .property("chain_vertices_items", &JsAnalysis::chain_vertices_items)
+      .property("chain_edges_offsets", &JsAnalysis::chain_edges_offsets)
+      .property("chain_edges_items", &JsAnalysis::chain_edges_items)
+      .property("chain_valence", &JsAnalysis::chain_valence)
+      .property("chain_boundary", &JsAnalysis::chain_boundary)
+      .property("chain_closed", &JsAnalysis::chain_closed)
+      .property("singular_vertices", &JsAnalysis::singular_vertices)
+      .property("pseudo_singular_vertices", &JsAnalysis::pseudo_singular_vertices)
+      .property("num_singularities", &JsAnalysis::num_singularities)
+      .property("cell_component", &JsAnalysis::cell_component)
+      .property("component_kind", &JsAnalysis::component_kind)
+      .property("component_cells_offsets", &JsAnalysis::component_cells_offsets)
+      .property("component_cells_items", &JsAnalysis::component_cells_items)
+      .property("face_patch", &JsAnalysis::face_patch)
+      .property("curve_vertices_offsets", &JsAnalysis::curve_vertices_offsets)
+      .property("curve_vertices_items", &JsAnalysis::curve_vertices_items)
+      .property("curve_closed", &JsAnalysis::curve_closed)
+      .property("corners", &JsAnalysis::corners)
+      .property("num_components", &JsAnalysis::num_components)
+      .property("num_curves", &JsAnalysis::num_curves)
+      .property("num_patches", &JsAnalysis::num_patches)
+      .property("num_sheets", &JsAnalysis::num_sheets)
+      .property("sheet_cells_offsets", &JsAnalysis::sheet_cells_offsets)
+      .property("sheet_cells_items", &JsAnalysis::sheet_cells_items)
+      .property("sheet_blocks_offsets", &JsAnalysis::sheet_blocks_offsets)
+      .property("sheet_blocks_items", &JsAnalysis::sheet_blocks_items)
+      .property("sheet_types", &JsAnalysis::sheet_types)
+      .function("subsheets", &JsAnalysis::subsheets)
+      .function("wireframe", &JsAnalysis::wireframe)
+      .function("block_soup", &JsAnalysis::block_soup);
+  function("load", &load);
+  function("polylines", &polylines);
+  function("version", &version_string);
+}

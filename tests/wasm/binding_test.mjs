@@ -1,0 +1,69 @@
+// The JavaScript binding under node: load teapot from bytes, analyze, and compare stats_json with
+// `hbc analyze --json` of the same file (every key but timings); then the arrays' sizes against the
+// stats, a block soup, the wireframe, and a malformed file's error text against the CLI's.
+//   node tests/wasm/binding_test.mjs HBC_CORE_JS HBC_CLI MESH_DIR
+// HBC_CLI is the native hbc or `node .../hbc.js` run through a wrapper; prints "N passed, N failed".
+import { execFileSync } from 'node:child_process';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { basename, dirname, join } from 'node:path';
+import { tmpdir } from 'node:os';
+
+const [coreJs, cli, dataDir] = process.argv.slice(2);
+const require = createRequire(import.meta.url);
+const createHbcModule = require(coreJs);
+let passed = 0, failed = 0;
+function check(what, ok, detail = '') {
+  if (ok) passed++; else { failed++; console.log(`FAIL ${what} ${detail}`); }
+}
+function noTimings(x) {
+  if (Array.isArray(x)) return x.map(noTimings);
+  if (x && typeof x === 'object')
+    return Object.fromEntries(Object.entries(x).filter(([k]) => k !== 'timings').map(([k, v]) => [k, noTimings(v)]));
+  return x;
+}
+function runCli(args) {
+  try { return { out: execFileSync(cli, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] }), err: '' }; }
+  catch (e) { return { out: '', err: String(e.stderr) }; }
+}
+
+const M = await createHbcModule();
+const teapot = join(dataDir, 'hybrid-base-complex', 'teapot.hedra');
+// The CLI runs in the file's folder on its bare name, the name the binding is given.
+const cliStats = JSON.parse(execFileSync(cli, ['analyze', '--json', '--threads', '1', basename(teapot)],
+                                         { cwd: dirname(teapot), encoding: 'utf8' }));
+const mesh = M.load(readFileSync(teapot), basename(teapot), false);
+const a = mesh.analyze({ level: 'complex', subsheet_rule: 'layers' });
+const stats = JSON.parse(a.stats_json());
+check('stats equal to the CLI', JSON.stringify(noTimings(stats)) === JSON.stringify(noTimings(cliStats)),
+      `\n  js:  ${JSON.stringify(noTimings(stats))}\n  cli: ${JSON.stringify(noTimings(cliStats))}`);
+check('cells', mesh.num_cells === cliStats.cells);
+check('points', mesh.points.length === 3 * mesh.num_vertices && mesh.points instanceof Float32Array);
+check('cell_types', mesh.cell_types.length === mesh.num_cells && mesh.cell_types instanceof Uint8Array);
+check('components', a.num_components === cliStats.components && a.cell_component.length === mesh.num_cells);
+check('singularities', a.num_singularities === cliStats.singularities &&
+      a.chain_vertices_offsets.length === cliStats.singularities + 1 && a.chain_valence.length === cliStats.singularities);
+check('curves', a.num_curves === cliStats.curves && a.curve_vertices_offsets.length === cliStats.curves + 1);
+check('sheets', a.num_sheets === cliStats.sheets && a.sheet_types.length === cliStats.sheets);
+const w = a.wireframe();
+check('wireframe', w.count === cliStats.wireframe_edges && w.point_opacity.length === w.polylines_items.length &&
+      w.non_hex_offsets.length === w.count + 1);
+const soup = a.block_soup('components', -1, 0.1);
+check('block soup', soup.face_owner.length === soup.face_vertices_offsets.length - 1 &&
+      soup.positions.length === 3 * soup.point_vertex.length && soup.face_owner.every((o) => o < a.num_components));
+const pl = M.polylines(mesh, w.polylines_offsets, w.polylines_items);
+check('polylines', pl.length === 3 * w.polylines_items.length);
+a.delete();
+mesh.delete();
+
+// A malformed file: the same message as the CLI's (run in the file's folder on the same name).
+const dir = mkdtempSync(join(tmpdir(), 'hbc-js-'));
+const bad = 'MeshVersionFormatted 1\nDimension 3\nVertices\n2\n0 0 0 0\n1 x 0 0\nEnd\n';
+writeFileSync(join(dir, 'bad.mesh'), bad);
+const cliErr = (() => { try { execFileSync(cli, ['info', 'bad.mesh'], { cwd: dir, stdio: 'pipe' }); return ''; }
+                        catch (e) { return String(e.stderr).trim(); } })();
+let jsErr = '';
+try { M.load(Buffer.from(bad), 'bad.mesh', false).delete(); } catch (e) { jsErr = e.message; }
+check('error text', jsErr !== '' && cliErr.includes(jsErr), `\n  js:  ${jsErr}\n  cli: ${cliErr}`);
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
