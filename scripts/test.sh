@@ -177,7 +177,11 @@ if [ $WASM = 1 ] && part_wait wasm_build; then wasm_ok=1; fi
 # HBC_WASM_TARGETS says more) beside the wheels; ctest's browser tests (tests/web/) open it in
 # chromium, and with the page built here they fail rather than skip without it.
 if [ "${HBC_SKIP_WEB:-0}" != 1 ]; then
-  part_start web_build env HBC_WASM_TARGETS="${HBC_WASM_TARGETS:-hbc_core}" bash scripts/build_web.sh
+  if [ $WASM = 1 ] && [ $wasm_ok = 0 ]; then
+    part_skip web_build "wasm_build failed"  # its failure is shown; building the core again would not help
+  else
+    part_start web_build env HBC_WASM_TARGETS="${HBC_WASM_TARGETS:-hbc_core}" bash scripts/build_web.sh
+  fi
 fi
 # The node runs compare with the Release build's hbc.
 if [ $WASM = 1 ] && [ $wasm_ok = 1 ] && [ $release_ok = 1 ]; then
@@ -199,10 +203,8 @@ if [ "$QUICK" != 1 ]; then
   part_wait bpy_envs || true
 fi
 
-if [ "${HBC_SKIP_WEB:-0}" != 1 ]; then
-  part_wait web_build || true
-  export HBC_WEB_REQUIRED=1
-fi
+if [ -n "${PID[web_build]:-}" ]; then part_wait web_build || true; fi
+if [ "${HBC_SKIP_WEB:-0}" != 1 ]; then export HBC_WEB_REQUIRED=1; fi
 
 if [ $release_ok = 1 ]; then
   # ctest's own output is shown as it comes; a bpy environment that failed shows up as its Blender's
