@@ -77,12 +77,14 @@ export class Core {
 
   /** Table 1's columns from the module's schema, [{key, notation, meaning, timing}], or null. */
   table1() {
-    const t = this.M.TABLE1_COLUMNS ? copy(get(this.M, 'TABLE1_COLUMNS')) : null;
+    const M = this.M;
+    const t = typeof M.TABLE1_COLUMNS_json === 'function' ? M.TABLE1_COLUMNS_json()
+      : M.TABLE1_COLUMNS ? copy(get(M, 'TABLE1_COLUMNS')) : null;
     if (!t) return null;
     const rows = typeof t === 'string' ? JSON.parse(t) : t;
-    return rows.map((r) => Array.isArray(r)
+    return rows.map((r) => (Array.isArray(r)
       ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}`, timing: !!r[1] }
-      : r);
+      : { ...r, meaning: r.label && !String(r.meaning).startsWith(r.label) ? `${r.label}: ${r.meaning}` : r.meaning, timing: !!r.timing }));
   }
 
   writeFiles(files) {
