@@ -1,5 +1,5 @@
-// The analysis runs here, off the page's thread: the WebAssembly core reads the file from its
-// in-memory file system (every format the CLI reads, OpenFOAM case folders too), analyses it as
+// The analysis runs here, off the page's thread: the WebAssembly core reads the file (every
+// format the CLI reads; an OpenFOAM case's files when the core takes several), analyses it as
 // `hbc analyze` does, and builds each layer's buffers, which go to the page by transfer.
 /* global createHbcModule, __HBC_WASM_BASE64__ */
 import { Core, arr, csr, get, errorText } from './core.js';
