@@ -16,7 +16,8 @@ using test::run_cli;
 TEST(CliOptions, EveryCommandHasHelp) {
   for (const char* cmd : {"info", "analyze", "sheets", "table", "generate", "generate grid", "generate split",
                           "generate sector", "generate cylinder", "generate twisted-ring", "generate twisted-pair",
-                          "export-surface", "wireframe"}) {
+                          "export-surface", "wireframe", "export-vtu", "export-html", "quality", "metrics", "compare",
+                          "check"}) {
     const test::CliRun r = run_cli(std::string(cmd) + " --help");
     EXPECT_EQ(r.status, 0) << cmd << ": " << r.err;
     // CLI11's help starts with the command's description and names the command in its usage line.
@@ -24,7 +25,8 @@ TEST(CliOptions, EveryCommandHasHelp) {
   }
   const test::CliRun top = run_cli("--help");
   EXPECT_EQ(top.status, 0);
-  for (const char* cmd : {"info", "analyze", "sheets", "table", "generate", "export-surface", "wireframe"})
+  for (const char* cmd : {"info", "analyze", "sheets", "table", "generate", "export-surface", "wireframe", "export-vtu",
+                          "export-html", "quality", "metrics", "compare", "check"})
     EXPECT_NE(top.out.find(cmd), std::string::npos) << cmd;
   EXPECT_EQ(run_cli("").status, 1);         // no command
   EXPECT_EQ(run_cli("frobnicate").status, 1);
