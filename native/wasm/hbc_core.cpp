@@ -19,6 +19,7 @@
 #include "hbc/error.hpp"
 #include "hbc/io.hpp"
 #include "hbc/render_geometry.hpp"
+#include "hbc/schema.hpp"
 #include "hbc/version.hpp"
 
 using emscripten::val;
@@ -269,6 +270,47 @@ JsMesh load(const std::string& bytes, const std::string& name, bool skip_invalid
   });
 }
 
+// load_path(path): a file (or an OpenFOAM case folder / owner file) already in the module's file
+// system (Module.FS), read as the CLI reads a path.
+JsMesh load_path(const std::string& path) {
+  return guarded([&] {
+    auto m = std::make_shared<LoadedMesh>();
+    m->name = path;
+    Threads one;
+    one.count = 1;
+    m->mesh = load_mesh(path, Format::Auto, one);
+    return JsMesh(m);
+  });
+}
+
+// kept_surface_soup(mesh, kept, shrink): the surface of the cells with kept[c] != 0 (nc entries).
+val kept_surface_soup(const JsMesh& m, val kept, double shrink) {
+  return guarded([&] {
+    const auto k = emscripten::convertJSArrayToNumberVector<uint8_t>(kept);
+    return JsAnalysis::soup_object(hbc::kept_surface_soup(m.mesh(), k, shrink));
+  });
+}
+
+// cell_centroids(mesh): Float64Array (3 nc), the mean of each cell's distinct vertices.
+val cell_centroids(const JsMesh& m) { return copy(hbc::cell_centroids(m.mesh())); }
+
+// FORMATS: formats() as JSON [{name, alias, extension, title, writable}].
+std::string formats_json() {
+  cli::Json j = cli::Json::array();
+  for (const FormatInfo& f : formats())
+    j.push_back({{"name", f.name}, {"alias", f.alias}, {"extension", f.extension}, {"title", f.title}, {"writable", f.writable}});
+  return j.dump();
+}
+
+// TABLE1_COLUMNS_json: the paper's Table 1 columns from the schema, [{key, label, notation, meaning, timing}].
+std::string table1_columns_json() {
+  cli::Json j = cli::Json::array();
+  for (const Table1Column& c : table1_columns())
+    j.push_back({{"key", c.field->key}, {"label", c.field->label}, {"notation", c.field->notation},
+                 {"meaning", c.field->meaning}, {"timing", c.timing}});
+  return j.dump();
+}
+
 // polylines(mesh, offsets, items) of _core.pyi: float32 positions (3 per entry).
 val polylines(const JsMesh& m, val offsets, val items) {
   return guarded([&] {
@@ -341,5 +383,10 @@ EMSCRIPTEN_BINDINGS(hbc_core) {
       .function("block_soup", &JsAnalysis::block_soup);
   function("load", &load);
   function("polylines", &polylines);
+  function("load_path", &load_path);
+  function("kept_surface_soup", &kept_surface_soup);
+  function("cell_centroids", &cell_centroids);
+  function("FORMATS", &formats_json);
+  function("TABLE1_COLUMNS_json", &table1_columns_json);
   function("version", &version_string);
 }

@@ -88,7 +88,13 @@ export interface Analysis {
 
 export interface HbcModule {
   load(bytes: Uint8Array | ArrayBuffer, name: string, skip_invalid: boolean): Mesh;  // format from the name
+  load_path(path: string): Mesh;              // a file or OpenFOAM case already in FS (the CLI's reading of a path)
   polylines(mesh: Mesh, offsets: Int32Array, items: Int32Array): Float32Array;       // (3 * items.length)
+  kept_surface_soup(mesh: Mesh, kept: Uint8Array, shrink: number): BlockSoup;        // kept: (nc) 0/1; owner = cell
+  cell_centroids(mesh: Mesh): Float64Array;   // (3 nc) mean of each cell's distinct vertices
+  FORMATS(): string;                          // JSON [{name, alias, extension, title, writable}]
+  TABLE1_COLUMNS_json(): string;              // JSON [{key, label, notation, meaning, timing}] in Table 1's order
+  FS: any;                                    // emscripten's in-memory file system (for load_path)
   version(): string;
 }
 export default function createHbcModule(overrides?: object): Promise<HbcModule>;

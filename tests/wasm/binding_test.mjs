@@ -53,8 +53,20 @@ check('block soup', soup.face_owner.length === soup.face_vertices_offsets.length
       soup.positions.length === 3 * soup.point_vertex.length && soup.face_owner.every((o) => o < a.num_components));
 const pl = M.polylines(mesh, w.polylines_offsets, w.polylines_items);
 check('polylines', pl.length === 3 * w.polylines_items.length);
+const nBoundary = mesh.face_boundary.reduce((n, b) => n + b, 0);
+const kept = M.kept_surface_soup(mesh, new Uint8Array(mesh.num_cells).fill(1), 0);
+check('kept surface of every cell is the boundary', kept.face_owner.length === nBoundary);
+check('cell centroids', M.cell_centroids(mesh).length === 3 * mesh.num_cells);
+check('formats', JSON.parse(M.FORMATS()).some((f) => f.extension === '.hedra'));
+const table1 = JSON.parse(M.TABLE1_COLUMNS_json());
+check('Table 1 columns', table1.length > 0 && table1.every((c) => 'key' in c && 'notation' in c && 'timing' in c));
 a.delete();
 mesh.delete();
+// load_path: a file in the module's file system, as the CLI reads a path.
+M.FS.writeFile('/teapot.hedra', readFileSync(teapot));
+const byPath = M.load_path('/teapot.hedra');
+check('load_path', byPath.num_cells === cliStats.cells);
+byPath.delete();
 
 // A malformed file: the same message as the CLI's (run in the file's folder on the same name).
 const dir = mkdtempSync(join(tmpdir(), 'hbc-js-'));
