@@ -21,9 +21,8 @@ fi
 [ ${#meshes[@]} -gt 0 ] || { echo "compare_native: no meshes under $HBC_DATA_DIR" >&2; exit 1; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-# FILE: the JSON without timings, keys sorted. One known exception: hbc metrics' summary (score
-# and vector) sums std::log10 of counts, and musl's log10 (emscripten) and glibc's differ in the
-# last bit for some arguments; those two entries are compared to 12 significant digits.
+# FILE: the JSON without timings, keys sorted. (hbc metrics' summary sums logarithms, whose last bit
+# differs between glibc and musl; metrics.cpp rounds it to 1e-12 so that it compares equal too.)
 strip() {
   "$HBC_PYTHON" -c '
 import json, sys
@@ -32,8 +31,6 @@ def drop(x, key=""):
         return {k: drop(v, k) for k, v in x.items() if k not in ("timings", "timing") and not k.startswith("seconds")}
     if isinstance(x, list):
         return [drop(v, key) for v in x]
-    if key in ("score", "vector") and isinstance(x, float):
-        return float(f"{x:.12g}")
     return x
 print(json.dumps(drop(json.load(open(sys.argv[1]))), sort_keys=True, indent=1))' "$1"
 }

@@ -455,9 +455,16 @@ void summary(Metrics& out) {
                         std::log10(std::max(1.0, v[kBlocks])),
                         sheets > 0 ? 1 - v[kSheetsPerfect] / sheets : sheets == 0 ? 0 : kNaN,
                         1 - v[kPerfectCellShare]};
+  // The logarithms' last bits depend on the maths library (glibc and musl, which the WebAssembly
+  // build uses, differ by one ulp for some counts); rounding to 1e-12, with exact IEEE operations,
+  // makes the summary the same on every platform while keeping far more digits than it means.
+  const auto fixed = [](double x) { return std::isfinite(x) ? std::round(x * 1e12) / 1e12 : x; };
   double score = 0;
-  for (double x : out.summary_vector) score += x;
-  out.values[kScore] = score;
+  for (double& x : out.summary_vector) {
+    x = fixed(x);
+    score += x;
+  }
+  out.values[kScore] = fixed(score);
 }
 
 }  // namespace
