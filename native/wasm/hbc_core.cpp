@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "hbc/check.hpp"
 #include "hbc/error.hpp"
 #include "hbc/io.hpp"
+#include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
 #include "hbc/schema.hpp"
 #include "hbc/version.hpp"
@@ -103,7 +105,11 @@ class JsMesh {
 
 class JsAnalysis {
  public:
-  JsAnalysis(std::shared_ptr<LoadedMesh> m, std::shared_ptr<Analysis> a) : m_(std::move(m)), a_(std::move(a)) {}
+  JsAnalysis(std::shared_ptr<LoadedMesh> m, std::shared_ptr<Analysis> a, const AnalysisOptions& options)
+      : m_(std::move(m)), a_(std::move(a)), level_(options.wireframe_level), wire_options_(options.wireframe_options) {
+    if (a_->sheet_stage)
+      sheet_classes_ = std::make_shared<ClassArrays>(flatten_classes(a_->sheet_stage->domain, a_->sheet_stage->sheets.classes));
+  }
   // `hbc analyze --json` of this mesh, the same keys and values ("file" is the name given to load).
   std::string stats_json() const {
     cli::Json j = {{"file", m_->name}};
@@ -143,7 +149,16 @@ class JsAnalysis {
   val sheet_cells_items() const { return copy(sheets().sheet_cells.items); }
   val sheet_blocks_offsets() const { return copy(sheets().sheet_blocks.offsets); }
   val sheet_blocks_items() const { return copy(sheets().sheet_blocks.items); }
-  val sheet_types() const { return copy(flatten_classes(a_->sheet_stage->domain, sheets().classes).type); }
+  val sheet_types() const { return copy(classes().type); }
+  // The picked sheet's highlights (Analysis.sheet_* CSRs in _core.pyi), one row per sheet.
+  val sheet_unmatched_vertices_offsets() const { return copy(classes().unmatched_vertices.offsets); }
+  val sheet_unmatched_vertices_items() const { return copy(classes().unmatched_vertices.items); }
+  val sheet_shared_vertices_offsets() const { return copy(classes().shared_vertices.offsets); }
+  val sheet_shared_vertices_items() const { return copy(classes().shared_vertices.items); }
+  val sheet_self_parallel_curves_offsets() const { return copy(classes().self_parallel_curves.offsets); }
+  val sheet_self_parallel_curves_items() const { return copy(classes().self_parallel_curves.items); }
+  val sheet_self_intersecting_components_offsets() const { return copy(classes().self_intersecting_components.offsets); }
+  val sheet_self_intersecting_components_items() const { return copy(classes().self_intersecting_components.items); }
   // The subsheets of one self-intersecting sheet: {count, subsheet_cells_offsets, _items, subsheet_types};
   // null when the sheet has none.
   val subsheets(int sheet) const {
@@ -157,13 +172,35 @@ class JsAnalysis {
     o.set("subsheet_cells_items", copy(s->cells.items));
     o.set("subsheet_blocks_offsets", copy(s->blocks.offsets));
     o.set("subsheet_blocks_items", copy(s->blocks.items));
-    o.set("subsheet_types", copy(flatten_classes(a_->sheet_stage->domain, s->classes).type));
+    const ClassArrays c = flatten_classes(a_->sheet_stage->domain, s->classes);
+    o.set("subsheet_types", copy(c.type));
+    const std::pair<const char*, const Csr<int32_t>*> rows[] = {
+        {"unmatched_vertices", &c.unmatched_vertices}, {"shared_vertices", &c.shared_vertices},
+        {"self_parallel_curves", &c.self_parallel_curves},
+        {"self_intersecting_components", &c.self_intersecting_components}};
+    for (const auto& [name, csr] : rows) {
+      o.set(std::string("subsheet_") + name + "_offsets", copy(csr->offsets));
+      o.set(std::string("subsheet_") + name + "_items", copy(csr->items));
+    }
     return o;
   }
   // The whole-mesh VSG wireframe (Wireframe in _core.pyi), or null when it did not run.
   val wireframe() const {
     if (!a_->wireframe_stage) return val::null();
-    const VsgWireframe& w = a_->wireframe_stage->wireframe;
+    return wire_object(a_->wireframe_stage->wireframe);
+  }
+  // wireframe(sheet, subsheet) of _core.pyi: the wireframe of a sheet's (or one of its subsheets')
+  // cells with their adjacent non-hex cells; -1 for none (both -1: the whole mesh's).
+  val wireframe(int sheet, int subsheet) const {
+    if (sheet < 0 && subsheet >= 0) throw_js("a subsheet needs its sheet");
+    if (sheet < 0) return wireframe();
+    return guarded([&] {
+      std::optional<int32_t> sub;
+      if (subsheet >= 0) sub = subsheet;
+      return wire_object(region_wireframe(m_->mesh, *a_, level_, wire_options_, sheet, sub));
+    });
+  }
+  static val wire_object(const VsgWireframe& w) {
     val o = val::object();
     o.set("count", static_cast<int>(w.size()));
     o.set("polylines_offsets", copy(w.polylines.offsets));
@@ -207,8 +244,15 @@ class JsAnalysis {
     if (!a_->sheet_stage) throw_js("the analysis ran without sheets");
     return a_->sheet_stage->sheets;
   }
+  const ClassArrays& classes() const {
+    sheets();
+    return *sheet_classes_;
+  }
   std::shared_ptr<LoadedMesh> m_;
   std::shared_ptr<Analysis> a_;
+  Level level_;
+  WireframeOptions wire_options_;
+  std::shared_ptr<const ClassArrays> sheet_classes_;  // computed once, as the Python binding does
 };
 
 std::string JsMesh::info_json() const {
@@ -239,7 +283,7 @@ JsAnalysis JsMesh::analyze(val options) const {
     if (val v = get("sheets"); !v.isUndefined()) opt.sheets = v.as<bool>();
     if (val v = get("subsheets"); !v.isUndefined()) opt.subsheets = v.as<bool>();
     if (val v = get("wireframe"); !v.isUndefined()) opt.wireframe = v.as<bool>();
-    return JsAnalysis(m_, std::make_shared<Analysis>(hbc::analyze(m_->mesh, opt)));
+    return JsAnalysis(m_, std::make_shared<Analysis>(hbc::analyze(m_->mesh, opt)), opt);
   });
 }
 
@@ -378,8 +422,18 @@ EMSCRIPTEN_BINDINGS(hbc_core) {
       .property("sheet_blocks_offsets", &JsAnalysis::sheet_blocks_offsets)
       .property("sheet_blocks_items", &JsAnalysis::sheet_blocks_items)
       .property("sheet_types", &JsAnalysis::sheet_types)
+      .property("sheet_unmatched_vertices_offsets", &JsAnalysis::sheet_unmatched_vertices_offsets)
+      .property("sheet_unmatched_vertices_items", &JsAnalysis::sheet_unmatched_vertices_items)
+      .property("sheet_shared_vertices_offsets", &JsAnalysis::sheet_shared_vertices_offsets)
+      .property("sheet_shared_vertices_items", &JsAnalysis::sheet_shared_vertices_items)
+      .property("sheet_self_parallel_curves_offsets", &JsAnalysis::sheet_self_parallel_curves_offsets)
+      .property("sheet_self_parallel_curves_items", &JsAnalysis::sheet_self_parallel_curves_items)
+      .property("sheet_self_intersecting_components_offsets", &JsAnalysis::sheet_self_intersecting_components_offsets)
+      .property("sheet_self_intersecting_components_items", &JsAnalysis::sheet_self_intersecting_components_items)
       .function("subsheets", &JsAnalysis::subsheets)
-      .function("wireframe", &JsAnalysis::wireframe)
+      // Overloaded on the number of arguments: wireframe() or wireframe(sheet, subsheet).
+      .function("wireframe", select_overload<val() const>(&JsAnalysis::wireframe))
+      .function("wireframe", select_overload<val(int, int) const>(&JsAnalysis::wireframe))
       .function("block_soup", &JsAnalysis::block_soup);
   function("load", &load);
   function("polylines", &polylines);

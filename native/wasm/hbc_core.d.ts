@@ -55,6 +55,11 @@ export interface SubsheetSet {
   subsheet_cells_offsets: Int32Array; subsheet_cells_items: Int32Array;
   subsheet_blocks_offsets: Int32Array; subsheet_blocks_items: Int32Array;
   subsheet_types: Uint8Array;     // (count) SHEET_TYPES index: 0 perfect, 1..3 type1..type3
+  // each subsheet's highlights (rows: count), as the sheets' below
+  subsheet_unmatched_vertices_offsets: Int32Array; subsheet_unmatched_vertices_items: Int32Array;
+  subsheet_shared_vertices_offsets: Int32Array; subsheet_shared_vertices_items: Int32Array;
+  subsheet_self_parallel_curves_offsets: Int32Array; subsheet_self_parallel_curves_items: Int32Array;
+  subsheet_self_intersecting_components_offsets: Int32Array; subsheet_self_intersecting_components_items: Int32Array;
 }
 
 export interface Analysis {
@@ -80,8 +85,18 @@ export interface Analysis {
   readonly sheet_cells_offsets: Int32Array; readonly sheet_cells_items: Int32Array;
   readonly sheet_blocks_offsets: Int32Array; readonly sheet_blocks_items: Int32Array;
   readonly sheet_types: Uint8Array;       // (num_sheets)
+  // The highlights of each sheet (rows: num_sheets), as Analysis.sheet_* in _core.pyi:
+  // unmatched and shared mesh vertices, curve ids of type 2 pairs, components holding type 3 pairs.
+  readonly sheet_unmatched_vertices_offsets: Int32Array; readonly sheet_unmatched_vertices_items: Int32Array;
+  readonly sheet_shared_vertices_offsets: Int32Array; readonly sheet_shared_vertices_items: Int32Array;
+  readonly sheet_self_parallel_curves_offsets: Int32Array; readonly sheet_self_parallel_curves_items: Int32Array;
+  readonly sheet_self_intersecting_components_offsets: Int32Array;
+  readonly sheet_self_intersecting_components_items: Int32Array;
   subsheets(sheet: number): SubsheetSet | null;   // null: not self-intersecting
   wireframe(): Wireframe | null;                  // null: wireframe not run
+  // The wireframe of a sheet's (or one of its subsheets') cells with their adjacent non-hex cells,
+  // as Analysis.wireframe(sheet=, subsheet=); -1 for none (wireframe(-1, -1) is the whole mesh's).
+  wireframe(sheet: number, subsheet: number): Wireframe | null;
   block_soup(what: SoupWhat, sheet: number, shrink: number): BlockSoup;  // sheet -1: none
   delete(): void;
 }

@@ -60,6 +60,30 @@ check('cell centroids', M.cell_centroids(mesh).length === 3 * mesh.num_cells);
 check('formats', JSON.parse(M.FORMATS()).some((f) => f.extension === '.hedra'));
 const table1 = JSON.parse(M.TABLE1_COLUMNS_json());
 check('Table 1 columns', table1.length > 0 && table1.every((c) => 'key' in c && 'notation' in c && 'timing' in c));
+// The picked sheet's highlights and a sheet's own wireframe, against `hbc sheets --json` and
+// `hbc wireframe --sheet 2 --json` (teapot's sheet 2 is self-intersecting: every highlight occurs).
+const cliSheets = JSON.parse(execFileSync(cli, ['sheets', '--json', '--threads', '1', basename(teapot)],
+                                          { cwd: dirname(teapot), maxBuffer: 1 << 28 }).toString()).sheets;
+const rowLength = (offsets, i) => offsets[i + 1] - offsets[i];
+const highlights = [['unmatched_vertices', 'unmatched_vertices'], ['shared_vertices', 'shared_vertices'],
+                    ['self_parallel_curves', 'self_parallel_curves'],
+                    ['self_intersecting_components', 'self_intersecting_blocks']];
+for (const [name, key] of highlights) {
+  const offsets = a[`sheet_${name}_offsets`];
+  check(`sheet_${name}`, offsets.length === a.num_sheets + 1 && a[`sheet_${name}_items`].length === offsets[a.num_sheets] &&
+        Object.entries(cliSheets).every(([i, s]) => rowLength(offsets, Number(i)) === s[key]));
+}
+const sub = a.subsheets(2);
+check('subsheet highlights', Object.entries(cliSheets['2'].subsheets).every(([k, s]) =>
+      rowLength(sub.subsheet_unmatched_vertices_offsets, Number(k)) === s.unmatched_vertices &&
+      rowLength(sub.subsheet_shared_vertices_offsets, Number(k)) === s.shared_vertices));
+const cliWire = JSON.parse(execFileSync(cli, ['wireframe', '--sheet', '2', '--json', '--threads', '1', basename(teapot)],
+                                        { cwd: dirname(teapot), maxBuffer: 1 << 28 }).toString());
+const sheetWire = a.wireframe(2, -1);
+check('wireframe of a sheet', sheetWire.count === cliWire.wireframe_edges && sheetWire.count !== w.count);
+check('wireframe(-1, -1) is the whole mesh', a.wireframe(-1, -1).count === w.count);
+const subWire = a.wireframe(2, 0);
+check('wireframe of a subsheet', subWire.count > 0 && subWire.count < sheetWire.count);
 a.delete();
 mesh.delete();
 // load_path: a file in the module's file system, as the CLI reads a path.
