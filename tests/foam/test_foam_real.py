@@ -63,3 +63,59 @@ def test_python_names_a_folder_that_is_no_case(tmp_path):
 
     with pytest.raises(hbc.MeshFormatError, match="OpenFOAM case"):
         hbc.load(str(tmp_path))
+
+
+def cli_metrics(path):
+    out = subprocess.run([os.environ["HBC_CLI"], "metrics", "--json", str(path)], check=True, capture_output=True,
+                         text=True)
+    metrics = json.loads(out.stdout)
+    for key in ("file", "timings"):
+        metrics.pop(key)
+    return metrics
+
+
+def near(a, b):
+    """Equal counts; lengths, volumes and qualities equal to 1e-4 (the VTU's points are single
+    precision, and the volumes of snappyHexMesh's thin cut cells lose more digits than the points:
+    the hex volume share differs by 5e-5); lists of values as multisets (a list ordered by a
+    measured length may order ties differently)."""
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(near(a[k], b[k]) for k in a)
+    if isinstance(a, list):
+        if len(a) != len(b):
+            return False
+        if all(isinstance(x, (int, float)) for x in a + b):
+            a, b = sorted(a), sorted(b)
+        return all(near(x, y) for x, y in zip(a, b))
+    if isinstance(a, float) or isinstance(b, float):
+        return a == pytest.approx(b, rel=1e-4, abs=1e-7)
+    return a == b
+
+
+def test_metrics_of_the_case_equal_those_of_its_vtu(flange):
+    # The structural metrics depend on the mesh's connectivity, not on the reader that built it;
+    # foamToVTK writes the points in single precision, so what is measured on the geometry
+    # (lengths, volumes, scaled Jacobians) agrees to that precision.
+    metrics = cli_metrics(flange / "binary")
+    vtu = cli_metrics(flange / "ascii/VTK/ascii_0/internal.vtu")
+    for group in metrics:
+        assert near(metrics[group], vtu[group]), group
+    census = metrics["census"]
+    assert census["cells"] == 19314
+    # snappyHexMesh's cut cells near the flange's surface: non-hex cells in clusters.
+    assert 0 < census["hex_ratio"] < 1 and metrics["non_hex"]["regions"] > 0
+
+
+def test_compare_with_three_other_meshers(flange, tmp_path):
+    # snappyHexMesh beside RHDM, LoopyCuts and At-Most-Hexa output (the shared data's SOURCES.md):
+    # every column measured, none failing, the case given by its folder.
+    data = pathlib.Path(os.environ.get("HBC_DATA_DIR", ROOT.parent / "shared/data")) / "hybrid-base-complex"
+    files = [flange / "binary", data / "cube_twist-comp.obj.HYBRID", data / "teapot.hedra", data / "twistcube_s.mesh"]
+    out = tmp_path / "out"
+    run = subprocess.run([os.environ["HBC_CLI"], "compare", *map(str, files), "-o", str(out), "--no-report"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    result = json.loads((out / "metrics.json").read_text())
+    assert not result.get("errors"), result.get("errors")
+    assert len(result["meshes"]) == 4
+    assert (out / "metrics.csv").read_text().count("\n") == 5  # header + 4 rows
