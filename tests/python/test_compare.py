@@ -245,6 +245,30 @@ def test_figures_run_render_figures_per_pair(compared, hbc_cli, tmp_path):
     assert html.count(embedded) == 2 and "Structure side by side" in html
 
 
+def test_figures_rendered_by_blender(hbc_cli, shared_data_dir, tmp_path):
+    """`hbc compare --figures` with the real Blender (Debian's, HBC_BLENDER overrides) and the build's
+    add-on: one pair of meshes gives one comparison panel, embedded as a PNG that is not blank."""
+    blender = os.environ.get("HBC_BLENDER") or shutil.which("blender")
+    if not blender:
+        pytest.fail("blender is not installed (scripts/env/deps.sh installs it)")
+    files = [str(shared_data_dir / "hybrid-base-complex/cube_twist-comp.obj.HYBRID"),
+             str(shared_data_dir / "hybrid-base-complex/twistcube_s.mesh")]
+    out = tmp_path / "out"
+    run = subprocess.run([hbc_cli, "compare", *files, "-o", str(out), "--figures"], capture_output=True, text=True,
+                         env=report_env({"HBC_BLENDER": blender}), timeout=600)
+    assert run.returncode == 0, run.stderr[-2000:]
+    html = (out / "report.html").read_text()
+    import base64
+    import io
+    assert "Structure side by side" in html
+    section = html.split("Structure side by side", 1)[1].split("<h2>Definitions</h2>", 1)[0]
+    panels = re.findall(r'src="data:image/png;base64,([^"]+)"', section)
+    assert len(panels) == 1, "one pair, one panel"
+    from matplotlib import image as mpimg
+    pixels = [mpimg.imread(io.BytesIO(base64.b64decode(b)), format="png") for b in panels]
+    assert any(p.shape[0] >= 200 and p.shape[1] >= 300 and float(p[..., :3].std()) > 0.02 for p in pixels)
+
+
 # ---- Chromium ------------------------------------------------------------------------------
 
 def chromium():
