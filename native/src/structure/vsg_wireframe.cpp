@@ -416,21 +416,42 @@ Csr<int32_t> polylines(const CellComplex& cx, const Chains& ch, const Threads& p
 // the row is kept distinct as it grows, by a search in it, and sorted once at the end (sorting the
 // kind of every touched cell cost 74 M instructions on eight_voronoi, whose whole wireframe stage
 // takes 120 M without the kinds; this way 58 M).
+// Adds the kinds of the non-hex cells at edge e (if it borders any) to `out`, each once.
+void add_edge_kinds(const CellComplex& cx, int32_t e, std::vector<int32_t>& out) {
+  if (!cx.edge_non_hex[e]) return;
+  for (int32_t c : cx.edge_cells[e])
+    if (cx.cell_non_hex[c] && std::find(out.begin(), out.end(), cx.cell_kind[c]) == out.end())
+      out.push_back(cx.cell_kind[c]);
+}
+
+// The non-hex kinds around each vertex where a chain ends (empty rows elsewhere), each vertex
+// scanned once: at a fan's axis k chains end, and scanning it per chain cost k².
+Csr<int32_t> end_kinds(const CellComplex& cx, const Chains& ch, const Threads& par) {
+  std::vector<uint8_t> end(cx.vert_edges.rows(), 0);
+  for (size_t c = 0; c < ch.verts.rows(); ++c) {
+    const auto vs = ch.verts[c];
+    if (vs.front() != vs.back()) end[static_cast<size_t>(vs.front())] = end[static_cast<size_t>(vs.back())] = 1;
+  }
+  return detail::parallel_rows_of<int32_t, std::vector<int32_t>>(
+      end.size(), par, [&](size_t v, Csr<int32_t>& out, std::vector<int32_t>& kinds) {
+        kinds.clear();
+        if (end[v])
+          for (int32_t e : cx.vert_edges[v]) add_edge_kinds(cx, e, kinds);
+        out.items.insert(out.items.end(), kinds.begin(), kinds.end());
+      });
+}
+
 Csr<int32_t> chain_kinds(const CellComplex& cx, const Chains& ch, const Threads& par) {
-  const auto add = [&](int32_t e, std::vector<int32_t>& out) {
-    if (!cx.edge_non_hex[e]) return;
-    for (int32_t c : cx.edge_cells[e])
-      if (cx.cell_non_hex[c] && std::find(out.begin(), out.end(), cx.cell_kind[c]) == out.end())
-        out.push_back(cx.cell_kind[c]);
-  };
+  const Csr<int32_t> at_end = end_kinds(cx, ch, par);
   return detail::parallel_rows_of<int32_t, std::vector<int32_t>>(
       ch.edges.rows(), par, [&](size_t c, Csr<int32_t>& out, std::vector<int32_t>& kinds) {
         kinds.clear();
-        for (int32_t e : ch.edges[c]) add(e, kinds);
+        for (int32_t e : ch.edges[c]) add_edge_kinds(cx, e, kinds);
         const auto vs = ch.verts[c];
         if (vs.front() != vs.back())
           for (int32_t v : {vs.front(), vs.back()})
-            for (int32_t e : cx.vert_edges[v]) add(e, kinds);
+            for (int32_t k : at_end[static_cast<size_t>(v)])
+              if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
         std::sort(kinds.begin(), kinds.end());
         out.items.insert(out.items.end(), kinds.begin(), kinds.end());
       });
