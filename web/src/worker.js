@@ -61,6 +61,9 @@ async function open({ name, files }) {
   }
   progress(0.85, 'Preparing the layers');
   const results = JSON.parse(c.analysisJson(mesh, analysis, name));
+  // The core names the file by its path in its in-memory file system (/in/...): name it as the
+  // user did, in the same place of the JSON.
+  if ('file' in results) results.file = name;
   const timings = results.timings ?? null; // Table 1's times; not part of the compared counts
   delete results.timings;
   S = { name, mesh, analysis, cache: new Map() };
