@@ -43,6 +43,20 @@ export function csr(obj, ...names) {
   return { offsets: new Int32Array(1), items: new Int32Array(0) };
 }
 
+/** A face soup (block_soup, kept_surface_soup) as the worker's typed arrays; the embind object
+ *  is freed once copied. */
+function soupArrays(s) {
+  const out = {
+    positions: Float32Array.from(arr(s, 'positions')),
+    offsets: Int32Array.from(arr(s, 'face_vertices_offsets')),
+    items: Int32Array.from(arr(s, 'face_vertices_items')),
+    owner: Int32Array.from(arr(s, 'face_owner')),
+    cell: Int32Array.from(arr(s, 'face_cell')),
+  };
+  if (typeof s.delete === 'function') s.delete();
+  return out;
+}
+
 /** The text of a thrown C++ InputError (or any error) as the CLI prints it. */
 export function errorText(M, e) {
   if (e && typeof e === 'object' && 'message' in e && e.message) return String(e.message);
@@ -162,28 +176,12 @@ export class Core {
     const s = typeof this.M.block_soup === 'function'
       ? this.M.block_soup(mesh, analysis, what, id, shrink)
       : analysis.block_soup(what, id, shrink);
-    const out = {
-      positions: Float32Array.from(arr(s, 'positions')),
-      offsets: Int32Array.from(arr(s, 'face_vertices_offsets')),
-      items: Int32Array.from(arr(s, 'face_vertices_items')),
-      owner: Int32Array.from(arr(s, 'face_owner')),
-      cell: Int32Array.from(arr(s, 'face_cell')),
-    };
-    if (typeof s.delete === 'function') s.delete();
-    return out;
+    return soupArrays(s);
   }
 
   keptSurface(mesh, kept, shrink) {
     const s = this.M.kept_surface_soup(mesh, kept, shrink);
-    const out = {
-      positions: Float32Array.from(arr(s, 'positions')),
-      offsets: Int32Array.from(arr(s, 'face_vertices_offsets')),
-      items: Int32Array.from(arr(s, 'face_vertices_items')),
-      owner: Int32Array.from(arr(s, 'face_owner')),
-      cell: Int32Array.from(arr(s, 'face_cell')),
-    };
-    if (typeof s.delete === 'function') s.delete();
-    return out;
+    return soupArrays(s);
   }
 
   polylines(mesh, offsets, items) {
