@@ -29,6 +29,7 @@
 #include "hbc/version.hpp"
 #include "json.hpp"
 #include "metrics_json.hpp"
+#include "stats_format.hpp"
 
 extern char** environ;
 
@@ -228,20 +229,6 @@ Json comparison_json(const std::vector<Column>& cols) {
   for (const Column& c : cols)
     if (!c.error.empty()) errors[c.name] = c.error;
   return j;
-}
-
-std::string number_text(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-std::string csv_quoted(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 // One row per mesh with `hbc metrics --csv`'s columns (group.key, the same number format), its

@@ -13,6 +13,7 @@
 #include "hbc/metrics.hpp"
 #include "json.hpp"
 #include "metrics_json.hpp"
+#include "stats_format.hpp"
 
 namespace hbc::cli {
 namespace {
@@ -29,20 +30,6 @@ Json by_value(const std::vector<int64_t>& hist) {
   for (size_t i = 0; i < hist.size(); ++i)
     if (hist[i] != 0) j[std::to_string(i)] = hist[i];
   return j;
-}
-
-std::string number_text(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-std::string csv_quoted(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 void run_metrics(const MetricsArgs& args) {

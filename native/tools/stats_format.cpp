@@ -1,5 +1,6 @@
 #include "stats_format.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -72,6 +73,20 @@ std::string stats_table(const std::string& name, const Stats& s) {
     out += buf;
   }
   return out;
+}
+
+std::string number_text(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string csv_quoted(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
 }
 
 void add_dropped_json(Json& j, bool skip, const std::vector<DroppedCell>& dropped) {

@@ -1,5 +1,6 @@
 #pragma once
-// Table 1 statistics as JSON, CSV and a human-readable table, from the schema (hbc/schema.hpp).
+// Table 1 statistics as JSON, CSV and a human-readable table, from the schema (hbc/schema.hpp),
+// and the CSV field rules the other commands' tables (hbc metrics, hbc compare) share.
 #include <string>
 
 #include "hbc/analysis.hpp"
@@ -16,5 +17,10 @@ void add_dropped_json(Json& j, bool skip, const std::vector<DroppedCell>& droppe
 std::string stats_csv_header();
 std::string stats_csv_row(const std::string& name, const Stats& s);
 std::string stats_table(const std::string& name, const Stats& s);
+
+// A metric's value as CSV and text print it: "%.10g"; empty when it is not finite (not measured).
+std::string number_text(double v);
+// A CSV field (RFC 4180): quoted, with its quotes doubled, when it holds a comma, a quote, CR or LF.
+std::string csv_quoted(const std::string& s);
 
 }  // namespace hbc::cli
