@@ -5,11 +5,6 @@
 // metrics.csv and metrics.tex itself; report.html (plots, definitions, Blender panels) is written
 // by the Python package (`python -m hbc.report DIR`), which needs matplotlib: when it cannot run,
 // the three tables are still there and the exit status says what is missing.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -29,9 +24,8 @@
 #include "hbc/version.hpp"
 #include "json.hpp"
 #include "metrics_json.hpp"
+#include "run_children.hpp"
 #include "stats_format.hpp"
-
-extern char** environ;
 
 namespace hbc::cli {
 namespace {
@@ -91,56 +85,19 @@ struct Column {
   double seconds = 0;
 };
 
-struct Job {
-  pid_t pid;
-  size_t col;
-  std::string out, err;
-  Clock::time_point start;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-Job start_child(const std::string& self, const std::string& file, size_t col, const std::string& tmp) {
-  Job j{0, col, tmp + "/" + std::to_string(col) + ".json", tmp + "/" + std::to_string(col) + ".err", Clock::now()};
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, j.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&fa, 2, j.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> argv_s = {self, "compare-one", file};
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  if (posix_spawn(&j.pid, self.c_str(), &fa, nullptr, argv.data(), environ) != 0) j.pid = -1;
-  posix_spawn_file_actions_destroy(&fa);
-  return j;
-}
-
-// The child's error line ("file:line: what was expected"), without the warnings before it.
-std::string error_text(const std::string& err, int status) {
-  if (WIFSIGNALED(status)) return "crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
-  std::string msg = err;
-  const auto at = msg.rfind("error: ");
-  if (at != std::string::npos) msg = msg.substr(at + 7);
-  while (!msg.empty() && (msg.back() == '\n' || msg.back() == '\r')) msg.pop_back();
-  return msg.empty() ? "failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")" : msg;
-}
-
-void finish_child(const Job& j, int status, Column& c) {
-  const std::string out = slurp(j.out), err = slurp(j.err);
-  std::remove(j.out.c_str());
-  std::remove(j.err.c_str());
-  c.seconds = std::chrono::duration<double>(Clock::now() - j.start).count();
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    c.error = error_text(err, status);
+// Fills a column from its child's result.
+void finish_child(const ChildResult& r, Column& c) {
+  c.seconds = r.seconds;
+  if (!r.started) {
+    c.error = "could not start the measurement";
+    return;
+  }
+  if (!r.succeeded()) {
+    c.error = r.failure("failed (exit status " + std::to_string(r.exit_code) + ")");
     return;
   }
   try {
-    Json doc = Json::parse(out);
+    Json doc = Json::parse(r.out);
     c.metrics = std::move(doc.at("metrics"));
     c.sj_by_type = std::move(doc.at("scaled_jacobian_by_type"));
   } catch (const std::exception& e) {
@@ -157,33 +114,16 @@ void report_progress(size_t done, size_t total, const Column& c) {
 
 // Runs one child per column, `jobs` at a time, and fills each column from its child.
 void measure(std::vector<Column>& cols, int jobs) {
-  const std::string self = fs::read_symlink("/proc/self/exe").string();
-  char tmpl[] = "/tmp/hbc-compare-XXXXXX";
-  if (!mkdtemp(tmpl)) throw std::runtime_error("cannot create a temporary folder");
-  const std::string tmp = tmpl;
-  std::vector<Job> running;
-  size_t next = 0, done = 0;
-  while (next < cols.size() || !running.empty()) {
-    while (next < cols.size() && static_cast<int>(running.size()) < jobs) {
-      Job j = start_child(self, cols[next].file, next, tmp);
-      if (j.pid < 0) {
-        cols[next].error = "could not start the measurement";
-        report_progress(++done, cols.size(), cols[next]);
-      } else {
-        running.push_back(j);
-      }
-      ++next;
-    }
-    if (running.empty()) continue;
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    auto it = std::find_if(running.begin(), running.end(), [&](const Job& j) { return j.pid == pid; });
-    if (it == running.end()) continue;
-    finish_child(*it, status, cols[it->col]);
-    report_progress(++done, cols.size(), cols[it->col]);
-    running.erase(it);
-  }
-  fs::remove_all(tmp);
+  ChildRuns runs;
+  runs.count = cols.size();
+  runs.jobs = jobs;
+  runs.temp_name = "hbc-compare";
+  runs.args = [&](size_t i) { return std::vector<std::string>{"compare-one", cols[i].file}; };
+  size_t done = 0;
+  run_children(runs, [&](size_t i, const ChildResult& r) {
+    finish_child(r, cols[i]);
+    report_progress(++done, cols.size(), cols[i]);
+  });
 }
 
 // ---- the outputs --------------------------------------------------------------------------
@@ -348,23 +288,12 @@ int run_report(const std::string& dir, bool figures) {
   if (python.empty()) python = "python3";
   std::vector<std::string> argv_s = {python, "-m", "hbc.report", dir, "--cli", exe.string()};
   if (figures) argv_s.push_back("--figures");
-  std::vector<std::string> env_s;
-  for (char** e = environ; *e; ++e)
-    if (pkg.empty() || std::string_view(*e).substr(0, 11) != "PYTHONPATH=") env_s.push_back(*e);
+  std::vector<std::string> set_env;
   if (!pkg.empty()) {
     const char* old = std::getenv("PYTHONPATH");
-    env_s.push_back("PYTHONPATH=" + pkg + (old && *old ? ":" + std::string(old) : std::string()));
+    set_env.push_back("PYTHONPATH=" + pkg + (old && *old ? ":" + std::string(old) : std::string()));
   }
-  std::vector<char*> argv, envp;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  for (auto& e : env_s) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), envp.data()) != 0) return 127;
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return run_child(argv_s, set_env);
 }
 
 struct CompareArgs {

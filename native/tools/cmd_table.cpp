@@ -1,16 +1,10 @@
 // hbc table FILES|DIRS [--csv|--md|--latex] [-j N]: the paper's Table 1 for many meshes. Each
 // mesh is analyzed by a child `hbc analyze --csv` process, N at a time, so that one mesh that
 // fails (bad file, crash, out of memory) is reported in its row and never stops the others.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -18,9 +12,8 @@
 
 #include "commands.hpp"
 #include "hbc/schema.hpp"
+#include "run_children.hpp"
 #include "stats_format.hpp"
-
-extern char** environ;
 
 namespace hbc::cli {
 namespace {
@@ -68,49 +61,17 @@ std::vector<std::string> split(const std::string& line, char sep) {
   return out;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-struct Job {
-  pid_t pid;
-  size_t row;
-  std::string out, err;
-};
-
-Job start(const std::string& self, const std::string& file, size_t row, const std::string& tmp) {
-  Job j{0, row, tmp + "/" + std::to_string(row) + ".out", tmp + "/" + std::to_string(row) + ".err"};
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, j.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&fa, 2, j.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> argv_s = {self, "analyze", file, "--csv"};
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  if (posix_spawn(&j.pid, self.c_str(), &fa, nullptr, argv.data(), environ) != 0) j.pid = -1;
-  posix_spawn_file_actions_destroy(&fa);
-  return j;
-}
-
-void finish(const Job& j, int status, Row& r) {
-  const std::string out = slurp(j.out), err = slurp(j.err);
-  std::remove(j.out.c_str());
-  std::remove(j.err.c_str());
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::string msg = err;
-    // Keep the error line itself; warnings before it are not the reason.
-    const auto at = msg.rfind("error: ");
-    if (at != std::string::npos) msg = msg.substr(at + 7);
-    while (!msg.empty() && (msg.back() == '\n' || msg.back() == '\r')) msg.pop_back();
-    if (WIFSIGNALED(status)) msg = "crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
-    r.error = msg.empty() ? "failed" : msg;
+// Fills a row from its child's `hbc analyze --csv`.
+void finish(const ChildResult& c, Row& r) {
+  if (!c.started) {
+    r.error = "could not start the analysis";
     return;
   }
-  std::istringstream ss(out);
+  if (!c.succeeded()) {
+    r.error = c.failure("failed");
+    return;
+  }
+  std::istringstream ss(c.out);
   std::string header, line;
   std::getline(ss, header);
   std::getline(ss, line);
@@ -148,30 +109,14 @@ void run_table(const TableArgs& args) {
   const std::vector<std::string> files = collect(args.inputs);
   if (files.empty()) throw std::invalid_argument("no mesh files found in the given paths");
 
-  const std::string self = fs::read_symlink("/proc/self/exe").string();
-  char tmpl[] = "/tmp/hbc-table-XXXXXX";
-  if (!mkdtemp(tmpl)) throw std::runtime_error("cannot create a temporary folder");
-  const std::string tmp = tmpl;
   std::vector<Row> rows(files.size());
-  std::vector<Job> running;
-  size_t next = 0;
-  while (next < files.size() || !running.empty()) {
-    while (next < files.size() && static_cast<int>(running.size()) < jobs) {
-      rows[next].file = files[next];
-      Job j = start(self, files[next], next, tmp);
-      if (j.pid < 0) rows[next].error = "could not start the analysis";
-      else running.push_back(j);
-      ++next;
-    }
-    if (running.empty()) continue;
-    int status = 0;
-    const pid_t done = waitpid(-1, &status, 0);
-    auto it = std::find_if(running.begin(), running.end(), [&](const Job& j) { return j.pid == done; });
-    if (it == running.end()) continue;
-    finish(*it, status, rows[it->row]);
-    running.erase(it);
-  }
-  fs::remove_all(tmp);
+  for (size_t i = 0; i < files.size(); ++i) rows[i].file = files[i];
+  ChildRuns runs;
+  runs.count = files.size();
+  runs.jobs = jobs;
+  runs.temp_name = "hbc-table";
+  runs.args = [&](size_t i) { return std::vector<std::string>{"analyze", files[i], "--csv"}; };
+  run_children(runs, [&](size_t i, const ChildResult& c) { finish(c, rows[i]); });
 
   int failures = 0;
   for (const Row& r : rows) failures += !r.error.empty();
