@@ -15,9 +15,7 @@ set -euo pipefail
 old=$(realpath "$1"); new=$(realpath "$2"); shift 2
 source "$(dirname "$0")/env/common.sh"
 if [ $# -eq 0 ]; then
-  mapfile -t meshes < <(find "$HBC_DATA_DIR" -type f \
-    \( -name '*.mesh' -o -name '*.ovm' -o -name '*.ovmb' -o -name '*.HYBRID' -o -name '*.hedra' \
-       -o -name '*.msh' -o -name '*.vtk' -o -name '*.vtu' \) | sort)
+  mapfile -t meshes < <(hbc_mesh_files)
 else
   meshes=("$@")
 fi

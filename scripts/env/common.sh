@@ -32,3 +32,10 @@ hbc_missing_packages() {
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
   done
 }
+# The mesh files under DIR (default $HBC_DATA_DIR), one a line, sorted: every file whose extension
+# names a mesh format (OpenFOAM case folders are not files; tests reach them by name).
+hbc_mesh_files() {
+  find "${1:-$HBC_DATA_DIR}" -type f \
+    \( -name '*.mesh' -o -name '*.ovm' -o -name '*.ovmb' -o -name '*.HYBRID' -o -name '*.hedra' \
+       -o -name '*.msh' -o -name '*.vtk' -o -name '*.vtu' \) | sort
+}

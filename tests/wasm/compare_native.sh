@@ -12,9 +12,7 @@ set -euo pipefail
 native=$(realpath "$1"); wasm=$(realpath "$2"); shift 2
 source "$(dirname "$0")/../../scripts/env/common.sh"
 if [ $# -eq 0 ]; then
-  mapfile -t meshes < <(find "$HBC_DATA_DIR" -type f \
-    \( -name '*.mesh' -o -name '*.ovm' -o -name '*.ovmb' -o -name '*.HYBRID' -o -name '*.hedra' \
-       -o -name '*.msh' -o -name '*.vtk' -o -name '*.vtu' \) | sort)
+  mapfile -t meshes < <(hbc_mesh_files)
 else
   meshes=("$@")
 fi
