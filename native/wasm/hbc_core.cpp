@@ -18,6 +18,7 @@
 #include "hbc/analysis.hpp"
 #include "hbc/check.hpp"
 #include "hbc/error.hpp"
+#include "hbc/generate.hpp"
 #include "hbc/io.hpp"
 #include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
@@ -364,6 +365,23 @@ val polylines(const JsMesh& m, val offsets, val items) {
   });
 }
 
+// generate_cylinder(radius_cells, layers): `hbc generate cylinder`'s mesh as it comes out of the
+// generator, before any reader: {points (Float64Array, 3 nv), faces_offsets/_items (vertex loops),
+// cells_offsets/_items (2 face + flip, flip 1 when the cell sees the loop reversed)}. The viewer
+// writes it as a file and reads it back as a user's file is read (its warm-up, web/src/worker.js).
+val generate_cylinder_arrays(int radius_cells, int layers) {
+  return guarded([&] {
+    const MeshInput in = generate_cylinder(radius_cells, layers);
+    val o = val::object();
+    o.set("points", copy(in.points));
+    o.set("faces_offsets", copy(in.faces.offsets));
+    o.set("faces_items", copy(in.faces.items));
+    o.set("cells_offsets", copy(in.cells.offsets));
+    o.set("cells_items", copy(in.cells.items));
+    return o;
+  });
+}
+
 std::string version_string() { return std::string(version()); }
 
 }  // namespace
@@ -442,5 +460,6 @@ EMSCRIPTEN_BINDINGS(hbc_core) {
   function("cell_centroids", &cell_centroids);
   function("FORMATS", &formats_json);
   function("TABLE1_COLUMNS_json", &table1_columns_json);
+  function("generate_cylinder", &generate_cylinder_arrays);
   function("version", &version_string);
 }

@@ -101,12 +101,23 @@ export interface Analysis {
   delete(): void;
 }
 
+export interface GeneratedMesh {
+  points: Float64Array;        // (3 nv)
+  faces_offsets: Int32Array;   // (nf + 1)
+  faces_items: Int32Array;     // vertex loops, 0-based
+  cells_offsets: Int32Array;   // (nc + 1)
+  cells_items: Int32Array;     // 2 face + flip
+}
+
 export interface HbcModule {
   load(bytes: Uint8Array | ArrayBuffer, name: string, skip_invalid: boolean): Mesh;  // format from the name
   load_path(path: string): Mesh;              // a file or OpenFOAM case already in FS (the CLI's reading of a path)
   polylines(mesh: Mesh, offsets: Int32Array, items: Int32Array): Float32Array;       // (3 * items.length)
   kept_surface_soup(mesh: Mesh, kept: Uint8Array, shrink: number): BlockSoup;        // kept: (nc) 0/1; owner = cell
   cell_centroids(mesh: Mesh): Float64Array;   // (3 nc) mean of each cell's distinct vertices
+  // `hbc generate cylinder --radius-cells R --layers L` before any reader (hex-dominant: hexes and
+  // prisms); cells_items: 2 face + flip (flip 1: the cell sees the face's loop reversed).
+  generate_cylinder(radius_cells: number, layers: number): GeneratedMesh;
   FORMATS(): string;                          // JSON [{name, alias, extension, title, writable}]
   TABLE1_COLUMNS_json(): string;              // JSON [{key, label, notation, meaning, timing}] in Table 1's order
   FS: any;                                    // emscripten's in-memory file system (for load_path)

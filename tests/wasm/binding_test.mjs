@@ -1,6 +1,7 @@
 // The JavaScript binding under node: load teapot from bytes, analyze, and compare stats_json with
 // `hbc analyze --json` of the same file (every key but timings); then the arrays' sizes against the
-// stats, a block soup, the wireframe, and a malformed file's error text against the CLI's.
+// stats, a block soup, the wireframe, and a malformed file's error text against the CLI's; the
+// generator the viewer warms up with, and the warm-up itself (web/src/warmup.js).
 //   node tests/wasm/binding_test.mjs HBC_CORE_JS HBC_CLI MESH_DIR
 // HBC_CLI is the native hbc or `node .../hbc.js` run through a wrapper; prints "N passed, N failed".
 import { execFileSync } from 'node:child_process';
@@ -8,6 +9,8 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { basename, dirname, join } from 'node:path';
 import { tmpdir } from 'node:os';
+import { Core } from '../../web/src/core.js';
+import { cylinderHedra, warmUpSteps } from '../../web/src/warmup.js';
 
 const [coreJs, cli, dataDir] = process.argv.slice(2);
 const require = createRequire(import.meta.url);
@@ -91,6 +94,30 @@ M.FS.writeFile('/teapot.hedra', readFileSync(teapot));
 const byPath = M.load_path('/teapot.hedra');
 check('load_path', byPath.num_cells === cliStats.cells);
 byPath.delete();
+
+// generate_cylinder(2, 1): a = ceil(2 / 2) = 1, so a 2x2 quad core (9 vertices, 8 on its boundary)
+// and one ring of 4 round(2 pi 2 / 4) = 12 vertices: 8 quads on the core's 8 edges and 12 - 8 = 4
+// triangles; one layer: 12 hexes + 4 prisms, 2 (9 + 12) = 42 vertices; 2D edges 21 + 16 - 1 = 36
+// (Euler), faces 16 * 2 + 36 = 68; cell rows hold 2 + 4 faces per hex, 2 + 3 per prism: 92.
+const g = M.generate_cylinder(2, 1);
+check('generate_cylinder arrays', g.points.length === 3 * 42 && g.faces_offsets.length === 69 &&
+      g.cells_offsets.length === 17 && g.cells_items.length === 92 && g.faces_items.length === g.faces_offsets[68]);
+// Written as .hedra and read back: the mesh `hbc generate cylinder` writes, as `hbc info` sees it.
+const cyl = M.load(Buffer.from(cylinderHedra(M, 2, 1)), 'cylinder.hedra', false);
+const cylInfo = JSON.parse(cyl.info_json());
+const cylDir = mkdtempSync(join(tmpdir(), 'hbc-js-'));
+execFileSync(cli, ['generate', 'cylinder', '--radius-cells', '2', '--layers', '1', '-o', 'cylinder.mesh'], { cwd: cylDir, stdio: 'pipe' });
+const cliCyl = JSON.parse(execFileSync(cli, ['info', '--json', 'cylinder.mesh'], { cwd: cylDir, encoding: 'utf8' }));
+delete cylInfo.file;
+delete cliCyl.file;
+// The binding's info_json gives some of `hbc info --json`'s keys: each equal.
+check('cylinder as .hedra = hbc generate cylinder', Object.keys(cylInfo).length === 5 &&
+      Object.entries(cylInfo).every(([k, v]) => JSON.stringify(v) === JSON.stringify(cliCyl[k])) &&
+      cylInfo.cells === 16 && cylInfo.cell_types.hex === 12 && cylInfo.cell_types.prism === 4,
+      `\n  js:  ${JSON.stringify(cylInfo)}\n  cli: ${JSON.stringify(cliCyl)}`);
+cyl.delete();
+const rounds = [...warmUpSteps(new Core(M))];
+check('warm-up', rounds.length === 3 && rounds[2] === 3, JSON.stringify(rounds));
 
 // A malformed file: the same message as the CLI's (run in the file's folder on the same name).
 const dir = mkdtempSync(join(tmpdir(), 'hbc-js-'));

@@ -241,6 +241,38 @@ test('a page written by hbc export-html opens from file:// with the same #hbc-re
   }
 });
 
+// An idle page warms the core up (web/src/warmup.js). A file picked while the warm-up runs stops
+// it and opens with the CLI's results; on a fresh page, a file picked after the warm-up opens
+// likewise. The page reports how long the worker took from the file's bytes to the counts.
+test('the idle page warms the core up; a file picked during or after it opens with the CLI results', { timeout: 180_000 }, async () => {
+  const want = expectedResults('split.mesh');
+  const during = await openPage(`${origin}/viewer.html`);
+  assert.equal(await during.page.evaluate(() => document.body.dataset.state), 'idle');
+  await during.page.locator('#file').setInputFiles(join(work, 'split.mesh'));
+  assert.equal(await settled(during.page), 'ready', await during.page.locator('#hbc-error').textContent());
+  assertSameResults(await pageResults(during.page), want);
+  // Picked at once, the file stopped the warm-up (or came just after its end); either way the
+  // warm-up said so before the file was opened.
+  const warm = await during.page.evaluate(() => document.body.dataset.warmup);
+  assert.ok(['stopped', 'done'].includes(warm), `data-warmup is ${warm}`);
+  assert.deepEqual(during.errors, []);
+  await during.close();
+
+  const after = await openPage(`${origin}/viewer.html`);
+  await after.page.waitForFunction(() => ['done', 'failed'].includes(document.body.dataset.warmup), null, { timeout: LOAD_TIMEOUT });
+  const body = await after.page.evaluate(() => ({ ...document.body.dataset }));
+  assert.equal(body.warmup, 'done', body.warmupError);
+  assert.ok(Number(body.warmupSeconds) > 0, `data-warmup-seconds ${body.warmupSeconds}`);
+  assert.equal(body.state, 'idle', 'the warm-up leaves the page idle');
+  await after.page.locator('#file').setInputFiles(join(work, 'split.mesh'));
+  assert.equal(await settled(after.page), 'ready', await after.page.locator('#hbc-error').textContent());
+  assertSameResults(await pageResults(after.page), want);
+  const seconds = Number(await after.page.locator('#hbc-results').getAttribute('data-open-seconds'));
+  assert.ok(seconds > 0 && seconds < LOAD_TIMEOUT / 1000, `data-open-seconds ${seconds}`);
+  assert.deepEqual(after.errors, []);
+  await after.close();
+});
+
 test('a broken file shows the CLI error text with file and line; then a good file opens', { timeout: 180_000 }, async () => {
   const message = cliError('broken.mesh');
   assert.match(message, /^broken\.mesh:\d+/, 'the CLI names file and line');

@@ -44,12 +44,20 @@ worker.onmessage = (ev) => {
   else if (m.type === 'error') failed(m.message);
   else if (m.type === 'layer') layerArrived(m);
   else if (m.type === 'layer-error') layerFailed(m);
+  else if (m.type === 'warm-up') warmUpState(m);
 };
 worker.onerror = (e) => failed(`The worker stopped: ${e.message || 'unknown error'}`);
 
 function setState(s) {
   document.body.dataset.state = s;
   $('hbc-results').dataset.state = s;
+}
+
+/** body[data-warmup]: running, done, stopped (a file came first) or failed (docs/web.md). */
+function warmUpState(m) {
+  document.body.dataset.warmup = m.state;
+  if (m.seconds != null) document.body.dataset.warmupSeconds = m.seconds.toFixed(3);
+  if (m.message) document.body.dataset.warmupError = m.message;
 }
 
 function showProgress(fraction, text) {
@@ -64,6 +72,7 @@ function openFiles(name, files) {
   state.sheet = -1; // a new mesh has other sheets (a view link sets it again once analysed)
   setState('loading');
   $('hbc-results').textContent = '';
+  delete $('hbc-results').dataset.openSeconds;
   $('hbc-error').hidden = true;
   $('hbc-error').textContent = '';
   viewer.clearAll();
@@ -81,6 +90,8 @@ function ready(m) {
   results = m.results;
   table1 = m.table1;
   $('hbc-results').textContent = JSON.stringify(results, null, 2);
+  // Beside the results, not in them (their keys are `hbc analyze --json`'s).
+  $('hbc-results').dataset.openSeconds = m.seconds.toFixed(4);
   $('progress').hidden = true;
   $('status').textContent = `${info.cells} cells analysed`;
   if (pendingView) applyFragment(pendingView);
@@ -595,6 +606,11 @@ async function start() {
   } else {
     setState('idle');
     $('status').textContent = 'Open a mesh: drop a file or folder here, or use the buttons.';
+    // Nothing to open yet: the worker warms the core up meanwhile (web/src/warmup.js).
+    // ?warmup=R,L,N: a cylinder of R cells' radius and L layers, N rounds (for measuring it).
+    const w = (params.get('warmup') || '').split(',').map(Number);
+    const size = w.length === 3 && w.every((x) => Number.isInteger(x) && x >= 0) ? { radiusCells: w[0], layers: w[1], rounds: w[2] } : null;
+    worker.postMessage({ type: 'warm', size });
   }
 }
 

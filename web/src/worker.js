@@ -5,8 +5,12 @@
 import { Core, arr, csr, get, errorText } from './core.js';
 import { L, paletteColor, spreadColor, componentColor, valenceColor, cellTypeColor, kindColor } from './colors.js';
 import { soupPart, linesPart, dotsPart, opacityAlpha, transferList, row } from './geometry.js';
+import { warmUpSteps, WARM_UP } from './warmup.js';
 
 let core = null;
+let instantiating = null; // the module's instantiation, started as the worker starts
+let warming = null; // the warm-up (warmup.js) while it runs
+let stopWarming = false; // a user's file has arrived: the warm-up ends after its current round
 let S = null; // the open mesh: {name, mesh, analysis, points, cellTypes, centroids, ...}
 
 function post(msg, transfer = []) {
@@ -17,8 +21,12 @@ function progress(fraction, text) {
   post({ type: 'progress', fraction, text });
 }
 
-async function module() {
-  if (core) return core;
+function module() {
+  instantiating ??= instantiate();
+  return instantiating;
+}
+
+async function instantiate() {
   if (typeof createHbcModule !== 'function') {
     throw new Error('The WebAssembly core is not in this page: build it with scripts/build_wasm.sh, then scripts/build_web.sh.');
   }
@@ -39,7 +47,29 @@ function closeMesh() {
   S = null;
 }
 
-async function open({ name, files }) {
+/** Warms the core up while the page is idle (warmup.js): rounds on a small generated mesh, giving
+ *  way to the event loop between rounds so that a user's file stops it. */
+async function warmUp(size) {
+  const c = await module();
+  const t0 = performance.now();
+  let rounds = 0;
+  post({ type: 'warm-up', state: 'running' });
+  const steps = warmUpSteps(c, size ?? WARM_UP);
+  try {
+    while (!stopWarming && !steps.next().done) {
+      rounds++;
+      await new Promise((resolve) => setTimeout(resolve, 0)); // a file's message may come in here
+    }
+    steps.return();
+  } catch (e) {
+    // A core without the generator: the page works as before, only colder.
+    post({ type: 'warm-up', state: 'failed', message: errorText(c.M, e) });
+    return;
+  }
+  post({ type: 'warm-up', state: stopWarming ? 'stopped' : 'done', rounds, seconds: (performance.now() - t0) / 1000 });
+}
+
+async function open({ name, files }, t0) {
   progress(0.05, 'Starting the WebAssembly core');
   const c = await module();
   closeMesh();
@@ -78,7 +108,10 @@ async function open({ name, files }) {
   for (let i = 0; i < S.sheetType.length; i++) {
     sheets.push({ id: i, type: S.sheetType[i], cells: sc.offsets[i + 1] - sc.offsets[i], blocks: sp.offsets[i + 1] - sp.offsets[i] });
   }
-  post({ type: 'ready', name, results, timings, info: summary(c, analysis, sheets), table1: L.table1 ?? c.table1() });
+  const info = summary(c, analysis, sheets);
+  // What the user waited for: from the file's bytes reaching the worker to the counts.
+  const seconds = (performance.now() - t0) / 1000;
+  post({ type: 'ready', name, results, timings, info, table1: L.table1 ?? c.table1(), seconds });
 }
 
 /** What the page shows beside the layers: counts, the box, the sheets, the legend's facts. */
@@ -323,9 +356,14 @@ const BUILDERS = { direct: buildDirect, graph: buildGraph, blocks: buildBlocks, 
 
 self.onmessage = async (ev) => {
   const msg = ev.data;
+  const t0 = performance.now();
   try {
-    if (msg.type === 'open') {
-      await open(msg);
+    if (msg.type === 'warm') {
+      warming ??= warmUp(msg.size).catch(() => {}); // an instantiation error shows when a file is opened
+    } else if (msg.type === 'open') {
+      stopWarming = true;
+      if (warming) await warming;
+      await open(msg, t0);
     } else if (msg.type === 'layer') {
       if (!S) return;
       const parts = BUILDERS[msg.layer](msg.params || {});
@@ -341,3 +379,6 @@ self.onmessage = async (ev) => {
     }
   }
 };
+
+// Instantiated at once: a file opened later does not wait for it.
+module().catch(() => {});
