@@ -10,7 +10,7 @@ import { createRequire } from 'node:module';
 import { basename, dirname, join } from 'node:path';
 import { tmpdir } from 'node:os';
 import { Core } from '../../web/src/core.js';
-import { cylinderHedra, warmUpSteps } from '../../web/src/warmup.js';
+import { cylinderHedra, warmUpSteps, WARM_UP } from '../../web/src/warmup.js';
 
 const [coreJs, cli, dataDir] = process.argv.slice(2);
 const require = createRequire(import.meta.url);
@@ -117,7 +117,8 @@ check('cylinder as .hedra = hbc generate cylinder', Object.keys(cylInfo).length 
       `\n  js:  ${JSON.stringify(cylInfo)}\n  cli: ${JSON.stringify(cliCyl)}`);
 cyl.delete();
 const rounds = [...warmUpSteps(new Core(M))];
-check('warm-up', rounds.length === 3 && rounds[2] === 3, JSON.stringify(rounds));
+check('warm-up: every round', WARM_UP.rounds > 0 && rounds.length === WARM_UP.rounds && rounds.at(-1) === WARM_UP.rounds, JSON.stringify(rounds));
+check('no warm-up at 0 rounds', [...warmUpSteps(new Core(M), { radiusCells: 0, layers: 0, rounds: 0 })].length === 0);
 
 // A malformed file: the same message as the CLI's (run in the file's folder on the same name).
 const dir = mkdtempSync(join(tmpdir(), 'hbc-js-'));

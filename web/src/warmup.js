@@ -35,8 +35,11 @@ export function cylinderHedra(M, radiusCells, layers) {
   return lines.join('\n') + '\n';
 }
 
-/** The default warm-up: rounds of the whole path on a cylinder of radius 3 cells, 6 layers. */
-export const WARM_UP = { radiusCells: 3, layers: 6, rounds: 3 };
+/** The default warm-up: 8 rounds of the whole path on a cylinder of radius 6 cells, 10 layers
+ *  (1 200 hexes, 120 prisms). Fewer cells left armadillo's first analysis in Chromium and node
+ *  partly in baseline code; a round takes tens of milliseconds once warm, which bounds the wait
+ *  of a file picked during the warm-up. */
+export const WARM_UP = { radiusCells: 6, layers: 10, rounds: 8 };
 
 /**
  * The core calls the viewer makes for a mesh, on the warm-up mesh, `rounds` times: reading through
@@ -46,6 +49,7 @@ export const WARM_UP = { radiusCells: 3, layers: 6, rounds: 3 };
  * early frees what it holds.
  */
 export function* warmUpSteps(core, { radiusCells, layers, rounds } = WARM_UP) {
+  if (!(rounds > 0)) return;
   const name = 'warm-up.hedra';
   const buffer = new TextEncoder().encode(cylinderHedra(core.M, radiusCells, layers)).buffer;
   for (let r = 0; r < rounds; r++) {
