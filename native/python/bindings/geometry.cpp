@@ -130,6 +130,64 @@ py::array polylines(const PyMeshPtr& mesh, const IntArray& offsets, const IntArr
   return adopt(std::move(pos), {n, 3});
 }
 
+// The distinct undirected edges of a polygon set and the edge of every corner (corner k to the
+// next corner of its face), which is what Blender keeps for a mesh with faces: handed over ready-made,
+// the add-on skips Blender's own edge search (1.8 s of the 4 M faces of a 10^6-cell mesh's Blocks
+// layer in Blender 3.4). Edges are grouped by their lower point, each row in order of first use, so
+// the result depends on the input only. O(corners): a counting sort by lower point, then each
+// point's few edges deduplicated by a scan of its row.
+py::dict polygon_edges(const IntArray& offsets, const IntArray& items, int64_t num_points) {
+  if (offsets.ndim() != 1 || items.ndim() != 1) throw std::invalid_argument("polygon_edges: offsets and items must be 1-D");
+  const size_t nf = offsets.size() > 0 ? static_cast<size_t>(offsets.size()) - 1 : 0, nl = static_cast<size_t>(items.size());
+  const int32_t* off = offsets.data();
+  const int32_t* it = items.data();
+  if (num_points < 0 || (offsets.size() > 0 && (off[0] != 0 || static_cast<size_t>(off[nf]) != nl)))
+    throw std::invalid_argument("polygon_edges: offsets must start at 0 and end at len(items)");
+  std::vector<int32_t> edges, corner_edge(nl);
+  {
+    py::gil_scoped_release unlocked;
+    const size_t np = static_cast<size_t>(num_points);
+    std::vector<int32_t> row(np + 1, 0), other(nl), corner(nl);
+    auto ends = [&](size_t f, size_t k) {  // (lower, higher) point of the edge from corner k of face f
+      const size_t next = k + 1 < static_cast<size_t>(off[f + 1]) ? k + 1 : static_cast<size_t>(off[f]);
+      const int32_t a = it[k], b = it[next];
+      if (a < 0 || b < 0 || static_cast<size_t>(a) >= np || static_cast<size_t>(b) >= np || off[f + 1] < off[f])
+        throw std::invalid_argument("polygon_edges: point id out of range or offsets decreasing");
+      return std::pair{std::min(a, b), std::max(a, b)};
+    };
+    for (size_t f = 0; f < nf; ++f)
+      for (size_t k = static_cast<size_t>(off[f]); k < static_cast<size_t>(off[f + 1]); ++k) ++row[static_cast<size_t>(ends(f, k).first) + 1];
+    for (size_t p = 0; p < np; ++p) row[p + 1] += row[p];
+    std::vector<int32_t> fill(row.begin(), row.end() - 1);
+    for (size_t f = 0; f < nf; ++f)
+      for (size_t k = static_cast<size_t>(off[f]); k < static_cast<size_t>(off[f + 1]); ++k) {
+        const auto [lo, hi] = ends(f, k);
+        const auto slot = static_cast<size_t>(fill[static_cast<size_t>(lo)]++);
+        other[slot] = hi;
+        corner[slot] = static_cast<int32_t>(k);
+      }
+    edges.reserve(nl);  // at most one edge per corner; a closed quad surface has half as many
+    for (size_t p = 0; p < np; ++p) {
+      const size_t first_edge = edges.size() / 2;
+      for (auto j = static_cast<size_t>(row[p]); j < static_cast<size_t>(row[p + 1]); ++j) {
+        size_t e = first_edge;
+        while (e < edges.size() / 2 && edges[2 * e + 1] != other[j]) ++e;
+        if (e == edges.size() / 2) {
+          edges.push_back(static_cast<int32_t>(p));
+          edges.push_back(other[j]);
+        }
+        corner_edge[static_cast<size_t>(corner[j])] = static_cast<int32_t>(e);
+      }
+    }
+    edges.shrink_to_fit();
+  }
+  py::dict d;
+  const py::ssize_t ne = ssize(edges.size() / 2);
+  d["edges"] = adopt(std::move(edges), {ne, 2});
+  d["corner_edge"] = adopt(std::move(corner_edge), {ssize(nl)});
+  return d;
+}
+
 py::array cell_centroid_array(const PyMeshPtr& mesh) {
   std::vector<double> c;
   {
@@ -160,6 +218,11 @@ void bind_geometry(py::module_& m) {
         "The surface of a set of cells as block_soup's dict (owner = cell): every face of a kept cell "
         "(kept: (num_cells,) bool/uint8) whose other side is not kept or is the boundary, pointing out "
         "of the kept cell.");
+  m.def("polygon_edges", &polygon_edges, py::arg("offsets"), py::arg("items"), py::arg("num_points"),
+        "The distinct undirected edges of polygons given as a CSR of point ids (e.g. block_soup's "
+        "face_vertices_offsets and face_vertices_items; num_points: the point count). Returns a dict: edges int32 "
+        "(ne, 2), lower point first, grouped by lower point; corner_edge int32 (len(items),) the edge from "
+        "each corner to the next corner of its polygon.");
   m.def("cell_centroids", &cell_centroid_array, py::arg("mesh"),
         "float64 (num_cells, 3): the mean of each cell's distinct vertices.");
   m.def("polylines", &polylines, py::arg("mesh"), py::arg("offsets"), py::arg("items"),

@@ -41,6 +41,7 @@ from ._core import (
     cell_quality,
     kept_surface_soup,
     load,
+    polygon_edges,  # a viewer's helper (the Blender add-on's mesh edges), not in __all__
     polylines,
 )
 from .comparison import compare  # hbc compare from Python (docs/compare.md)

@@ -645,6 +645,10 @@ def block_soup(mesh: Mesh, analysis: Analysis | None, what: SoupWhat, sheet: int
     """sheet: required for 'subsheets', 'sheet' and 'sheet_non_hex', ignored otherwise."""
 def kept_surface_soup(mesh: Mesh, kept: npt.ArrayLike, shrink: float = 0.0) -> BlockSoup:
     """Faces of kept cells (kept: (num_cells,) bool) whose other side is not kept; owner = cell."""
+def polygon_edges(offsets: npt.ArrayLike, items: npt.ArrayLike, num_points: int) -> dict[str, I32]:
+    """The edges of polygons given as a CSR of point ids (e.g. a BlockSoup's face_vertices):
+    'edges' (ne, 2) distinct undirected edges, lower point first, grouped by lower point;
+    'corner_edge' (len(items),) the edge from each corner to the next corner of its polygon."""
 def cell_centroids(mesh: Mesh) -> npt.NDArray[np.float64]:
     """(num_cells, 3) the mean of each cell's distinct vertices."""
 def polylines(mesh: Mesh, offsets: npt.ArrayLike, items: npt.ArrayLike) -> npt.NDArray[np.float32]:
