@@ -16,6 +16,14 @@ is unambiguous, and on `bpy.app.version` otherwise; each branch names the releas
 - 4.3: `Material.shadow_method` removed.
 - 5.0: `bpy.data.materials.new()` gives a material whose node tree is empty and `use_nodes` is
   deprecated (always on): the nodes are built explicitly.
+- 4.0: the corners' vertices are the `.corner_vert` attribute (MeshLoop.vertex_index reads it).
+- Every version: `foreach_set` copies a buffer as a whole only when its item type is the
+  property's: the vertex indices of 3.4's loops and edges (MLoop.v, MEdge.v1/v2) and the polygon
+  starts and sizes are unsigned there, and an int32 array goes through a per-item path (16 M
+  corners: 1.4 s against 0.08 s; 4 M loop starts 0.35 s against 0.02 s). From 4.0 `.corner_vert`
+  takes int32 at full speed and uint32 slowly, while loop starts and edges still take uint32 fast
+  (measured in 3.4, 4.2, 5.0 and 5.2): `set_corner_verts`, `set_corner_edges`, `set_polygons`,
+  `set_edge_verts`.
 - 5.2: geometry-nodes modifier inputs are no longer ID properties (`mod["Socket_1"]` raises
   "id properties not supported"); they are `mod.properties.inputs.Socket_1.value`, used wherever
   the running Blender has it.
@@ -24,6 +32,7 @@ is unambiguous, and on `bpy.app.version` otherwise; each branch names the releas
 from __future__ import annotations
 
 import bpy
+import numpy as np
 
 VERSION = tuple(bpy.app.version)
 
@@ -184,11 +193,38 @@ def get_modifier_input(mod, name: str):
 # ---------------------------------------------------------------------------------------------
 # Meshes
 
+def _indices(values, dtype):
+    return np.ascontiguousarray(values, dtype).ravel()
+
+
 def set_polygons(me, loop_starts, face_sizes):
     """Polygon loop starts (and, before 4.0, loop totals: later they follow from the starts)."""
-    me.polygons.foreach_set("loop_start", loop_starts)
+    me.polygons.foreach_set("loop_start", _indices(loop_starts, np.uint32))
     if VERSION < (4, 0, 0):
-        me.polygons.foreach_set("loop_total", face_sizes)
+        me.polygons.foreach_set("loop_total", _indices(face_sizes, np.uint32))
+
+
+def set_corner_verts(me, corner_verts):
+    """The vertex of every corner (loop) of a mesh whose loops were just added."""
+    attr = me.attributes.get(".corner_vert")
+    if attr is not None:
+        attr.data.foreach_set("value", _indices(corner_verts, np.int32))
+    else:
+        me.loops.foreach_set("vertex_index", _indices(corner_verts, np.uint32))
+
+
+def set_corner_edges(me, corner_edges):
+    """The edge of every corner (to the next corner of its face) of a mesh whose edges are set."""
+    attr = me.attributes.get(".corner_edge")
+    if attr is not None:
+        attr.data.foreach_set("value", _indices(corner_edges, np.int32))
+    else:
+        me.loops.foreach_set("edge_index", _indices(corner_edges, np.uint32))
+
+
+def set_edge_verts(me, edges):
+    """The two vertices of every edge of a mesh whose edges were just added ((m, 2) or flat)."""
+    me.edges.foreach_set("vertices", _indices(edges, np.uint32))
 
 
 def make_active_color(me, attr):

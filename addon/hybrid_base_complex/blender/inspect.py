@@ -17,7 +17,8 @@ How it works:
   Empty, read with Object Info relative to the object; `Flip` swaps the sides), depth < `Peel`, cell
   type not in the `Types` bit mask (bit t for CellType t: 1 hex, 2 tet, 4 prism, 8 pyramid, 16
   polyhedron), scaled Jacobian outside [`Quality Min`, `Quality Max`] when `Filter Quality` is on,
-  cell outside the picked sheet when `Sheet Only` is on.
+  cell outside the picked sheet when `Sheet Only` is on. While no setting can hide a face the
+  modifier is switched off (`filters_hide_anything`), so an unfiltered layer costs no evaluation.
   Moving or turning the Empty re-evaluates the modifier (a depsgraph relation), so the cut follows
   the drag; the panel's settings (Scene.hbc_inspect) set the modifier inputs of every equipped
   object of the active mesh through their update callbacks (ui/properties.py).
@@ -350,9 +351,19 @@ def set_filters(ob, values, enabled=True):
     ob.update_tag()
 
 
+def filters_hide_anything(values) -> bool:
+    """Whether these modifier inputs can hide a face. When none can, the modifier is switched off:
+    evaluating it anyway copies the whole mesh to delete nothing (1.0 s and 0.85 GB for the 4 M
+    faces of a 10^6-cell mesh's Blocks layer in Blender 3.4, at every build and every evaluation of
+    the object)."""
+    return bool(values["Slice"] or values["Peel"] > 0 or values["Types"] != IP.ALL_TYPES
+                or values["Filter Quality"] or values["Sheet Only"])
+
+
 def apply_to_object(ob, ins):
     if ins is not None and not ob.get("hbc_surface"):
-        set_filters(ob, filter_values(ins), ins.enabled)
+        values = filter_values(ins)
+        set_filters(ob, values, ins.enabled and filters_hide_anything(values))
 
 
 def inspected_objects(root):

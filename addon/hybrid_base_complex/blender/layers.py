@@ -71,8 +71,8 @@ def build_blocks(tx, coll, s, st, name):
 
     if s.num_components <= st.split_max:
         return len(S.split_soup_objects(tx, coll, f"{name} block", soup, colors, props_of))
-    S.soup_object(tx, coll, f"{name} blocks", soup, colors[soup.face_owner], None,
-                  _props(name, "blocks", hbc_owner="component"))
+    S.soup_object(tx, coll, f"{name} blocks", soup, None, None, _props(name, "blocks", hbc_owner="component"),
+                  owner_colors=colors)
     return 1
 
 
@@ -92,8 +92,8 @@ def build_sheets(tx, coll, s, st, name):
         objects = S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of)
         show_sheets(objects, st)
         return len(objects)
-    S.soup_object(tx, coll, f"{name} sheets", soup, colors[soup.face_owner], None,
-                  _props(name, "sheets", hbc_owner="sheet"))
+    S.soup_object(tx, coll, f"{name} sheets", soup, None, None, _props(name, "sheets", hbc_owner="sheet"),
+                  owner_colors=colors)
     return 1
 
 
@@ -116,12 +116,13 @@ def build_sheet(tx, coll, s, st, name):
     color = P.sheet_colors(s.num_sheets)[i]
     t = P.SHEET_TYPES[int(s.sheet_types()[i])]
     soup = s.sheet_blocks(i, st.shrink)
-    # The sheet's colour, each block a little lighter or darker so blocks stay visible.
-    shade = 0.8 + 0.2 * ((soup.face_owner * 7) % 3) / 2.0
-    fc = np.tile(color, (soup.num_faces, 1))
-    fc[:, :3] *= shade[:, None]
-    S.soup_object(tx, coll, f"{name} picked sheet {i}", soup, fc, None,
-                  _props(name, "sheet", hbc_sheet=i, hbc_sheet_type=t, hbc_owner="component"))
+    # The sheet's colour, each block (owner) a little lighter or darker so blocks stay visible.
+    owners = np.arange(int(soup.face_owner.max()) + 1 if soup.num_faces else 0)
+    shade = 0.8 + 0.2 * ((owners * 7) % 3) / 2.0
+    oc = np.tile(np.asarray(color, np.float32), (len(owners), 1))
+    oc[:, :3] *= shade[:, None]
+    S.soup_object(tx, coll, f"{name} picked sheet {i}", soup, None, None,
+                  _props(name, "sheet", hbc_sheet=i, hbc_sheet_type=t, hbc_owner="component"), owner_colors=oc)
     made = 1
     unmatched, shared, edges, cells = s.sheet_highlights(i, _dot_radius(s, st))
     if unmatched.num_faces:

@@ -1,8 +1,11 @@
 """Scene building (bpy): planning Soups and Lines into Blender data, in bulk.
 
-- Meshes: vertices.foreach_set("co"), polygons via loop_start (+ loop_total before 4.0) and
-  loops.foreach_set("vertex_index"); colours as a CORNER float colour attribute `hbc_color`
-  (shown by Workbench with colour type Attribute, read by an Attribute node in Cycles/EEVEE);
+- Meshes: vertices.foreach_set("co"), polygons via loop_start (+ loop_total before 4.0) and the
+  corners' vertices, as unsigned or signed arrays by version (compat.set_corner_verts); colours as a float colour attribute `hbc_color` (shown by
+  Workbench with colour type Attribute, read by an Attribute node in Cycles/EEVEE): on the POINT
+  domain when the colour is one per owner (hbc.block_soup never shares a point between owners) or
+  one for all, a quarter of the memory of one per corner (16 B x 16 M corners at 10^6 cells);
+  on the CORNER domain when faces of one point differ (the direct view's cells);
   the owner (cell, component, sheet, ...) a face belongs to as a FACE int attribute `owner`.
 - Lines (singularity graph, wireframes, highlighted edges): a mesh of edges with a POINT colour
   attribute (alpha = opacity) and a shared geometry-nodes modifier (Mesh to Curve, Curve to Mesh)
@@ -23,6 +26,7 @@ import numpy as np
 from mathutils import Matrix
 
 from ..plan import planning as P
+from ..plan.native import import_hbc
 from . import compat
 
 COLOR_ATTR = "hbc_color"
@@ -58,11 +62,11 @@ def _plain(value):
 class _MeshState:
     """A mesh's geometry, attributes and materials, read in bulk, to put back on a rollback. Internal
     attributes (names starting with '.': selection, corner and edge maps) are Blender's own and
-    follow from the geometry, and so do the edges of a mesh with faces."""
+    follow from the geometry; the edges and each corner's edge are kept as they were (a layer's
+    edges come from hbc.polygon_edges, in another order than Blender's own search)."""
 
     def __init__(self, me):
-        nv, nl, nf = len(me.vertices), len(me.loops), len(me.polygons)
-        ne = 0 if nf else len(me.edges)
+        nv, nl, nf, ne = len(me.vertices), len(me.loops), len(me.polygons), len(me.edges)
         self.co = np.empty(3 * nv, np.float32)
         me.vertices.foreach_get("co", self.co)
         self.edges = np.empty(2 * ne, np.int32)
@@ -70,6 +74,9 @@ class _MeshState:
             me.edges.foreach_get("vertices", self.edges)
         self.loops = np.empty(nl, np.int32)
         me.loops.foreach_get("vertex_index", self.loops)
+        self.corner_edges = np.empty(nl if ne else 0, np.int32)
+        if len(self.corner_edges):
+            me.loops.foreach_get("edge_index", self.corner_edges)
         self.starts = np.empty(nf, np.int32)
         me.polygons.foreach_get("loop_start", self.starts)
         size = {"POINT": nv, "CORNER": nl, "FACE": nf}
@@ -96,9 +103,11 @@ class _MeshState:
         me.vertices.foreach_set("co", self.co)
         if len(self.edges):
             me.edges.add(len(self.edges) // 2)
-            me.edges.foreach_set("vertices", self.edges)
+            compat.set_edge_verts(me, self.edges)
         me.loops.add(len(self.loops))
-        me.loops.foreach_set("vertex_index", self.loops)
+        compat.set_corner_verts(me, self.loops)
+        if len(self.corner_edges):
+            compat.set_corner_edges(me, self.corner_edges)
         me.polygons.add(len(self.starts))
         compat.set_polygons(me, self.starts, np.diff(np.append(self.starts, len(self.loops))).astype(np.int32))
         for name, data_type, domain, key, values in self.attrs:
@@ -106,7 +115,7 @@ class _MeshState:
             attr.data.foreach_set(key, values)
         if self.active is not None and self.active in me.color_attributes:
             compat.make_active_color(me, me.color_attributes[self.active])
-        me.update(calc_edges=len(self.starts) > 0)
+        me.update(calc_edges=len(self.starts) > 0 and not len(self.edges))
         me.materials.clear()
         for mat in self.materials:
             me.materials.append(mat)
@@ -372,28 +381,59 @@ def tube_group(tx: Transaction):
 # ---------------------------------------------------------------------------------------------
 # Geometry
 
-def fill_soup(me, soup: P.Soup, face_colors=None):
+def fill_soup(me, soup: P.Soup, face_colors=None, owner_colors=None):
     """Writes a soup into an empty mesh: points, corners, faces, the `owner` (and `hbc_cell`) face
-    attributes and, with face_colors (one per face, or one for all), the colour attribute."""
+    attributes and the colour attribute: with face_colors one per face (CORNER domain) or one for
+    all (POINT), or with owner_colors one per owner id (POINT: the soup's points must each belong
+    to one owner, as hbc.block_soup's do)."""
     nv, nf = len(soup.positions), soup.num_faces
     me.vertices.add(nv)
     me.vertices.foreach_set("co", np.ascontiguousarray(soup.positions, np.float32).ravel())
     me.loops.add(len(soup.face_vertices))
-    me.loops.foreach_set("vertex_index", np.ascontiguousarray(soup.face_vertices, np.int32))
+    compat.set_corner_verts(me, soup.face_vertices)
     me.polygons.add(nf)
-    compat.set_polygons(me, soup.loop_starts(), np.ascontiguousarray(soup.face_sizes, np.int32))
+    compat.set_polygons(me, soup.loop_starts(), soup.face_sizes)
+    edges = _soup_edges(soup, nv)
+    if edges is not None:
+        me.edges.add(len(edges["edges"]))
+        compat.set_edge_verts(me, edges["edges"])
+        compat.set_corner_edges(me, edges["corner_edge"])
     owner = me.attributes.new(OWNER_ATTR, "INT", "FACE")
     owner.data.foreach_set("value", np.ascontiguousarray(soup.face_owner, np.int32))
     if soup.face_cell is not None:  # the cell of each face, for the inspection filters (blender/inspect.py)
         me.attributes.new(CELL_ATTR, "INT", "FACE").data.foreach_set("value", np.ascontiguousarray(soup.face_cell, np.int32))
-    if face_colors is not None:
+    colors, domain = None, "POINT"
+    if owner_colors is not None:
+        point_owner = np.zeros(nv, np.intp)
+        point_owner[soup.face_vertices] = np.repeat(soup.face_owner, soup.face_sizes)
+        colors = np.asarray(owner_colors, np.float32).reshape(-1, 4)[point_owner]
+    elif face_colors is not None:
         fc = np.asarray(face_colors, np.float32).reshape(-1, 4)
-        corner = np.repeat(fc, soup.face_sizes, axis=0) if len(fc) == nf else np.broadcast_to(fc[0], (len(soup.face_vertices), 4))
-        col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "CORNER")
-        col.data.foreach_set("color", np.ascontiguousarray(corner, np.float32).ravel())
+        if len(fc) == nf:
+            colors, domain = np.repeat(fc, soup.face_sizes, axis=0), "CORNER"
+        else:
+            colors = np.broadcast_to(fc[0], (nv, 4))
+    if colors is not None:
+        col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", domain)
+        col.data.foreach_set("color", np.ascontiguousarray(colors, np.float32).ravel())
         compat.make_active_color(me, col)
-    me.update(calc_edges=True)
+    me.update(calc_edges=edges is None)
     return me
+
+
+def _soup_edges(soup: P.Soup, num_points: int):
+    """hbc.polygon_edges of the soup (its edges made in C++, several times faster than Blender's
+    own search: docs/performance.md), or None when the compiled module lacks it (Blender then
+    finds the edges)."""
+    try:
+        polygon_edges = getattr(import_hbc(), "polygon_edges", None)
+    except Exception:  # noqa: BLE001 - no compiled module: Blender's edge search
+        polygon_edges = None
+    if polygon_edges is None:
+        return None
+    offsets = np.zeros(soup.num_faces + 1, np.int32)
+    np.cumsum(soup.face_sizes, out=offsets[1:])
+    return polygon_edges(offsets, np.ascontiguousarray(soup.face_vertices, np.int32), num_points)
 
 
 def set_materials(me, materials):
@@ -410,14 +450,14 @@ def set_materials(me, materials):
         me.materials.append(mat)
 
 
-def mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None):
+def mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None, owner_colors=None):
     """A new mesh (registered in tx) filled with a soup, for an object to take (fill_soup)."""
-    return fill_soup(tx.mesh(name), soup, face_colors)
+    return fill_soup(tx.mesh(name), soup, face_colors, owner_colors)
 
 
-def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None):
+def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None, owner_colors=None):
     ob, me = tx.mesh_object(name, coll)
-    fill_soup(me, soup, face_colors)
+    fill_soup(me, soup, face_colors, owner_colors)
     if mat is None:
         mat = material(tx, "attr")
     set_materials(me, [mat])
@@ -432,7 +472,7 @@ def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of
     hbc.block_soup giving each owner its own points (usually one contiguous range)."""
     mat = material(tx, "object")
     order = np.argsort(soup.face_owner, kind="stable")
-    starts = soup.loop_starts()
+    offsets = np.append(soup.loop_starts(), len(soup.face_vertices))  # once: a copy per owner cost 4 s for 352 sheets
     owners_sorted = soup.face_owner[order]
     uniq, first = np.unique(owners_sorted, return_index=True)
     bounds = np.append(first, len(order))
@@ -440,7 +480,7 @@ def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of
     for i, owner in enumerate(uniq):
         faces = order[bounds[i]: bounds[i + 1]]
         sizes = soup.face_sizes[faces]
-        loops = P.csr_rows(np.append(starts, len(soup.face_vertices)), soup.face_vertices, faces)
+        loops = P.csr_rows(offsets, soup.face_vertices, faces)
         lo, hi = int(loops.min()), int(loops.max()) + 1
         if hi - lo == len(np.unique(loops)):  # the owner's points are one contiguous range
             part = P.Soup(soup.positions[lo:hi], sizes, (loops - lo).astype(np.int32), soup.face_owner[faces])
@@ -464,7 +504,7 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
     me.vertices.add(len(lines.positions))
     me.vertices.foreach_set("co", np.ascontiguousarray(lines.positions, np.float32).ravel())
     me.edges.add(len(lines.edges))
-    me.edges.foreach_set("vertices", np.ascontiguousarray(lines.edges, np.int32).ravel())
+    compat.set_edge_verts(me, lines.edges)
     col = me.color_attributes.new(COLOR_ATTR, "FLOAT_COLOR", "POINT")
     col.data.foreach_set("color", np.ascontiguousarray(lines.colors, np.float32).ravel())
     compat.make_active_color(me, col)
