@@ -72,11 +72,19 @@ void finish(const ChildResult& c, Row& r) {
     return;
   }
   std::istringstream ss(c.out);
-  std::string header, line;
+  std::string header;
   std::getline(ss, header);
-  std::getline(ss, line);
+  std::string line{std::istreambuf_iterator<char>(ss), {}};  // a quoted name may hold a line break
+  if (!line.empty() && line.back() == '\n') line.pop_back();
+  // The first field is the mesh's name, quoted when it holds a comma; the values after it never
+  // do, so they are read from the end.
   const auto keys = split(header, ','), vals = split(line, ',');
-  for (size_t i = 0; i < keys.size() && i < vals.size(); ++i) r.values[keys[i]] = vals[i];
+  if (vals.size() < keys.size()) {
+    r.error = "the analysis printed no row of " + std::to_string(keys.size()) + " fields";
+    return;
+  }
+  const size_t shift = vals.size() - keys.size();
+  for (size_t i = 1; i < keys.size(); ++i) r.values[keys[i]] = vals[i + shift];
 }
 
 // A Table 1 cell from a row's CSV values: times in milliseconds, everything else as printed.
@@ -124,14 +132,12 @@ void run_table(const TableArgs& args) {
     std::printf("%s,error\n", stats_csv_header().c_str());
     const auto keys = split(stats_csv_header(), ',');
     for (const Row& r : rows) {
-      std::string line = r.file;
+      std::string line = csv_quoted(r.file);
       for (size_t i = 1; i < keys.size(); ++i) {
         auto it = r.values.find(keys[i]);
         line += "," + (it == r.values.end() ? std::string() : it->second);
       }
-      std::string err = r.error;
-      std::replace(err.begin(), err.end(), ',', ';');
-      std::printf("%s,%s\n", line.c_str(), err.c_str());
+      std::printf("%s,%s\n", line.c_str(), csv_quoted(r.error).c_str());
     }
   } else if (latex) {
     std::printf("\\begin{tabular}{c|cc|cc|cccc|c|ccccc}\nModels");

@@ -48,7 +48,7 @@ std::string stats_csv_header() {
 }
 
 std::string stats_csv_row(const std::string& name, const Stats& s) {
-  std::string r = name;
+  std::string r = csv_quoted(name);  // a path may hold a comma; the numbers never do
   const auto fields = stat_fields();
   for (size_t i = 0; i < fields.size(); ++i) r.append(",").append(value_text(fields[i], stat_value(s, i)));
   for (size_t i = 0; i < timing_fields().size(); ++i) r.append(",").append(fmt_real(timing_value(s.timings, i), 6));

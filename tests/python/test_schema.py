@@ -92,3 +92,29 @@ def test_name_tables_index_the_arrays(analyzed, shared_data_dir):
     extensions = {f["extension"].lower() for f in hbc.FORMATS}
     assert {p.suffix.lower() for p in shared_data_dir.rglob("*") if p.suffix.lower() in extensions}
     assert hbc.load(shared_data_dir / TABLE1 / "teapot.hedra", format="hedra").num_cells == mesh.num_cells
+
+
+def test_csv_rows_survive_a_comma_and_a_quote_in_the_name(hbc_cli, shared_data_dir, tmp_path):
+    # RFC 4180: a name holding `,` or `"` is quoted (quotes doubled), so a CSV reader gets the
+    # header's number of fields and the name back unchanged; `hbc table` reads each child's row past
+    # that name and gives the same values as `hbc analyze --csv`.
+    import csv
+    import io
+    import shutil
+    odd = tmp_path / 'teapot, the "odd" one.hedra'
+    shutil.copy(shared_data_dir / TABLE1 / "teapot.hedra", odd)
+    broken = tmp_path / "broken, too.mesh"
+    broken.write_text("MeshVersionFormatted 1\nDimension 3\nVertices\n2\n0 0 0 0\n")
+    analyze = list(csv.reader(io.StringIO(subprocess.run([hbc_cli, "analyze", str(odd), "--csv"], capture_output=True,
+                                                          text=True, check=True).stdout)))
+    assert len(analyze) == 2 and len(analyze[1]) == len(analyze[0]) and analyze[1][0] == str(odd)
+    table = list(csv.reader(io.StringIO(subprocess.run([hbc_cli, "table", "--csv", str(odd), str(broken)],
+                                                       capture_output=True, text=True, check=True).stdout)))
+    assert table[0] == analyze[0] + ["error"]
+    rows = {r[0]: r for r in table[1:]}
+    assert set(rows) == {str(odd), str(broken)} and all(len(r) == len(table[0]) for r in table[1:])
+    timed = [i for i, k in enumerate(analyze[0]) if k.startswith("t_")]
+    assert [v for i, v in enumerate(rows[str(odd)][:-1]) if i not in timed] == \
+        [v for i, v in enumerate(analyze[1]) if i not in timed]
+    assert rows[str(odd)][-1] == ""
+    assert "broken, too.mesh" in rows[str(broken)][-1]
