@@ -480,6 +480,7 @@ class Subject:
         """Turns on the slicing filter of every equipped object of coll."""
         plane = self.cut_plane_object()
         for ob in coll.all_objects:
+            self.addon.inspect.ensure_equipped(ob, self.s)  # a build leaves the filters' attributes out
             self.addon.inspect.set_filters(ob, {"Plane": plane, "Slice": True})
         return plane
 

@@ -6,12 +6,18 @@ the operator and the panel are in ui/.
 
 How it works:
 - Per-face attributes. Every soup face knows the mesh cell it was taken from (`hbc_cell`, from
-  hbc.block_soup's face_cell, written by scene.py). `equip_layer` copies per-cell arrays computed
+  hbc.block_soup's face_cell, written by scene.py). `ensure_equipped` copies per-cell arrays computed
   in C++ (hbc.cell_quality, hbc.cell_depth, hbc.cell_centroids, the analysis' cell_component and
   the picked sheet's cells) onto the faces, as FACE attributes: `hbc_cell_type` (int, CellType),
   `hbc_quality` (float, scaled Jacobian), `hbc_depth` (int), `hbc_block` (int, component id, -1
   without an analysis), `hbc_in_sheet` (int 0/1: the cell is in the picked sheet; rewritten when
   another sheet is picked), `hbc_centroid` (float vector, the cell's vertex centroid, in the object's coordinates).
+  A build only marks its cell-based objects (`hbc_inspect`); the attributes and the modifier come
+  when a filter that can hide a face is first switched on (`apply_to_object`), or at the build when
+  one already is: written at every build they cost 0.24 s and a quarter of the 10^6-cell Blocks
+  mesh (copied again by the depsgraph in 3.4) that most builds never use. A rebuilt layer is
+  refilled in place: its meshes lose the attributes and its objects the modifier, so it is
+  equipped again by the same rule.
 - Filters. One shared geometry-nodes group (`HBC Inspect`) on every equipped object deletes the
   faces whose cell is hidden: centroid on the far side of the plane (the +Z side of the plane
   Empty, read with Object Info relative to the object; `Flip` swaps the sides), depth < `Peel`, cell
@@ -194,22 +200,62 @@ def equip_object(tx, ob, data, in_sheet):
     apply_to_object(ob, settings())
 
 
-def equip_layer(tx, coll, layer, s, st):
-    """Hook after a layer is built: equips every cell-based object of the layer (not highlights)."""
+FILTER_ATTRS = ("hbc_cell_type", "hbc_quality", "hbc_depth", "hbc_block", "hbc_in_sheet", "hbc_centroid")
+
+
+def is_equipped(ob) -> bool:
+    """Whether ob has the per-face filter attributes and (unless a live surface) the modifier."""
+    attrs = ob.data.attributes
+    return all(a in attrs for a in FILTER_ATTRS) and bool(ob.get("hbc_surface") or ob.modifiers.get(MODIFIER))
+
+
+def _real(s) -> bool:
     # The per-cell arrays come from the hbc module: stand-in meshes (tests' fakes) get no filters.
-    if layer not in IP.INSPECT_LAYERS or not isinstance(s.mesh, import_hbc().Mesh):
+    return s is not None and isinstance(s.mesh, import_hbc().Mesh)
+
+
+def ensure_equipped(ob, s, tx=None, sheet=None) -> bool:
+    """Equips a cell-based object (marked `hbc_inspect` by its build) of the mesh session `s` for
+    the filters, once: True when it had to. `sheet`: the sheet whose cells `hbc_in_sheet` marks
+    (default the picked one)."""
+    if not ob.get("hbc_inspect") or is_equipped(ob) or not _real(s):
+        return False
+    sheet = picked_sheet() if sheet is None else int(sheet)
+    if tx is None:
+        with S.Transaction() as own:
+            equip_object(own, ob, IP.cell_data(s), IP.sheet_mask(s, sheet))
+    else:
+        equip_object(tx, ob, IP.cell_data(s), IP.sheet_mask(s, sheet))
+    ob["hbc_in_sheet_of"] = sheet
+    return True
+
+
+def filters_on(ins) -> bool:
+    """Whether the settings can hide a face (then the layers' objects need their attributes)."""
+    return ins is not None and bool(ins.enabled) and filters_hide_anything(filter_values(ins))
+
+
+def equip_layer(tx, coll, layer, s, st):
+    """Hook after a layer is built: marks every cell-based object of the layer (not highlights) as
+    one the filters apply to, and equips them at once when a filter is already on."""
+    if layer not in IP.INSPECT_LAYERS or not _real(s):
         return 0
     obs = [ob for ob in S.objects_in(coll) if ob.type == "MESH" and CELL_ATTR in ob.data.attributes
            and ob.get("hbc_highlight") is None]
-    if not obs:
-        return 0
-    data = IP.cell_data(s)
-    sheet = int(getattr(st, "sheet_index", -1))
-    in_sheet = IP.sheet_mask(s, sheet)
     for ob in obs:
-        equip_object(tx, ob, data, in_sheet)
-        ob["hbc_in_sheet_of"] = sheet
+        ob["hbc_inspect"] = True
+    if obs and filters_on(settings()):
+        sheet = int(getattr(st, "sheet_index", -1))
+        for ob in obs:
+            ensure_equipped(ob, s, tx, sheet)
     return len(obs)
+
+
+def equip_mesh(root) -> int:
+    """Equips every cell-based object of a mesh's collection (the filters' readers call this through
+    `ensure_equipped`; tests and scripts that read the attributes call it directly)."""
+    s = session.get(root.name) if root is not None else None
+    return sum(ensure_equipped(ob, s) for ob in inspected_objects(root))
 
 
 def build_direct_cells(tx, coll, s, st, name):
@@ -319,10 +365,11 @@ def follow_picked_sheet(context=None):
     for ob in inspected_objects(root):
         if ob.get("hbc_in_sheet_of", -1) == sheet:
             continue
-        mask = IP.sheet_mask(s, sheet) if mask is None else mask
-        _set_attr(ob.data, "hbc_in_sheet", "INT", mask[face_cells(ob.data)])
         ob["hbc_in_sheet_of"] = sheet
-        ob.data.update()
+        if "hbc_in_sheet" in ob.data.attributes:  # not equipped yet: equipping writes the picked sheet
+            mask = IP.sheet_mask(s, sheet) if mask is None else mask
+            _set_attr(ob.data, "hbc_in_sheet", "INT", mask[face_cells(ob.data)])
+            ob.data.update()
         if ob.get("hbc_surface"):
             refresh_surface(ob, s, settings(context.scene))
 
@@ -360,10 +407,15 @@ def filters_hide_anything(values) -> bool:
                 or values["Filter Quality"] or values["Sheet Only"])
 
 
-def apply_to_object(ob, ins):
+def apply_to_object(ob, ins, s=None):
+    """Sets ob's modifier from the settings; equips ob first (with the mesh session `s`) when a
+    filter can hide a face."""
     if ins is not None and not ob.get("hbc_surface"):
         values = filter_values(ins)
-        set_filters(ob, values, ins.enabled and filters_hide_anything(values))
+        on = bool(ins.enabled) and filters_hide_anything(values)
+        if on and ensure_equipped(ob, s):
+            return  # equip_object applied the settings
+        set_filters(ob, values, on)
 
 
 def inspected_objects(root):
@@ -374,8 +426,10 @@ def apply(context=None):
     """Pushes Scene.hbc_inspect into the modifier of every equipped object of the active mesh."""
     context = context or bpy.context
     ins = settings(context.scene)
-    for ob in inspected_objects(active_root(context)):
-        apply_to_object(ob, ins)
+    root = active_root(context)
+    s = session.get(root.name) if root is not None else None
+    for ob in inspected_objects(root):
+        apply_to_object(ob, ins, s)
     refresh_all(context)
 
 
@@ -383,8 +437,13 @@ def recolor(context=None):
     """Direct-view cells: quality colours or cell-type colours, from their face attributes."""
     context = context or bpy.context
     ins = settings(context.scene)
-    for ob in inspected_objects(active_root(context)):
+    root = active_root(context)
+    s = session.get(root.name) if root is not None else None
+    for ob in inspected_objects(root):
         if ob.get("hbc_part") != "cells" or ob.get("hbc_surface"):
+            continue
+        ensure_equipped(ob, s)  # the colours are read from the filter attributes
+        if "hbc_quality" not in ob.data.attributes:
             continue
         me = ob.data
         n = len(me.polygons)

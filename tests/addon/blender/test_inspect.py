@@ -52,6 +52,12 @@ def evaluated_cells(ob):
 
 
 def cell_arrays(ob):
+    """(face cells, face centroids) of a layer object, equipped first (a build leaves the filters'
+    attributes out until a filter is switched on)."""
+    from hybrid_base_complex.blender import inspect as I
+    from hybrid_base_complex.plan import session
+
+    I.ensure_equipped(ob, session.get(ob["hbc_mesh"]))
     me = ob.data
     n = len(me.polygons)
     cells, cen = np.zeros(n, np.int32), np.zeros(3 * n, np.float32)
@@ -157,9 +163,11 @@ def test_quality_range_and_colours(reset, tmp_path):
 
 
 def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
-    """Every block and sheet object carries the attributes and the modifier; peeling far enough
-    (past the deepest cell) empties every shown one (the sheets layer shows only the picked sheet:
-    hidden objects are not evaluated); the block attribute is the face's cell's component."""
+    """A built block or sheet object has neither the filter attributes nor the modifier while no
+    filter is on; peeling far enough (past the deepest cell) equips every one (hidden ones too: the
+    sheets layer shows only the picked sheet) with all six attributes, the block attribute being
+    the face's cell's component, and empties every shown one. A layer rebuilt while the filter is
+    on is equipped again; one rebuilt with the filters at rest is not."""
     from hybrid_base_complex.blender import inspect as I
     from hybrid_base_complex.blender import scene as S
     from hybrid_base_complex.plan import inspection as IP
@@ -171,23 +179,40 @@ def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
         assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}
     comp = np.asarray(s.analysis.complex.cell_component)
     deepest = int(IP.cell_data(s)["depth"].max())
+
+    def objects(layer):
+        return [o for o in S.find_layer(root, layer).all_objects if o.type == "MESH"]
+
+    def bare(ob):
+        return ob.modifiers.get(I.MODIFIER) is None and not any(a in ob.data.attributes for a in I.FILTER_ATTRS)
+
     for layer in ("blocks", "sheets"):
-        obs = [o for o in S.find_layer(root, layer).all_objects if o.type == "MESH"]
-        assert obs and all(o.modifiers.get(I.MODIFIER) for o in obs), layer
+        obs = objects(layer)
+        assert obs and all(o.get("hbc_inspect") and bare(o) for o in obs), layer
+    before = sum(evaluated_cells(o)[0] for o in objects("blocks"))
+    assert before > 0
+    reset.peel = deepest + 1
+    for layer in ("blocks", "sheets"):
+        obs = objects(layer)
+        assert all(I.is_equipped(o) and o.modifiers[I.MODIFIER].show_viewport for o in obs), layer
         ob = obs[0]
         block = np.zeros(len(ob.data.polygons), np.int32)
         ob.data.attributes["hbc_block"].data.foreach_get("value", block)
         assert np.array_equal(block, comp[I.face_cells(ob.data)])
-    before = sum(evaluated_cells(o)[0] for o in S.find_layer(root, "blocks").all_objects)
-    assert before > 0
-    reset.peel = deepest + 1
-    for layer in ("blocks", "sheets"):
-        shown = [o for o in S.find_layer(root, layer).all_objects if not o.hide_viewport]
+        shown = [o for o in obs if not o.hide_viewport]
         assert shown, layer
         assert sum(evaluated_cells(o)[0] for o in shown) == 0, layer
+    assert I.ensure_equipped(objects("blocks")[0], s) is False  # idempotent
     reset.enabled = False
-    assert sum(evaluated_cells(o)[0] for o in S.find_layer(root, "blocks").all_objects) == before
+    assert sum(evaluated_cells(o)[0] for o in objects("blocks")) == before
     reset.enabled = True
+    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert all(I.is_equipped(o) for o in objects("blocks"))
+    assert sum(evaluated_cells(o)[0] for o in objects("blocks")) == 0
+    reset.peel = 0
+    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert all(bare(o) for o in objects("blocks"))
+    assert sum(evaluated_cells(o)[0] for o in objects("blocks")) == before
 
 
 def test_live_surface_of_a_large_mesh(reset, tmp_path):

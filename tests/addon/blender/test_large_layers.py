@@ -119,8 +119,8 @@ def test_layer_colours_are_one_per_owner_on_points(clean_scene, data_dir, split_
 
 
 def test_filter_modifier_runs_only_when_it_can_hide(clean_scene, data_dir):
-    """The Blocks layer's filter modifier is off with every filter at rest (nothing to delete), on
-    when peeling one layer, off again back at 0 or with the filters disabled."""
+    """The Blocks layer has no filter modifier with every filter at rest (nothing to delete); it
+    gets one, on, when peeling one layer, off again back at 0 or with the filters disabled."""
     from hybrid_base_complex.blender import inspect as I
     from hybrid_base_complex.blender import scene as S
     from hybrid_base_complex.blender.context import find_root
@@ -134,9 +134,9 @@ def test_filter_modifier_runs_only_when_it_can_hide(clean_scene, data_dir):
     root = find_root(st.active_mesh)
     assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
     (ob,) = S.find_layer(root, "blocks").all_objects
-    mod = ob.modifiers[I.MODIFIER]
-    assert not mod.show_viewport and not mod.show_render
+    assert ob.modifiers.get(I.MODIFIER) is None
     ins.peel = 1
+    mod = ob.modifiers[I.MODIFIER]
     assert mod.show_viewport and mod.show_render
     ins.enabled = False
     assert not mod.show_viewport
