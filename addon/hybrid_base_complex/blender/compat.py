@@ -204,22 +204,24 @@ def set_polygons(me, loop_starts, face_sizes):
         me.polygons.foreach_set("loop_total", _indices(face_sizes, np.uint32))
 
 
+def _set_corner_values(me, attribute, loop_property, values):
+    """From 4.0 a corner map is a signed attribute (`.corner_vert`, `.corner_edge`); before, an
+    unsigned loop property. foreach_set copies a buffer whole only in the property's own type."""
+    attr = me.attributes.get(attribute)
+    if attr is not None:
+        attr.data.foreach_set("value", _indices(values, np.int32))
+    else:
+        me.loops.foreach_set(loop_property, _indices(values, np.uint32))
+
+
 def set_corner_verts(me, corner_verts):
     """The vertex of every corner (loop) of a mesh whose loops were just added."""
-    attr = me.attributes.get(".corner_vert")
-    if attr is not None:
-        attr.data.foreach_set("value", _indices(corner_verts, np.int32))
-    else:
-        me.loops.foreach_set("vertex_index", _indices(corner_verts, np.uint32))
+    _set_corner_values(me, ".corner_vert", "vertex_index", corner_verts)
 
 
 def set_corner_edges(me, corner_edges):
     """The edge of every corner (to the next corner of its face) of a mesh whose edges are set."""
-    attr = me.attributes.get(".corner_edge")
-    if attr is not None:
-        attr.data.foreach_set("value", _indices(corner_edges, np.int32))
-    else:
-        me.loops.foreach_set("edge_index", _indices(corner_edges, np.uint32))
+    _set_corner_values(me, ".corner_edge", "edge_index", corner_edges)
 
 
 def set_edge_verts(me, edges):
