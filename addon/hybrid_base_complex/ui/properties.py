@@ -151,7 +151,7 @@ class HBCInspectSettings(bpy.types.PropertyGroup):
     color_by_quality: BoolProperty(name="By quality", default=False, update=_upd_color,
                                    description="Colour the direct view's cells by scaled Jacobian (viridis)")
     plane: PointerProperty(name="Plane", type=bpy.types.Object, update=_upd,
-                           description="Empty whose XY plane cuts; cells on its +Z side are hidden")
+                           description="Empty whose circle cuts (its local XZ plane); cells on its +Y side are hidden")
     slice: BoolProperty(name="Slice", default=False, update=_upd)
     flip: BoolProperty(name="Flip", default=False, update=_upd, description="Hide the other side")
     peel: IntProperty(name="Peel", default=0, min=0, soft_max=20, update=_upd,
