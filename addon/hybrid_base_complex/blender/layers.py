@@ -113,7 +113,7 @@ def build_sheet(tx, coll, s, st, name):
     i = st.sheet_index
     if not (0 <= i < s.num_sheets):
         raise ValueError(f"no sheet {i} (the mesh has {s.num_sheets})")
-    color = P.sheet_colors(s.num_sheets)[i]
+    color = P.sheet_color(i)
     t = P.SHEET_TYPES[int(s.sheet_types()[i])]
     soup = s.sheet_blocks(i, st.shrink)
     # The sheet's colour, each block (owner) a little lighter or darker so blocks stay visible.

@@ -1,0 +1,137 @@
+"""The panel says what the viewport shows, and its buttons act on what the user sees (in Blender
+background mode, through the operators and the data the GUI's clicks go through): the legend's
+picked-sheet swatch is the colour the sheet is drawn in; the see-through boundary does not take a
+click meant for a block inside it; *Show block* leaves an interior block in sight; the layers' eyes
+and the legend follow the outliner's eyes."""
+
+import bpy
+import numpy as np
+import pytest
+from mathutils import Vector
+
+TWISTCUBE = ("hybrid-base-complex", "twistcube_s.mesh")
+#: A mesh whose worst block (lowest scaled Jacobian) lies inside: no cell of it has a boundary
+#: vertex (the test checks it), so other blocks surround it.
+ROCKERARM = ("cinolib", "rockerarm.mesh")
+
+
+def import_mesh(data_dir, parts=TWISTCUBE, **kwargs):
+    assert bpy.ops.import_mesh.hbc(filepath=str(data_dir.joinpath(*parts)), **kwargs) == {"FINISHED"}
+    from hybrid_base_complex.blender.context import find_root
+
+    return find_root(bpy.context.scene.hbc.active_mesh)
+
+
+def objects(root, layer):
+    from hybrid_base_complex.blender import scene as S
+
+    return [ob for ob in S.objects_in(S.find_layer(root, layer)) if ob.type == "MESH"]
+
+
+def boundary_of(root):
+    (ob,) = [ob for ob in objects(root, "direct") if ob.get("hbc_part") == "boundary"]
+    return ob
+
+
+def see_through(ob) -> bool:
+    """Drawn see-through in Solid mode: an object without colour attribute is drawn in its object
+    colour, whose alpha is the boundary's (blender/layers.py)."""
+    return ob.type == "MESH" and "hbc_color" not in ob.data.color_attributes and ob.color[3] < 1.0
+
+
+def drawn_colors(ob) -> np.ndarray:
+    """(n, 4) linear RGBA of the colour attribute a layer object is drawn with (Solid > Attribute)."""
+    attr = ob.data.color_attributes["hbc_color"]
+    out = np.zeros(4 * len(attr.data), np.float32)
+    attr.data.foreach_get("color", out)
+    return out.reshape(-1, 4)
+
+
+def test_picked_sheet_swatch_is_the_sheets_colour(clean_scene, data_dir):
+    """The legend's *Picked sheet* swatch has the colour the picked-sheet layer draws its sheet in
+    (its blocks are shades of it, the lightest the colour itself): for sheet 1, for another sheet
+    picked with *Show on pick*, and, with *Show on pick* off, the sheet still drawn rather than the
+    one picked in the list."""
+    from hybrid_base_complex.ui import panels
+
+    root = import_mesh(data_dir)
+    st = bpy.context.scene.hbc
+    st.sheet_index = 1
+    assert bpy.ops.hbc.build_layer(layer="sheet") == {"FINISHED"}
+
+    def swatch():
+        shown, entries = panels.panel_legend(bpy.context)
+        assert "sheet" in shown
+        (key,) = [k for k, words in entries if words == "Picked sheet"]
+        return np.asarray(getattr(st, f"legend_{key}"), np.float32)
+
+    def drawn(sheet):
+        (ob,) = [o for o in objects(root, "sheet") if o.get("hbc_highlight") is None]
+        assert ob["hbc_sheet"] == sheet
+        colors = drawn_colors(ob)
+        return colors[np.argmax(colors[:, :3].sum(axis=1))]
+
+    first = drawn(1)
+    assert np.allclose(swatch(), first, atol=1e-5), (swatch(), first)
+    st.sheet_index = 2  # Show on pick (the default) rebuilds the layer for sheet 2
+    assert np.allclose(swatch(), drawn(2), atol=1e-5)
+    assert not np.allclose(first[:3], drawn(2)[:3])  # the sheets differ in colour: the check means something
+    st.auto_show = False
+    st.sheet_index = 1  # the layer still draws sheet 2
+    assert np.allclose(swatch(), drawn(2), atol=1e-5)
+
+
+def first_opaque_hit(origin, direction, limit):
+    """The first object a ray meets that is not see-through (the rays go on through see-through
+    objects), or None."""
+    scene = bpy.context.scene
+    origin, direction = Vector(origin), Vector(direction).normalized()
+    travelled = 0.0
+    while travelled < limit:
+        hit, loc, _, _, ob, _ = scene.ray_cast(bpy.context.evaluated_depsgraph_get(), origin, direction,
+                                               distance=limit - travelled)
+        if not hit:
+            return None
+        if not see_through(ob):
+            return ob
+        step = (loc - origin).length + 1e-4 * limit
+        origin, travelled = origin + direction * step, travelled + step
+    return None
+
+
+class _Header:
+    """A stand-in layout for a layer panel's header: records the icon of the eye it draws."""
+
+    def __init__(self):
+        self.icons = []
+
+    def operator(self, idname, text="", emboss=True, icon="NONE"):
+        self.icons.append(icon)
+        return type("Props", (), {})()
+
+    def label(self, text="", icon="NONE"):
+        self.icons.append(icon)
+
+
+def eye(layer):
+    """The icon of the eye the panel draws in a layer's header."""
+    from hybrid_base_complex.ui import panels
+
+    cls = next(c for c in panels.layer_panels if c.layer == layer)
+    header = _Header()
+    cls.draw_header(type("Panel", (), {"layout": header, "layer": layer})(), bpy.context)
+    (icon,) = header.icons
+    return icon
+
+
+def layer_collection(coll, lc=None):
+    """The view layer's LayerCollection of a collection (what the outliner's eye of it sets)."""
+    lc = lc or bpy.context.view_layer.layer_collection
+    if lc.collection == coll:
+        return lc
+    for child in lc.children:
+        found = layer_collection(coll, child)
+        if found is not None:
+            return found
+    return None
+
