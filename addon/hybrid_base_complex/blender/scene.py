@@ -20,6 +20,7 @@
 from __future__ import annotations
 
 from collections import Counter
+from contextlib import contextmanager
 
 import bpy
 import numpy as np
@@ -130,7 +131,7 @@ class _ObjectState:
         self.mesh = _MeshState(ob.data) if refill_mesh else None
         self.props = {k: _plain(v) for k, v in ob.items() if k.startswith("hbc_")}
         self.color = tuple(ob.color)
-        self.hidden = (ob.hide_viewport, ob.hide_render)
+        self.hidden = (ob.hide_viewport, ob.hide_render, ob.hide_select)
         self.matrix = ob.matrix_basis.copy()
         self.modifiers = [m.name for m in ob.modifiers]
 
@@ -145,7 +146,7 @@ class _ObjectState:
         for k, v in self.props.items():
             ob[k] = v
         ob.color = self.color
-        ob.hide_viewport, ob.hide_render = self.hidden
+        ob.hide_viewport, ob.hide_render, ob.hide_select = self.hidden
         ob.matrix_basis = self.matrix
         for mod in [m for m in ob.modifiers if m.name not in self.modifiers]:
             ob.modifiers.remove(mod)
@@ -245,8 +246,8 @@ class Transaction:
             del ob[k]
         if tuple(ob.color) != (1.0, 1.0, 1.0, 1.0):
             ob.color = (1.0, 1.0, 1.0, 1.0)
-        if ob.hide_viewport or ob.hide_render:
-            ob.hide_viewport = ob.hide_render = False
+        if ob.hide_viewport or ob.hide_render or ob.hide_select:
+            ob.hide_viewport = ob.hide_render = ob.hide_select = False
         if not _is_identity(ob.matrix_basis):
             ob.matrix_basis.identity()
         return ob, me
@@ -525,6 +526,21 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
 
 # ---------------------------------------------------------------------------------------------
 # Collections
+
+@contextmanager
+def selectable(objects):
+    """Lets the add-on select, for what it does with a selection (frame, export), objects a click
+    cannot select (hide_select: the see-through boundary); they are unselectable again after, which
+    also deselects them."""
+    locked = [ob for ob in objects if ob.hide_select]
+    for ob in locked:
+        ob.hide_select = False
+    try:
+        yield
+    finally:
+        for ob in locked:
+            ob.hide_select = True
+
 
 def objects_in(coll) -> list:
     """Every object of a collection and of the collections below it. `Collection.all_objects`

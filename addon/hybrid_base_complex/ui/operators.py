@@ -183,7 +183,8 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
         st.active_mesh = root.name
         fill_sheet_list(st, s)
         if self.frame:
-            compat.frame_objects(context, S.objects_in(root))
+            with S.selectable(S.objects_in(root)):
+                compat.frame_objects(context, S.objects_in(root))
         push_undo_step(self.bl_label)
         return self.finish_with(P.import_report(root.name, s.num_cells, s.num_components if s.has_analysis else None,
                                                 s.num_sheets if s.has_analysis else None,
@@ -352,7 +353,9 @@ class HBC_OT_frame_layer(_OnActiveMesh, bpy.types.Operator):
             self.report({"ERROR"}, f"The {P.LAYER_TITLES[self.layer].lower()} layer is not built")
             return {"CANCELLED"}
         coll.hide_viewport = False
-        compat.frame_objects(context, [ob for ob in S.objects_in(coll) if not ob.hide_viewport])
+        objects = [ob for ob in S.objects_in(coll) if not ob.hide_viewport]
+        with S.selectable(objects):
+            compat.frame_objects(context, objects)
         return {"FINISHED"}
 
 

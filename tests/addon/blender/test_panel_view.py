@@ -81,6 +81,35 @@ def test_picked_sheet_swatch_is_the_sheets_colour(clean_scene, data_dir):
     assert np.allclose(swatch(), drawn(2), atol=1e-5)
 
 
+def test_see_through_boundary_does_not_take_the_click(clean_scene, data_dir, tmp_path):
+    """A click in the viewport (view3d.select) picks among the objects the view layer marks
+    selectable, the flag Object.select_set obeys too: while the boundary is see-through it is not
+    selectable, so a click on a block inside goes to the block. Framing and exporting the direct
+    view still take the boundary with them; with *See-through* off (an opaque boundary hides the
+    blocks) the boundary is selectable again."""
+    root = import_mesh(data_dir, build_layers=True)
+    st = bpy.context.scene.hbc
+    assert st.direct_transparent
+    boundary, block = boundary_of(root), objects(root, "blocks")[0]
+    assert see_through(boundary) and boundary.visible_get() and block.visible_get()
+    boundary.select_set(True)
+    assert not boundary.select_get()
+    block.select_set(True)
+    assert block.select_get()
+    # The layer's export writes the boundary (every visible object of the layer).
+    out = tmp_path / "direct.obj"
+    assert bpy.ops.hbc.export_layer(filepath=str(out), layer="direct", format="OBJ") == {"FINISHED"}
+    written = [line[2:] for line in out.read_text().splitlines() if line.startswith("o ")]
+    assert boundary.name.replace(" ", "_") in written, written  # the OBJ exporter's object names
+    assert not boundary.select_get() and block.select_get()  # the selection is put back
+    st.direct_transparent = False
+    assert bpy.ops.hbc.build_layer(layer="direct") == {"FINISHED"}
+    boundary = boundary_of(root)
+    assert not see_through(boundary)
+    boundary.select_set(True)
+    assert boundary.select_get()
+
+
 def first_opaque_hit(origin, direction, limit):
     """The first object a ray meets that is not see-through (the rays go on through see-through
     objects), or None."""
