@@ -565,6 +565,61 @@ def find_layer(root, layer: str):
     return None
 
 
+def layers_of(root) -> list:
+    """The built layer collections of a mesh."""
+    return [c for c in root.children if c.get("hbc_layer")]
+
+
+def view_layer_path(view_layer, coll):
+    """The view layer's LayerCollections from its top one (the scene collection's) down to coll's:
+    what the outliner's checkboxes and eyes set. None when coll is not in the scene."""
+    stack = [[view_layer.layer_collection]]
+    while stack:
+        path = stack.pop()
+        if path[-1].collection == coll:
+            return path
+        stack.extend(path + [child] for child in path[-1].children)
+    return None
+
+
+def layer_shown(coll, view_layer) -> bool:
+    """Whether the viewport draws a layer (what the panel's eye and legend show): the layer and every
+    collection above it are enabled in viewports and neither excluded nor hidden in the view layer
+    (the outliner's checkbox and eye), and, when it holds objects, one of them is shown (their own
+    eyes, and the sheets layer's hidden sheets)."""
+    path = view_layer_path(view_layer, coll)
+    if path is None or any(lc.exclude or lc.hide_viewport or lc.collection.hide_viewport for lc in path[1:]):
+        return False
+    obs = objects_in(coll)
+    return not obs or any(not ob.hide_viewport and not ob.hide_get(view_layer=view_layer) for ob in obs)
+
+
+def show_layer(root, layer: str, view_layer):
+    """Makes the viewport draw a built layer, whatever hid it: its collection enabled, its view-layer
+    collection and those above it included and shown, its objects' own eyes open (not the sheets
+    layer's per-sheet hiding). The mesh's other layers that an eye above them hid stay hidden: their
+    collections are disabled instead. Returns the layer's collection (None when not built)."""
+    coll = find_layer(root, layer)
+    if coll is None:
+        return None
+    hidden = [c for c in layers_of(root) if c != coll and not layer_shown(c, view_layer)]
+    coll.hide_viewport = False
+    for lc in (view_layer_path(view_layer, coll) or [])[1:]:
+        if lc.exclude:
+            lc.exclude = False
+        if lc.hide_viewport:
+            lc.hide_viewport = False
+        if lc.collection.hide_viewport:
+            lc.collection.hide_viewport = False
+    for ob in objects_in(coll):
+        if ob.hide_get(view_layer=view_layer):
+            ob.hide_set(False, view_layer=view_layer)
+    for c in hidden:
+        if layer_shown(c, view_layer):
+            c.hide_viewport = True
+    return coll
+
+
 def _tree(coll):
     """The collection, its child collections, their objects and the objects' own data (data no
     object outside the tree uses)."""

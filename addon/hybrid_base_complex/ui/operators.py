@@ -348,11 +348,10 @@ class HBC_OT_frame_layer(_OnActiveMesh, bpy.types.Operator):
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
 
     def execute(self, context):
-        coll = S.find_layer(active_root(context), self.layer)
+        coll = S.show_layer(active_root(context), self.layer, context.view_layer)
         if coll is None:
             self.report({"ERROR"}, f"The {P.LAYER_TITLES[self.layer].lower()} layer is not built")
             return {"CANCELLED"}
-        coll.hide_viewport = False
         objects = [ob for ob in S.objects_in(coll) if not ob.hide_viewport]
         with S.selectable(objects):
             compat.frame_objects(context, objects)
@@ -360,7 +359,7 @@ class HBC_OT_frame_layer(_OnActiveMesh, bpy.types.Operator):
 
 
 class HBC_OT_toggle_layer(_OnActiveMesh, bpy.types.Operator):
-    """Show or hide this layer in the 3D views"""
+    """Show or hide this layer in the 3D views (shown again whatever hid it: this eye, or the outliner's eyes of the mesh, the layer or its objects)"""
 
     bl_idname = "hbc.toggle_layer"
     bl_label = "Show/Hide Layer"
@@ -368,10 +367,14 @@ class HBC_OT_toggle_layer(_OnActiveMesh, bpy.types.Operator):
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
 
     def execute(self, context):
-        coll = S.find_layer(active_root(context), self.layer)
+        root = active_root(context)
+        coll = S.find_layer(root, self.layer)
         if coll is None:
             return {"CANCELLED"}
-        coll.hide_viewport = not coll.hide_viewport
+        if S.layer_shown(coll, context.view_layer):
+            coll.hide_viewport = True
+        else:
+            S.show_layer(root, self.layer, context.view_layer)
         return {"FINISHED"}
 
 

@@ -164,3 +164,42 @@ def layer_collection(coll, lc=None):
             return found
     return None
 
+
+def test_panel_follows_the_outliner(clean_scene, data_dir):
+    """The outliner's eye hides a mesh (its collection), a layer (the layer's collection) or
+    objects in the view layer. The panel follows what is drawn: the layer's eye closes and the
+    legend drops it; the panel's eye then shows that layer again, and only it."""
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.ui import panels
+
+    root = import_mesh(data_dir)
+    assert bpy.ops.hbc.build_all() == {"FINISHED"}  # only the blocks stay shown
+
+    def drawn(layer):
+        bpy.context.view_layer.update()
+        return any(ob.visible_get() for ob in objects(root, layer))
+
+    def legend_layers():
+        return panels.panel_legend(bpy.context)[0]
+
+    assert drawn("blocks") and eye("blocks") == "HIDE_OFF" and legend_layers() == ["blocks"]
+    assert not drawn("direct") and eye("direct") == "HIDE_ON"
+    mesh_eye = layer_collection(root)
+    mesh_eye.hide_viewport = True  # the outliner's eye of the mesh
+    assert not drawn("blocks")
+    assert eye("blocks") == "HIDE_ON" and legend_layers() == []
+    assert bpy.ops.hbc.toggle_layer(layer="blocks") == {"FINISHED"}  # the panel's eye
+    assert drawn("blocks") and eye("blocks") == "HIDE_OFF" and legend_layers() == ["blocks"]
+    assert not any(drawn(layer) for layer in ("direct", "graph", "sheets", "wireframe"))
+    layer_eye = layer_collection(S.find_layer(root, "blocks"))
+    layer_eye.hide_viewport = True  # the outliner's eye of the Blocks layer
+    assert not drawn("blocks") and eye("blocks") == "HIDE_ON" and legend_layers() == []
+    layer_eye.hide_viewport = False
+    assert drawn("blocks") and eye("blocks") == "HIDE_OFF"
+    for ob in objects(root, "blocks"):
+        ob.hide_set(True)  # the outliner's eyes of the layer's objects
+    assert not drawn("blocks") and eye("blocks") == "HIDE_ON" and legend_layers() == []
+    assert bpy.ops.hbc.toggle_layer(layer="blocks") == {"FINISHED"}
+    assert drawn("blocks") and eye("blocks") == "HIDE_OFF" and legend_layers() == ["blocks"]
+    assert bpy.ops.hbc.toggle_layer(layer="blocks") == {"FINISHED"}
+    assert not drawn("blocks") and eye("blocks") == "HIDE_ON" and legend_layers() == []
