@@ -38,7 +38,7 @@ def build_direct(tx, coll, s, st, name):
         ob.color = tuple(P.HEX_COLOR[:3]) + (float(alpha),)
         # A click selects the front-most selectable object under the cursor: a see-through
         # boundary in front of everything would take every click meant for what it lets show.
-        ob.hide_select = see_through(ob)
+        ob.hide_select = S.see_through(ob)
         made += 1
     types = np.asarray(s.mesh.cell_types)
     if np.any(types != 0):
@@ -52,12 +52,6 @@ def build_direct(tx, coll, s, st, name):
         S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"))
         made += 1
     return made + inspect.build_direct_cells(tx, coll, s, st, name)
-
-
-def see_through(ob) -> bool:
-    """Whether ob is the direct view's boundary drawn see-through (its object colour's alpha, which
-    Solid mode draws it with)."""
-    return ob.get("hbc_part") == "boundary" and ob.color[3] < 1.0
 
 
 def build_graph(tx, coll, s, st, name):

@@ -565,6 +565,27 @@ def find_layer(root, layer: str):
     return None
 
 
+def see_through(ob) -> bool:
+    """Whether ob is the direct view's boundary drawn see-through (its object colour's alpha, which
+    Solid mode draws it with)."""
+    return ob.get("hbc_part") == "boundary" and ob.color[3] < 1.0
+
+
+def isolate(root, keep, view_layer) -> int:
+    """Hides in the view layer (as H does; Alt+H shows them again) every object of the mesh the
+    viewport draws but `keep` and the see-through boundary, so that nothing stands in front of
+    what is kept. Returns how many it hid."""
+    keep = set(keep)
+    hid = 0
+    for ob in objects_in(root):
+        if (ob in keep or ob.type == "EMPTY" or see_through(ob) or ob.name not in view_layer.objects
+                or not ob.visible_get(view_layer=view_layer)):
+            continue
+        ob.hide_set(True, view_layer=view_layer)
+        hid += 1
+    return hid
+
+
 def layers_of(root) -> list:
     """The built layer collections of a mesh."""
     return [c for c in root.children if c.get("hbc_layer")]

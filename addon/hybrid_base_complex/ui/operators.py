@@ -509,8 +509,10 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)
         st.active_mesh = root.name
-        word = "block" if self.kind == "component" else "sheet"
-        return self.finish_with(f"{root.name}: worst {word} {which} shown and selected ({n} objects or faces)")
+        if self.kind == "sheet":
+            return self.finish_with(f"{root.name}: worst sheet {which} shown and selected ({n} objects)")
+        return self.finish_with(f"{root.name}: worst block {which} shown and selected ({n} objects or faces), "
+                                "the rest of the mesh hidden (Alt+H shows it)")
 
     @staticmethod
     def _show_sheet(context, root, s, sheet, log):
@@ -530,26 +532,32 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
 
     @staticmethod
     def _show_component(context, root, s, component, log):
-        """Selects the component's object in the Blocks layer (built when missing) and frames it;
-        in a merged Blocks mesh, its faces in edit mode (as Select Block does)."""
+        """Selects the component's object in the Blocks layer (built when missing) and frames it,
+        isolated: the worst block is often inside the mesh, behind the other blocks, so every other
+        object of the mesh but the see-through boundary is hidden (scene.isolate). In a merged
+        Blocks mesh, its faces in edit mode (as Select Block does) with the others hidden."""
         st = context.scene.hbc
-        coll = S.find_layer(root, "blocks")
-        if coll is None:
-            coll, _ = L.build_layer(root, "blocks", s, st, log)
-        coll.hide_viewport = False
+        vl = context.view_layer
+        if S.find_layer(root, "blocks") is None:
+            L.build_layer(root, "blocks", s, st, log)
+        coll = S.show_layer(root, "blocks", vl)
         objects = S.objects_in(coll)
         mine = [ob for ob in objects if ob.get("hbc_component") == component]
+        if context.object is not None and context.object.mode != "OBJECT":
+            bpy.ops.object.mode_set(mode="OBJECT")
         if mine:
             mine[0].hide_viewport = False
+            S.isolate(root, mine, vl)
             compat.frame_objects(context, mine)
             return 1
         merged = next(ob for ob in objects if ob.get("hbc_owner") == "component")
-        if context.object is not None and context.object.mode != "OBJECT":
-            bpy.ops.object.mode_set(mode="OBJECT")
+        S.isolate(root, [merged], vl)
         compat.frame_objects(context, [merged])
         bpy.ops.object.mode_set(mode="EDIT")
         bpy.ops.mesh.select_mode(type="FACE")
+        bpy.ops.mesh.reveal(select=False)  # the faces an earlier Show block hid
         n = select_owner(merged, component)
+        bpy.ops.mesh.hide(unselected=True)
         compat.frame_edit_selection(context)
         return n
 

@@ -128,6 +128,53 @@ def first_opaque_hit(origin, direction, limit):
     return None
 
 
+@pytest.mark.parametrize("split_max", [1000, 0], ids=["one-object-a-block", "merged-blocks"])
+def test_show_block_leaves_an_interior_block_in_sight(clean_scene, data_dir, split_max):
+    """rockerarm's worst block lies inside the mesh. *Show block* (Metrics) leaves it in sight:
+    every other object of the mesh still drawn is see-through, and rays from outside along +-x,
+    +-y, +-z to the cell nearest the block's centre meet the block first; in a merged Blocks mesh
+    (more blocks than *Max objects*) the faces left shown in Edit Mode are the block's."""
+    from hybrid_base_complex.blender import scene as S
+    from hybrid_base_complex.plan import inspection as IP
+    from hybrid_base_complex.plan import metrics_box as MB
+    from hybrid_base_complex.plan import session
+
+    st = bpy.context.scene.hbc
+    st.split_max = split_max
+    try:
+        root = import_mesh(data_dir, ROCKERARM, build_layers=True)
+        s = session.get(root.name)
+        block = {kind: i for kind, i, _, _ in MB.worst(s.metrics())}["component"]
+        comp = np.asarray(s.analysis.complex.cell_component)
+        data = IP.cell_data(s)
+        cells = np.flatnonzero(comp == block)
+        assert data["depth"][cells].min() >= 1  # inside: no cell of it touches the boundary
+        assert bpy.ops.hbc.show_worst(kind="component") == {"FINISHED"}
+        bpy.context.view_layer.update()
+        mine = [ob for ob in objects(root, "blocks") if ob.get("hbc_component") == block]
+        merged = None if mine else next(ob for ob in objects(root, "blocks") if ob.get("hbc_owner") == "component")
+        shown = mine or [merged]
+        others = [ob for ob in S.objects_in(root) if ob.type == "MESH" and ob not in shown and ob.visible_get()]
+        assert all(see_through(ob) for ob in others), [ob.name for ob in others if not see_through(ob)]
+        if merged is not None:
+            import bmesh
+
+            assert merged.mode == "EDIT"
+            bm = bmesh.from_edit_mesh(merged.data)
+            layer = bm.faces.layers.int["owner"]
+            assert {f[layer] for f in bm.faces if not f.hide} == {block}
+            bpy.ops.object.mode_set(mode="OBJECT")
+            return
+        centre = data["centroid"][cells].mean(axis=0)
+        target = data["centroid"][cells[np.argmin(np.linalg.norm(data["centroid"][cells] - centre, axis=1))]]
+        size = float(np.linalg.norm(np.ptp(s.points, axis=0)))
+        for d in np.vstack([np.eye(3), -np.eye(3)]):
+            ob = first_opaque_hit(target - d * 2 * size, d, 3 * size)
+            assert ob is not None and ob in mine, (d, ob and ob.name)
+    finally:
+        st.split_max = 1000
+
+
 class _Header:
     """A stand-in layout for a layer panel's header: records the icon of the eye it draws."""
 
