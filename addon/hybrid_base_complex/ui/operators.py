@@ -524,8 +524,8 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
         st.sheet_index = sheet  # its update shows the sheet in the sheets layer (and rebuilds "sheet")
         coll = S.find_layer(root, "sheet")
         if coll is None or any(ob.get("hbc_sheet") != sheet for ob in S.objects_in(coll)):
-            coll, _ = L.build_layer(root, "sheet", s, st, log)
-        coll.hide_viewport = False
+            L.build_layer(root, "sheet", s, st, log)
+        coll = S.show_layer(root, "sheet", context.view_layer)
         objects = [ob for ob in S.objects_in(coll) if not ob.hide_viewport]
         compat.frame_objects(context, objects)
         return len(objects)
