@@ -57,6 +57,16 @@ def structure_of(root, analyzed, log, rho=0.8):
     return s
 
 
+def drawn_sheet(root):
+    """The sheet the picked-sheet layer of the mesh draws (its sheet object's `hbc_sheet`: with *Show
+    on pick* off it can differ from the list's pick), None while that layer is not built."""
+    coll = S.find_layer(root, "sheet") if root is not None else None
+    for ob in S.objects_in(coll) if coll is not None else ():
+        if ob.get("hbc_sheet") is not None and ob.get("hbc_highlight") is None:
+            return int(ob["hbc_sheet"])
+    return None
+
+
 def rule_of(root):
     """The subsheet rule of the mesh's analysis in memory, None when there is none."""
     s = session.get(root.name)

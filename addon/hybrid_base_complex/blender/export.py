@@ -45,11 +45,12 @@ def export_layer(context, root, layer: str, path: str, fmt: str) -> int:
             raise ValueError(f"The {layer} layer has no visible object to export")
         for ob in selected:
             ob.select_set(False)
-        for ob in objects:
-            ob.select_set(True)
-        vl.objects.active = objects[0]
-        op, kw = compat.layer_exporter(fmt)
-        op(filepath=path, **kw)
+        with S.selectable(objects):
+            for ob in objects:
+                ob.select_set(True)
+            vl.objects.active = objects[0]
+            op, kw = compat.layer_exporter(fmt)
+            op(filepath=path, **kw)
         return len(objects)
     finally:
         for ob in vl.objects:

@@ -19,8 +19,9 @@ How it works:
   refilled in place: its meshes lose the attributes and its objects the modifier, so it is
   equipped again by the same rule.
 - Filters. One shared geometry-nodes group (`HBC Inspect`) on every equipped object deletes the
-  faces whose cell is hidden: centroid on the far side of the plane (the +Z side of the plane
-  Empty, read with Object Info relative to the object; `Flip` swaps the sides), depth < `Peel`, cell
+  faces whose cell is hidden: centroid on the far side of the plane (the side of the plane Empty's
+  local +Y axis, CUT_AXIS: the normal of the circle Blender draws for it; read with Object Info
+  relative to the object; `Flip` swaps the sides), depth < `Peel`, cell
   type not in the `Types` bit mask (bit t for CellType t: 1 hex, 2 tet, 4 prism, 8 pyramid, 16
   polyhedron), scaled Jacobian outside [`Quality Min`, `Quality Max`] when `Filter Quality` is on,
   cell outside the picked sheet when `Sheet Only` is on. While no setting can hide a face the
@@ -54,9 +55,14 @@ from . import scene as S
 from .context import active_root, picked_sheet
 
 GROUP = "HBC Inspect"
-GROUP_VERSION = 2
+GROUP_VERSION = 3  # 3: the cut's normal is CUT_AXIS (2 cut across the drawn circle, along local Z)
 MODIFIER = "HBC Inspect"
 CELL_ATTR = S.CELL_ATTR
+#: The plane Empty's local axis normal to its cut, pointing to the hidden side. Blender draws an
+#: Empty of display type CIRCLE in its local XZ plane (the circle's points at x = sin, y = 0,
+#: z = cos in its draw code, 3.4 to 5.2 alike), so the cut is the plane of the circle the user
+#: sees and moves: G Y moves the cut, G X and G Z slide the circle within it.
+CUT_AXIS = (0.0, 1.0, 0.0)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -123,11 +129,11 @@ def inspect_group(tx):
     compat.mark_modifier_group(ng)
     gi, go = ng.nodes.new("NodeGroupInput"), ng.nodes.new("NodeGroupOutput")
     g = gi.outputs
-    # Slice: the far side is where the plane's +Z points.
+    # Slice: the far side is where the plane's CUT_AXIS points.
     info = ng.nodes.new("GeometryNodeObjectInfo")
     info.transform_space = "RELATIVE"
     ng.links.new(g["Plane"], info.inputs["Object"])
-    normal = compat.rotate_by_object_rotation(ng, (0.0, 0.0, 1.0), info.outputs["Rotation"])
+    normal = compat.rotate_by_object_rotation(ng, CUT_AXIS, info.outputs["Rotation"])
     rel = _vmath(ng, "SUBTRACT", _named(ng, "hbc_centroid", "FLOAT_VECTOR"), info.outputs["Location"], "Vector")
     far = _math(ng, "GREATER_THAN", _vmath(ng, "DOT_PRODUCT", rel, normal, "Value"), 0.0)
     cut = _math(ng, "MULTIPLY", g["Slice"], _math(ng, "ABSOLUTE", _math(ng, "SUBTRACT", far, g["Flip"])))
@@ -295,7 +301,7 @@ def _relative(ob, plane):
 def plane_in(ob, plane):
     """(point, unit normal) of the plane Empty in ob's coordinates (Object Info's Relative)."""
     rel = _relative(ob, plane)
-    n = rel.to_quaternion() @ Vector((0.0, 0.0, 1.0))
+    n = rel.to_quaternion() @ Vector(CUT_AXIS)
     return np.array(rel.translation, np.float64), np.array(n, np.float64)
 
 
@@ -462,12 +468,14 @@ def recolor(context=None):
 
 
 def plane_rotation(normal):
-    """Euler rotation turning +Z onto `normal`."""
-    return Vector((0.0, 0.0, 1.0)).rotation_difference(Vector(normal).normalized()).to_euler()
+    """Euler rotation turning the plane Empty's CUT_AXIS onto `normal` (its circle then lies in the
+    plane normal to `normal`)."""
+    return Vector(CUT_AXIS).rotation_difference(Vector(normal).normalized()).to_euler()
 
 
 def add_plane(context, location, normal=(0.0, 0.0, 1.0), size=1.0, collection=None):
-    """An Empty used as the slicing plane: a circle in the plane (its +Z side is hidden), in
+    """An Empty used as the slicing plane: a circle in the plane (the side `normal`, its local +Y
+    axis, points to is hidden), in
     `collection` (the mesh's own; else the scene's), selected and active so it can be moved and
     turned at once."""
     ob = bpy.data.objects.new("HBC cut plane", None)

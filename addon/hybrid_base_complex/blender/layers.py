@@ -36,6 +36,9 @@ def build_direct(tx, coll, s, st, name):
         # object colour, transparent when that colour's alpha is below 1 (the material's alpha
         # counts in Solid > Material only).
         ob.color = tuple(P.HEX_COLOR[:3]) + (float(alpha),)
+        # A click selects the front-most selectable object under the cursor: a see-through
+        # boundary in front of everything would take every click meant for what it lets show.
+        ob.hide_select = S.see_through(ob)
         made += 1
     types = np.asarray(s.mesh.cell_types)
     if np.any(types != 0):
@@ -113,7 +116,7 @@ def build_sheet(tx, coll, s, st, name):
     i = st.sheet_index
     if not (0 <= i < s.num_sheets):
         raise ValueError(f"no sheet {i} (the mesh has {s.num_sheets})")
-    color = P.sheet_colors(s.num_sheets)[i]
+    color = P.sheet_color(i)
     t = P.SHEET_TYPES[int(s.sheet_types()[i])]
     soup = s.sheet_blocks(i, st.shrink)
     # The sheet's colour, each block (owner) a little lighter or darker so blocks stay visible.

@@ -20,6 +20,7 @@
 from __future__ import annotations
 
 from collections import Counter
+from contextlib import contextmanager
 
 import bpy
 import numpy as np
@@ -130,7 +131,7 @@ class _ObjectState:
         self.mesh = _MeshState(ob.data) if refill_mesh else None
         self.props = {k: _plain(v) for k, v in ob.items() if k.startswith("hbc_")}
         self.color = tuple(ob.color)
-        self.hidden = (ob.hide_viewport, ob.hide_render)
+        self.hidden = (ob.hide_viewport, ob.hide_render, ob.hide_select)
         self.matrix = ob.matrix_basis.copy()
         self.modifiers = [m.name for m in ob.modifiers]
 
@@ -145,7 +146,7 @@ class _ObjectState:
         for k, v in self.props.items():
             ob[k] = v
         ob.color = self.color
-        ob.hide_viewport, ob.hide_render = self.hidden
+        ob.hide_viewport, ob.hide_render, ob.hide_select = self.hidden
         ob.matrix_basis = self.matrix
         for mod in [m for m in ob.modifiers if m.name not in self.modifiers]:
             ob.modifiers.remove(mod)
@@ -245,8 +246,8 @@ class Transaction:
             del ob[k]
         if tuple(ob.color) != (1.0, 1.0, 1.0, 1.0):
             ob.color = (1.0, 1.0, 1.0, 1.0)
-        if ob.hide_viewport or ob.hide_render:
-            ob.hide_viewport = ob.hide_render = False
+        if ob.hide_viewport or ob.hide_render or ob.hide_select:
+            ob.hide_viewport = ob.hide_render = ob.hide_select = False
         if not _is_identity(ob.matrix_basis):
             ob.matrix_basis.identity()
         return ob, me
@@ -526,6 +527,21 @@ def lines_object(tx, coll, name, lines: P.Lines, radius: float, props=None):
 # ---------------------------------------------------------------------------------------------
 # Collections
 
+@contextmanager
+def selectable(objects):
+    """Lets the add-on select, for what it does with a selection (frame, export), objects a click
+    cannot select (hide_select: the see-through boundary); they are unselectable again after, which
+    also deselects them."""
+    locked = [ob for ob in objects if ob.hide_select]
+    for ob in locked:
+        ob.hide_select = False
+    try:
+        yield
+    finally:
+        for ob in locked:
+            ob.hide_select = True
+
+
 def objects_in(coll) -> list:
     """Every object of a collection and of the collections below it. `Collection.all_objects`
     reads a cache Blender does not refresh after an undo (3.4: it still lists objects the undo
@@ -547,6 +563,82 @@ def find_layer(root, layer: str):
         if c.get("hbc_layer") == layer:
             return c
     return None
+
+
+def see_through(ob) -> bool:
+    """Whether ob is the direct view's boundary drawn see-through (its object colour's alpha, which
+    Solid mode draws it with)."""
+    return ob.get("hbc_part") == "boundary" and ob.color[3] < 1.0
+
+
+def isolate(root, keep, view_layer) -> int:
+    """Hides in the view layer (as H does; Alt+H shows them again) every object of the mesh the
+    viewport draws but `keep` and the see-through boundary, so that nothing stands in front of
+    what is kept. Returns how many it hid."""
+    keep = set(keep)
+    hid = 0
+    for ob in objects_in(root):
+        if (ob in keep or ob.type == "EMPTY" or see_through(ob) or ob.name not in view_layer.objects
+                or not ob.visible_get(view_layer=view_layer)):
+            continue
+        ob.hide_set(True, view_layer=view_layer)
+        hid += 1
+    return hid
+
+
+def layers_of(root) -> list:
+    """The built layer collections of a mesh."""
+    return [c for c in root.children if c.get("hbc_layer")]
+
+
+def view_layer_path(view_layer, coll):
+    """The view layer's LayerCollections from its top one (the scene collection's) down to coll's:
+    what the outliner's checkboxes and eyes set. None when coll is not in the scene."""
+    stack = [[view_layer.layer_collection]]
+    while stack:
+        path = stack.pop()
+        if path[-1].collection == coll:
+            return path
+        stack.extend(path + [child] for child in path[-1].children)
+    return None
+
+
+def layer_shown(coll, view_layer) -> bool:
+    """Whether the viewport draws a layer (what the panel's eye and legend show): the layer and every
+    collection above it are enabled in viewports and neither excluded nor hidden in the view layer
+    (the outliner's checkbox and eye), and, when it holds objects, one of them is shown (their own
+    eyes, and the sheets layer's hidden sheets)."""
+    path = view_layer_path(view_layer, coll)
+    if path is None or any(lc.exclude or lc.hide_viewport or lc.collection.hide_viewport for lc in path[1:]):
+        return False
+    obs = objects_in(coll)
+    return not obs or any(not ob.hide_viewport and not ob.hide_get(view_layer=view_layer) for ob in obs)
+
+
+def show_layer(root, layer: str, view_layer):
+    """Makes the viewport draw a built layer, whatever hid it: its collection enabled, its view-layer
+    collection and those above it included and shown, its objects' own eyes open (not the sheets
+    layer's per-sheet hiding). The mesh's other layers that an eye above them hid stay hidden: their
+    collections are disabled instead. Returns the layer's collection (None when not built)."""
+    coll = find_layer(root, layer)
+    if coll is None:
+        return None
+    hidden = [c for c in layers_of(root) if c != coll and not layer_shown(c, view_layer)]
+    coll.hide_viewport = False
+    for lc in (view_layer_path(view_layer, coll) or [])[1:]:
+        if lc.exclude:
+            lc.exclude = False
+        if lc.hide_viewport:
+            lc.hide_viewport = False
+        if lc.collection.hide_viewport:
+            lc.collection.hide_viewport = False
+    for ob in objects_in(coll):
+        if ob.hide_get(view_layer=view_layer):
+            ob.hide_set(False, view_layer=view_layer)
+    for c in hidden:
+        if layer_shown(c, view_layer):
+            c.hide_viewport = True
+    return coll
 
 
 def _tree(coll):

@@ -207,6 +207,12 @@ def sheet_colors(n: int) -> np.ndarray:
     return PALETTE[spread_ids(np.arange(n))].copy()
 
 
+def sheet_color(sheet: int) -> tuple:
+    """The colour of one sheet (sheet_colors' entry for it): the sheets layer's and the picked-sheet
+    layer's, and the legend's *Picked sheet* swatch."""
+    return tuple(float(x) for x in PALETTE[int(spread_ids(int(sheet)))])
+
+
 def valence_color(valence: int):
     return VALENCE_COLORS.get(int(valence), OTHER_VALENCE_COLOR)
 
@@ -598,13 +604,16 @@ def beside(boxes, lo, hi, gap: float = 0.25):
 
 
 # The layers coloured from the palette (one colour per block, sheet, subsheet or wireframe class):
-# a swatch stands for "a colour of its own each", and the wireframes' faint lines for distance.
+# a swatch stands for "a colour of its own each", and the wireframes' faint lines for distance. The
+# picked sheet is one sheet in one colour: its swatch is that colour (sheet_color of the sheet the
+# layer draws; the panel's swatch reads it from the scene, this is sheet 0's).
 LEGEND_COLORS.update(palette=tuple(float(x) for x in PALETTE[0]),
-                     faint=tuple(float(x) for x in PALETTE[0][:3]) + (0.3,))
+                     faint=tuple(float(x) for x in PALETTE[0][:3]) + (0.3,),
+                     picked_sheet=sheet_color(0))
 PALETTE_LEGEND = {
     "blocks": [("palette", "Hex component")],
     "sheets": [("palette", "A colour a sheet")],
-    "sheet": [("palette", "Picked sheet")],
+    "sheet": [("picked_sheet", "Picked sheet")],
     "subsheets": [("palette", "A colour a subsheet")],
     "wireframe": [("palette", "Wire: chain class"), ("faint", "Faint: far away")],
 }

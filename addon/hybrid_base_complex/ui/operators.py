@@ -183,7 +183,8 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
         st.active_mesh = root.name
         fill_sheet_list(st, s)
         if self.frame:
-            compat.frame_objects(context, S.objects_in(root))
+            with S.selectable(S.objects_in(root)):
+                compat.frame_objects(context, S.objects_in(root))
         push_undo_step(self.bl_label)
         return self.finish_with(P.import_report(root.name, s.num_cells, s.num_components if s.has_analysis else None,
                                                 s.num_sheets if s.has_analysis else None,
@@ -347,17 +348,18 @@ class HBC_OT_frame_layer(_OnActiveMesh, bpy.types.Operator):
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
 
     def execute(self, context):
-        coll = S.find_layer(active_root(context), self.layer)
+        coll = S.show_layer(active_root(context), self.layer, context.view_layer)
         if coll is None:
             self.report({"ERROR"}, f"The {P.LAYER_TITLES[self.layer].lower()} layer is not built")
             return {"CANCELLED"}
-        coll.hide_viewport = False
-        compat.frame_objects(context, [ob for ob in S.objects_in(coll) if not ob.hide_viewport])
+        objects = [ob for ob in S.objects_in(coll) if not ob.hide_viewport]
+        with S.selectable(objects):
+            compat.frame_objects(context, objects)
         return {"FINISHED"}
 
 
 class HBC_OT_toggle_layer(_OnActiveMesh, bpy.types.Operator):
-    """Show or hide this layer in the 3D views"""
+    """Show or hide this layer in the 3D views (shown again whatever hid it: this eye, or the outliner's eyes of the mesh, the layer or its objects)"""
 
     bl_idname = "hbc.toggle_layer"
     bl_label = "Show/Hide Layer"
@@ -365,10 +367,14 @@ class HBC_OT_toggle_layer(_OnActiveMesh, bpy.types.Operator):
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
 
     def execute(self, context):
-        coll = S.find_layer(active_root(context), self.layer)
+        root = active_root(context)
+        coll = S.find_layer(root, self.layer)
         if coll is None:
             return {"CANCELLED"}
-        coll.hide_viewport = not coll.hide_viewport
+        if S.layer_shown(coll, context.view_layer):
+            coll.hide_viewport = True
+        else:
+            S.show_layer(root, self.layer, context.view_layer)
         return {"FINISHED"}
 
 
@@ -503,8 +509,10 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)
         st.active_mesh = root.name
-        word = "block" if self.kind == "component" else "sheet"
-        return self.finish_with(f"{root.name}: worst {word} {which} shown and selected ({n} objects or faces)")
+        if self.kind == "sheet":
+            return self.finish_with(f"{root.name}: worst sheet {which} shown and selected ({n} objects)")
+        return self.finish_with(f"{root.name}: worst block {which} shown and selected ({n} objects or faces), "
+                                "the rest of the mesh hidden (Alt+H shows it)")
 
     @staticmethod
     def _show_sheet(context, root, s, sheet, log):
@@ -516,34 +524,40 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
         st.sheet_index = sheet  # its update shows the sheet in the sheets layer (and rebuilds "sheet")
         coll = S.find_layer(root, "sheet")
         if coll is None or any(ob.get("hbc_sheet") != sheet for ob in S.objects_in(coll)):
-            coll, _ = L.build_layer(root, "sheet", s, st, log)
-        coll.hide_viewport = False
+            L.build_layer(root, "sheet", s, st, log)
+        coll = S.show_layer(root, "sheet", context.view_layer)
         objects = [ob for ob in S.objects_in(coll) if not ob.hide_viewport]
         compat.frame_objects(context, objects)
         return len(objects)
 
     @staticmethod
     def _show_component(context, root, s, component, log):
-        """Selects the component's object in the Blocks layer (built when missing) and frames it;
-        in a merged Blocks mesh, its faces in edit mode (as Select Block does)."""
+        """Selects the component's object in the Blocks layer (built when missing) and frames it,
+        isolated: the worst block is often inside the mesh, behind the other blocks, so every other
+        object of the mesh but the see-through boundary is hidden (scene.isolate). In a merged
+        Blocks mesh, its faces in edit mode (as Select Block does) with the others hidden."""
         st = context.scene.hbc
-        coll = S.find_layer(root, "blocks")
-        if coll is None:
-            coll, _ = L.build_layer(root, "blocks", s, st, log)
-        coll.hide_viewport = False
+        vl = context.view_layer
+        if S.find_layer(root, "blocks") is None:
+            L.build_layer(root, "blocks", s, st, log)
+        coll = S.show_layer(root, "blocks", vl)
         objects = S.objects_in(coll)
         mine = [ob for ob in objects if ob.get("hbc_component") == component]
+        if context.object is not None and context.object.mode != "OBJECT":
+            bpy.ops.object.mode_set(mode="OBJECT")
         if mine:
             mine[0].hide_viewport = False
+            S.isolate(root, mine, vl)
             compat.frame_objects(context, mine)
             return 1
         merged = next(ob for ob in objects if ob.get("hbc_owner") == "component")
-        if context.object is not None and context.object.mode != "OBJECT":
-            bpy.ops.object.mode_set(mode="OBJECT")
+        S.isolate(root, [merged], vl)
         compat.frame_objects(context, [merged])
         bpy.ops.object.mode_set(mode="EDIT")
         bpy.ops.mesh.select_mode(type="FACE")
+        bpy.ops.mesh.reveal(select=False)  # the faces an earlier Show block hid
         n = select_owner(merged, component)
+        bpy.ops.mesh.hide(unselected=True)
         compat.frame_edit_selection(context)
         return n
 

@@ -237,7 +237,7 @@ class _Layer(_Sub):
         if coll is not None:
             # An open or a closed eye (the collection's own toggle icons differ only by fill).
             self.layout.operator("hbc.toggle_layer", text="", emboss=False,
-                                 icon=visibility_icon(coll)).layer = self.layer
+                                 icon=visibility_icon(coll, context.view_layer)).layer = self.layer
         else:
             self.layout.label(text="", icon="BLANK1")
 
@@ -249,8 +249,10 @@ class _Layer(_Sub):
         pass
 
 
-def visibility_icon(coll) -> str:
-    return "HIDE_ON" if coll.hide_viewport else "HIDE_OFF"
+def visibility_icon(coll, view_layer) -> str:
+    """The eye of a layer: open while the viewport draws it, whatever hides it (the panel's own
+    eye, the outliner's eyes of the mesh, the layer or its objects)."""
+    return "HIDE_OFF" if S.layer_shown(coll, view_layer) else "HIDE_ON"
 
 
 class HBC_PT_layers(_Sub, bpy.types.Panel):
@@ -315,11 +317,16 @@ def _layer_panel(order, layer, title, draw_options):
 layer_panels = tuple(_layer_panel(order, *row) for order, row in enumerate(LAYER_PANELS))
 
 
+def shown_layers(context, root) -> list:
+    """The built layers of the mesh that the viewport draws, in panel order."""
+    return [layer for layer, _ in P.LAYERS if root is not None and (c := S.find_layer(root, layer)) is not None
+            and S.layer_shown(c, context.view_layer)]
+
+
 def legend_entries(context):
     """planning.legend for the active mesh's built, visible layers and the highlights they hold."""
     root = active_root(context)
-    shown = [layer for layer, _ in P.LAYERS
-             if root is not None and (c := S.find_layer(root, layer)) is not None and not c.hide_viewport]
+    shown = shown_layers(context, root)
     s = session.get(root.name) if root is not None else None
     if s is None:
         return P.legend(shown)
@@ -336,8 +343,7 @@ def panel_legend(context):
     root = active_root(context)
     if root is None:
         return [], []
-    shown = [layer for layer, _ in P.LAYERS
-             if (c := S.find_layer(root, layer)) is not None and not c.hide_viewport]
+    shown = shown_layers(context, root)
     if session.get(root.name) is None:
         highlights = {ob.get("hbc_highlight") for layer in ("sheet", "subsheets") if layer in shown
                       for ob in S.objects_in(S.find_layer(root, layer))}

@@ -10,7 +10,7 @@ from bpy.props import (BoolProperty, CollectionProperty, EnumProperty, FloatProp
 from ..blender import inspect
 from ..blender import layers
 from ..blender import scene
-from ..blender.context import active_root, find_root, refresh_subsheets_stale
+from ..blender.context import active_root, drawn_sheet, find_root, refresh_subsheets_stale
 from ..plan import inspection as IP
 from ..plan import planning as P
 from ..plan import session
@@ -119,8 +119,19 @@ def _sheet_picked(settings, context):
             print(f"hbc: could not show sheet {settings.sheet_index}: {P.describe_error(e)}")
 
 
-# Legend swatches: one read-only colour property per planning.LEGEND_COLORS key.
+def _picked_sheet_swatch(settings):
+    """The legend's *Picked sheet* swatch: the colour of the sheet the active mesh's picked-sheet
+    layer draws (the list's pick before that layer is built)."""
+    sheet = drawn_sheet(active_root(bpy.context))
+    return P.sheet_color(settings.sheet_index if sheet is None else sheet)
+
+
+# Legend swatches: one read-only colour property per planning.LEGEND_COLORS key; the picked sheet's
+# is the colour of that sheet.
 HBCSettings.__annotations__.update({f"legend_{k}": _legend_color(c) for k, c in P.LEGEND_COLORS.items()})
+HBCSettings.__annotations__["legend_picked_sheet"] = FloatVectorProperty(
+    subtype="COLOR", size=4, min=0.0, max=1.0, get=_picked_sheet_swatch,
+    description="Legend colour: the picked sheet's own (read-only)")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -151,7 +162,7 @@ class HBCInspectSettings(bpy.types.PropertyGroup):
     color_by_quality: BoolProperty(name="By quality", default=False, update=_upd_color,
                                    description="Colour the direct view's cells by scaled Jacobian (viridis)")
     plane: PointerProperty(name="Plane", type=bpy.types.Object, update=_upd,
-                           description="Empty whose XY plane cuts; cells on its +Z side are hidden")
+                           description="Empty whose circle cuts (its local XZ plane); cells on its +Y side are hidden")
     slice: BoolProperty(name="Slice", default=False, update=_upd)
     flip: BoolProperty(name="Flip", default=False, update=_upd, description="Hide the other side")
     peel: IntProperty(name="Peel", default=0, min=0, soft_max=20, update=_upd,

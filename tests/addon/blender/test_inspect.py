@@ -110,6 +110,76 @@ def test_plane_hides_the_cells_on_one_side(reset, tmp_path, normal, flip):
         assert evaluated_cells(ob)[0] == 6 * 120
 
 
+#: The plane Blender draws an Empty of display type CIRCLE in: its local XZ plane, so the circle's
+#: normal is the Empty's local Y axis (Blender's draw code puts the circle's points at x = sin,
+#: y = 0, z = cos: DRW_cache_circle_get in draw_cache.c up to 4.1, the overlay's shape cache in
+#: overlay_shape.cc from 4.2 on).
+CIRCLE_NORMAL = (0.0, 1.0, 0.0)
+CIRCLE_IN_PLANE = ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0))
+
+
+@pytest.mark.parametrize("rotation", [(0.0, 0.0, 0.0), (0.4, -0.7, 1.1)])
+@pytest.mark.parametrize("live", [False, True])
+def test_cut_lies_in_the_drawn_circle(reset, tmp_path, rotation, live):
+    """The Empty *Add cut plane* makes (the panel's button) cuts where its circle is drawn: the
+    cells it hides are exactly those whose centroid is on the +normal side of the circle's plane,
+    at rotation 0 and turned; moving the Empty within the circle's plane (G X, G Z at rotation 0)
+    changes nothing, moving it along the circle's normal (G Y) moves the cut. Both with the
+    geometry-nodes filter and with the live surface of a large mesh (a 6x5x4 grid: 120 cells)."""
+    from mathutils import Vector
+
+    reset.surface_above = 100 if live else 100000
+    try:
+        root = import_mesh(generate(tmp_path, "grid", "--size", "6", "5", "4"))
+        ob = cells_object(root)
+        assert bool(ob.get("hbc_surface")) == live
+        cells, cen = cell_arrays(ob)
+        if live:  # the live surface holds only the boundary's cells: every cell's centroid instead
+            from hybrid_base_complex.plan import inspection as IP
+            from hybrid_base_complex.plan import session
+
+            cen = IP.cell_data(session.get(root.name))["centroid"]
+            cells = np.arange(len(cen))
+        lo, hi = cen.min(axis=0), cen.max(axis=0)
+        assert bpy.ops.hbc.add_cut_plane() == {"FINISHED"}
+        plane = reset.plane
+        assert plane.empty_display_type == "CIRCLE" and reset.slice
+        plane.location = tuple(float(x) for x in lo + (hi - lo) * np.array([0.43, 0.51, 0.37]))
+        plane.rotation_euler = rotation
+
+        def shown():
+            bpy.context.view_layer.update()
+            return evaluated_cells(cells_object(root))[1]
+
+        def expected():
+            """The cells on the -normal side of the circle as Blender draws it (world coordinates:
+            the cells object sits at the origin)."""
+            bpy.context.view_layer.update()
+            m = plane.matrix_world
+            n = np.array((m.to_3x3() @ Vector(CIRCLE_NORMAL)).normalized())
+            return np.unique(cells[(cen - np.array(m.translation)) @ n < 0])
+
+        def check():
+            want, got = expected(), shown()
+            assert 0 < len(want) < len(cen)
+            if live:  # the surface of the kept cells: those of them that touch its boundary
+                assert len(got) and np.all(np.isin(got, want)), "cells beyond the circle's plane are drawn"
+            else:
+                assert np.array_equal(got, want)
+            return got
+
+        before = check()
+        step = float(np.min(hi - lo)) * 0.37
+        m = plane.matrix_world.to_3x3()
+        for axis in CIRCLE_IN_PLANE:  # within the circle's plane: the cut stays
+            plane.location = Vector(plane.location) + (m @ Vector(axis)).normalized() * step
+            assert np.array_equal(shown(), before), axis
+        plane.location = Vector(plane.location) + (m @ Vector(CIRCLE_NORMAL)).normalized() * step
+        assert not np.array_equal(check(), before)
+    finally:
+        reset.surface_above = 100000
+
+
 def test_peeling_one_layer_leaves_the_inner_block(reset, tmp_path):
     root = import_mesh(generate(tmp_path, "grid", "--size", "10", "10", "10"))
     ob = cells_object(root)
