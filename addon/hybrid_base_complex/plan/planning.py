@@ -563,7 +563,7 @@ def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_he
            has_non_hex_blocks=True, highlights=None, wire_by_kind=False):
     """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
     edge means (the swatch gives the colour, the words what it marks). The add-on's Legend panel and
-    the figure script's legend strip (blender_scripts/figures) both show exactly this.
+    the figure script's legend strip (figures/) both show exactly this.
     highlights: the sheet highlights drawn (keys of SHEET_HIGHLIGHTS), None for all of them.
     wire_by_kind: the wireframes (the wireframe layer, the subsheets' wireframes) are coloured by
     non-hex kind; the palette's class colours mean nothing beyond telling chains apart."""
