@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import colorsys
 import os
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -470,12 +471,23 @@ def table1_text(name: str, stats: dict, fmt: str = "MARKDOWN") -> str:
 # ---------------------------------------------------------------------------------------------
 # Words for the panel
 
+#: The remedy the library adds to an error about a cell it refuses (hbc/check.hpp kSkipInvalidHint)
+#: names the command line's and Python's option; a Blender user has the importer's own instead.
+SKIP_INVALID_HINT = re.compile(r"--skip-invalid, in Python skip_invalid=True, loads the other cells")
+SKIP_INVALID_REMEDY = 'tick "Skip invalid cells" in the import options to load the other cells'
+
+
 def describe_error(error: BaseException) -> str:
     """What a failure says to a user: the message itself (hbc's name the file, the line and what
-    was expected), never the Python class; the class only when there is no message at all."""
+    was expected), never the Python class; the class only when there is no message at all. A
+    refused cell's remedy is the importer's *Skip invalid cells* option, in place of the options
+    of the command line and of Python the library's message names."""
     text = str(error).strip()
     if isinstance(error, OSError) and error.filename and error.strerror:
         text = f"{error.filename}: {error.strerror}"
+    if "--skip-invalid" in text or "skip_invalid=True" in text:
+        named = SKIP_INVALID_HINT.sub(SKIP_INVALID_REMEDY, text)
+        text = named if named != text else f"{text} ({SKIP_INVALID_REMEDY})"
     return text or f"unexpected failure ({type(error).__name__})"
 
 
