@@ -491,6 +491,18 @@ def describe_error(error: BaseException) -> str:
     return text or f"unexpected failure ({type(error).__name__})"
 
 
+def with_extension(path: str, ext: str, others=()) -> str:
+    """`path` ending in `ext` (".ply"): already so, unchanged; ending in one of `others` (the other
+    formats the same file browser writes, ".obj"), that extension replaced, so switching the format
+    renames x.obj to x.ply instead of x.obj.ply; else `ext` appended. Case-insensitive."""
+    root, old = os.path.splitext(path)
+    if old.lower() == ext.lower():
+        return path
+    if old.lower() in {o.lower() for o in others}:
+        return root + ext
+    return path + ext
+
+
 def wrap_message(text: str, width: int = 60) -> list[str]:
     """A message as lines of at most `width` characters for a popup, nothing cut: the lines hold
     every character of the message in order, only the spaces where lines break dropped; a word

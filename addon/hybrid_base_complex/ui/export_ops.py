@@ -38,8 +38,11 @@ class _ExportOnActiveMesh(_Reporting, ExportHelper):
         context.window_manager.fileselect_add(self)
         return {"RUNNING_MODAL"}
 
+    #: The extensions of the operator's other formats, replaced when the format changes.
+    other_suffixes = ()  # no annotation: Blender would take it for a property
+
     def check(self, context):
-        path = bpy.path.ensure_ext(self.filepath, self.suffix())
+        path = P.with_extension(self.filepath, self.suffix(), self.other_suffixes)
         changed, self.filepath = path != self.filepath, path
         return changed
 
@@ -83,6 +86,7 @@ class HBC_OT_export_layer(_ExportOnActiveMesh, bpy.types.Operator):
     filter_glob: StringProperty(default="*.obj;*.ply", options={"HIDDEN"})
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
     format: EnumProperty(name="Format", items=[("OBJ", "OBJ", "Wavefront OBJ"), ("PLY", "PLY", "Stanford PLY")])
+    other_suffixes = tuple("." + fmt.lower() for fmt in E.LAYER_FORMATS)
 
     def suffix(self) -> str:
         return "." + self.format.lower()
@@ -90,7 +94,7 @@ class HBC_OT_export_layer(_ExportOnActiveMesh, bpy.types.Operator):
     def execute(self, context):
         root = active_root(context)
         log = make_log(context)
-        path = bpy.path.ensure_ext(bpy.path.abspath(self.filepath), self.suffix())
+        path = P.with_extension(bpy.path.abspath(self.filepath), self.suffix(), self.other_suffixes)
         try:
             n = E.export_layer(context, root, self.layer, path, self.format)
         except Exception as e:  # noqa: BLE001

@@ -162,6 +162,17 @@ def test_refused_cell_names_the_importers_own_option():
         '(use --skip-invalid) (tick "Skip invalid cells" in the import options to load the other cells)')
 
 
+def test_with_extension_follows_the_format():
+    """The layer export's file name when its format changes: x.obj becomes x.ply, not x.obj.ply."""
+    others = (".obj", ".ply")
+    assert P.with_extension("/d/x.obj", ".ply", others) == "/d/x.ply"
+    assert P.with_extension("/d/x.ply", ".obj", others) == "/d/x.obj"
+    assert P.with_extension("/d/x.PLY", ".ply", others) == "/d/x.PLY"
+    assert P.with_extension("/d/x", ".ply", others) == "/d/x.ply"
+    assert P.with_extension("/d/x.v2", ".ply", others) == "/d/x.v2.ply"  # not a format's: kept
+    assert P.with_extension("/d/x.obj", ".vtu") == "/d/x.obj.vtu"  # no other format: appended
+
+
 def test_sheet_order_and_placement():
     types, cells = [3, 0, 2, 0], [5, 9, 9, 1]
     assert P.sheet_order(types, cells, "INDEX") == [0, 1, 2, 3]
