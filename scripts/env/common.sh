@@ -23,6 +23,7 @@ HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3
   python3-pybind11 libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev
   libbenchmark-dev blender libpugixml-dev zlib1g-dev python3-meshio libcli11-dev nlohmann-json3-dev
   python3-venv ccache openfoam openfoam-examples
+  xvfb xauth  # Blender with its window: the add-on's window test (tests/addon/window), panel_screenshot.py
   nodejs  # the web viewer's build and its browser tests (tests/web/; npm comes with it or as Debian's npm)
   python3-matplotlib chromium  # hbc compare's report.html: its plots; the browser test
   emscripten libfast-float-dev)  # the WebAssembly build (scripts/build_wasm.sh, docs/wasm.md)

@@ -221,7 +221,7 @@ NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
 def build_into(tx, root, layer, s, st):
     """Builds a layer and returns its collection: the existing layer, rebuilt in place (its
     objects refilled, see scene.Transaction), else a new unlinked collection (registered in tx).
-    `root` is the mesh's collection, or (blender_scripts/figures/render.py, which links the result
+    `root` is the mesh's collection, or (figures/render.py, which links the result
     itself) a name: then the layer is always new."""
     name = root if isinstance(root, str) else root.name
     coll = None if isinstance(root, str) else S.find_layer(root, layer)

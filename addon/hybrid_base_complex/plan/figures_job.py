@@ -1,7 +1,9 @@
-"""The panel's "Render figures": the figure pipeline (blender_scripts/render_figures.py) run on a
-mesh file in a separate Blender process, so the window stays responsive; the operator polls it.
-No ``bpy`` here: where the script is, the command line, and a job that reads the process's output
-line by line without blocking (a reader thread) and can be cancelled."""
+"""The panel's "Render figures": the add-on's own figure script (figures/render_figures.py, shipped
+inside the add-on package) run on a mesh file in a separate Blender process, so the window stays
+responsive; the operator polls it. No ``bpy`` here: where the script is and whether it can run
+(asked before the user is asked anything), the command line and environment of the child, and a job
+that reads the process's output line by line without blocking (a reader thread) and can be
+cancelled."""
 
 from __future__ import annotations
 
@@ -10,48 +12,43 @@ import queue
 import subprocess
 import threading
 
-SCRIPT = os.path.join("blender_scripts", "render_figures.py")
+#: The figure script's entry file, inside the add-on package (figures/render_figures.py).
+SCRIPT = os.path.join("figures", "render_figures.py")
 #: The panels render_figures.py renders by default, plus its contact sheet: one "wrote" line each.
 DEFAULT_FILES = 8
 
 
-def _source_of_build(folder: str):
-    """The source folder of the CMake build tree holding `folder` (its CMakeCache.txt says), if any."""
-    cache = os.path.join(folder, "CMakeCache.txt")
-    if not os.path.isfile(cache):
-        return None
-    with open(cache, encoding="utf-8", errors="replace") as f:
-        for line in f:
-            if line.startswith("CMAKE_HOME_DIRECTORY:"):
-                return line.split("=", 1)[1].strip()
+def find_script(addon_dir: str):
+    """The entry file of the figures shipped in the add-on package at `addon_dir`, or None when
+    this copy of the add-on lacks it (a damaged install)."""
+    path = os.path.join(os.path.abspath(addon_dir), SCRIPT)
+    return path if os.path.isfile(path) else None
+
+
+def problem(addon_dir: str, blender: str, python: str, module_problem=None):
+    """Why *Figures* cannot run here, in words for the user, or None: the script is missing from the
+    add-on, the compiled hbc module does not import (`module_problem`: plan.native's sentence),
+    or there is no Blender to start (`blender`, the running Blender's executable; empty for the
+    bpy module, whose `python` runs the script instead)."""
+    if find_script(addon_dir) is None:
+        return (f"Cannot render figures: this add-on has no {SCRIPT.replace(os.sep, '/')} "
+                f"(in {os.path.abspath(addon_dir)}); install the add-on again from its zip")
+    if module_problem:
+        return f"Cannot render figures: {module_problem}"
+    child = blender or python
+    if not child or not os.path.isfile(child) or not os.access(child, os.X_OK):
+        return (f"Cannot render figures: no {'Blender executable' if blender or not python else 'Python'} "
+                f"to run them in ({child or 'none given'})")
     return None
 
 
-def find_script(addon_dir: str, env=os.environ):
-    """render_figures.py: $HBC_FIGURES_SCRIPT, else in the source tree the add-on was built or
-    copied from (the add-on is assembled in <build>/addon/, the script lives in the sources);
-    None when the add-on was installed without them."""
-    given = env.get("HBC_FIGURES_SCRIPT")
-    if given:
-        return given if os.path.isfile(given) else None
-    folder = os.path.abspath(addon_dir)
-    while True:
-        for root in (folder, _source_of_build(folder)):
-            if root and os.path.isfile(os.path.join(root, SCRIPT)):
-                return os.path.join(root, SCRIPT)
-        parent = os.path.dirname(folder)
-        if parent == folder:
-            return None
-        folder = parent
-
-
-def command(blender: str, python: str, script: str, mesh: str, out: str, addon_dir: str, engine="cycles",
+def command(blender: str, python: str, script: str, mesh: str, out: str, engine="cycles",
             resolution=(640, 480), samples=None, sheet=None, subsheet_rule=None):
     """The command line: Blender's executable runs the script in background mode; with Blender as a
-    Python module (no executable: blender is empty) that module's Python runs it directly.
-    subsheet_rule: the rule the child analyzes by (the panel's Subsheets setting)."""
-    args = [mesh, "--out", out, "--addon", addon_dir, "--engine", engine,
-            "--resolution", str(resolution[0]), str(resolution[1])]
+    Python module (no executable: blender is empty) that module's Python runs it directly. The
+    script renders with the add-on package it belongs to. subsheet_rule: the rule the child
+    analyzes by (the panel's Subsheets setting)."""
+    args = [mesh, "--out", out, "--engine", engine, "--resolution", str(resolution[0]), str(resolution[1])]
     if samples:
         args += ["--samples", str(samples)]
     if sheet is not None:
@@ -61,6 +58,22 @@ def command(blender: str, python: str, script: str, mesh: str, out: str, addon_d
     if blender:
         return [blender, "-b", "--factory-startup", "--python-exit-code", "1", "--python", script, "--", *args]
     return [python, script, *args]
+
+
+def child_env(environ, python: str, hbc_file: str, addon_dir: str) -> dict:
+    """The child's environment. Debian's Blender takes its Python from the first python3 on PATH:
+    this one's (`python`) goes first. When the hbc module is not the copy bundled in the add-on
+    (the extension installs it from a wheel into a folder Blender adds to sys.path only for enabled
+    extensions, which a --factory-startup child has none of), the folder it was imported from goes
+    on PYTHONPATH, so the child imports the same module."""
+    env = dict(environ)
+    if python:
+        env["PATH"] = os.path.dirname(python) + os.pathsep + environ.get("PATH", "")
+    package = os.path.dirname(os.path.abspath(hbc_file))
+    if os.path.dirname(package) != os.path.abspath(addon_dir):
+        where = os.path.dirname(package)
+        env["PYTHONPATH"] = os.pathsep.join(p for p in (where, environ.get("PYTHONPATH", "")) if p)
+    return env
 
 
 class Job:

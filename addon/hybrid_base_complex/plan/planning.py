@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import colorsys
 import os
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -476,13 +477,36 @@ def table1_text(name: str, stats: dict, fmt: str = "MARKDOWN") -> str:
 # ---------------------------------------------------------------------------------------------
 # Words for the panel
 
+#: The remedy the library adds to an error about a cell it refuses (hbc/check.hpp kSkipInvalidHint)
+#: names the command line's and Python's option; a Blender user has the importer's own instead.
+SKIP_INVALID_HINT = re.compile(r"--skip-invalid, in Python skip_invalid=True, loads the other cells")
+SKIP_INVALID_REMEDY = 'tick "Skip invalid cells" in the import options to load the other cells'
+
+
 def describe_error(error: BaseException) -> str:
     """What a failure says to a user: the message itself (hbc's name the file, the line and what
-    was expected), never the Python class; the class only when there is no message at all."""
+    was expected), never the Python class; the class only when there is no message at all. A
+    refused cell's remedy is the importer's *Skip invalid cells* option, in place of the options
+    of the command line and of Python the library's message names."""
     text = str(error).strip()
     if isinstance(error, OSError) and error.filename and error.strerror:
         text = f"{error.filename}: {error.strerror}"
+    if "--skip-invalid" in text or "skip_invalid=True" in text:
+        named = SKIP_INVALID_HINT.sub(SKIP_INVALID_REMEDY, text)
+        text = named if named != text else f"{text} ({SKIP_INVALID_REMEDY})"
     return text or f"unexpected failure ({type(error).__name__})"
+
+
+def with_extension(path: str, ext: str, others=()) -> str:
+    """`path` ending in `ext` (".ply"): already so, unchanged; ending in one of `others` (the other
+    formats the same file browser writes, ".obj"), that extension replaced, so switching the format
+    renames x.obj to x.ply instead of x.obj.ply; else `ext` appended. Case-insensitive."""
+    root, old = os.path.splitext(path)
+    if old.lower() == ext.lower():
+        return path
+    if old.lower() in {o.lower() for o in others}:
+        return root + ext
+    return path + ext
 
 
 def wrap_message(text: str, width: int = 60) -> list[str]:
@@ -569,7 +593,7 @@ def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_he
            has_non_hex_blocks=True, highlights=None, wire_by_kind=False):
     """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
     edge means (the swatch gives the colour, the words what it marks). The add-on's Legend panel and
-    the figure script's legend strip (blender_scripts/figures) both show exactly this.
+    the figure script's legend strip (figures/) both show exactly this.
     highlights: the sheet highlights drawn (keys of SHEET_HIGHLIGHTS), None for all of them.
     wire_by_kind: the wireframes (the wireframe layer, the subsheets' wireframes) are coloured by
     non-hex kind; the palette's class colours mean nothing beyond telling chains apart."""

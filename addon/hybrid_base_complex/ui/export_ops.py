@@ -1,7 +1,7 @@
 """Export operators of the panel: the active mesh's analysis as VTU (the library's writer), a
 built layer as OBJ or PLY (Blender's exporters, blender/export.py says why), and its figures
-(render_figures.py in a separate Blender process, polled by a modal operator). All write files
-only: no undo step, and a failure reports what went wrong and cancels."""
+(the add-on's own figures/render_figures.py in a separate Blender process, polled by a modal
+operator). All write files only: no undo step, and a failure reports what went wrong and cancels."""
 
 from __future__ import annotations
 
@@ -17,6 +17,7 @@ from ..blender import export as E
 from ..blender import sources
 from ..blender.context import active_root, structure_of, subsheet_rule
 from ..plan import figures_job
+from ..plan import native
 from ..plan import planning as P
 from .operators import LAYER_ITEMS, _Reporting, make_log
 
@@ -37,8 +38,11 @@ class _ExportOnActiveMesh(_Reporting, ExportHelper):
         context.window_manager.fileselect_add(self)
         return {"RUNNING_MODAL"}
 
+    #: The extensions of the operator's other formats, replaced when the format changes.
+    other_suffixes = ()  # no annotation: Blender would take it for a property
+
     def check(self, context):
-        path = bpy.path.ensure_ext(self.filepath, self.suffix())
+        path = P.with_extension(self.filepath, self.suffix(), self.other_suffixes)
         changed, self.filepath = path != self.filepath, path
         return changed
 
@@ -82,6 +86,7 @@ class HBC_OT_export_layer(_ExportOnActiveMesh, bpy.types.Operator):
     filter_glob: StringProperty(default="*.obj;*.ply", options={"HIDDEN"})
     layer: EnumProperty(name="Layer", items=LAYER_ITEMS)
     format: EnumProperty(name="Format", items=[("OBJ", "OBJ", "Wavefront OBJ"), ("PLY", "PLY", "Stanford PLY")])
+    other_suffixes = tuple("." + fmt.lower() for fmt in E.LAYER_FORMATS)
 
     def suffix(self) -> str:
         return "." + self.format.lower()
@@ -89,7 +94,7 @@ class HBC_OT_export_layer(_ExportOnActiveMesh, bpy.types.Operator):
     def execute(self, context):
         root = active_root(context)
         log = make_log(context)
-        path = bpy.path.ensure_ext(bpy.path.abspath(self.filepath), self.suffix())
+        path = P.with_extension(bpy.path.abspath(self.filepath), self.suffix(), self.other_suffixes)
         try:
             n = E.export_layer(context, root, self.layer, path, self.format)
         except Exception as e:  # noqa: BLE001
@@ -97,9 +102,13 @@ class HBC_OT_export_layer(_ExportOnActiveMesh, bpy.types.Operator):
         return self.finish_with(f"Wrote {P.LAYER_TITLES[self.layer]} ({n} objects) to {path}", log)
 
 
-def _figures_script():
-    """render_figures.py beside the add-on's sources, or None (plan/figures_job.py)."""
-    return figures_job.find_script(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+#: The add-on package's folder: the figures it ships (figures/render_figures.py) are found there.
+ADDON_DIR = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def _figures_problem():
+    """Why the figures cannot run in this Blender (plan/figures_job.py), or None."""
+    return figures_job.problem(ADDON_DIR, bpy.app.binary_path, sys.executable, native.module_problem())
 
 
 class HBC_OT_render_figures(_Reporting, bpy.types.Operator):
@@ -126,30 +135,30 @@ class HBC_OT_render_figures(_Reporting, bpy.types.Operator):
 
     @classmethod
     def description(cls, context, properties):
-        if _figures_script() is None:
-            return ("Cannot render figures: blender_scripts/render_figures.py is not beside this add-on "
-                    "(set HBC_FIGURES_SCRIPT to its path)")
-        return cls.__doc__
+        return _figures_problem() or cls.__doc__
 
     def invoke(self, context, event):
+        # Checked before the file browser opens: nobody picks a folder and an engine for nothing.
+        why = _figures_problem()
+        if why:
+            self.report({"ERROR"}, why)
+            return {"CANCELLED"}
         context.window_manager.fileselect_add(self)
         return {"RUNNING_MODAL"}
 
     def execute(self, context):
         root = active_root(context)
-        script = _figures_script()
-        if script is None:
-            self.report({"ERROR"}, "blender_scripts/render_figures.py not found: set HBC_FIGURES_SCRIPT to its path")
+        why = _figures_problem()
+        if why:
+            self.report({"ERROR"}, why)
             return {"CANCELLED"}
         try:
             mesh = sources.resolve(root)
             out = bpy.path.abspath(self.directory) or os.path.dirname(mesh)
-            addon_dir = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-            cmd = figures_job.command(bpy.app.binary_path, sys.executable, script, mesh, out, addon_dir,
-                                      self.engine, (self.width, self.height), self.samples,
+            cmd = figures_job.command(bpy.app.binary_path, sys.executable, figures_job.find_script(ADDON_DIR), mesh,
+                                      out, self.engine, (self.width, self.height), self.samples,
                                       subsheet_rule=subsheet_rule(context.scene))
-            # The child Blender takes its Python from the first python3 on PATH: this one's.
-            env = dict(os.environ, PATH=os.path.dirname(sys.executable) + os.pathsep + os.environ.get("PATH", ""))
+            env = figures_job.child_env(os.environ, sys.executable, native.import_hbc().__file__, ADDON_DIR)
             self._job = figures_job.Job(cmd, env=env)
         except Exception as e:  # noqa: BLE001
             return self.cancel_with(context, e)

@@ -33,15 +33,16 @@ LAYER_ITEMS = [(k, title, f"Build the {title.lower()} layer") for k, title in P.
 
 
 def make_log(context):
-    """Progress messages: printed in background mode, shown in the header otherwise."""
+    """Progress messages: printed on the terminal always (the user guide asks for those `hbc:` lines
+    in a report, from the window as from background mode), and in a window shown in the status bar
+    too."""
     def log(msg):
-        if bpy.app.background:
-            print(msg, flush=True)
-        else:
+        print(msg, flush=True)
+        if not bpy.app.background:
             try:
                 context.workspace.status_text_set(msg)
             except (AttributeError, RuntimeError):
-                print(msg)
+                pass  # no workspace to show it in (a script's context): the terminal has it
     return log
 
 
@@ -114,6 +115,7 @@ class _Reporting:
         if prog is not None:
             prog.end(context)
         text = P.describe_error(error)
+        print(f"hbc: failed: {text}", flush=True)  # on the terminal with the steps before it
         self.report({"ERROR"}, "\n".join(P.wrap_message(text)) if wrap and not bpy.app.background else text)
         return {"CANCELLED"}
 

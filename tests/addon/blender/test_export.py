@@ -72,6 +72,18 @@ def test_layer_as_obj_and_ply(clean_scene, data_dir, tmp_path, fmt, count):
     assert expected > 0 and count(out) == expected
 
 
+def test_the_extension_follows_the_format(clean_scene, data_dir, tmp_path):
+    """The file browser keeps the name typed for the first format: switched to PLY, blocks.obj is
+    written as blocks.ply (a PLY file), not blocks.obj.ply; and back."""
+    import_teapot(data_dir)
+    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert bpy.ops.hbc.export_layer(filepath=str(tmp_path / "blocks.obj"), layer="blocks", format="PLY") == {"FINISHED"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["blocks.ply"]
+    assert (tmp_path / "blocks.ply").read_bytes().startswith(b"ply")
+    assert bpy.ops.hbc.export_layer(filepath=str(tmp_path / "other.ply"), layer="blocks", format="OBJ") == {"FINISHED"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["blocks.ply", "other.obj"]
+
+
 def test_unbuilt_layer_cancels(clean_scene, data_dir, tmp_path):
     import_teapot(data_dir)
     with pytest.raises(RuntimeError, match="not built"):

@@ -1,9 +1,10 @@
-"""The panel's "Render figures": render_figures.py run on the active mesh in a separate Blender
-(the same one: its executable, or the bpy module's Python) into the chosen folder. In background
-mode the operator waits for the process; the window's modal polling and Esc are the same Job
-(tests/addon/unit/test_figures_job.py)."""
+"""The panel's "Render figures": the add-on's own figure script (figures/render_figures.py, shipped
+in the package) run on the active mesh in a separate Blender (the same one: its executable, or the
+bpy module's Python) into the chosen folder. In background mode the operator waits for the
+process; the window's modal polling and Esc are the same Job (tests/addon/unit/test_figures_job.py).
+The same from an installed zip, and the refusal before the file browser when the script is
+missing: test_installed_figures.py."""
 import bpy
-import pytest
 
 
 def test_figures_of_the_active_mesh(clean_scene, data_dir, tmp_path):
@@ -15,11 +16,3 @@ def test_figures_of_the_active_mesh(clean_scene, data_dir, tmp_path):
     # Every default panel (a-g: twistcube_s has self-intersecting sheets) and the contact sheet.
     pngs = sorted(p.name for p in out.glob("*.png"))
     assert "twistcube_s_contact.png" in pngs and len(pngs) == 8, pngs
-
-
-def test_missing_script_cancels_with_its_remedy(clean_scene, data_dir, tmp_path, monkeypatch):
-    monkeypatch.setenv("HBC_FIGURES_SCRIPT", str(tmp_path / "nowhere.py"))
-    assert bpy.ops.import_mesh.hbc(filepath=str(data_dir / "hybrid-base-complex" / "teapot.hedra")) == {"FINISHED"}
-    with pytest.raises(RuntimeError, match="HBC_FIGURES_SCRIPT"):
-        bpy.ops.hbc.render_figures(directory=str(tmp_path), wait=True)
-    assert not list(tmp_path.glob("*.png"))

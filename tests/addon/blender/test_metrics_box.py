@@ -257,7 +257,6 @@ def test_figures_run_with_the_panel_rule(clean_scene, data_dir, tmp_path, monkey
             return 0
 
     monkeypatch.setattr(figures_job, "Job", FakeJob)
-    monkeypatch.setenv("HBC_FIGURES_SCRIPT", __file__)
     assert bpy.ops.hbc.render_figures(directory=str(tmp_path), wait=True) == {"FINISHED"}
     (cmd,) = seen
     assert cmd[cmd.index("--subsheet-rule") + 1] == "fewest"

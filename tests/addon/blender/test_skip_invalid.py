@@ -1,7 +1,8 @@
 """The import operator's "Skip invalid cells" option (docs/check.md) on the hand-written file with
 one defect of each class (tests/data/check/defects.HYBRID, its report derived in
-tests/cpp/test_check.cpp): refused without it, with the option named; imported with it, the five
-refused cells dropped and said in the report, and read again the same way."""
+tests/cpp/test_check.cpp): refused without it, naming the importer's own option (not the command
+line's or Python's); imported with it, the five refused cells dropped and said in the report, and
+read again the same way."""
 import pathlib
 
 import bpy
@@ -11,8 +12,11 @@ DEFECTS = pathlib.Path(__file__).resolve().parents[2] / "data" / "check" / "defe
 
 
 def test_refused_without_the_option(clean_scene):
-    with pytest.raises(RuntimeError, match="skip_invalid"):
+    """The refusal names the importer's own option, not the command line's or Python's."""
+    with pytest.raises(RuntimeError, match='tick "Skip invalid cells" in the import options') as refused:
         bpy.ops.import_mesh.hbc(filepath=str(DEFECTS))
+    assert "defects.HYBRID" in str(refused.value)
+    assert "--skip-invalid" not in str(refused.value) and "skip_invalid=True" not in str(refused.value)
 
 
 def test_imported_with_the_option(clean_scene):

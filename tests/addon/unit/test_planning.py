@@ -140,6 +140,39 @@ def test_describe_error_and_subsheet_reason():
     assert P.subsheets_unavailable(None) == "Pick a sheet in the list first"
 
 
+def test_refused_cell_names_the_importers_own_option():
+    """The library's error about a refused cell (the real one, on the hand-written file with a
+    defect of each class) names `--skip-invalid` and `skip_invalid=True`; the add-on says it with
+    the importer's own *Skip invalid cells* option instead, the rest of the message unchanged."""
+    import pathlib
+
+    import hbc
+
+    defects = pathlib.Path(__file__).resolve().parents[2] / "data" / "check" / "defects.HYBRID"
+    with pytest.raises(hbc.MeshFormatError) as refused:
+        hbc.load(str(defects))
+    library = str(refused.value)
+    assert "--skip-invalid" in library and "skip_invalid=True" in library  # what the CLI and Python say
+    text = P.describe_error(refused.value)
+    assert '"Skip invalid cells"' in text and "import options" in text, text
+    assert "--skip-invalid" not in text and "skip_invalid" not in text, text
+    assert text.split(" (`hbc check")[0] == library.split(" (`hbc check")[0]  # file, line and defect kept
+    # A wording the add-on does not know still gets the remedy, after the library's.
+    assert P.describe_error(ValueError("f:1: bad cell (use --skip-invalid)")).endswith(
+        '(use --skip-invalid) (tick "Skip invalid cells" in the import options to load the other cells)')
+
+
+def test_with_extension_follows_the_format():
+    """The layer export's file name when its format changes: x.obj becomes x.ply, not x.obj.ply."""
+    others = (".obj", ".ply")
+    assert P.with_extension("/d/x.obj", ".ply", others) == "/d/x.ply"
+    assert P.with_extension("/d/x.ply", ".obj", others) == "/d/x.obj"
+    assert P.with_extension("/d/x.PLY", ".ply", others) == "/d/x.PLY"
+    assert P.with_extension("/d/x", ".ply", others) == "/d/x.ply"
+    assert P.with_extension("/d/x.v2", ".ply", others) == "/d/x.v2.ply"  # not a format's: kept
+    assert P.with_extension("/d/x.obj", ".vtu") == "/d/x.obj.vtu"  # no other format: appended
+
+
 def test_sheet_order_and_placement():
     types, cells = [3, 0, 2, 0], [5, 9, 9, 1]
     assert P.sheet_order(types, cells, "INDEX") == [0, 1, 2, 3]

@@ -23,10 +23,11 @@ bpy = pytest.importorskip("bpy")
 
 ROOT = pathlib.Path(__file__).resolve().parents[3]
 SCRIPT = ROOT / "blender_scripts" / "render_figures.py"
-sys.path.insert(0, str(ROOT / "blender_scripts"))
-from figures import compose as C  # noqa: E402
-from figures import plan  # noqa: E402
-from figures.render import load_png  # noqa: E402
+if os.environ.get("HBC_ADDON_DIR"):  # the figure code ships in the add-on: the built one's
+    sys.path.insert(0, str(pathlib.Path(os.environ["HBC_ADDON_DIR"]).parent))
+from hybrid_base_complex.figures import compose as C  # noqa: E402
+from hybrid_base_complex.figures import plan  # noqa: E402
+from hybrid_base_complex.figures.render import load_png  # noqa: E402
 
 W, H = 160, 120
 MIN_STD = 0.02  # RGB standard deviation of a panel: a blank (background only) image gives 0

@@ -12,7 +12,7 @@ import pytest
 pytest.importorskip("bpy")
 
 from test_render_figures import data, load, run  # noqa: E402
-from figures import plan  # noqa: E402
+from hybrid_base_complex.figures import plan  # noqa: E402
 
 W, H = 320, 240
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from figures import compose as C
+from hybrid_base_complex.figures import compose as C
 
 
 def tile(w, h, value):
@@ -90,7 +90,7 @@ def test_linear_to_srgb():
 
 
 def test_legend_strip_draws_framed_swatches_and_words():
-    from figures import plan
+    from hybrid_base_complex.figures import plan
 
     m = plan.LegendMetrics(row=20, swatch=12, gap=5, column_gap=22, margin=8)
     words = [tile(30, 20, 0.1), tile(50, 20, 0.2)]

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from figures import plan
+from hybrid_base_complex.figures import plan
 
 
 def test_parse_defaults_and_panels():

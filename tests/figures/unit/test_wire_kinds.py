@@ -1,7 +1,7 @@
 """The figures' colouring of the wireframes by non-hex kind, without Blender: the option, and the
 legend each wireframe panel then gets (the add-on's planning.legend, the one definition)."""
 
-from figures import plan
+from hybrid_base_complex.figures import plan
 from hybrid_base_complex.plan import planning as P
 
 FACTS = {"non_hex_types": [1, 2, 4], "valences": [3, 5], "has_pseudo": True, "has_non_manifold": False,

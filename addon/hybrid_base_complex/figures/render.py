@@ -13,6 +13,13 @@ import types
 import bpy
 import numpy as np
 
+# Aliased: `scene` and `compat` are also the parameter names of the studio functions below.
+from ..blender import compat as compat_module
+from ..blender import inspect as inspect_module
+from ..blender import layers as layers_module
+from ..blender import scene as scene_module
+from ..plan import inspection, planning, session, structure
+from ..ui import properties
 from . import compose as C
 from . import plan
 
@@ -34,30 +41,20 @@ def srgb_to_linear(v):
 # The add-on
 
 class Addon:
-    """The add-on's modules, imported from its package folder (no registration needed: the
-    layer builders take a plain settings object)."""
+    """The add-on's modules the figures use (no registration needed: the layer builders take a
+    plain settings object). The figures are part of the add-on package, so these are the very
+    modules of the add-on they were shipped in."""
 
-    def __init__(self, folder):
-        import importlib
-        import sys
-
-        folder = os.path.abspath(folder)
-        if not os.path.isfile(os.path.join(folder, "__init__.py")):
-            raise FileNotFoundError(f"no add-on package at {folder} (build the 'addon' target)")
-        parent, name = os.path.split(folder)
-        if parent not in sys.path:
-            sys.path.insert(0, parent)
-        pkg = importlib.import_module(name)
-        self.pkg = pkg
-        self.P = importlib.import_module(name + ".plan.planning")
-        self.session = importlib.import_module(name + ".plan.session")
-        self.structure = importlib.import_module(name + ".plan.structure")
-        self.inspection = importlib.import_module(name + ".plan.inspection")
-        self.compat = importlib.import_module(name + ".blender.compat")
-        self.S = importlib.import_module(name + ".blender.scene")
-        self.L = importlib.import_module(name + ".blender.layers")
-        self.inspect = importlib.import_module(name + ".blender.inspect")
-        self.properties = importlib.import_module(name + ".ui.properties")
+    def __init__(self):
+        self.P = planning
+        self.session = session
+        self.structure = structure
+        self.inspection = inspection
+        self.compat = compat_module
+        self.S = scene_module
+        self.L = layers_module
+        self.inspect = inspect_module
+        self.properties = properties
 
     def settings(self, **overrides):
         """The panel's settings with the add-on's defaults (read from its property definitions)."""
@@ -69,14 +66,6 @@ class Addon:
         d.setdefault("wireframe_scope", "MESH")
         d.update(overrides)
         return types.SimpleNamespace(**d)
-
-
-def default_addon_dir():
-    env = os.environ.get("HBC_ADDON_DIR")
-    if env:
-        return env
-    repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    return os.path.join(repo, "build", "addon", "hybrid_base_complex")
 
 
 # ---------------------------------------------------------------------------------------------

@@ -91,8 +91,9 @@ def parser():
                     help="colour the VSG wireframes by partial-parallel class (the paper's) or by the non-hex "
                          "kinds of their chains (the cell types they end at or run beside)")
     ap.add_argument("--addon", default=None,
-                    help="the add-on package folder (default: $HBC_ADDON_DIR, else <repo>/build/addon/"
-                         "hybrid_base_complex)")
+                    help="blender_scripts/render_figures.py: the add-on whose figures run (default: "
+                         "$HBC_ADDON_DIR, else <repo>/build/addon/hybrid_base_complex); the add-on's own "
+                         "figures/render_figures.py runs its own package")
     ap.add_argument("--blend", action="store_true", help="also save the scene as a .blend next to the images")
     ap.add_argument("--legend", action="store_true",
                     help="add under every panel a strip of colour swatches with words for what it shows (the "
