@@ -152,10 +152,11 @@ MESHIO_NAME = {12: "hexahedron", 10: "tetra", 13: "wedge", 14: "pyramid"}
 
 
 # The outward faces of VTK's cells in VTK's corner order (vtkTetra, vtkHexahedron, vtkWedge,
-# vtkPyramid): a cell of positive orientation in VTK's convention has a positive volume over them.
+# vtkPyramid of VTK 9.7; older VTK documented the wedge mirrored): a cell of positive orientation
+# in VTK's convention has a positive volume over them. tests/vtk compares with VTK itself.
 VTK_FACES = {10: [(0, 1, 3), (1, 2, 3), (2, 0, 3), (0, 2, 1)],
              12: [(0, 4, 7, 3), (1, 2, 6, 5), (0, 1, 5, 4), (3, 7, 6, 2), (0, 3, 2, 1), (4, 5, 6, 7)],
-             13: [(0, 1, 2), (3, 5, 4), (0, 3, 4, 1), (1, 4, 5, 2), (2, 5, 3, 0)],
+             13: [(0, 2, 1), (3, 4, 5), (0, 1, 4, 3), (1, 2, 5, 4), (2, 0, 3, 5)],
              14: [(0, 3, 2, 1), (0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)]}
 
 

@@ -53,8 +53,9 @@
 // as does a corner where fewer than 3 faces of the cell meet (a flat or folded cell; the vertex is
 // then non-manifold). A cell is inverted when q < 0.
 //
-// Edge ratio: longest / shortest edge of the cell (Verdict's hex, tet and wedge edge ratio, the
-// same rule for the other types); +infinity for a cell with a zero-length edge; >= 1.
+// Edge ratio: longest / shortest edge of the cell (Verdict's tet and wedge edge ratio, the same
+// rule for the other types; Verdict's hex_edge_ratio takes the longest of its first six edges
+// only, docs/metrics.md); +infinity for a cell with a zero-length edge; >= 1.
 #include <array>
 #include <cstdint>
 #include <vector>

@@ -3,8 +3,9 @@
 //
 // OUT.vtu holds the cells, each as its own VTK type: hexahedra VTK_HEXAHEDRON (12), prisms
 // VTK_WEDGE (13), pyramids VTK_PYRAMID (14), tetrahedra VTK_TETRA (10), in VTK's corner order and
-// with a positive volume in VTK's convention; only general polyhedra as VTK_POLYHEDRON (42) with
-// outward faces (meshio 5 cannot read a file mixing 42 with other types; VTK and ParaView can) with
+// with a positive volume in VTK's convention (VTK 9.7's vtkCellSizeFilter and vtkMeshQuality:
+// tests/vtk); only general polyhedra as VTK_POLYHEDRON (42) with outward faces (meshio 5 cannot
+// read a file mixing 42 with other types; VTK and ParaView can) with
 //   cell data  component   Int32  base-complex component id
 //              is_hex      UInt8  1 for a hexahedron
 //              cell_type   UInt8  hbc's CellType: 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron

@@ -101,8 +101,13 @@ bool vtk_corners(const Mesh& m, size_t c, std::vector<int64_t>& conn, uint8_t& v
     cell_face_loop(m, c, i, base);
     if (want == 0 || base.size() == want) break;
   }
-  // vtkWedge's triangle 0-1-2 faces out of the cell; the other types' base faces into it.
-  if (t != CellType::Prism) std::reverse(base.begin(), base.end());
+  // In VTK the base of every type faces into the cell: hexahedron 0-1-2-3 towards 4-5-6-7, tetra
+  // 0-1-2 and pyramid 0-1-2-3 towards the apex, wedge 0-1-2 towards 3-4-5 (vtkWedge's reference
+  // cell; VTK 9.7's vtkMeshQuality and vtkCellSizeFilter rate the mirror image as inverted, though
+  // older VTK documentation and meshio say the wedge's triangle faces out). A wedge keeps its first
+  // corner: its corners differ from the mirror image written before only by swapping 1 with 2 and
+  // 4 with 5, and they read back into the same face loops as those did.
+  std::reverse(base.begin() + (t == CellType::Prism ? 1 : 0), base.end());
   conn.assign(base.begin(), base.end());
   if (t == CellType::Tet || t == CellType::Pyramid) {
     std::vector<int32_t> vs;

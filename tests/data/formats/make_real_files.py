@@ -22,12 +22,13 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "real")
 
-# Outward faces of VTK's hexahedron and wedge in their own corner orders (vtkHexahedron, vtkWedge).
+# Outward faces of VTK's hexahedron and of meshio's VTK wedge (the mirror image of VTK 9.7's
+# vtkWedge, after VTK's older documentation) in their corner orders.
 VTK_FACES = {
     "hexahedron": [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]],
     "wedge": [[0, 1, 2], [3, 5, 4], [0, 3, 4, 1], [1, 4, 5, 2], [2, 5, 3, 0]],
 }
-# meshio keeps wedges in gmsh's order and swaps to VTK's when writing VTK.
+# meshio keeps wedges in gmsh's order and swaps corners 1-2 and 4-5 when writing VTK.
 MESHIO_TO_VTK = {"hexahedron": [0, 1, 2, 3, 4, 5, 6, 7], "wedge": [0, 2, 1, 3, 5, 4]}
 
 

@@ -14,9 +14,11 @@ struct VtkType {
   std::array<int8_t, 8> perm;  // MEDIT corner k is VTK corner perm[k]
 };
 
+// Wedges too: in VTK's reference wedge (vtkWedge and the quadratic ones, VTK 9.7), as in MEDIT
+// and Gmsh, triangle 0-1-2 faces into the cell; VTK rates the mirror image, which older VTK
+// documentation described and meshio, Gmsh's VTK writer and foamToVTK (v1912) write, as inverted.
+// build_mesh turns such cells with their neighbours, so those files still give their mesh.
 constexpr std::array<int8_t, 8> kId{0, 1, 2, 3, 4, 5, 6, 7};
-// vtkWedge's triangle 0-1-2 faces out of the cell, MEDIT's and Gmsh's into it.
-constexpr std::array<int8_t, 8> kWedge{0, 2, 1, 3, 5, 4, 6, 7};
 // vtkVoxel numbers its corners along x, then y, then z.
 constexpr std::array<int8_t, 8> kVoxel{0, 1, 3, 2, 4, 5, 7, 6};
 
@@ -25,11 +27,11 @@ constexpr VtkType kTypes[] = {
     {4, 1, 0, Element::Tet, kId},      {5, 2, 0, Element::Tet, kId},      {6, 2, 0, Element::Tet, kId},
     {7, 2, 0, Element::Tet, kId},      {8, 2, 0, Element::Tet, kId},      {9, 2, 0, Element::Tet, kId},
     {10, 3, 4, Element::Tet, kId},     {11, 3, 8, Element::Hex, kVoxel},  {12, 3, 8, Element::Hex, kId},
-    {13, 3, 6, Element::Prism, kWedge}, {14, 3, 5, Element::Pyramid, kId}, {21, 1, 0, Element::Tet, kId},
+    {13, 3, 6, Element::Prism, kId},  {14, 3, 5, Element::Pyramid, kId}, {21, 1, 0, Element::Tet, kId},
     {22, 2, 0, Element::Tet, kId},     {23, 2, 0, Element::Tet, kId},     {24, 3, 4, Element::Tet, kId},
-    {25, 3, 8, Element::Hex, kId},     {26, 3, 6, Element::Prism, kWedge}, {27, 3, 5, Element::Pyramid, kId},
+    {25, 3, 8, Element::Hex, kId},     {26, 3, 6, Element::Prism, kId},  {27, 3, 5, Element::Pyramid, kId},
     {28, 2, 0, Element::Tet, kId},     {29, 3, 8, Element::Hex, kId},     {30, 2, 0, Element::Tet, kId},
-    {31, 3, 6, Element::Prism, kWedge}, {32, 3, 6, Element::Prism, kWedge}, {33, 3, 8, Element::Hex, kId},
+    {31, 3, 6, Element::Prism, kId},  {32, 3, 6, Element::Prism, kId},  {33, 3, 8, Element::Hex, kId},
     {34, 2, 0, Element::Tet, kId},     {35, 1, 0, Element::Tet, kId},     {36, 2, 0, Element::Tet, kId},
     {68, 1, 0, Element::Tet, kId},     {69, 2, 0, Element::Tet, kId},     {70, 2, 0, Element::Tet, kId},
 };

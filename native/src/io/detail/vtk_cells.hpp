@@ -1,8 +1,8 @@
 #pragma once
 // VTK's cell types as hbc cells, shared by the legacy .vtk and the XML .vtu readers: linear and
-// quadratic volume cells by their corners (VTK lists corners first), the voxel and the wedge turned
-// into MEDIT's corner order, VTK_POLYHEDRON (42) from its face stream; points, lines and surface
-// cells skipped and counted.
+// quadratic volume cells by their corners (VTK lists corners first; VTK's corner orders are MEDIT's
+// but for the voxel's), VTK_POLYHEDRON (42) from its face stream; points, lines and surface cells
+// skipped and counted.
 #include <cstdint>
 #include <string>
 #include <vector>
