@@ -4,7 +4,8 @@
 # 1. Cold, the headline (scripts/bench/cold_runs.py): `hbc analyze FILE --json` as a user runs it,
 #    one process per run, HBC_BENCH_RUNS (default 5) runs per case and variant, interleaved;
 #    medians (and ranges) of wall, user and kernel CPU, load, stages and peak RSS. Variants: the
-#    baseline when given, this build, and this build with HBC_HUGE_PAGES=0 (no 2 MiB page advice),
+#    baseline when given, this build (as a user runs it: no 2 MiB page advice), and this build with
+#    HBC_HUGE_PAGES=1 (the advice, opt-in),
 #    every core.
 # 2. Warm, marked as such: per case and per variant (this build with 1 and with 2 threads, and the
 #    baseline when given):
@@ -83,7 +84,7 @@ own_rss() {  # CLI THREADS: peak RSS in KB of `hbc analyze` on the one-hex mesh
     tail -1 "$D/own.rss"
   done | sort -n | head -1
 }
-cold=("--variant" "new=$HBC" "--variant" "new-no-huge-pages=HBC_HUGE_PAGES=0 $HBC")
+cold=("--variant" "new=$HBC" "--variant" "new-huge-pages=HBC_HUGE_PAGES=1 $HBC")
 [[ -n "${HBC_BENCH_BASELINE:-}" ]] && cold=("--variant" "baseline=$HBC_BENCH_BASELINE/bin/hbc" "${cold[@]}")
 echo "## Cold: one \`hbc analyze --json\` process per run, median (range) of ${HBC_BENCH_RUNS:-5}"
 echo

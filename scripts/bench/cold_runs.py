@@ -17,7 +17,7 @@ Usage:
   cold_runs.py --runs 5 --out runs.json \
       --variant baseline=/tmp/base/bin/hbc \
       --variant new=build/bin/hbc \
-      --variant 'no-huge=HBC_HUGE_PAGES=0 build/bin/hbc' \
+      --variant 'huge=HBC_HUGE_PAGES=1 build/bin/hbc' \
       CASE.mesh [CASE2.mesh ...]
 The first variant is the reference of the ratios. Prints a Markdown table; --out keeps every run.
 """

@@ -2,7 +2,8 @@
 // The loader's large arrays (tens of MB for 10^6 cells) are allocated and then filled once, often
 // by several threads. Most of the time of that first touch goes to page faults, one per 4 KiB
 // page; asking the kernel for 2 MiB pages where it grants them (transparent huge pages in
-// "madvise" mode, Linux's usual setting) takes 512 times fewer. The advice changes nothing else:
+// "madvise" mode, Linux's usual setting) takes 512 times fewer. The advice is asked for only with
+// HBC_HUGE_PAGES=1 (huge_pages.cpp says why it is not the default). It changes nothing else:
 // contents, sizes and results are the same with or without it, and it is ignored elsewhere.
 #include <cstddef>
 #include <vector>
