@@ -89,6 +89,8 @@ before(async () => {
   symlinkSync(existsSync(index) ? index : VIEWER, join(work, 'index.html'));
   symlinkSync(TEAPOT, join(work, 'teapot.hedra'));
   symlinkSync(join(ROOT, 'tests/data/formats/foam/hex2_ascii'), join(work, 'hex2_ascii'));
+  // A hex grid: every ratio of Table 1 is exactly 1.
+  hbc(['generate', 'grid', '--size', '3', '3', '2', '-o', 'grid.mesh']);
   // A small mesh with pyramids among its hexahedra: the non-hex paths of every stage.
   hbc(['generate', 'split', '--size', '4', '3', '3', '--split', 'pyramids', '--random', '5', '--seed', '7',
        '-o', 'split.mesh']);
@@ -289,4 +291,26 @@ test('a broken file shows the CLI error text with file and line; then a good fil
   assert.equal(await page.locator('#hbc-error').isVisible(), false);
   assert.deepEqual(errors, []);
   await close();
+});
+
+// Table 1 on the page against `hbc table --md` for the same file: every column but the times (the
+// page's are in whole ms of its own run) reads the same, a ratio of exactly 1 as 1.0000.
+test('Table 1 on the page prints counts and ratios as hbc table does', { timeout: 180_000 }, async () => {
+  for (const name of ['grid.mesh', 'teapot.hedra']) {
+    const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=${name}`);
+    assert.equal(await settled(page), 'ready');
+    const [head, row] = await page.evaluate(() => [...document.querySelectorAll('#table1 tr')]
+      .map((tr) => [...tr.children].map((c) => c.textContent)));
+    const md = hbc(['table', name, '--md']).trim().split('\n');
+    const timing = row.map((t) => / ms$/.test(t));
+    // The same columns in the same order (hbc table marks the times' heads " ms").
+    assert.equal(md[0], `| mesh | ${head.map((h, i) => (timing[i] ? `${h} ms` : h)).join(' | ')} |`);
+    const cli = md[2].replace(/^\| | \|$/g, '').split(' | ').slice(1);
+    assert.equal(cli.length, row.length);
+    const shown = row.filter((_, i) => !timing[i]);
+    assert.deepEqual(shown, cli.filter((_, i) => !timing[i]), name);
+    if (name === 'grid.mesh') assert.ok(shown.includes('1.0000'), `a ratio of 1 reads 1.0000: ${shown}`);
+    assert.deepEqual(errors, [], name);
+    await close();
+  }
 });

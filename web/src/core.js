@@ -89,7 +89,7 @@ export class Core {
     return list.sort((a, b) => b.length - a.length);
   }
 
-  /** Table 1's columns from the module's schema, [{key, notation, meaning, timing}], or null. */
+  /** Table 1's columns from the module's schema, [{key, notation, meaning, kind, timing}], or null. */
   table1() {
     const M = this.M;
     const t = typeof M.TABLE1_COLUMNS_json === 'function' ? M.TABLE1_COLUMNS_json()
@@ -97,7 +97,7 @@ export class Core {
     if (!t) return null;
     const rows = typeof t === 'string' ? JSON.parse(t) : t;
     return rows.map((r) => (Array.isArray(r)
-      ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}`, timing: !!r[1] }
+      ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}`, kind: r[0].kind, timing: !!r[1] }
       : { ...r, meaning: r.label && !String(r.meaning).startsWith(r.label) ? `${r.label}: ${r.meaning}` : r.meaning, timing: !!r.timing }));
   }
 

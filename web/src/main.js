@@ -4,6 +4,7 @@
 /* global __HBC_WORKER_SOURCE__ */
 import { Viewer } from './scene.js';
 import { L, css } from './colors.js';
+import { fixed } from './format.js';
 
 const $ = (id) => document.getElementById(id);
 const LAYERS = L.layers.map(([key]) => key);
@@ -312,7 +313,8 @@ function legend() {
   }
 }
 
-/** planning.table1_row: counts as integers, ratios as percentages, times in ms, missing as '-'. */
+/** Table 1 as planning.table1_row: counts as integers, times in ms, missing as '-'; ratios with the
+ *  4 decimals of `hbc table` (a ratio of exactly 1 is 1.0000, not 1). */
 function showTable1() {
   const t = $('table1');
   t.textContent = '';
@@ -336,8 +338,8 @@ function showTable1() {
     let text;
     if (v == null || (Number.isInteger(v) && v < 0)) text = '-';
     else if (c.timing) text = `${Math.round(1000 * v)} ms`;
-    else if (Number.isInteger(v)) text = String(v);
-    else text = `${(100 * v).toFixed(1)}%`;
+    else if (c.kind ? c.kind === 'count' : Number.isInteger(v)) text = String(v);
+    else text = fixed(v, 4);
     const td = document.createElement('td');
     td.textContent = text;
     row.appendChild(td);
