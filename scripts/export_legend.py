@@ -38,8 +38,13 @@ def entries(items):
 
 
 def table1():
+    """planning.table1_columns, each with its kind (count, ratio or seconds: how the page prints it,
+    as `hbc table` does) from the library's schema."""
     try:
-        return [{"key": k, "notation": n, "meaning": m, "timing": bool(t)} for k, n, m, t in P.table1_columns()]
+        # A key alone is not enough: "sheets" is a count and a time.
+        kinds = {(f.key, bool(t)): f.kind for f, t in P.native.import_hbc().TABLE1_COLUMNS}
+        return [{"key": k, "notation": n, "meaning": m, "kind": kinds[k, bool(t)], "timing": bool(t)}
+                for k, n, m, t in P.table1_columns()]
     except Exception:  # the compiled module is not importable here
         return None
 

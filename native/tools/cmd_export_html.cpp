@@ -100,8 +100,10 @@ std::string read_text(const fs::path& p) {
 // What the page reads: the file's own bytes under its own name when it is one file whose extension
 // names its format; else (an OpenFOAM case, a format given by --format, cells dropped by
 // --skip-invalid) the loaded mesh written as OpenVolumeMesh ASCII, which keeps every cell as read.
+// Then the page cannot tell what reading the source said (how many cells --skip-invalid dropped,
+// ...): `warnings` carries the CLI's warning lines ("FILE: TEXT"), which the page shows.
 struct Embedded {
-  std::string name, bytes;
+  std::string name, bytes, warnings;
 };
 Embedded embedded_mesh(const InputArgs& in, const Mesh& mesh) {
   const fs::path path(in.file);
@@ -115,10 +117,12 @@ Embedded embedded_mesh(const InputArgs& in, const Mesh& mesh) {
   }
   const bool as_read = by_name != Format::Foam && by_name != Format::Auto && !in.skip_invalid &&
                        (in.format.empty() || in.parsed_format() == by_name);
-  if (as_read) return {path.filename().string(), read_file_bytes(in.file)};
+  if (as_read) return {path.filename().string(), read_file_bytes(in.file), {}};
   std::string stem = fs::is_directory(path) ? fs::absolute(path).lexically_normal().filename().string() : path.stem().string();
   if (stem.empty()) stem = "mesh";
-  return {stem + ".ovm", ovm_text(mesh)};
+  std::string warnings;
+  for (const std::string& w : mesh.warnings) warnings += (warnings.empty() ? "" : "\n") + in.file + ": " + w;
+  return {stem + ".ovm", ovm_text(mesh), warnings};
 }
 
 void run_export_html(const ExportHtmlArgs& args) {
@@ -131,8 +135,9 @@ void run_export_html(const ExportHtmlArgs& args) {
     throw std::runtime_error(viewer.string() + ": not a viewer page (expected one empty " + std::string(kPlaceholder) +
                              "; rebuild it with `bash scripts/build_web.sh`)");
   const Embedded e = embedded_mesh(args.input, mesh);
+  const std::string warnings = e.warnings.empty() ? "" : " data-warnings=\"" + html_attribute(e.warnings) + "\"";
   const std::string element = R"(<script type="application/octet-stream" id="hbc-embedded-mesh" data-name=")" +
-                              html_attribute(e.name) + "\">" + base64(e.bytes) + "</script>";
+                              html_attribute(e.name) + "\"" + warnings + ">" + base64(e.bytes) + "</script>";
   page.replace(at, kPlaceholder.size(), element);
   write_output(page, args.out);
   std::printf("wrote %s: %s embedded (%zu bytes), %zu cells\n", args.out.c_str(), e.name.c_str(), e.bytes.size(),

@@ -94,6 +94,13 @@ class JsMesh {
   val cell_faces_items() const { return copy(mesh().cell_faces.items); }
   val cell_types() const { return copy(mesh().cell_type); }
   val face_boundary() const { return copy(mesh().face_boundary); }
+  // What reading said beside the mesh (cells dropped by skip_invalid, unused faces dropped...): the
+  // CLI prints each as "hbc: warning: FILE: TEXT"; here the TEXTs.
+  val warnings() const {
+    val out = val::array();
+    for (const std::string& w : mesh().warnings) out.call<void>("push", w);
+    return out;
+  }
   // info() of the Python binding and the CLI's `hbc info --json` keys, as a JSON string.
   std::string info_json() const;
   JsAnalysis analyze(val options) const;
@@ -315,18 +322,21 @@ JsMesh load(const std::string& bytes, const std::string& name, bool skip_invalid
   });
 }
 
-// load_path(path): a file (or an OpenFOAM case folder / owner file) already in the module's file
-// system (Module.FS), read as the CLI reads a path.
-JsMesh load_path(const std::string& path) {
+// load_path(path[, skip_invalid]): a file (or an OpenFOAM case folder / owner file) already in the
+// module's file system (Module.FS), read as the CLI reads a path (with --skip-invalid when asked).
+JsMesh load_path_skipping(const std::string& path, bool skip_invalid) {
   return guarded([&] {
     auto m = std::make_shared<LoadedMesh>();
     m->name = path;
+    m->skip_invalid = skip_invalid;
     Threads one;
     one.count = 1;
-    m->mesh = load_mesh(path, Format::Auto, one);
+    m->mesh = skip_invalid ? load_mesh_skipping_invalid(path, m->dropped, Format::Auto, one)
+                           : load_mesh(path, Format::Auto, one);
     return JsMesh(m);
   });
 }
+JsMesh load_path(const std::string& path) { return load_path_skipping(path, false); }
 
 // kept_surface_soup(mesh, kept, shrink): the surface of the cells with kept[c] != 0 (nc entries).
 val kept_surface_soup(const JsMesh& m, val kept, double shrink) {
@@ -352,7 +362,7 @@ std::string table1_columns_json() {
   cli::Json j = cli::Json::array();
   for (const Table1Column& c : table1_columns())
     j.push_back({{"key", c.field->key}, {"label", c.field->label}, {"notation", c.field->notation},
-                 {"meaning", c.field->meaning}, {"timing", c.timing}});
+                 {"meaning", c.field->meaning}, {"kind", field_kind_name(c.field->kind)}, {"timing", c.timing}});
   return j.dump();
 }
 
@@ -406,6 +416,7 @@ EMSCRIPTEN_BINDINGS(hbc_core) {
       .property("cell_faces_items", &JsMesh::cell_faces_items)
       .property("cell_types", &JsMesh::cell_types)
       .property("face_boundary", &JsMesh::face_boundary)
+      .property("warnings", &JsMesh::warnings)
       .function("info_json", &JsMesh::info_json)
       .function("analyze", &JsMesh::analyze);
   class_<JsAnalysis>("Analysis")
@@ -456,6 +467,7 @@ EMSCRIPTEN_BINDINGS(hbc_core) {
   function("load", &load);
   function("polylines", &polylines);
   function("load_path", &load_path);
+  function("load_path", &load_path_skipping);
   function("kept_surface_soup", &kept_surface_soup);
   function("cell_centroids", &cell_centroids);
   function("FORMATS", &formats_json);

@@ -18,6 +18,7 @@ export interface AnalyzeOptions {
 export interface Mesh {
   readonly num_vertices: number; readonly num_edges: number; readonly num_faces: number; readonly num_cells: number;
   readonly source: string;                  // the name given to load
+  readonly warnings: string[];              // what reading said (the CLI's "hbc: warning: FILE: TEXT" TEXTs)
   readonly points: Float32Array;            // (3 nv) x y z
   readonly points64: Float64Array;          // (3 nv)
   readonly edges: Int32Array;               // (2 ne) lower vertex first
@@ -111,7 +112,7 @@ export interface GeneratedMesh {
 
 export interface HbcModule {
   load(bytes: Uint8Array | ArrayBuffer, name: string, skip_invalid: boolean): Mesh;  // format from the name
-  load_path(path: string): Mesh;              // a file or OpenFOAM case already in FS (the CLI's reading of a path)
+  load_path(path: string, skip_invalid?: boolean): Mesh;  // a file or OpenFOAM case already in FS (the CLI's reading of a path)
   polylines(mesh: Mesh, offsets: Int32Array, items: Int32Array): Float32Array;       // (3 * items.length)
   kept_surface_soup(mesh: Mesh, kept: Uint8Array, shrink: number): BlockSoup;        // kept: (nc) 0/1; owner = cell
   cell_centroids(mesh: Mesh): Float64Array;   // (3 nc) mean of each cell's distinct vertices
@@ -119,7 +120,7 @@ export interface HbcModule {
   // prisms); cells_items: 2 face + flip (flip 1: the cell sees the face's loop reversed).
   generate_cylinder(radius_cells: number, layers: number): GeneratedMesh;
   FORMATS(): string;                          // JSON [{name, alias, extension, title, writable}]
-  TABLE1_COLUMNS_json(): string;              // JSON [{key, label, notation, meaning, timing}] in Table 1's order
+  TABLE1_COLUMNS_json(): string;              // JSON [{key, label, notation, meaning, kind, timing}] (kind: count|ratio|seconds) in Table 1's order
   FS: any;                                    // emscripten's in-memory file system (for load_path)
   version(): string;
 }

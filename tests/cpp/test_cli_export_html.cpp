@@ -131,6 +131,29 @@ TEST_F(CliExportHtml, EmbedsAFileReadByFormatAsOvm) {
   EXPECT_EQ(from_page, from_file);
 }
 
+// With --skip-invalid the page reads the kept cells (as .ovm) and cannot count the dropped ones:
+// the element carries the CLI's warnings about the source in data-warnings, one line each as the
+// CLI prints them on stderr without "hbc: warning: ", for the page to show.
+TEST_F(CliExportHtml, SkipInvalidPageCarriesTheCliWarnings) {
+  const std::string defects = std::string(HBC_FORMATS_DIR) + "/../check/defects.HYBRID";
+  const test::CliRun r =
+      run_cli("export-html " + q(defects) + " --skip-invalid -o " + q(dir_ / "d.html") + " --viewer " + q(tpl_));
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::string lines;
+  for (size_t at = 0, end; (end = r.err.find('\n', at)) != std::string::npos; at = end + 1) {
+    const std::string line = r.err.substr(at, end - at);
+    const std::string prefix = "hbc: warning: ";
+    ASSERT_EQ(line.rfind(prefix, 0), 0u) << line;
+    lines += (lines.empty() ? "" : "\n") + line.substr(prefix.size());
+  }
+  EXPECT_NE(lines.find(defects + ": 5 cell(s) dropped ("), std::string::npos) << r.err;
+  const std::string page = slurp(dir_ / "d.html");
+  const std::string open = R"(id="hbc-embedded-mesh" data-name="defects.ovm" data-warnings=")";
+  const size_t at = page.find(open);
+  ASSERT_NE(at, std::string::npos) << page.substr(0, 300);
+  EXPECT_EQ(page.substr(at + open.size(), lines.size() + 2), lines + "\">");
+}
+
 // A bad mesh fails as in every other command (exit 2, file and line), before any page is written.
 TEST_F(CliExportHtml, BadMeshExits2WithItsLine) {
   write_file(dir_ / "bad.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\nx\n");

@@ -1,10 +1,11 @@
 // The JavaScript binding under node: load teapot from bytes, analyze, and compare stats_json with
 // `hbc analyze --json` of the same file (every key but timings); then the arrays' sizes against the
-// stats, a block soup, the wireframe, and a malformed file's error text against the CLI's; the
-// generator the viewer warms up with, and the warm-up itself (web/src/warmup.js).
+// stats, a block soup, the wireframe, and a malformed file's error text against the CLI's; a file
+// with invalid cells read with skip_invalid (JSON and warnings against the CLI's); the generator the
+// viewer warms up with, and the warm-up itself (web/src/warmup.js).
 //   node tests/wasm/binding_test.mjs HBC_CORE_JS HBC_CLI MESH_DIR
 // HBC_CLI is the native hbc or `node .../hbc.js` run through a wrapper; prints "N passed, N failed".
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { basename, dirname, join } from 'node:path';
@@ -94,6 +95,26 @@ M.FS.writeFile('/teapot.hedra', readFileSync(teapot));
 const byPath = M.load_path('/teapot.hedra');
 check('load_path', byPath.num_cells === cliStats.cells);
 byPath.delete();
+// load_path(path, true): --skip-invalid. A file with refused cells (tests/data/check): the JSON
+// (its "dropped" key included) and the warnings are the CLI's.
+const defects = join(dirname(new URL(import.meta.url).pathname), '..', 'data', 'check', 'defects.HYBRID');
+M.FS.writeFile('/defects.HYBRID', readFileSync(defects));
+let refused = '';
+try { M.load_path('/defects.HYBRID'); } catch (e) { refused = String(e.message); }
+check('load_path refuses invalid cells', refused.includes('--skip-invalid'), refused);
+const skipped = M.load_path('/defects.HYBRID', true);
+const skippedStats = JSON.parse(skipped.analyze({}).stats_json());
+const cliSkip = JSON.parse(execFileSync(cli, ['analyze', '--json', '--skip-invalid', 'defects.HYBRID'],
+                                        { cwd: dirname(defects), encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }));
+check('load_path skip_invalid: stats_json as hbc analyze --skip-invalid --json',
+      JSON.stringify(noTimings({ ...skippedStats, file: 'defects.HYBRID' })) === JSON.stringify(noTimings(cliSkip)));
+const cliWarnings = (() => {
+  const r = spawnSync(cli, ['analyze', '--skip-invalid', 'defects.HYBRID'], { cwd: dirname(defects), encoding: 'utf8' });
+  return r.stderr.trim().split('\n').map((l) => l.replace(/^hbc: warning: defects\.HYBRID: /, ''));
+})();
+check('warnings as the CLI says them', JSON.stringify(skipped.warnings) === JSON.stringify(cliWarnings),
+      `${JSON.stringify(skipped.warnings)} against ${JSON.stringify(cliWarnings)}`);
+skipped.delete();
 
 // generate_cylinder(2, 1): a = ceil(2 / 2) = 1, so a 2x2 quad core (9 vertices, 8 on its boundary)
 // and one ring of 4 round(2 pi 2 / 4) = 12 vertices: 8 quads on the core's 8 edges and 12 - 8 = 4

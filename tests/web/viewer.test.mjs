@@ -3,8 +3,9 @@
 // its own origin, a page written by `hbc export-html` loads the mesh embedded in it; when the
 // analysis is done, body[data-state] is "ready" and #hbc-results holds the keys and values of
 // `hbc analyze --json` minus `timings`; a refused file gives state "error" and the CLI's message in
-// #hbc-error; #plane-on / #plane-pos move a slicing plane. Every test also asserts that the page
-// logged no console error and threw no uncaught error.
+// #hbc-error; #plane-on / #plane-pos move a slicing plane. The numbers on screen are the open mesh's
+// only, and as the CLI prints them. Every test also asserts that the page logged no console error
+// and threw no uncaught error.
 //
 // Run: node tests/web/viewer.test.mjs (ctest's web_viewer does). Environment: HBC_CLI (the hbc
 // binary), HBC_VIEWER (the page), HBC_DATA_DIR (the shared meshes), HBC_CHROMIUM (the browser),
@@ -89,6 +90,11 @@ before(async () => {
   symlinkSync(existsSync(index) ? index : VIEWER, join(work, 'index.html'));
   symlinkSync(TEAPOT, join(work, 'teapot.hedra'));
   symlinkSync(join(ROOT, 'tests/data/formats/foam/hex2_ascii'), join(work, 'hex2_ascii'));
+  symlinkSync(join(ROOT, 'tests/data/formats/foam/hex2_gzip'), join(work, 'hex2_gzip'));
+  // Five cells the readers refuse beside five good ones (docs/check.md): --skip-invalid drops them.
+  symlinkSync(join(ROOT, 'tests/data/check/defects.HYBRID'), join(work, 'defects.HYBRID'));
+  // A hex grid: every ratio of Table 1 is exactly 1.
+  hbc(['generate', 'grid', '--size', '3', '3', '2', '-o', 'grid.mesh']);
   // A small mesh with pyramids among its hexahedra: the non-hex paths of every stage.
   hbc(['generate', 'split', '--size', '4', '3', '3', '--split', 'pyramids', '--random', '5', '--seed', '7',
        '-o', 'split.mesh']);
@@ -289,4 +295,206 @@ test('a broken file shows the CLI error text with file and line; then a good fil
   assert.equal(await page.locator('#hbc-error').isVisible(), false);
   assert.deepEqual(errors, []);
   await close();
+});
+
+// -- the numbers on screen (issue 62) -------------------------------------------------------------
+// The rows of the sheet list, the legend's entries, Table 1's rows, the subsheet list.
+async function shownCounts(page) {
+  return page.evaluate(() => ({
+    sheetRows: document.querySelectorAll('#sheet-rows tr').length,
+    sheetCount: document.getElementById('sheet-count').textContent,
+    legend: document.querySelectorAll('#legend li').length,
+    table1: document.querySelectorAll('#table1 tr').length,
+    subsheets: document.querySelectorAll('#subsheet-list li').length,
+    results: document.getElementById('hbc-results').textContent,
+  }));
+}
+
+test('a refused file after teapot: teapot\'s sheets, legend and Table 1 row are gone', { timeout: 180_000 }, async () => {
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=teapot.hedra`);
+  assert.equal(await settled(page), 'ready');
+  const teapot = await shownCounts(page);
+  assert.equal(teapot.sheetRows, 23, 'teapot has 23 sheets');
+  assert.ok(teapot.legend > 0 && teapot.table1 === 2, JSON.stringify(teapot));
+  await page.locator('#file').setInputFiles(join(work, 'broken.mesh'));
+  await page.waitForFunction(() => document.body.dataset.state === 'error', null, { timeout: LOAD_TIMEOUT });
+  assert.equal(await page.locator('#mesh-name').textContent(), 'broken.mesh');
+  assert.ok((await page.locator('#hbc-error').textContent()).includes(cliError('broken.mesh')));
+  assert.deepEqual(await shownCounts(page), { sheetRows: 0, sheetCount: '', legend: 0, table1: 0, subsheets: 0, results: '' });
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+// Table 1 on the page against `hbc table --md` for the same file: every column but the times (the
+// page's are in whole ms of its own run) reads the same, a ratio of exactly 1 as 1.0000.
+test('Table 1 on the page prints counts and ratios as hbc table does', { timeout: 180_000 }, async () => {
+  for (const name of ['grid.mesh', 'teapot.hedra']) {
+    const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=${name}`);
+    assert.equal(await settled(page), 'ready');
+    const [head, row] = await page.evaluate(() => [...document.querySelectorAll('#table1 tr')]
+      .map((tr) => [...tr.children].map((c) => c.textContent)));
+    const md = hbc(['table', name, '--md']).trim().split('\n');
+    const timing = row.map((t) => / ms$/.test(t));
+    // The same columns in the same order (hbc table marks the times' heads " ms").
+    assert.equal(md[0], `| mesh | ${head.map((h, i) => (timing[i] ? `${h} ms` : h)).join(' | ')} |`);
+    const cli = md[2].replace(/^\| | \|$/g, '').split(' | ').slice(1);
+    assert.equal(cli.length, row.length);
+    const shown = row.filter((_, i) => !timing[i]);
+    assert.deepEqual(shown, cli.filter((_, i) => !timing[i]), name);
+    if (name === 'grid.mesh') assert.ok(shown.includes('1.0000'), `a ratio of 1 reads 1.0000: ${shown}`);
+    assert.deepEqual(errors, [], name);
+    await close();
+  }
+});
+
+// An OpenFOAM case picked through "Open file…" (the .foam marker and the polyMesh files, or only the
+// polyMesh files) or "Open folder…": the case's results, named after the case.
+test('an OpenFOAM case picked as files or as a folder opens with the CLI results, named after the case', { timeout: 180_000 }, async () => {
+  const cases = [
+    ['#file', ['hex2_ascii/hex2_ascii.foam', ...['boundary', 'faces', 'neighbour', 'owner', 'points'].map((f) => `hex2_ascii/constant/polyMesh/${f}`)], 'hex2_ascii', 'hex2_ascii'],
+    ['#file', ['boundary', 'faces', 'neighbour', 'owner', 'points'].map((f) => `hex2_gzip/constant/polyMesh/${f}.gz`), 'hex2_gzip', 'polyMesh'],
+    // The folder itself (the work folder's link to it is not followed by the picker).
+    ['#folder', join(ROOT, 'tests/data/formats/foam/hex2_ascii'), 'hex2_ascii', 'hex2_ascii'],
+  ];
+  const page0 = await openPage(`${origin}/viewer.html?warmup=0,0,0`);
+  for (const [input, files, dir, name] of cases) {
+    const { page } = page0;
+    await page.locator(input).setInputFiles(Array.isArray(files) ? files.map((f) => join(work, f)) : files);
+    // The name is set as the files go to the worker.
+    await page.waitForFunction((n) => document.getElementById('mesh-name').textContent === n, name)
+      .catch(async () => assert.fail(`${input} ${files}: the mesh is named "${await page.locator('#mesh-name').textContent()}", not "${name}"`));
+    assert.equal(await settled(page), 'ready', `${input} ${files}: ${await page.locator('#hbc-error').textContent()}`);
+    assertSameResults(await pageResults(page), { ...expectedResults(dir), file: name });
+    assert.equal(await page.locator('#mesh-name').textContent(), name);
+  }
+  assert.deepEqual(page0.errors, []);
+  await page0.close();
+});
+
+// Teapot's sheet 2 (self-intersecting) has 4 subsheets; picked with the subsheets layer on, they
+// lie side by side along x. Every point of every subsheet (and of its wireframe beneath) projects
+// into the canvas: at first show, and after the camera moved and "Reset view" was clicked.
+async function subsheetsInFrame(page) {
+  return page.evaluate(() => {
+    const v = window.hbcViewer.viewer;
+    const cam = v.camera;
+    cam.updateMatrixWorld();
+    const group = v.layers.get('subsheets');
+    let worst = 0;
+    let parts = 0;
+    group.traverse((o) => {
+      if (!o.geometry) return;
+      parts++;
+      const p = o.geometry.getAttribute('position');
+      const q = cam.position.clone();
+      for (let i = 0; i < p.count; i++) {
+        q.set(p.getX(i), p.getY(i), p.getZ(i)).add(o.position).project(cam);
+        worst = Math.max(worst, Math.abs(q.x), Math.abs(q.y));
+      }
+    });
+    return { worst, parts };
+  });
+}
+
+async function teapotSubsheets(page) {
+  await page.locator('#sheet-rows tr[data-sheet="2"]').click();
+  await page.locator('input[data-layer="subsheets"]').check();
+  await page.waitForFunction(() => document.querySelectorAll('#subsheet-list li').length === 4 &&
+    window.hbcViewer.viewer.layers.has('subsheets'), null, { timeout: LOAD_TIMEOUT });
+}
+
+test('subsheets side by side are all in frame at first show and after Reset view', { timeout: 180_000 }, async () => {
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=teapot.hedra`);
+  assert.equal(await settled(page), 'ready');
+  assert.equal(await page.locator('#spread').isChecked(), true, 'side by side is the default');
+  await teapotSubsheets(page);
+  const first = await subsheetsInFrame(page);
+  assert.ok(first.parts >= 8, `4 subsheets and their wireframes: ${first.parts} parts`);
+  assert.ok(first.worst <= 1, `at first show a subsheet reaches ${first.worst} (1: the canvas edge)`);
+  // Closer to the mesh's centre, then back.
+  await page.evaluate(() => {
+    const v = window.hbcViewer.viewer;
+    const t = v.controls.target;
+    v.setView([t.x, t.y, t.z + v.size * 0.3, t.x, t.y, t.z, 0, 1, 0]);
+  });
+  assert.ok((await subsheetsInFrame(page)).worst > 1, 'the moved camera leaves subsheets out');
+  await page.locator('#reset-view').click();
+  const reset = await subsheetsInFrame(page);
+  assert.ok(reset.worst <= 1, `after Reset view a subsheet reaches ${reset.worst}`);
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+// The colour each subsheet k is drawn in differs from sheet k's (the sheets layer's), and the
+// subsheet list's swatches differ from the sheet list's.
+test('subsheet k and sheet k are drawn in different colours', { timeout: 180_000 }, async () => {
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=teapot.hedra`);
+  assert.equal(await settled(page), 'ready');
+  await teapotSubsheets(page);
+  await page.locator('input[data-layer="sheets"]').check();
+  await page.waitForFunction(() => window.hbcViewer.viewer.layers.has('sheets'), null, { timeout: LOAD_TIMEOUT });
+  const drawn = await page.evaluate(() => {
+    const layers = window.hbcViewer.viewer.layers;
+    const sheets = layers.get('sheets').children.find((o) => o.isMesh).userData.part;
+    const out = [];
+    for (let k = 0; k < 4; k++) {
+      const sub = layers.get('subsheets').children.find((o) => o.name === `subsheet ${k}`).userData.part;
+      const v = sheets.owner.indexOf(k);
+      out.push({ sheet: [...sheets.color.slice(3 * v, 3 * v + 3)], subsheet: [...sub.color.slice(0, 3)] });
+    }
+    return out;
+  });
+  drawn.forEach((c, k) => assert.notDeepEqual(c.subsheet, c.sheet, `subsheet ${k} and sheet ${k}: ${JSON.stringify(c)}`));
+  const swatch = (sel) => page.evaluate((sel) => [...document.querySelectorAll(sel)].map((e) => e.style.background), sel);
+  const subs = await swatch('#subsheet-list .sw');
+  for (let k = 0; k < subs.length; k++) {
+    const sheet = await swatch(`#sheet-rows tr[data-sheet="${k}"] .sw`);
+    assert.notEqual(subs[k], sheet[0], `swatches of subsheet ${k} and sheet ${k}`);
+  }
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+// A file with invalid cells: refused, then opened once "Skip invalid cells" is ticked, with the
+// results of `hbc analyze --skip-invalid --json` and the CLI's warnings (how many cells were
+// dropped). A page written by `hbc export-html --skip-invalid` says the same.
+test('skip invalid cells: the tick box, and a page made by hbc export-html --skip-invalid, say what was dropped', { timeout: 180_000 }, async () => {
+  const name = 'defects.HYBRID';
+  const refused = spawnSync(CLI, ['analyze', name], { cwd: work, encoding: 'utf8' });
+  assert.equal(refused.status, 2);
+  const r = spawnSync(CLI, ['analyze', '--skip-invalid', '--json', name], { cwd: work, encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  const want = JSON.parse(r.stdout);
+  delete want.timings;
+  assert.ok(want.dropped.count > 0);
+  // The CLI's warnings, without "hbc: warning: ".
+  const warnings = r.stderr.trim().split('\n').map((l) => l.replace(/^hbc: warning: /, ''));
+  assert.ok(warnings.some((w) => w.startsWith(`${name}: ${want.dropped.count} cell(s) dropped (`)), r.stderr);
+
+  const { page, errors, close } = await openPage(`${origin}/viewer.html?mesh=${name}`);
+  assert.equal(await settled(page), 'error');
+  assert.ok((await page.locator('#hbc-error').textContent()).includes(cliError(name)));
+  await page.locator('#skip-invalid').check();
+  await page.waitForFunction(() => document.body.dataset.state !== 'error', null, { timeout: LOAD_TIMEOUT });
+  assert.equal(await settled(page), 'ready', await page.locator('#hbc-error').textContent());
+  assertSameResults(await pageResults(page), want);
+  assert.equal(await page.locator('#hbc-warnings').textContent(), warnings.join('\n'));
+  assert.equal(await page.locator('#hbc-warnings').isVisible(), true);
+  // Unticked: the file is refused again, and nothing of the dropped run stays.
+  await page.locator('#skip-invalid').uncheck();
+  assert.equal(await settled(page), 'error');
+  assert.equal(await page.locator('#hbc-warnings').isVisible(), false);
+  assert.deepEqual(errors, []);
+  await close();
+
+  mkdirSync(join(work, 'exported'), { recursive: true });
+  hbc(['export-html', name, '--skip-invalid', '-o', 'exported/defects.html', '--viewer', VIEWER], { stdio: 'pipe' });
+  const exported = await openPage(pathToFileURL(join(work, 'exported', 'defects.html')).href);
+  assert.equal(await settled(exported.page), 'ready', await exported.page.locator('#hbc-error').textContent());
+  // The page reads the kept cells (written as .ovm): the analysis of --skip-invalid, no dropped key.
+  const { dropped, ...kept } = want;
+  assertSameResults(await pageResults(exported.page), { ...kept, file: 'defects.ovm' });
+  assert.equal(await exported.page.locator('#hbc-warnings').textContent(), warnings.join('\n'));
+  assert.deepEqual(exported.errors, []);
+  await exported.close();
 });

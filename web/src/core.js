@@ -89,7 +89,7 @@ export class Core {
     return list.sort((a, b) => b.length - a.length);
   }
 
-  /** Table 1's columns from the module's schema, [{key, notation, meaning, timing}], or null. */
+  /** Table 1's columns from the module's schema, [{key, notation, meaning, kind, timing}], or null. */
   table1() {
     const M = this.M;
     const t = typeof M.TABLE1_COLUMNS_json === 'function' ? M.TABLE1_COLUMNS_json()
@@ -97,7 +97,7 @@ export class Core {
     if (!t) return null;
     const rows = typeof t === 'string' ? JSON.parse(t) : t;
     return rows.map((r) => (Array.isArray(r)
-      ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}`, timing: !!r[1] }
+      ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}`, kind: r[0].kind, timing: !!r[1] }
       : { ...r, meaning: r.label && !String(r.meaning).startsWith(r.label) ? `${r.label}: ${r.meaning}` : r.meaning, timing: !!r.timing }));
   }
 
@@ -126,22 +126,27 @@ export class Core {
 
   /** The mesh of some files [{path, buffer}]: one mesh file, or an OpenFOAM case's files. The
    *  binding reads bytes with a name (the name's extension picks the reader), or paths in its
-   *  file system when it exports one. */
-  open(files) {
+   *  file system when it exports one. skipInvalid: the CLI's --skip-invalid. written: the files
+   *  are in the file system already (the same files read again; their buffers are not needed). */
+  open(files, { skipInvalid = false, written = false } = {}) {
     const M = this.M;
     if (M.FS && typeof M.load_path === 'function') {
-      this.removeTree('/in');
-      M.FS.mkdir('/in');
-      this.writeFiles(files.map((f) => ({ path: 'in/' + f.path, buffer: f.buffer })));
-      return M.load_path(loadPath(files));
+      if (!written) {
+        this.removeTree('/in');
+        M.FS.mkdir('/in');
+        this.writeFiles(files.map((f) => ({ path: 'in/' + f.path, buffer: f.buffer })));
+      }
+      // Only a core that takes the choice is asked with it (embind checks the argument count).
+      return skipInvalid ? M.load_path(loadPath(files), true) : M.load_path(loadPath(files));
     }
+    if (written) throw new Error('This WebAssembly core keeps no file: open the file again.');
     if (files.length > 1 && typeof M.load_case === 'function') {
       return M.load_case(files.map((f) => ({ name: f.path, bytes: new Uint8Array(f.buffer) })));
     }
     if (files.length > 1) {
       throw new Error('An OpenFOAM case (several files) needs a newer WebAssembly core: this one reads one file at a time.');
     }
-    return M.load(new Uint8Array(files[0].buffer), files[0].path, false);
+    return M.load(new Uint8Array(files[0].buffer), files[0].path, !!skipInvalid);
   }
 
   analyze(mesh) {

@@ -3,7 +3,8 @@
 // body[data-state]) and the view in the URL fragment.
 /* global __HBC_WORKER_SOURCE__ */
 import { Viewer } from './scene.js';
-import { L, css } from './colors.js';
+import { L, css, spreadColor, subsheetColor } from './colors.js';
+import { fixed } from './format.js';
 
 const $ = (id) => document.getElementById(id);
 const LAYERS = L.layers.map(([key]) => key);
@@ -22,6 +23,7 @@ const state = {
   spread: true,
   plane: { on: false, axis: 0, t: 0.5 },
   types: [true, true, true, true, true],
+  skipInvalid: false, // the CLI's --skip-invalid for the files opened
 };
 let info = null; // the worker's summary of the open mesh
 let results = null;
@@ -29,6 +31,11 @@ let timings = null;
 let table1 = null;
 let pendingView = null;
 let firstFrame = null; // layers still to arrive before the page says "ready"
+let embeddedWarnings = []; // what `hbc export-html` said when reading the embedded mesh's source
+let lastName = ''; // the name of the last files given to the worker, which it can read again
+let subsheetsShown = 0; // subsheets drawn side by side (0: none, or in place): the view frames them all
+let framedSubsheets = ''; // which subsheets layout the view was last framed to (sheet, count)
+let keepCameraFor = -1; // the subsheets request whose arrival must not move the camera (a view link's)
 const requests = new Map(); // layer -> latest request id
 let nextId = 1;
 
@@ -66,22 +73,56 @@ function showProgress(fraction, text) {
   $('status').textContent = text;
 }
 
-/** Opens files [{path, buffer}] named `name` (a file name, or a case folder's). */
-function openFiles(name, files) {
+/** Opens files [{path, buffer}] named `name` (a file name, or a case folder's); without files, the
+ *  last ones again (the worker still has them) with the present "skip invalid cells" choice.
+ *  warnings: what was said when the files were made (hbc export-html's reading). */
+function openFiles(name, files, warnings = []) {
+  if (files) {
+    embeddedWarnings = warnings;
+    lastName = name;
+  }
   firstFrame = null;
   state.sheet = -1; // a new mesh has other sheets (a view link sets it again once analysed)
   setState('loading');
-  $('hbc-results').textContent = '';
-  delete $('hbc-results').dataset.openSeconds;
+  forgetMesh();
   $('hbc-error').hidden = true;
   $('hbc-error').textContent = '';
-  viewer.clearAll();
-  info = null;
-  results = null;
   $('mesh-name').textContent = name;
   document.title = `${name} — hbc viewer`;
   showProgress(0.02, 'Reading ' + name);
-  worker.postMessage({ type: 'open', name, files }, files.map((f) => f.buffer));
+  if (!files) worker.postMessage({ type: 'reopen', skipInvalid: state.skipInvalid });
+  else worker.postMessage({ type: 'open', name, files, skipInvalid: state.skipInvalid }, files.map((f) => f.buffer));
+}
+
+/** Empties every view of the open mesh (layers, sheet and subsheet lists, legend, Table 1, the
+ *  results, the reader's warnings): a file being opened, or refused, must not leave the previous
+ *  mesh's numbers on screen beside its own name. */
+function forgetMesh() {
+  viewer.clearAll();
+  requests.clear();
+  info = null;
+  results = null;
+  timings = null;
+  table1 = null;
+  subsheetsShown = 0;
+  framedSubsheets = '';
+  $('hbc-results').textContent = '';
+  delete $('hbc-results').dataset.openSeconds;
+  $('sheet-count').textContent = '';
+  showWarnings([]);
+  sheetList();
+  subsheetList([]);
+  for (const layer of LAYERS) layerNote(layer, '');
+  showTable1();
+  legend();
+  syncControls();
+}
+
+/** What reading said (cells dropped by "skip invalid cells", ...), in the CLI's words. */
+function showWarnings(lines) {
+  const el = $('hbc-warnings');
+  el.textContent = lines.join('\n');
+  el.hidden = !lines.length;
 }
 
 function ready(m) {
@@ -94,8 +135,9 @@ function ready(m) {
   $('hbc-results').dataset.openSeconds = m.seconds.toFixed(4);
   $('progress').hidden = true;
   $('status').textContent = `${info.cells} cells analysed`;
-  if (pendingView) applyFragment(pendingView);
-  else viewer.frame(info.bbox);
+  showWarnings([...embeddedWarnings, ...(m.warnings ?? [])]);
+  const keepCamera = pendingView ? applyFragment(pendingView) : false;
+  if (!pendingView) viewer.frame(info.bbox);
   pendingView = null;
   sheetList();
   showTable1();
@@ -103,6 +145,7 @@ function ready(m) {
   // "ready" once the first layers are drawn: a screenshot taken then shows the mesh.
   firstFrame = new Set(LAYERS.filter((l) => state.layers[l] && !((l === 'sheet' || l === 'subsheets') && state.sheet < 0)));
   rebuildAll();
+  keepCameraFor = keepCamera ? requests.get('subsheets') ?? -1 : -1;
   settle();
 }
 
@@ -117,11 +160,15 @@ function settle(layer) {
 }
 
 function failed(message) {
+  forgetMesh();
   $('progress').hidden = true;
   $('status').textContent = 'Could not open the mesh';
-  $('hbc-error').textContent = message;
+  let text = message;
+  // The core's message names the CLI's option; on the page it is a tick box.
+  if (!state.skipInvalid && message.includes('--skip-invalid')) text += '\n(On this page: tick "Skip invalid cells".)';
+  else if (/expected an OpenFOAM case beside/.test(message)) text += '\n(On this page: pick the .foam file together with the files of constant/polyMesh, or open the case folder.)';
+  $('hbc-error').textContent = text;
   $('hbc-error').hidden = false;
-  $('hbc-results').textContent = '';
   setState('error');
 }
 
@@ -147,7 +194,11 @@ function build(layer) {
   if (!state.layers[layer] || ((layer === 'sheet' || layer === 'subsheets') && state.sheet < 0)) {
     viewer.clearLayer(layer);
     requests.delete(layer);
-    if (layer === 'subsheets') subsheetList([]);
+    if (layer === 'subsheets') {
+      subsheetList([]);
+      subsheetsShown = 0;
+      framedSubsheets = ''; // switched on again: framed again
+    }
     layerNote(layer, '');
     legend();
     return;
@@ -163,14 +214,26 @@ function rebuildAll() {
   legend();
 }
 
+/** planning.spread_translation: subsheet k side by side along x (k steps of dx), each wireframe
+ *  one row beneath (dz). */
+function spreadStep() {
+  const [lo, hi] = info.bbox;
+  return { dx: (hi[0] - lo[0]) * (1 + L.spread_gap), dz: -(hi[2] - lo[2]) * (1 + L.spread_gap) };
+}
+
+/** The box the view frames: the mesh's, widened to every subsheet laid side by side when they show. */
+function viewBox() {
+  if (!subsheetsShown) return info.bbox;
+  const [lo, hi] = info.bbox;
+  const { dx, dz } = spreadStep();
+  return [[lo[0], lo[1], lo[2] + dz], [hi[0] + dx * (subsheetsShown - 1), hi[1], hi[2]]];
+}
+
 function layerArrived(m) {
   if (requests.get(m.layer) !== m.id) return; // a newer request is on its way
   const style = { boundaryOpacity: state.boundaryOpacity };
   if (m.layer === 'subsheets' && state.spread && info) {
-    // planning.spread_translation: side by side along x, each wireframe one row beneath.
-    const [lo, hi] = info.bbox;
-    const dx = (hi[0] - lo[0]) * (1 + L.spread_gap);
-    const dz = -(hi[2] - lo[2]) * (1 + L.spread_gap);
+    const { dx, dz } = spreadStep();
     style.offset = (p) => (p.subsheet >= 0 ? [dx * p.subsheet, 0, p.below ? dz : 0] : [0, 0, 0]);
   }
   viewer.setLayer(m.layer, m.parts, style);
@@ -180,10 +243,21 @@ function layerArrived(m) {
     const t = info.sheets[state.sheet]?.type;
     note = sub ? `${sub.subsheets.length} subsheets` : L.subsheets_unavailable?.[t] ?? 'only self-intersecting (type 3) sheets have subsheets';
     subsheetList(sub ? sub.subsheets : []);
+    frameSubsheets(state.spread && sub ? sub.subsheets.length : 0, m.id);
   }
   layerNote(m.layer, note);
   legend();
   settle(m.layer);
+}
+
+/** Subsheets laid side by side reach beyond the mesh's box: the first time a layout shows (a sheet
+ *  picked, the layer or the side-by-side choice switched on), the view frames all of them, unless
+ *  the camera came with a view link. */
+function frameSubsheets(count, id) {
+  subsheetsShown = count;
+  const key = count ? `${state.sheet}/${count}` : '';
+  if (key && key !== framedSubsheets && id !== keepCameraFor) viewer.frame(viewBox());
+  framedSubsheets = key;
 }
 
 /** The picked sheet's subsheets: class and cells, in the colours the layer draws them. */
@@ -192,7 +266,7 @@ function subsheetList(list) {
   el.textContent = '';
   list.forEach((s, k) => {
     const li = document.createElement('li');
-    li.innerHTML = `<span class="sw" style="background:${css(L.palette[L.spread[k % L.spread.length]])}"></span>`;
+    li.innerHTML = `<span class="sw" style="background:${css(subsheetColor(k))}"></span>`;
     li.appendChild(document.createTextNode(`subsheet ${k}: ${L.sheet_type_short[s.type]}, ${s.cells} cells`));
     el.appendChild(li);
   });
@@ -246,7 +320,7 @@ function sheetList() {
     const tr = document.createElement('tr');
     tr.dataset.sheet = s.id;
     if (s.id === state.sheet) tr.className = 'picked';
-    const sw = `<span class="sw" style="background:${css(L.palette[L.spread[s.id % L.spread.length]])}"></span>`;
+    const sw = `<span class="sw" style="background:${css(spreadColor(s.id))}"></span>`;
     tr.innerHTML = `<td>${sw}${s.id}</td><td>${L.sheet_type_short[s.type]}</td><td>${s.cells}</td><td>${s.blocks}</td>`;
     frag.appendChild(tr);
   }
@@ -312,7 +386,8 @@ function legend() {
   }
 }
 
-/** planning.table1_row: counts as integers, ratios as percentages, times in ms, missing as '-'. */
+/** Table 1 as planning.table1_row: counts as integers, times in ms, missing as '-'; ratios with the
+ *  4 decimals of `hbc table` (a ratio of exactly 1 is 1.0000, not 1). */
 function showTable1() {
   const t = $('table1');
   t.textContent = '';
@@ -336,8 +411,8 @@ function showTable1() {
     let text;
     if (v == null || (Number.isInteger(v) && v < 0)) text = '-';
     else if (c.timing) text = `${Math.round(1000 * v)} ms`;
-    else if (Number.isInteger(v)) text = String(v);
-    else text = `${(100 * v).toFixed(1)}%`;
+    else if (c.kind ? c.kind === 'count' : Number.isInteger(v)) text = String(v);
+    else text = fixed(v, 4);
     const td = document.createElement('td');
     td.textContent = text;
     row.appendChild(td);
@@ -362,6 +437,7 @@ function syncControls() {
   $('wire-floor').value = state.floor;
   $('spread').checked = state.spread;
   $('sheet-sort').value = state.sort;
+  $('skip-invalid').checked = state.skipInvalid;
   document.querySelectorAll('input[data-type]').forEach((b) => { b.checked = state.types[+b.dataset.type]; });
   const t = info && state.sheet >= 0 ? info.sheets[state.sheet] : null;
   $('picked').textContent = t ? `Sheet ${t.id}: ${L.sheet_type_short[t.type]}, ${t.cells} cells, ${t.blocks} blocks` : 'No sheet picked';
@@ -419,7 +495,12 @@ function buildControls() {
     if (tr) pickSheet(+tr.dataset.sheet);
   });
   $('snapshot').addEventListener('click', snapshot);
-  $('reset-view').addEventListener('click', () => info && viewer.frame(info.bbox));
+  $('reset-view').addEventListener('click', () => info && viewer.frame(viewBox()));
+  $('skip-invalid').addEventListener('change', (e) => {
+    state.skipInvalid = e.target.checked;
+    // The open (or refused) file again, read the other way.
+    if (['ready', 'error'].includes(document.body.dataset.state) && lastName) openFiles(lastName, null);
+  });
 }
 
 /** A click (not a drag) on the view: a sheet of the sheets layer is picked; a block, a cell or a
@@ -499,12 +580,28 @@ function applyFragment(text) {
   state.spread = num('spread', 1) !== 0;
   viewer.frame(info.bbox);
   if (q.has('cam')) viewer.setView(q.get('cam').split(',').map(Number));
+  return q.has('cam');
 }
 
 // -- opening -------------------------------------------------------------------------------
 async function filesFromList(list) {
   const all = [...list].map((f) => ({ file: f, path: f.webkitRelativePath || f.name }));
-  return keepMeshFiles(all);
+  return keepMeshFiles(asCase(all));
+}
+
+// The files of an OpenFOAM case's constant/polyMesh folder (gzipped or not).
+const POLY_MESH_FILE = /^(points|faces|owner|neighbour|boundary)(\.gz)?$/;
+
+/** Files picked one by one (a file picker or a drop gives no folders) that are an OpenFOAM case's,
+ *  the .foam marker and the polyMesh files, laid out as the case they come from: CASE/CASE.foam
+ *  and CASE/constant/polyMesh/*, CASE the marker's name (else "polyMesh", the folder they are). */
+function asCase(all) {
+  if (all.length < 2 || all.some((f) => f.path.includes('/'))) return all;
+  if (!all.some((f) => /^owner(\.gz)?$/.test(f.path))) return all;
+  const foam = all.find((f) => /\.foam$/i.test(f.path));
+  const name = foam ? foam.path.replace(/\.foam$/i, '') || 'case' : 'polyMesh';
+  return all.filter((f) => f === foam || POLY_MESH_FILE.test(f.path))
+    .map((f) => ({ ...f, path: f === foam ? `${name}/${f.path}` : `${name}/constant/polyMesh/${f.path}` }));
 }
 
 /** Of a folder's files, an OpenFOAM case's polyMesh (and .foam file) when there is one. */
@@ -517,8 +614,11 @@ async function keepMeshFiles(all) {
   return Promise.all(files.map(async (f) => ({ path: f.path, buffer: await f.file.arrayBuffer() })));
 }
 
+/** The mesh's name: the one file's, or an OpenFOAM case's (the folder holding constant/polyMesh). */
 function nameOf(files) {
   if (files.length === 1) return files[0].path.split('/').pop();
+  const poly = files.map((f) => f.path.match(/(?:^|\/)([^/]+)\/constant\/polyMesh\/[^/]+$/)).find(Boolean);
+  if (poly) return poly[1];
   return files[0].path.split('/')[0] || 'case';
 }
 
@@ -545,7 +645,7 @@ async function droppedFiles(items) {
   };
   const entries = [...items].map((i) => (i.webkitGetAsEntry ? i.webkitGetAsEntry() : null)).filter(Boolean);
   for (const e of entries) await walk(e, '');
-  return keepMeshFiles(out);
+  return keepMeshFiles(asCase(out));
 }
 
 function setupOpening() {
@@ -579,18 +679,22 @@ async function start() {
   // A view link pasted into the open page: the same mesh, the new view.
   window.addEventListener('hashchange', () => {
     if (!info || location.hash.length < 2) return;
-    applyFragment(location.hash.slice(1));
+    const keepCamera = applyFragment(location.hash.slice(1));
     sheetList();
     syncControls();
     rebuildAll();
+    keepCameraFor = keepCamera ? requests.get('subsheets') ?? -1 : -1;
   });
   const embedded = $('hbc-embedded-mesh');
   const params = new URLSearchParams(location.search);
   if (embedded && embedded.textContent.trim()) {
     const name = embedded.dataset.name || 'mesh';
     if (embedded.dataset.title) document.title = embedded.dataset.title;
+    // What hbc export-html's reading said (cells dropped by --skip-invalid: the page reads the kept
+    // ones only), as the CLI said it.
+    const warnings = (embedded.dataset.warnings || '').split('\n').filter(Boolean);
     const bytes = base64Bytes(embedded.textContent);
-    openFiles(name, [{ path: name, buffer: bytes.buffer }]);
+    openFiles(name, [{ path: name, buffer: bytes.buffer }], warnings);
   } else if (params.has('mesh')) {
     const url = params.get('mesh');
     const name = params.get('name') || decodeURIComponent(url.split(/[?#]/)[0].split('/').pop() || 'mesh');

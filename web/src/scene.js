@@ -62,7 +62,12 @@ export class Viewer {
     this.size = d;
     this.camera.near = d / 1000;
     this.camera.far = d * 100;
-    this.camera.position.copy(c).add(new THREE.Vector3(0.9, 0.6, 1.3).normalize().multiplyScalar(1.9 * d));
+    // Far enough that the box's bounding sphere (radius d / 2) fits the narrower of the two angles
+    // of view, with a margin: a wide box (subsheets side by side) in a tall canvas stays whole.
+    const half = THREE.MathUtils.degToRad(this.camera.fov / 2);
+    const narrow = Math.min(half, Math.atan(Math.tan(half) * this.camera.aspect));
+    const dist = Math.max(1.9, 0.55 / Math.sin(narrow)) * d;
+    this.camera.position.copy(c).add(new THREE.Vector3(0.9, 0.6, 1.3).normalize().multiplyScalar(dist));
     this.camera.updateProjectionMatrix();
     this.controls.target.copy(c);
     this.controls.update();

@@ -3,7 +3,7 @@
 // `hbc analyze` does, and builds each layer's buffers, which go to the page by transfer.
 /* global createHbcModule, __HBC_WASM_BASE64__ */
 import { Core, arr, csr, get, errorText } from './core.js';
-import { L, paletteColor, spreadColor, componentColor, valenceColor, cellTypeColor, kindColor } from './colors.js';
+import { L, paletteColor, spreadColor, subsheetColor, componentColor, valenceColor, cellTypeColor, kindColor } from './colors.js';
 import { soupPart, linesPart, dotsPart, opacityAlpha, transferList, row } from './geometry.js';
 import { warmUpSteps, WARM_UP } from './warmup.js';
 
@@ -12,6 +12,8 @@ let instantiating = null; // the module's instantiation, started as the worker s
 let warming = null; // the warm-up (warmup.js) while it runs
 let stopWarming = false; // a user's file has arrived: the warm-up ends after its current round
 let S = null; // the open mesh: {name, mesh, analysis, points, cellTypes, centroids, ...}
+let last = null; // the last files given, {name, files: [{path}]}: still in the core's file system, to
+                 // be read again when the page's "skip invalid cells" choice changes
 
 function post(msg, transfer = []) {
   self.postMessage(msg, transfer);
@@ -69,15 +71,21 @@ async function warmUp(size) {
   post({ type: 'warm-up', state: stopWarming ? 'stopped' : 'done', rounds, seconds: (performance.now() - t0) / 1000 });
 }
 
-async function open({ name, files }, t0) {
+async function open({ name, files, skipInvalid, again }, t0) {
   progress(0.05, 'Starting the WebAssembly core');
   const c = await module();
   closeMesh();
+  if (again) {
+    if (!last) throw new Error('No file to read again: open one.');
+    ({ name, files } = last);
+  } else {
+    last = { name, files: files.map((f) => ({ path: f.path })) };
+  }
   progress(0.1, 'Reading ' + name);
   let mesh;
   let analysis;
   try {
-    mesh = c.open(files);
+    mesh = c.open(files, { skipInvalid: !!skipInvalid, written: !!again });
   } catch (e) {
     // The core names the file by its path in the in-memory file system: name it as the user did.
     throw new Error(errorText(c.M, e).split('/in/').join(''));
@@ -109,9 +117,11 @@ async function open({ name, files }, t0) {
     sheets.push({ id: i, type: S.sheetType[i], cells: sc.offsets[i + 1] - sc.offsets[i], blocks: sp.offsets[i + 1] - sp.offsets[i] });
   }
   const info = summary(c, analysis, sheets);
+  // What reading said, as the CLI says it on stderr ("hbc: warning: FILE: TEXT"), cells dropped first.
+  const warnings = (arr(mesh, 'warnings') ?? []).map((w) => `${name}: ${w}`);
   // What the user waited for: from the file's bytes reaching the worker to the counts.
   const seconds = (performance.now() - t0) / 1000;
-  post({ type: 'ready', name, results, timings, info, table1: L.table1 ?? c.table1(), seconds });
+  post({ type: 'ready', name, results, timings, info, warnings, table1: L.table1 ?? c.table1(), seconds });
 }
 
 /** What the page shows beside the layers: counts, the box, the sheets, the legend's facts. */
@@ -317,7 +327,7 @@ function buildSubsheets(p) {
   // One part per subsheet, so that the page can lay them out side by side.
   for (let k = 0; k < count; k++) {
     const one = selectOwners(soup, new Set([k]));
-    parts.push({ ...soupPart(one, () => spreadColor(k), { cellTypes: S.cellTypes, name: `subsheet ${k}` }), subsheet: k });
+    parts.push({ ...soupPart(one, () => subsheetColor(k), { cellTypes: S.cellTypes, name: `subsheet ${k}` }), subsheet: k });
     const dots = row(un, k);
     if (dots.length) parts.push({ ...dotsPart(S.points, dots, L.unmatched_color, `subsheet ${k} unmatched`), subsheet: k });
     if (p.subsheetWires && wiresOk) {
@@ -360,10 +370,10 @@ self.onmessage = async (ev) => {
   try {
     if (msg.type === 'warm') {
       warming ??= warmUp(msg.size).catch(() => {}); // an instantiation error shows when a file is opened
-    } else if (msg.type === 'open') {
+    } else if (msg.type === 'open' || msg.type === 'reopen') {
       stopWarming = true;
       if (warming) await warming;
-      await open(msg, t0);
+      await open({ ...msg, again: msg.type === 'reopen' }, t0);
     } else if (msg.type === 'layer') {
       if (!S) return;
       const parts = BUILDERS[msg.layer](msg.params || {});
@@ -371,7 +381,7 @@ self.onmessage = async (ev) => {
     }
   } catch (e) {
     const text = e instanceof Error ? e.message : errorText(core?.M ?? {}, e);
-    if (msg.type === 'open') {
+    if (msg.type === 'open' || msg.type === 'reopen') {
       closeMesh();
       post({ type: 'error', message: text });
     } else {
