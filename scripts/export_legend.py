@@ -68,6 +68,8 @@ def main(out: str) -> None:
         "palette": [rgba(c) for c in P.PALETTE],
         # planning.spread_ids is periodic in the palette size: one period gives every id's entry.
         "spread": [int(i) for i in P.spread_ids(range(P.PALETTE_SIZE))],
+        # planning.subsheet_colors: subsheet k's palette entry, one period.
+        "subsheet_spread": [int(i) for i in P.spread_ids([-1 - k for k in range(P.PALETTE_SIZE)])],
         "ring_darken": float(P.RING_DARKEN),
         "non_hex_color": rgba(P.NON_HEX_COLOR),
         "valence_colors": {str(v): rgba(P.valence_color(v)) for v in range(0, MAX_VALENCE + 1)},

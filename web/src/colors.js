@@ -15,14 +15,10 @@ export function spreadColor(id) {
   return L.palette[L.spread[id % L.spread.length]];
 }
 
-/** A subsheet's colour: the same palette and spread order as the sheets, walked from its other end
- *  (subsheet k takes the entry sheet -1 - k would), so that subsheet k never has sheet k's colour:
- *  sheet k is entry 7k mod 24, subsheet k entry -7(k + 1) mod 24, and 7k + 7(k + 1) = 14k + 7 is odd,
- *  never a multiple of the palette's even size. Consecutive subsheets stay as far apart as
- *  consecutive sheets. */
+/** planning.subsheet_colors: the sheets' palette order walked from its other end, so that
+ *  subsheet k never has sheet k's colour. */
 export function subsheetColor(k) {
-  const n = L.spread.length;
-  return L.palette[L.spread[n - 1 - (k % n)]];
+  return L.palette[L.subsheet_spread[k % L.subsheet_spread.length]];
 }
 
 /** planning.component_colors: palette by id, rings darker, non-hex components grey. */

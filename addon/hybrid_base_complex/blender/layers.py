@@ -160,7 +160,7 @@ def build_subsheets(tx, coll, s, st, name):
         raise ValueError(f"sheet {i} is not self-intersecting: it has no subsheets")
     sub = s.subsheets(i)
     count = int(sub.count)
-    colors = P.sheet_colors(count)
+    colors = P.subsheet_colors(count)
     made = 0
     all_soup = s.subsheet_soup(i, st.shrink)
     radius = _dot_radius(s, st)

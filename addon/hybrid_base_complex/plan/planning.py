@@ -208,6 +208,14 @@ def sheet_colors(n: int) -> np.ndarray:
     return PALETTE[spread_ids(np.arange(n))].copy()
 
 
+def subsheet_colors(n: int) -> np.ndarray:
+    """(n,4) colours of a sheet's subsheets: the sheets' palette order walked from its other end
+    (subsheet k takes the entry sheet -1-k would), so subsheet k is never drawn in sheet k's colour:
+    sheet k is entry 7k mod 24, subsheet k entry -7(k+1) mod 24, and their sum 14k+7 is odd, never a
+    multiple of the even palette size. Consecutive subsheets stay as far apart as consecutive sheets."""
+    return PALETTE[spread_ids(-1 - np.arange(n))].copy()
+
+
 def sheet_color(sheet: int) -> tuple:
     """The colour of one sheet (sheet_colors' entry for it): the sheets layer's and the picked-sheet
     layer's, and the legend's *Picked sheet* swatch."""
@@ -456,7 +464,8 @@ def table1_row(stats: dict):
         elif isinstance(v, (int, np.integer)):
             rows.append((label, f"{int(v):d}"))
         else:
-            rows.append((label, f"{float(v):.1%}"))
+            # As `hbc table` and the web viewer print them (and the paper's Table 1: a fraction).
+            rows.append((label, f"{float(v):.4f}"))
     return rows
 
 

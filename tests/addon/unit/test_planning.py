@@ -93,7 +93,7 @@ def test_names_and_table_row():
     assert P.layer_collection_name("teapot", "blocks") == "teapot / Blocks"
     row = dict(P.table1_row({"cells": 10, "hex_ratio": 0.5, "components": 4, "hex_components": 3,
                              "sheets": -1, "timings": {"base_complex": 0.0123}}))
-    assert row["|C|"] == "10" and row["|H|/|C|"] == "50.0%" and row["|H_B|/|C_B|"] == "75.0%"
+    assert row["|C|"] == "10" and row["|H|/|C|"] == "0.5000" and row["|H_B|/|C_B|"] == "0.7500"
     assert row["|G_SH|"] == "-" and row["T_GB"] == "12 ms" and row["T_GS"] == "-"
     # The columns are the library's (hbc.TABLE1_COLUMNS): the same heads as `hbc table`.
     assert list(row) == ["|C|", "|H|/|C|", "|C_B|", "|H_B|/|C_B|", "|G_SH|", "T1", "T2", "T3", "|G_SH*|",
@@ -124,9 +124,9 @@ def test_table1_text_markdown_and_csv():
     md = P.table1_text("a|b", stats).splitlines()
     # Header, rule and one row; '|' inside a cell is escaped.
     assert len(md) == 3 and md[0].startswith("| Mesh | \\|C\\| |") and md[1] == "|" + "---|" * 15
-    assert md[2].startswith("| a\\|b | 10 | 50.0% | 4 | 75.0% | - |")
+    assert md[2].startswith("| a\\|b | 10 | 0.5000 | 4 | 0.7500 | - |")
     csv = P.table1_text("x,y", stats, "CSV").splitlines()
-    assert csv[0].split(",")[:3] == ["Mesh", "|C|", "|H|/|C|"] and csv[1].startswith('"x,y",10,50.0%,4,75.0%,-')
+    assert csv[0].split(",")[:3] == ["Mesh", "|C|", "|H|/|C|"] and csv[1].startswith('"x,y",10,0.5000,4,0.7500,-')
     assert all(P.table1_meaning(label) for label, _ in P.table1_row(stats))
 
 
@@ -181,3 +181,13 @@ def test_sheet_order_and_placement():
     # A model spanning x in [-1, 1] beside one ending at x = 10: gap a quarter of its width (0.5).
     assert P.beside([((0, 0, 0), (10, 5, 5))], (-1, -1, -1), (1, 1, 1)) == (11.5, 0.0, 0.0)
     assert P.beside([], (0, 0, 0), (1, 1, 1)) == (0.0, 0.0, 0.0)
+
+
+def test_subsheet_k_is_never_drawn_in_sheet_k_colour():
+    # Sheet k is palette entry 7k mod 24 and subsheet k entry -7(k+1) mod 24: their sum 14k+7 is
+    # odd, so the two never meet; neighbouring subsheets stay 7 entries apart, as sheets do.
+    n = 3 * P.PALETTE_SIZE
+    sheets, subsheets = P.sheet_colors(n), P.subsheet_colors(n)
+    assert all(not np.array_equal(sheets[k], subsheets[k]) for k in range(n))
+    assert all(not np.array_equal(subsheets[k], subsheets[k + 1]) for k in range(n - 1))
+    assert np.array_equal(subsheets[0], P.PALETTE[P.PALETTE_SIZE - 7])
