@@ -49,11 +49,23 @@ void add_format(CLI::App& cmd, std::string& format) {
 
 void add_input(CLI::App& cmd, InputArgs& in) {
   cmd.add_option("FILE", in.file, "mesh file (" + format_list(true) + ") or OpenFOAM case folder")->required();
+  add_reading_options(cmd, in);
+}
+
+void add_reading_options(CLI::App& cmd, InputArgs& in) {
   add_format(cmd, in.format);
   cmd.add_option("--threads", in.threads, "threads for reading and analysing the mesh (default: HBC_THREADS, else every core)")
       ->check(CLI::Range(1, 1024));
   cmd.add_flag("--skip-invalid", in.skip_invalid,
                "drop the cells that cannot be volumes (docs/check.md) instead of refusing the file; stderr says which");
+}
+
+std::vector<std::string> reading_args(const InputArgs& in) {
+  std::vector<std::string> out;
+  if (!in.format.empty()) out.insert(out.end(), {"--format", in.format});
+  if (in.threads > 0) out.insert(out.end(), {"--threads", std::to_string(in.threads)});
+  if (in.skip_invalid) out.push_back("--skip-invalid");
+  return out;
 }
 
 CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "hbc/check.hpp"
 #include "json.hpp"
+#include "stats_format.hpp"
 
 namespace hbc::cli {
 namespace {
@@ -37,9 +38,19 @@ Json report_json(const CheckReport& r) {
     const auto d = static_cast<Defect>(k);
     Json first = Json::array();
     for (const DefectItem& it : r[d].first) first.push_back(item_json(d, it));
-    defects[defect_key(d)] = {{"count", r[d].count}, {"of", defect_subject(d)}, {"refused", defect_refused(d)}, {"first", first}};
+    defects[defect_key(d)] = {{"count", r[d].count},     {"of", defect_subject(d)}, {"refused", defect_refused(d)},
+                              {"dropped", r[d].dropped}, {"first", first}};
   }
-  return {{"file", r.source}, {"vertices", r.vertices}, {"cells", r.cells}, {"clean", r.clean()}, {"defects", defects}};
+  Json j = {{"file", r.source}, {"vertices", r.vertices}, {"cells", r.cells}, {"clean", r.clean()}, {"defects", defects}};
+  add_dropped_json(j, true, r.dropped);  // the very object of `hbc analyze --skip-invalid --json`
+  return j;
+}
+
+// What --skip-invalid does to a class: every element goes, some of them, or none.
+std::string dropped_note(const DefectClass& k) {
+  if (k.dropped == 0) return "";
+  if (k.dropped == k.count) return " [refused; --skip-invalid drops them]";
+  return " [--skip-invalid drops " + std::to_string(k.dropped) + " of them]";
 }
 
 std::string item_text(Defect d, const DefectItem& it) {
@@ -54,7 +65,7 @@ std::string item_text(Defect d, const DefectItem& it) {
   return s;
 }
 
-void print_text(const CheckReport& r) {
+void print_text(const CheckReport& r, size_t listed) {
   std::printf("%s: %lld vertices, %lld cells: %s\n", r.source.c_str(), static_cast<long long>(r.vertices),
               static_cast<long long>(r.cells), r.clean() ? "no defects" : "defects found");
   for (size_t k = 0; k < kDefectCount; ++k) {
@@ -64,15 +75,17 @@ void print_text(const CheckReport& r) {
     for (const DefectItem& it : r[d].first) ids += (ids.empty() ? "" : ", ") + item_text(d, it);
     if (static_cast<size_t>(r[d].count) > r[d].first.size()) ids += ", ...";
     std::printf("  %-20s %8lld %s%s: %s %s\n", defect_key(d), static_cast<long long>(r[d].count), defect_title(d),
-                defect_refused(d) ? " [refused; --skip-invalid drops them]" : "", defect_subject(d), ids.c_str());
+                dropped_note(r[d]).c_str(), defect_subject(d), ids.c_str());
   }
+  // The sentence the load itself warns with (dropped_summary), on the same list.
+  if (!r.dropped.empty()) std::printf("with --skip-invalid: %s\n", dropped_summary(r.dropped, listed).c_str());
 }
 
 void run_check(const CheckArgs& args) {
   const CheckReport r = check_file(args.input.file, args.input.parsed_format(), static_cast<size_t>(args.listed),
                                    args.input.load_threads());
   if (args.json) write_output(json_text(report_json(r)), std::nullopt);
-  else print_text(r);
+  else print_text(r, static_cast<size_t>(args.listed));
   std::fflush(stdout);
   if (!r.clean()) std::exit(1);  // defects found: the status scripts test
 }

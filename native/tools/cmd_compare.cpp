@@ -1,7 +1,8 @@
-// hbc compare FILES... -o DIR [--names A,B,...] [--figures] [-j N]: the structural metrics of
-// several meshes side by side (docs/compare.md). Each mesh is measured by a child process (the
-// hidden `hbc compare-one FILE`, N at a time, as in `hbc table`), so that a file that fails (bad
-// input, crash, out of memory) fails only its own column. This process writes metrics.json,
+// hbc compare FILES... -o DIR [--names A,B,...] [--figures] [-j N] [--format F] [--threads T]
+// [--skip-invalid]: the structural metrics of several meshes side by side (docs/compare.md). Each
+// mesh is measured by a child process (the hidden `hbc compare-one FILE` with the reading options,
+// N at a time, as in `hbc table`), so that a file that fails (bad input, crash, out of memory)
+// fails only its own column. This process writes metrics.json,
 // metrics.csv and metrics.tex itself; report.html (plots, definitions, Blender panels) is written
 // by the Python package (`python -m hbc.report DIR`), which needs matplotlib: when it cannot run,
 // the three tables are still there and the exit status says what is missing.
@@ -55,13 +56,15 @@ Json sj_histograms(const Mesh& mesh, const Threads& threads) {
 }
 
 // `hbc metrics --json`'s object (the same analysis options: no wireframe, the authors' subsheet
-// rule) beside the per-type scaled Jacobian histograms, as one JSON document on stdout.
+// rule) beside the per-type scaled Jacobian histograms, and with --skip-invalid what was dropped
+// (as `hbc analyze --json` says it), as one JSON document on stdout.
 void run_compare_one(const InputArgs& input) {
   AnalysisOptions opt;
   opt.threads = input.threads;
   opt.wireframe = false;
   double t_load = 0;
-  const Mesh mesh = load_for_cli(input, &t_load);
+  std::vector<DroppedCell> dropped;
+  const Mesh mesh = load_for_cli(input, &t_load, &dropped);
   const auto t0 = Clock::now();
   const Analysis analysis = analyze(mesh, opt);
   const auto t1 = Clock::now();
@@ -72,6 +75,7 @@ void run_compare_one(const InputArgs& input) {
                         {"metrics", std::chrono::duration<double>(t2 - t1).count()}};
   Json out = {{"metrics", metrics_json(input.file, m, timings)},
               {"scaled_jacobian_by_type", sj_histograms(mesh, input.load_threads())}};
+  add_dropped_json(out, input.skip_invalid, dropped);
   write_output(json_text(out), std::nullopt);
 }
 
@@ -81,6 +85,7 @@ struct Column {
   std::string name, file;
   Json metrics;         // the child's "metrics" (null when it failed)
   Json sj_by_type;      // the child's "scaled_jacobian_by_type"
+  Json dropped;         // the child's "dropped" (--skip-invalid; null without it or when it failed)
   std::string error;    // empty when the child succeeded
   double seconds = 0;
 };
@@ -100,6 +105,7 @@ void finish_child(const ChildResult& r, Column& c) {
     Json doc = Json::parse(r.out);
     c.metrics = std::move(doc.at("metrics"));
     c.sj_by_type = std::move(doc.at("scaled_jacobian_by_type"));
+    if (doc.contains("dropped")) c.dropped = std::move(doc.at("dropped"));
   } catch (const std::exception& e) {
     c.error = std::string("unreadable result: ") + e.what();
   }
@@ -112,15 +118,21 @@ void report_progress(size_t done, size_t total, const Column& c) {
     std::fprintf(stderr, "hbc compare: [%zu/%zu] %s: FAILED: %s\n", done, total, c.name.c_str(), c.error.c_str());
 }
 
-// Runs one child per column, `jobs` at a time, and fills each column from its child.
-void measure(std::vector<Column>& cols, int jobs) {
+// Runs one child per column with the reading options, `jobs` at a time, and fills each column
+// from its child; the children's warnings (what --skip-invalid dropped) go to our stderr.
+void measure(std::vector<Column>& cols, int jobs, const InputArgs& reading) {
   ChildRuns runs;
   runs.count = cols.size();
   runs.jobs = jobs;
   runs.temp_name = "hbc-compare";
-  runs.args = [&](size_t i) { return std::vector<std::string>{"compare-one", cols[i].file}; };
+  runs.args = [&](size_t i) {
+    std::vector<std::string> a = {"compare-one", cols[i].file};
+    for (std::string& o : reading_args(reading)) a.push_back(std::move(o));
+    return a;
+  };
   size_t done = 0;
   run_children(runs, [&](size_t i, const ChildResult& r) {
+    std::fputs(r.warnings().c_str(), stderr);
     finish_child(r, cols[i]);
     report_progress(++done, cols.size(), cols[i]);
   });
@@ -142,11 +154,13 @@ Json field_json(const MetricField& f) {
           {"refinement", refinement_name(f.refinement)}};
 }
 
-Json comparison_json(const std::vector<Column>& cols) {
+Json comparison_json(const std::vector<Column>& cols, bool skip_invalid) {
   Json j = {{"hbc_version", version()}};
   Json& meshes = j["meshes"] = Json::array();
-  for (const Column& c : cols)
+  for (const Column& c : cols) {
     meshes.push_back({{"name", c.name}, {"file", c.file}, {"error", c.error.empty() ? Json() : Json(c.error)}});
+    if (skip_invalid) meshes.back()["dropped"] = c.dropped;
+  }
   Json& fields = j["fields"] = Json::array();
   Json& values = j["values"] = Json::object();
   for (const MetricField& f : metric_fields()) {
@@ -297,6 +311,7 @@ int run_report(const std::string& dir, bool figures) {
 }
 
 struct CompareArgs {
+  InputArgs reading;  // --format, --threads, --skip-invalid for every child (its file unused)
   std::vector<std::string> files;
   std::string out, names;
   bool figures = false, no_report = false;
@@ -330,9 +345,9 @@ void run_compare(const CompareArgs& args) {
   std::vector<Column> cols = columns_of(args);
   fs::create_directories(args.out);
   const auto t0 = Clock::now();
-  measure(cols, args.jobs);
+  measure(cols, args.jobs, args.reading);
   const fs::path dir(args.out);
-  write_output(json_text(comparison_json(cols)), (dir / "metrics.json").string());
+  write_output(json_text(comparison_json(cols, args.reading.skip_invalid)), (dir / "metrics.json").string());
   write_output(comparison_csv(cols), (dir / "metrics.csv").string());
   write_output(comparison_tex(cols), (dir / "metrics.tex").string());
   std::fprintf(stderr, "hbc compare: %zu mesh(es) measured in %.2f s; wrote %s/metrics.{json,csv,tex}\n",
@@ -370,6 +385,7 @@ void add_compare(CLI::App& app) {
   cmd->add_flag("--figures", args->figures, "render the comparison panels in Blender into the report");
   cmd->add_flag("--no-report", args->no_report, "write only metrics.json/.csv/.tex (no Python)");
   cmd->add_option("-j", args->jobs, "meshes measured at once")->check(CLI::Range(1, 256))->capture_default_str();
+  add_reading_options(*cmd, args->reading);
   cmd->callback([args] { run_compare(*args); });
 
   // The child of one column: hidden, its JSON is an internal format of hbc compare.

@@ -1,6 +1,7 @@
-// hbc table FILES|DIRS [--csv|--md|--latex] [-j N]: the paper's Table 1 for many meshes. Each
-// mesh is analyzed by a child `hbc analyze --csv` process, N at a time, so that one mesh that
-// fails (bad file, crash, out of memory) is reported in its row and never stops the others.
+// hbc table FILES|DIRS [--csv|--md|--latex] [-j N] [--format F] [--threads T] [--skip-invalid]:
+// the paper's Table 1 for many meshes. Each mesh is analyzed by a child `hbc analyze --csv`
+// process with the reading options, N at a time, so that one mesh that fails (bad file, crash,
+// out of memory) is reported in its row and never stops the others.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -106,6 +107,7 @@ std::string title(const Table1Column& c) { return std::string(c.field->notation)
 std::string name_of(const std::string& file) { return fs::path(file).filename().string(); }
 
 struct TableArgs {
+  InputArgs reading;  // --format, --threads, --skip-invalid for every child (its file unused)
   std::vector<std::string> inputs;
   bool csv = false, md = false, latex = false;
   int jobs = 2;
@@ -123,8 +125,15 @@ void run_table(const TableArgs& args) {
   runs.count = files.size();
   runs.jobs = jobs;
   runs.temp_name = "hbc-table";
-  runs.args = [&](size_t i) { return std::vector<std::string>{"analyze", files[i], "--csv"}; };
-  run_children(runs, [&](size_t i, const ChildResult& c) { finish(c, rows[i]); });
+  runs.args = [&](size_t i) {
+    std::vector<std::string> a = {"analyze", files[i], "--csv"};
+    for (std::string& o : reading_args(args.reading)) a.push_back(std::move(o));
+    return a;
+  };
+  run_children(runs, [&](size_t i, const ChildResult& c) {
+    std::fputs(c.warnings().c_str(), stderr);  // what --skip-invalid dropped, faces in no cell, ...
+    finish(c, rows[i]);
+  });
 
   int failures = 0;
   for (const Row& r : rows) failures += !r.error.empty();
@@ -185,6 +194,7 @@ void add_table(CLI::App& app) {
   csv->excludes(md)->excludes(latex);
   md->excludes(latex);
   cmd->add_option("-j", args->jobs, "meshes analyzed at once")->check(CLI::Range(1, 256))->capture_default_str();
+  add_reading_options(*cmd, args->reading);
   cmd->callback([args] { run_table(*args); });
 }
 

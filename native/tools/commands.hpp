@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "hbc/analysis.hpp"
 #include "hbc/check.hpp"
@@ -45,6 +46,11 @@ struct InputArgs {
   }
 };
 void add_input(CLI::App& cmd, InputArgs& in);
+// --format, --threads and --skip-invalid alone, with the help every reading command gives them: for
+// the commands that read many meshes, each in a child (table, compare), which passes them on.
+void add_reading_options(CLI::App& cmd, InputArgs& in);
+// Those options of `in` as a child's arguments (the ones given; none for the defaults).
+std::vector<std::string> reading_args(const InputArgs& in);
 // A subcommand that reads one mesh: FILE and --format into `input`, --json (help `json_help`) into
 // `json`. Returns the subcommand for its own options.
 CLI::App* add_mesh_command(CLI::App& app, const std::string& name, const std::string& help, InputArgs& input,

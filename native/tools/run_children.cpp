@@ -81,6 +81,14 @@ std::string ChildResult::failure(const std::string& otherwise) const {
   return msg.empty() ? otherwise : msg;
 }
 
+std::string ChildResult::warnings() const {
+  std::string out;
+  std::istringstream lines(err);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("hbc: warning: ", 0) == 0) out += line + "\n";
+  return out;
+}
+
 void run_children(const ChildRuns& runs, const std::function<void(size_t, const ChildResult&)>& ended) {
   const std::string self = fs::read_symlink("/proc/self/exe").string();
   std::string tmpl = "/tmp/" + runs.temp_name + "-XXXXXX";

@@ -22,6 +22,8 @@ struct ChildResult {
   // Why a child that ran failed: "crashed (signal N)", else its last "error: " line (the warnings
   // before it are not the reason), else `otherwise`.
   std::string failure(const std::string& otherwise) const;
+  // Its "hbc: warning: " lines (each naming its file), for the parent to repeat.
+  std::string warnings() const;
 };
 
 struct ChildRuns {

@@ -195,6 +195,61 @@ def test_python_compare(shared_data_dir, hbc_cli, tmp_path, monkeypatch):
     assert (tmp_path / "o" / "report.html").is_file()
 
 
+def one_cell_broken(source, target):
+    """The shared RHDM file with its first cell's last face taken out: one open cell, so that the
+    file is refused without --skip-invalid and loses that cell alone with it."""
+    lines = source.read_text().split("\n")
+    nv, nf, _ = map(int, lines[0].split())
+    at = 1 + nv + nf  # the first cell's face line, then its orientation flags
+    faces, flags = lines[at].split(), lines[at + 1].split()
+    lines[at] = " ".join([str(int(faces[0]) - 1), *faces[1:-1]])
+    lines[at + 1] = " ".join([str(int(flags[0]) - 1), *flags[1:-1]])
+    target.write_text("\n".join(lines))
+
+
+def test_skip_invalid_reads_a_broken_file(hbc_cli, shared_data_dir, tmp_path, monkeypatch):
+    """hbc compare and hbc.compare() take the reading options: a published file with one broken cell
+    fails its column without --skip-invalid (the message advising that option) and is measured with
+    it exactly as `hbc metrics --skip-invalid --json` measures it; metrics.json says what went."""
+    source = shared_data_dir / MESHES[0][1]
+    broken = tmp_path / "cube_twist-broken.txt"  # an extension no format claims: --format says it
+    one_cell_broken(source, broken)
+    without = subprocess.run([hbc_cli, "compare", str(source), str(broken), "-o", str(tmp_path / "a"),
+                              "--format", "hybrid", "--no-report"], capture_output=True, text=True)
+    assert without.returncode == 2, without.stderr
+    data = json.loads((tmp_path / "a" / "metrics.json").read_text())
+    error = data["meshes"][1]["error"]
+    assert error.startswith(f"{broken}:") and "--skip-invalid" in error
+    assert "dropped" not in data["meshes"][0]
+    run = subprocess.run([hbc_cli, "compare", str(source), str(broken), "-o", str(tmp_path / "b"),
+                          "--format", "hybrid", "--threads", "1", "--skip-invalid", "--no-report"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert f"hbc: warning: {broken}: 1 cell(s) dropped (1 open_cells): cell 0" in run.stderr
+    data = json.loads((tmp_path / "b" / "metrics.json").read_text())
+    assert data["errors"] == {}
+    assert data["values"]["census.cells"] == [493, 492]
+    assert data["meshes"][0]["dropped"]["count"] == 0
+    assert data["meshes"][1]["dropped"]["by_reason"] == {"open_cells": 1}
+    ref = json.loads(subprocess.run([hbc_cli, "metrics", str(broken), "--format", "hybrid", "--skip-invalid", "--json"],
+                                    capture_output=True, text=True, check=True).stdout)
+    got = dict(data["metrics"][1])
+    got.pop("timings"), ref.pop("timings")
+    assert got == ref
+    # The same from Python, with hbc.load's keywords.
+    monkeypatch.setenv("HBC_CLI", hbc_cli)
+    import hbc
+
+    refused = hbc.compare([broken], tmp_path / "c", format="hybrid")
+    assert "--skip-invalid" in refused["errors"]["cube_twist-broken.txt"]
+    measured = hbc.compare([broken], tmp_path / "d", format="hybrid", threads=1, skip_invalid=True, check=True)
+    assert measured["metrics"][0]["census"] == ref["census"]
+    assert measured["meshes"][0]["dropped"] == data["meshes"][1]["dropped"]
+    for bad in ({"format": "stl"}, {"threads": 0}):
+        with pytest.raises(ValueError):
+            hbc.compare([broken], tmp_path / "e", **bad)
+
+
 STUB_BLENDER = """#!/usr/bin/env python3
 # Stands in for Blender: records its command line and HBC_ADDON_DIR, writes the comparison figure
 # render_figures.py --compare would write (a copy of PNG) and says so as render_figures.py does.

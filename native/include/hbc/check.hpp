@@ -14,9 +14,11 @@
 
 namespace hbc {
 
-// The defect classes in report order. Those up to SharedFaces (defect_refused) make build_mesh
-// refuse the file; a load with skip_invalid drops the cells they name instead, and a dropped
-// cell's reason is the first class of the list it falls in. The others load as they always did.
+// The defect classes in report order. Every element of the defect_refused classes makes build_mesh
+// refuse the file, and a load with skip_invalid drops the cells they name instead; FewFaces and
+// DuplicateCells are refused only in part (a one-face cell is open, a duplicate at a face of 3+
+// cells goes), the others load as they always did. A dropped cell's reason is the first class of
+// the list it falls in, FewFaces included.
 enum class Defect : uint8_t {
   BadIndex,            // a cell names a face or vertex the file does not have, or an element repeats a corner
   DegenerateFaces,     // faces with fewer than 3 corners or a corner twice (ids: faces)
@@ -37,31 +39,7 @@ constexpr size_t kDefectCount = 13;
 const char* defect_key(Defect d);      // the JSON key: "bad_index", "degenerate_faces", ...
 const char* defect_title(Defect d);    // words for the text report
 const char* defect_subject(Defect d);  // what the ids number: "cells", "faces" or "vertices"
-constexpr bool defect_refused(Defect d) { return d <= Defect::SharedFaces; }
-
-// One listed defect: the element's id in the file (0-based, file order), where it is in the file
-// (unset when the reader records none), and for Inverted / ZeroVolume the cell's volume.
-struct DefectItem {
-  int64_t id = -1;
-  SourceLoc loc;
-  double volume = 0;
-};
-struct DefectClass {
-  int64_t count = 0;
-  std::vector<DefectItem> first;  // the lowest ids, at most `listed` of them
-};
-struct CheckReport {
-  std::string source;
-  int64_t vertices = 0, cells = 0;  // as the file has them
-  std::array<DefectClass, kDefectCount> defects;
-  const DefectClass& operator[](Defect d) const { return defects[static_cast<size_t>(d)]; }
-  bool clean() const;
-};
-
-// Every defect class of `in`, each with its count and its first `listed` elements. The classes
-// from NotSimple on are found on the mesh build_mesh makes of the cells a skip_invalid load keeps.
-// Throws InputError only for what no dropping of cells mends (a non-finite coordinate).
-CheckReport check_input(MeshInput in, size_t listed = 10, const Threads& threads = {});
+constexpr bool defect_refused(Defect d) { return d <= Defect::SharedFaces && d != Defect::FewFaces; }
 
 // A cell a skip_invalid load dropped: its id in the file, why, and where it is.
 struct DroppedCell {
@@ -72,6 +50,34 @@ struct DroppedCell {
     return cell == o.cell && reason == o.reason && loc.line == o.loc.line && loc.byte_offset == o.loc.byte_offset;
   }
 };
+
+// One listed defect: the element's id in the file (0-based, file order), where it is in the file
+// (unset when the reader records none), and for Inverted / ZeroVolume the cell's volume.
+struct DefectItem {
+  int64_t id = -1;
+  SourceLoc loc;
+  double volume = 0;
+};
+struct DefectClass {
+  int64_t count = 0;
+  int64_t dropped = 0;            // of these `count` elements, those a skip_invalid load drops
+  std::vector<DefectItem> first;  // the lowest ids, at most `listed` of them
+};
+struct CheckReport {
+  std::string source;
+  int64_t vertices = 0, cells = 0;  // as the file has them
+  std::array<DefectClass, kDefectCount> defects;
+  std::vector<DroppedCell> dropped;  // exactly what a skip_invalid load drops (refused_cells)
+  const DefectClass& operator[](Defect d) const { return defects[static_cast<size_t>(d)]; }
+  bool clean() const;
+};
+
+// Every defect class of `in`, each with its count, how many of them a skip_invalid load drops and
+// its first `listed` elements, and the load's `dropped` list itself (refused_cells' very rule: the
+// report and the load cannot disagree). The classes from NotSimple on are found on the mesh
+// build_mesh makes of the cells a skip_invalid load keeps.
+// Throws InputError only for what no dropping of cells mends (a non-finite coordinate).
+CheckReport check_input(MeshInput in, size_t listed = 10, const Threads& threads = {});
 
 // The cells build_mesh would refuse, in file order. Which cells go is decided in file order and
 // so is the same on every run: first each cell alone (BadIndex, DegenerateFaces, FaceTwice,

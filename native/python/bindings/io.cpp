@@ -38,6 +38,24 @@ py::dict located(int64_t id, const SourceLoc& loc) {
   return d;
 }
 
+// {"count", "by_reason", "cells"} of `hbc analyze --skip-invalid --json`'s "dropped".
+py::dict dropped_cells_dict(const std::vector<DroppedCell>& dropped) {
+  py::dict by;
+  py::list cells;
+  for (const DroppedCell& d : dropped) {
+    const char* key = defect_key(d.reason);
+    by[key] = (by.contains(key) ? by[key].cast<int64_t>() : 0) + 1;
+    py::dict c = located(d.cell, d.loc);
+    c["reason"] = key;
+    cells.append(c);
+  }
+  py::dict out;
+  out["count"] = dropped.size();
+  out["by_reason"] = by;
+  out["cells"] = cells;
+  return out;
+}
+
 // The JSON of `hbc check --json` as a dict, key for key.
 py::dict report_dict(const CheckReport& r) {
   py::dict defects;
@@ -53,6 +71,7 @@ py::dict report_dict(const CheckReport& r) {
     cls["count"] = r[d].count;
     cls["of"] = defect_subject(d);
     cls["refused"] = defect_refused(d);
+    cls["dropped"] = r[d].dropped;
     cls["first"] = first;
     defects[defect_key(d)] = cls;
   }
@@ -62,6 +81,7 @@ py::dict report_dict(const CheckReport& r) {
   out["cells"] = r.cells;
   out["clean"] = r.clean();
   out["defects"] = defects;
+  out["dropped"] = dropped_cells_dict(r.dropped);
   return out;
 }
 
@@ -84,20 +104,7 @@ py::dict check(const py::object& path, const py::object& format, int first, cons
 // The "dropped" member of `hbc analyze --skip-invalid --json` as a dict.
 py::object dropped_dict(const PyMesh& p) {
   if (!p.skip_invalid) return py::none();
-  py::dict by;
-  py::list cells;
-  for (const DroppedCell& d : p.dropped) {
-    const char* key = defect_key(d.reason);
-    by[key] = (by.contains(key) ? by[key].cast<int64_t>() : 0) + 1;
-    py::dict c = located(d.cell, d.loc);
-    c["reason"] = key;
-    cells.append(c);
-  }
-  py::dict out;
-  out["count"] = p.dropped.size();
-  out["by_reason"] = by;
-  out["cells"] = cells;
-  return out;
+  return dropped_cells_dict(p.dropped);
 }
 
 void bind_io(py::module_& m) {
@@ -111,7 +118,8 @@ void bind_io(py::module_& m) {
   m.def("check", &check, py::arg("path"), py::arg("format") = py::none(), py::kw_only(), py::arg("first") = 10,
         py::arg("threads") = py::none(),
         "Every defect class of a file's cells (docs/check.md) as a dict with the keys of `hbc check --json`: "
-        "file, vertices, cells, clean, defects {key: {count, of, refused, first: [{id, line|byte, volume}]}}. "
+        "file, vertices, cells, clean, defects {key: {count, of, refused, dropped, first: [{id, line|byte, volume}]}}, "
+        "dropped (what skip_invalid=True drops: Mesh.dropped of that load). "
         "Raises MeshFormatError only for a file that cannot be read.");
 }
 

@@ -154,19 +154,9 @@ class DefectItem(TypedDict, total=False):
 class DefectClass(TypedDict):
     count: int
     of: str        # "cells", "faces" or "vertices"
-    refused: bool  # build_mesh refuses the file for it (skip_invalid drops such cells)
+    refused: bool  # build_mesh refuses the file for any one of them (skip_invalid drops them all)
+    dropped: int   # of `count`, those skip_invalid drops (few_faces, duplicate_cells: some, or none)
     first: list[DefectItem]
-
-class CheckReport(TypedDict):
-    """`hbc check --json`, key for key (docs/check.md)."""
-    file: str
-    vertices: int
-    cells: int
-    clean: bool
-    defects: dict[str, DefectClass]  # every class of docs/check.md, in its order
-
-def check(path: str | os.PathLike[str], format: Format | None = None, *, first: int = 10,
-          threads: int | None = None) -> CheckReport: ...
 
 class DroppedCell(TypedDict, total=False):
     id: int
@@ -179,6 +169,18 @@ class Dropped(TypedDict):
     count: int
     by_reason: dict[str, int]
     cells: list[DroppedCell]
+
+class CheckReport(TypedDict):
+    """`hbc check --json`, key for key (docs/check.md)."""
+    file: str
+    vertices: int
+    cells: int
+    clean: bool
+    defects: dict[str, DefectClass]  # every class of docs/check.md, in its order
+    dropped: Dropped  # what a skip_invalid load drops: that load's Mesh.dropped
+
+def check(path: str | os.PathLike[str], format: Format | None = None, *, first: int = 10,
+          threads: int | None = None) -> CheckReport: ...
 
 class Timings(TypedDict):
     load: float

@@ -33,16 +33,45 @@ def find_cli() -> str:
     raise CompareError("the hbc command is not found (set HBC_CLI to its path)")
 
 
-def compare(paths, out, names=None, figures: bool = False, jobs: int = 2, check: bool = False) -> dict:
+def _reading_args(format, threads, skip_invalid) -> list:
+    """The command's reading options for hbc.load's keywords, checked as hbc.load checks them."""
+    args = []
+    if format is not None:
+        from . import FORMATS  # the compiled module, loaded already by ``import hbc``
+
+        # The library's rule (format_from_name): a name or alias of FORMATS, in any case.
+        known = {f["name"] for f in FORMATS} | {f["alias"] for f in FORMATS if f["alias"]}
+        if not isinstance(format, str) or format.lower() not in known:
+            names = ", ".join(f["name"] for f in FORMATS)
+            raise ValueError(f"unknown format {format!r} (expected {names})")
+        args += ["--format", format]
+    if threads is not None:
+        if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
+            raise ValueError("threads must be a positive number or None")
+        args += ["--threads", str(threads)]
+    if skip_invalid:
+        args.append("--skip-invalid")
+    return args
+
+
+def compare(paths, out, names=None, figures: bool = False, jobs: int = 2, check: bool = False, *,
+            format: str | None = None, threads: int | None = None, skip_invalid: bool = False) -> dict:
     """Runs ``hbc compare`` on ``paths`` into the folder ``out`` and returns its metrics.json as a
     dict (``["errors"]`` names the meshes that failed; their values are None). The report is drawn
     by this interpreter unless HBC_PYTHON says otherwise. With check=True a failed mesh or report
-    raises CompareError; otherwise the outputs are returned as they are."""
+    raises CompareError; otherwise the outputs are returned as they are.
+
+    format, threads and skip_invalid read every mesh as ``hbc.load`` takes them (the command's
+    ``--format``, ``--threads``, ``--skip-invalid``): a format name of hbc.FORMATS or None for by
+    extension; threads per mesh or None for HBC_THREADS, else every core; skip_invalid drops the
+    cells that cannot be volumes (``["meshes"][i]["dropped"]`` says which) instead of failing the
+    column. Raises ValueError for a format name or thread count hbc.load would refuse."""
     cmd = [find_cli(), "compare", *map(str, paths), "-o", str(out), "-j", str(jobs)]
     if names:
         cmd += ["--names", ",".join(names)]
     if figures:
         cmd.append("--figures")
+    cmd += _reading_args(format, threads, skip_invalid)
     env = dict(os.environ)
     env.setdefault("HBC_PYTHON", sys.executable)
     run = subprocess.run(cmd, env=env, capture_output=True, text=True)

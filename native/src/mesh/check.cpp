@@ -245,6 +245,15 @@ Judgement judge(const MeshInput& in) {
 // The reason a refused cell is dropped for: its first class, FewFaces included.
 Defect reason_of(Mask m) { return first_of(m & (kRefused | bit(Defect::FewFaces))); }
 
+// The cells a skip_invalid load drops, in file order: the one rule of refused_cells and of the
+// report of check_input, so that what `hbc check` says goes is what the load drops.
+std::vector<DroppedCell> dropped_of(const Judgement& j, const MeshInput& in) {
+  std::vector<DroppedCell> out;
+  for (size_t c = 0; c < j.cell.size(); ++c)
+    if (j.cell[c] & kRefused) out.push_back({static_cast<int32_t>(c), reason_of(j.cell[c]), in.loc_of(in.cell_loc, c)});
+  return out;
+}
+
 }  // namespace
 
 const char* defect_key(Defect d) { return kDefectNames[static_cast<size_t>(d)].key; }
@@ -255,13 +264,7 @@ bool CheckReport::clean() const {
   return std::all_of(defects.begin(), defects.end(), [](const DefectClass& d) { return d.count == 0; });
 }
 
-std::vector<DroppedCell> refused_cells(const MeshInput& in) {
-  const Judgement j = judge(in);
-  std::vector<DroppedCell> out;
-  for (size_t c = 0; c < j.cell.size(); ++c)
-    if (j.cell[c] & kRefused) out.push_back({static_cast<int32_t>(c), reason_of(j.cell[c]), in.loc_of(in.cell_loc, c)});
-  return out;
-}
+std::vector<DroppedCell> refused_cells(const MeshInput& in) { return dropped_of(judge(in), in); }
 
 MeshInput without_cells(MeshInput in, const std::vector<DroppedCell>& dropped) {
   const std::vector<Mask> face_mask = judge_faces(in);
@@ -458,30 +461,35 @@ CheckReport check_input(MeshInput in, size_t listed, const Threads& threads) {
   locs.vertex_loc = in.vertex_loc;
   locs.face_loc = in.face_loc;
   locs.cell_loc = in.cell_loc;
-  auto add = [&](Defect d, int64_t id, SourceLoc loc, double volume) {
+  // `goes`: the element is one a skip_invalid load drops (without_cells drops every soup face that
+  // is no polygon, and the cells of dropped_of).
+  auto add = [&](Defect d, int64_t id, SourceLoc loc, double volume, bool goes = false) {
     DefectClass& k = r.defects[static_cast<size_t>(d)];
     if (k.first.size() < listed) k.first.push_back({id, loc, volume});
     ++k.count;
+    k.dropped += goes;
   };
-  auto add_cell = [&](Defect d, int64_t c, double volume) { add(d, c, locs.loc_of(locs.cell_loc, static_cast<size_t>(c)), volume); };
+  auto add_cell = [&](Defect d, int64_t c, double volume, bool goes = false) {
+    add(d, c, locs.loc_of(locs.cell_loc, static_cast<size_t>(c)), volume, goes);
+  };
   for (size_t f = 0; f < j.face.size(); ++f)
-    if (j.face[f] & bit(Defect::DegenerateFaces)) add(Defect::DegenerateFaces, static_cast<int64_t>(f), locs.loc_of(locs.face_loc, f), 0);
-  std::vector<DroppedCell> dropped;
+    if (j.face[f] & bit(Defect::DegenerateFaces)) add(Defect::DegenerateFaces, static_cast<int64_t>(f), locs.loc_of(locs.face_loc, f), 0, true);
+  r.dropped = dropped_of(j, in);
   for (size_t c = 0; c < j.cell.size(); ++c) {
+    const bool goes = (j.cell[c] & kRefused) != 0;
     for (Defect d : {Defect::BadIndex, Defect::FewFaces, Defect::FaceTwice, Defect::OpenCells, Defect::SharedFaces})
-      if (j.cell[c] & bit(d)) add_cell(d, static_cast<int64_t>(c), 0);
-    if (j.duplicate_of[c] >= 0 && j.duplicate_of[c] != static_cast<int32_t>(c)) add_cell(Defect::DuplicateCells, static_cast<int64_t>(c), 0);
-    if (j.cell[c] & kRefused) dropped.push_back({static_cast<int32_t>(c), reason_of(j.cell[c]), {}});
+      if (j.cell[c] & bit(d)) add_cell(d, static_cast<int64_t>(c), 0, goes);
+    if (j.duplicate_of[c] >= 0 && j.duplicate_of[c] != static_cast<int32_t>(c)) add_cell(Defect::DuplicateCells, static_cast<int64_t>(c), 0, goes);
   }
   const std::vector<uint8_t> same_place = coincident(in.points);
   for (size_t v = 0; v < same_place.size(); ++v)
     if (same_place[v]) add(Defect::CoincidentVertices, static_cast<int64_t>(v), locs.loc_of(locs.vertex_loc, v), 0);
   std::vector<int32_t> kept;
   for (size_t c = 0, d = 0; c < j.cell.size(); ++c) {
-    if (d < dropped.size() && dropped[d].cell == static_cast<int32_t>(c)) ++d;
+    if (d < r.dropped.size() && r.dropped[d].cell == static_cast<int32_t>(c)) ++d;
     else kept.push_back(static_cast<int32_t>(c));
   }
-  const Mesh m = build_mesh(without_cells(std::move(in), dropped), threads);
+  const Mesh m = build_mesh(without_cells(std::move(in), r.dropped), threads);
   std::vector<uint8_t> used(m.num_vertices(), 0);
   for (int32_t v : m.face_verts.items) used[static_cast<size_t>(v)] = 1;
   for (size_t v = 0; v < used.size(); ++v)
