@@ -28,6 +28,8 @@ hbc_use_pybind11() {
 }
 # Debian packages scripts/env/deps.sh installs; hbc_missing_packages prints those not installed.
 # openfoam and openfoam-examples make the real snappyHexMesh cases (scripts/env/foam_cases.sh).
+# pybind11-dev (2.10.3) no longer builds the module (hbc_use_pybind11); the test of the module's
+# NumPy 2 refusal compiles its probe with it (tests/numpy_abi/).
 HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3-pytest pybind11-dev
   python3-pybind11 libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev
   libbenchmark-dev blender libpugixml-dev zlib1g-dev python3-meshio libcli11-dev nlohmann-json3-dev
