@@ -36,6 +36,7 @@ cd "$(dirname "$0")/.."
 source scripts/env/common.sh
 DATA=$HBC_DATA_DIR
 BUILD=${1:-build}
+hbc_use_pybind11
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DHBC_BUILD_BENCHMARKS=ON "${HBC_CMAKE_ARGS[@]}" >/dev/null
 cmake --build "$BUILD" -j"$(nproc)" --target hbc_bench_load hbc_cli >/dev/null
 

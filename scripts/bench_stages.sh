@@ -8,6 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/env/common.sh
 BUILD=${1:-build}
+hbc_use_pybind11
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DHBC_BUILD_BENCHMARKS=ON "${HBC_CMAKE_ARGS[@]}" >/dev/null
 cmake --build "$BUILD" -j"$(nproc)" --target hbc_bench_stages >/dev/null
 out=$(mktemp)

@@ -12,6 +12,7 @@ step=all
 case "${1:-}" in --build | --run) step=${1#--}; shift ;; esac
 BUILD=${BUILD:-build-asan}
 if [ "$step" != run ]; then
+  hbc_use_pybind11
   cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHBC_SANITIZE=ON -DHBC_BUILD_BENCHMARKS=OFF \
     "${HBC_CMAKE_ARGS[@]}" >/dev/null
   cmake --build "$BUILD" -j"$(nproc)" --target hbc_cli hbc_tests

@@ -13,6 +13,7 @@ step=all
 case "${1:-}" in --build | --run) step=${1#--}; shift ;; esac
 BUILD=${BUILD:-build-tsan}
 if [ "$step" != run ]; then
+  hbc_use_pybind11
   cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHBC_TSAN=ON -DHBC_BUILD_BENCHMARKS=OFF \
     "${HBC_CMAKE_ARGS[@]}" >/dev/null
   cmake --build "$BUILD" -j"$(nproc)" --target hbc_tests

@@ -4,7 +4,8 @@
 #                 Debian's CPython 3.11, which Debian's Blender embeds and which has numpy and
 #                 pytest; a bare search would find the pyenv Python first on PATH, which has neither)
 #   HBC_DATA_DIR  the shared real meshes (default ../shared/data beside the checkout)
-#   HBC_ENV_DIR   the bpy virtual environments and CPython 3.13 (default ~/.cache/hbc-envs)
+#   HBC_ENV_DIR   the bpy virtual environments, CPython 3.13, the checks' Python and the pinned
+#                 pybind11 (default ~/.cache/hbc-envs)
 # Compiles go through ccache when it is installed (scripts/env/deps.sh installs it), into ccache's
 # own persistent cache (~/.cache/ccache, 5 GB by default; all five trees of scripts/test.sh took
 # 0.19 GB, compressed, so it holds many versions of them; CCACHE_DIR and CCACHE_MAXSIZE change it).
@@ -17,8 +18,18 @@ HBC_CMAKE_ARGS=(-DPython_EXECUTABLE="$HBC_PYTHON" -DHBC_DATA_DIR="$HBC_DATA_DIR"
 if command -v ccache >/dev/null; then
   HBC_CMAKE_ARGS+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
+# Every script that configures a tree (the Python module is part of every tree) calls this first:
+# it adds -Dpybind11_DIR= for the pinned PyPI pybind11 of scripts/env/pybind11.sh (made once under
+# $HBC_ENV_DIR), which reads NumPy 2's arrays; Debian's 2.10.3 does not (native/python/CMakeLists.txt).
+hbc_use_pybind11() {
+  local dir
+  dir=$(bash "$HBC_ROOT/scripts/env/pybind11.sh") || return 1
+  HBC_CMAKE_ARGS+=(-Dpybind11_DIR="$dir")
+}
 # Debian packages scripts/env/deps.sh installs; hbc_missing_packages prints those not installed.
 # openfoam and openfoam-examples make the real snappyHexMesh cases (scripts/env/foam_cases.sh).
+# pybind11-dev (2.10.3) no longer builds the module (hbc_use_pybind11); the test of the module's
+# NumPy 2 refusal compiles its probe with it (tests/numpy_abi/).
 HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3-pytest pybind11-dev
   python3-pybind11 libopenmesh-dev libeigen3-dev libboost-dev libboost-graph-dev libgtest-dev
   libbenchmark-dev blender libpugixml-dev zlib1g-dev python3-meshio libcli11-dev nlohmann-json3-dev

@@ -14,7 +14,8 @@ BUILD=${BUILD:-$ROOT/build-fuzz}
 JOBS=${JOBS:-1}
 
 CC=clang CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -DHBC_BUILD_FUZZERS=ON -DHBC_BUILD_TESTS=OFF \
-  -DHBC_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
+  -DHBC_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython_EXECUTABLE=/usr/bin/python3 \
+  -Dpybind11_DIR="$(bash "$ROOT/scripts/env/pybind11.sh")" >/dev/null
 cmake --build "$BUILD" -j"$(nproc)" --target hbc_cli $(printf 'fuzz_%s ' "${HARNESSES[@]}") >/dev/null
 "$ROOT/tests/fuzz/make_corpus.sh" "$BUILD/bin/hbc" "$BUILD/corpus-seed" >/dev/null
 

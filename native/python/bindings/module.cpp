@@ -1,9 +1,11 @@
 // Entry point of hbc._core, the compiled half of the `hbc` Python package (see hbc/__init__.py).
 #include "bindings.hpp"
+#include "numpy_abi.hpp"
 #include "hbc/version.hpp"
 
 PYBIND11_MODULE(_core, m) {
   namespace hp = hbc::python;
+  hp::require_numpy_abi();  // before anything: never a module whose arrays are wrong
   m.doc() = "Compiled core of hbc; import the `hbc` package instead of this module.";
   m.attr("__version__") = hbc::version();
   // Errors first: the other bindings may raise them at import time.
