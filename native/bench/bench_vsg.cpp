@@ -18,6 +18,7 @@
 #include "hbc/io.hpp"
 #include "hbc/singularity_graph.hpp"
 #include "hbc/vsg_wireframe.hpp"
+#include "hbc/wireframe_style.hpp"
 
 namespace {
 
@@ -57,7 +58,9 @@ void wireframe(benchmark::State& state, const std::string& key, hbc::Level level
     const hbc::CellComplex cx = level == hbc::Level::Complex ? hbc::complex_from_base(p->mesh, p->bc)
                                                                     : hbc::complex_from_mesh(p->mesh);
     w = hbc::vsg_wireframe(cx);
+    const hbc::WireframeStyle style = hbc::wireframe_style(cx, w);  // view + graph + style, as before the split
     benchmark::DoNotOptimize(w.polylines.items.data());
+    benchmark::DoNotOptimize(style.color.data());
   }
   state.counters["cells"] = static_cast<double>(p->mesh.num_cells());
   state.counters["vsg_edges"] = static_cast<double>(w.vsg_edges);

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
+#include "hbc/wireframe_style.hpp"
 #include "stats_format.hpp"
 
 namespace hbc::cli {
@@ -16,7 +17,7 @@ struct AnalyzeArgs {
   InputArgs input;
   bool json = false, csv = false, no_sheets = false, no_wireframe = false;
   std::string level = "complex";
-  double rho = WireframeOptions{}.rho;
+  double rho = WireframeStyleOptions{}.rho;  // checked, then unused (below)
   std::string subsheets = "layers";
 };
 
@@ -25,7 +26,6 @@ void run_analyze(const AnalyzeArgs& args) {
   opt.threads = args.input.threads;
   opt.sheets = !args.no_sheets;
   opt.wireframe = !args.no_wireframe;
-  opt.wireframe_options.rho = args.rho;
   opt.sheet_level = opt.wireframe_level = level_from_name(args.level);
   opt.subsheet_options.rule = *subsheet_rule_from_name(args.subsheets);
   double t_load = 0;
@@ -60,8 +60,9 @@ void add_analyze(CLI::App& app) {
                                    args->input, args->json, "print the statistics (the paper's Table 1 and more) as JSON");
   cmd->add_flag("--csv", args->csv, "print them as one CSV header and row")->excludes("--json");
   add_level(*cmd, args->level, "level of sheets and wireframe");
-  // rho only sets the wireframe's colour classes: no number printed here depends on it (it reaches
-  // only the wireframe stage's time). It stays for the command lines that already pass it.
+  // rho only sets the wireframe's colour classes, which the analysis no longer computes (the render
+  // layer's wireframe_style does, for what shows them): nothing here depends on it. It stays, range
+  // checked, for the command lines that already pass it.
   cmd->add_option("--rho", args->rho, "colour-class threshold of the wireframe (presentation only: no count depends on it)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();

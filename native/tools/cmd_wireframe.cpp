@@ -15,6 +15,7 @@
 #include "hbc/schema.hpp"
 #include "hbc/analysis.hpp"
 #include "hbc/region.hpp"
+#include "hbc/wireframe_style.hpp"
 #include "json.hpp"
 
 namespace hbc::cli {
@@ -23,7 +24,7 @@ namespace {
 struct WireframeArgs {
   InputArgs input;
   std::string level = "complex";
-  double rho = WireframeOptions{}.rho;
+  double rho = WireframeStyleOptions{}.rho;
   std::optional<int32_t> sheet;
   bool all = false, json = false, obj = false;
   std::optional<std::string> out;
@@ -53,20 +54,20 @@ Json non_hex_json(std::span<const int32_t> kinds) {
   return out;
 }
 
-Json edge_json(const Mesh& m, const VsgWireframe& w, size_t i) {
+Json edge_json(const Mesh& m, const VsgWireframe& w, const WireframeStyle& style, size_t i) {
   const auto poly = w.polylines[i];
   Json points = Json::array();
   for (int32_t v : poly)
     for (int d = 0; d < 3; ++d) points.push_back(m.points[3 * static_cast<size_t>(v) + d]);
-  const auto first = w.style.point_opacity.begin() + w.polylines.offsets[i];
+  const auto first = style.point_opacity.begin() + w.polylines.offsets[i];
   return {{"kind", w.kind[i] == WireKind::Vsg ? "vsg" : "trace"},
           {"valence", w.valence[i]},
           {"stop", stop_name(w.stop[i])},
           {"non_important", int(w.non_important[i])},
           {"reactivated", bool(w.reactivated[i])},
           {"shown", bool(w.shown[i])},
-          {"color_class", w.style.color_class[i]},
-          {"color", w.style.color[i]},
+          {"color_class", style.color_class[i]},
+          {"color", style.color[i]},
           {"vertices", Json(std::vector<int32_t>(poly.begin(), poly.end()))},
           {"points", std::move(points)},
           {"opacity", Json(std::vector<double>(first, first + static_cast<std::ptrdiff_t>(poly.size())))},
@@ -84,10 +85,10 @@ Json simplified_json(const VsgWireframe& w) {
   return out;
 }
 
-std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeOptions& opt, const VsgWireframe& w,
-                      double seconds) {
+std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeStyleOptions& opt, const VsgWireframe& w,
+                      const WireframeStyle& style, double seconds) {
   Json edges = Json::array();
-  for (size_t i = 0; i < w.size(); ++i) edges.push_back(edge_json(m, w, i));
+  for (size_t i = 0; i < w.size(); ++i) edges.push_back(edge_json(m, w, style, i));
   Json j = {{"file", args.input.file},
             {"level", args.level},
             {"sheet", args.sheet.value_or(-1)},
@@ -102,7 +103,7 @@ std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeO
   return cli::json_text(j);
 }
 
-std::string obj_text(const Mesh& m, const VsgWireframe& w, bool all) {
+std::string obj_text(const Mesh& m, const VsgWireframe& w, const WireframeStyle& style, bool all) {
   std::string o = "# hbc wireframe: one object per colour class; l = polylines of mesh vertices\n";
   std::vector<int32_t> index(m.num_vertices(), 0);
   int32_t n = 0;
@@ -119,10 +120,10 @@ std::string obj_text(const Mesh& m, const VsgWireframe& w, bool all) {
   // Classes in order of their id (the lowest wire edge), each wire edge listed under its class.
   std::vector<std::vector<int32_t>> members(w.size());
   for (size_t i = 0; i < w.size(); ++i)
-    if (all || w.shown[i]) members[w.style.color_class[i]].push_back(static_cast<int32_t>(i));
+    if (all || w.shown[i]) members[style.color_class[i]].push_back(static_cast<int32_t>(i));
   for (size_t c = 0; c < members.size(); ++c) {
     if (members[c].empty()) continue;
-    o += "o class_" + std::to_string(c) + "_color_" + std::to_string(w.style.color[c]) + "\n";
+    o += "o class_" + std::to_string(c) + "_color_" + std::to_string(style.color[c]) + "\n";
     for (int32_t i : members[c]) {
       o += "l";
       for (int32_t p : w.polylines[i]) o += ' ' + std::to_string(index[p]);
@@ -142,13 +143,15 @@ void run_wireframe(const WireframeArgs& args) {
   analysis_opt.wireframe = false;
   const Analysis a = analyze(m, analysis_opt);
   check_sheet_option(a, args.sheet);
-  WireframeOptions opt;
+  WireframeStyleOptions opt;
   opt.rho = args.rho;
+  // The time of what this command computes: the wireframe and its style.
   const auto t1 = std::chrono::steady_clock::now();
-  const VsgWireframe w = region_wireframe(m, a, level_from_name(args.level), opt, args.sheet);
+  const WireframeStage st = region_wireframe_stage(m, a, level_from_name(args.level), {}, args.sheet);
+  const WireframeStyle style = wireframe_style(st.view, st.wireframe, opt);
   const auto t2 = std::chrono::steady_clock::now();
-  write_output(args.obj ? obj_text(m, w, args.all)
-                        : json_text(m, args, opt, w, std::chrono::duration<double>(t2 - t1).count()),
+  write_output(args.obj ? obj_text(m, st.wireframe, style, args.all)
+                        : json_text(m, args, opt, st.wireframe, style, std::chrono::duration<double>(t2 - t1).count()),
                args.out);
 }
 

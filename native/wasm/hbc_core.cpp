@@ -24,6 +24,7 @@
 #include "hbc/render_geometry.hpp"
 #include "hbc/schema.hpp"
 #include "hbc/version.hpp"
+#include "hbc/wireframe_style.hpp"
 
 using emscripten::val;
 
@@ -113,8 +114,8 @@ class JsMesh {
 
 class JsAnalysis {
  public:
-  JsAnalysis(std::shared_ptr<LoadedMesh> m, std::shared_ptr<Analysis> a, const AnalysisOptions& options)
-      : m_(std::move(m)), a_(std::move(a)), level_(options.wireframe_level), wire_options_(options.wireframe_options) {
+  JsAnalysis(std::shared_ptr<LoadedMesh> m, std::shared_ptr<Analysis> a, const AnalysisOptions& options, double rho)
+      : m_(std::move(m)), a_(std::move(a)), level_(options.wireframe_level), rho_(rho) {
     if (a_->sheet_stage)
       sheet_classes_ = std::make_shared<ClassArrays>(flatten_classes(a_->sheet_stage->domain, a_->sheet_stage->sheets.classes));
   }
@@ -192,32 +193,40 @@ class JsAnalysis {
     }
     return o;
   }
-  // The whole-mesh VSG wireframe (Wireframe in _core.pyi), or null when it did not run.
-  val wireframe() const {
-    if (!a_->wireframe_stage) return val::null();
-    return wire_object(a_->wireframe_stage->wireframe);
-  }
+  // The whole-mesh VSG wireframe (Wireframe in _core.pyi), or null when it did not run; styled at
+  // the analysis' rho.
+  val wireframe() const { return wireframe(-1, -1, rho_); }
   // wireframe(sheet, subsheet) of _core.pyi: the wireframe of a sheet's (or one of its subsheets')
   // cells with their adjacent non-hex cells; -1 for none (both -1: the whole mesh's).
-  val wireframe(int sheet, int subsheet) const {
+  val wireframe(int sheet, int subsheet) const { return wireframe(sheet, subsheet, rho_); }
+  // The same styled at `rho` (wireframe(sheet=, subsheet=, rho=) of _core.pyi): the style is the
+  // render layer's step, so another rho restyles and never analyses again.
+  val wireframe(int sheet, int subsheet, double rho) const {
     if (sheet < 0 && subsheet >= 0) throw_js("a subsheet needs its sheet");
-    if (sheet < 0) return wireframe();
-    return guarded([&] {
+    return guarded([&]() -> val {
+      WireframeStyleOptions style;
+      style.rho = rho;
+      if (sheet < 0) {
+        if (!a_->wireframe_stage) return val::null();
+        const WireframeStage& st = *a_->wireframe_stage;
+        return wire_object(st.wireframe, wireframe_style(st.view, st.wireframe, style));
+      }
       std::optional<int32_t> sub;
       if (subsheet >= 0) sub = subsheet;
-      return wire_object(region_wireframe(m_->mesh, *a_, level_, wire_options_, sheet, sub));
+      const WireframeStage st = region_wireframe_stage(m_->mesh, *a_, level_, {}, sheet, sub);
+      return wire_object(st.wireframe, wireframe_style(st.view, st.wireframe, style));
     });
   }
-  static val wire_object(const VsgWireframe& w) {
+  static val wire_object(const VsgWireframe& w, const WireframeStyle& style) {
     val o = val::object();
     o.set("count", static_cast<int>(w.size()));
     o.set("polylines_offsets", copy(w.polylines.offsets));
     o.set("polylines_items", copy(w.polylines.items));
-    o.set("point_opacity", copy(w.style.point_opacity));
+    o.set("point_opacity", copy(style.point_opacity));
     o.set("kind", copy(w.kind));
     o.set("shown", copy(w.shown));
-    o.set("color", copy(w.style.color));
-    o.set("color_class", copy(w.style.color_class));
+    o.set("color", copy(style.color));
+    o.set("color_class", copy(style.color_class));
     o.set("non_hex_offsets", copy(w.non_hex.offsets));
     o.set("non_hex_items", copy(w.non_hex.items));
     o.set("simplified_polylines_offsets", copy(w.simplified_polylines.offsets));
@@ -259,7 +268,7 @@ class JsAnalysis {
   std::shared_ptr<LoadedMesh> m_;
   std::shared_ptr<Analysis> a_;
   Level level_;
-  WireframeOptions wire_options_;
+  double rho_;  // the wireframes' rho without one (analyze's option; presentation only)
   std::shared_ptr<const ClassArrays> sheet_classes_;  // computed once, as the Python binding does
 };
 
@@ -287,11 +296,12 @@ JsAnalysis JsMesh::analyze(val options) const {
       if (!rule) throw std::invalid_argument("subsheet_rule: 'layers' or 'fewest', not '" + v.as<std::string>() + "'");
       opt.subsheet_options.rule = *rule;
     }
-    if (val v = get("rho"); !v.isUndefined()) opt.wireframe_options.rho = v.as<double>();
+    double rho = WireframeStyleOptions{}.rho;  // not the analysis': the wireframes' style
+    if (val v = get("rho"); !v.isUndefined()) rho = v.as<double>();
     if (val v = get("sheets"); !v.isUndefined()) opt.sheets = v.as<bool>();
     if (val v = get("subsheets"); !v.isUndefined()) opt.subsheets = v.as<bool>();
     if (val v = get("wireframe"); !v.isUndefined()) opt.wireframe = v.as<bool>();
-    return JsAnalysis(m_, std::make_shared<Analysis>(hbc::analyze(m_->mesh, opt)), opt);
+    return JsAnalysis(m_, std::make_shared<Analysis>(hbc::analyze(m_->mesh, opt)), opt, rho);
   });
 }
 
@@ -463,6 +473,7 @@ EMSCRIPTEN_BINDINGS(hbc_core) {
       // Overloaded on the number of arguments: wireframe() or wireframe(sheet, subsheet).
       .function("wireframe", select_overload<val() const>(&JsAnalysis::wireframe))
       .function("wireframe", select_overload<val(int, int) const>(&JsAnalysis::wireframe))
+      .function("wireframe", select_overload<val(int, int, double) const>(&JsAnalysis::wireframe))
       .function("block_soup", &JsAnalysis::block_soup);
   function("load", &load);
   function("polylines", &polylines);

@@ -11,7 +11,7 @@ export type SoupWhat = "cells" | "components" | "sheets" | "subsheets" | "sheet"
 export interface AnalyzeOptions {
   level?: Level;                       // default "complex"
   subsheet_rule?: "layers" | "fewest"; // default "layers"
-  rho?: number;                        // wireframe colour-class threshold, default 0.8
+  rho?: number;                        // the wireframes' colour-class threshold when wireframe() is given none, default 0.8
   sheets?: boolean; subsheets?: boolean; wireframe?: boolean;  // default true
 }
 
@@ -98,6 +98,8 @@ export interface Analysis {
   // The wireframe of a sheet's (or one of its subsheets') cells with their adjacent non-hex cells,
   // as Analysis.wireframe(sheet=, subsheet=); -1 for none (wireframe(-1, -1) is the whole mesh's).
   wireframe(sheet: number, subsheet: number): Wireframe | null;
+  // The same styled at rho (colour classes, colours, opacity): a restyle, no analysis runs again.
+  wireframe(sheet: number, subsheet: number, rho: number): Wireframe | null;
   block_soup(what: SoupWhat, sheet: number, shrink: number): BlockSoup;  // sheet -1: none
   delete(): void;
 }

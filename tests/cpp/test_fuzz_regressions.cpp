@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../fuzz/fuzz_targets.hpp"
+#include "hbc/wireframe_style.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -199,7 +200,8 @@ TEST(ResourceBounds, TetFanAnalyze) {
   const Analysis a = analyze(m);
   ASSERT_TRUE(a.wireframe_stage);
   EXPECT_EQ(a.wireframe_stage->wireframe.vsg_edges, 4000 + 1);  // the axis and the k spokes at its ends
-  EXPECT_EQ(a.wireframe_stage->wireframe.style.color.size(), a.wireframe_stage->wireframe.size());
+  EXPECT_EQ(wireframe_style(a.wireframe_stage->view, a.wireframe_stage->wireframe).color.size(),
+            a.wireframe_stage->wireframe.size());
   // One thread, so that the thread's clock sees all the work (with a pool it sees the share this
   // thread happened to take, which varied with the machine's load).
   AnalysisOptions one;

@@ -10,6 +10,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
+#include "hbc/wireframe_style.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -127,9 +128,10 @@ void expect_invariants(const Mesh& m, const Analysis& a, const AnalysisOptions& 
     for (size_t j = 1; j < p.size(); ++j)
       EXPECT_TRUE(is_mesh_edge(m, ve, p[j - 1], p[j])) << "wire edge " << i << " step " << j;
   }
-  ASSERT_EQ(w.style.point_opacity.size(), w.polylines.items.size());
-  const float floor = static_cast<float>(opt.wireframe_options.opacity_floor);
-  for (float o : w.style.point_opacity) {
+  const WireframeStyle style = wireframe_style(a.wireframe_stage->view, w);
+  ASSERT_EQ(style.point_opacity.size(), w.polylines.items.size());
+  const float floor = static_cast<float>(WireframeStyleOptions{}.opacity_floor);
+  for (float o : style.point_opacity) {
     EXPECT_GE(o, floor - 1e-6f);
     EXPECT_LE(o, 1.0f + 1e-6f);
   }

@@ -19,6 +19,7 @@
 #include "hbc/singularity_graph.hpp"
 #include "hbc/region.hpp"
 #include "hbc/vsg_wireframe.hpp"
+#include "hbc/wireframe_style.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
@@ -187,12 +188,14 @@ TEST(VsgWireframe, SmallGridTurnsOnlyAtCorners) {
 
 TEST(VsgWireframe, DeterministicUnderRenumbering) {
   const Mesh m = y_mesh();
-  const VsgWireframe a = vsg_wireframe(complex_from_mesh(m));
-  const VsgWireframe again = vsg_wireframe(complex_from_mesh(m));
+  const CellComplex cx = complex_from_mesh(m), cx_again = complex_from_mesh(m);
+  const VsgWireframe a = vsg_wireframe(cx);
+  const VsgWireframe again = vsg_wireframe(cx_again);
   EXPECT_EQ(a.polylines.items, again.polylines.items);
   EXPECT_EQ(a.shown, again.shown);
-  EXPECT_EQ(a.style.color, again.style.color);
-  EXPECT_EQ(a.style.point_opacity, again.style.point_opacity);
+  const WireframeStyle sa = wireframe_style(cx, a), sa_again = wireframe_style(cx_again, again);
+  EXPECT_EQ(sa.color, sa_again.color);
+  EXPECT_EQ(sa.point_opacity, sa_again.point_opacity);
   std::mt19937 rng(7);
   const test::Renumbering rn = test::random_renumbering(m, rng);
   const Mesh& r = rn.mesh;
@@ -250,10 +253,11 @@ std::vector<int32_t> hop_distances(const Mesh& m) {
 
 void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& w, const std::string& what) {
   SCOPED_TRACE(what);
-  const WireframeOptions opt;
+  const WireframeStyleOptions opt;
+  const WireframeStyle style = wireframe_style(cx, w, opt);
   std::set<std::pair<int32_t, int32_t>> mesh_edges;
   for (auto [a, b] : m.edge_verts) mesh_edges.insert({a, b});
-  ASSERT_EQ(w.style.point_opacity.size(), w.polylines.items.size());
+  ASSERT_EQ(style.point_opacity.size(), w.polylines.items.size());
   // The oracle holds for the whole fine mesh (a region has its own irregular edges and graph).
   const bool whole_mesh = cx.level == Level::Mesh && cx.num_cells() == m.num_cells();
   const std::vector<int32_t> hops = whole_mesh ? hop_distances(m) : std::vector<int32_t>{};
@@ -269,12 +273,12 @@ void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& 
     for (int32_t e : w.edges[i]) all_irregular = all_irregular && cx.irregular(e);
     ASSERT_EQ(all_irregular, w.kind[i] == WireKind::Vsg);
     if (w.ends[i][0] >= 0) ASSERT_TRUE(w.vert_singular[w.ends[i][0]] || w.vert_singular[w.ends[i][1]]);
-    ASSERT_LT(w.style.color[i], opt.palette_size);
-    ASSERT_GE(w.style.color[i], 0);
+    ASSERT_LT(style.color[i], opt.palette_size);
+    ASSERT_GE(style.color[i], 0);
     bool opaque = w.kind[i] == WireKind::Vsg;
     for (int32_t e : w.edges[i]) opaque = opaque || cx.edge_non_hex[e];
     for (int32_t k = w.polylines.offsets[i]; k < w.polylines.offsets[i + 1]; ++k) {
-      const float o = w.style.point_opacity[k];
+      const float o = style.point_opacity[k];
       ASSERT_GE(o, float(opt.opacity_floor) - 1e-6f);
       ASSERT_LE(o, 1.0f);
       if (opaque) ASSERT_EQ(o, 1.0f);
@@ -366,7 +370,9 @@ TEST(VsgWireframe, SheetWireframesMatchTheAuthors) {
 TEST(VsgWireframe, ColoursSeparateAdjacentClasses) {
   HBC_REQUIRE_DATA("hybrid-base-complex/teapot.hedra");
   const Mesh m = test::load_data("hybrid-base-complex/teapot.hedra");
-  const VsgWireframe w = vsg_wireframe(complex_from_base(m, base_complex(m, singularity_graph(m))));
+  const CellComplex cx = complex_from_base(m, base_complex(m, singularity_graph(m)));
+  const VsgWireframe w = vsg_wireframe(cx);
+  const WireframeStyle style = wireframe_style(cx, w);
   std::map<int32_t, std::set<int32_t>> at_point;
   for (size_t i = 0; i < w.size(); ++i)
     for (int32_t p : w.polylines[i]) at_point[p].insert(static_cast<int32_t>(i));
@@ -374,9 +380,9 @@ TEST(VsgWireframe, ColoursSeparateAdjacentClasses) {
   for (const auto& [p, ws] : at_point)
     for (int32_t a : ws)
       for (int32_t b : ws) {
-        if (a >= b || w.style.color_class[a] == w.style.color_class[b]) continue;
+        if (a >= b || style.color_class[a] == style.color_class[b]) continue;
         ++adjacent;
-        conflicts += w.style.color[a] == w.style.color[b];
+        conflicts += style.color[a] == style.color[b];
       }
   EXPECT_GT(adjacent, 0);
   // Greedy colouring with 8 colours: a clash only where a class already has 8+ coloured neighbours.

@@ -11,6 +11,7 @@
 #include "hbc/io.hpp"
 #include "hbc/singularity_graph.hpp"
 #include "hbc/vsg_wireframe.hpp"
+#include "hbc/wireframe_style.hpp"
 #include "test_support.hpp"
 
 namespace hbc {
@@ -24,6 +25,12 @@ void expect_thread_independent(const CellComplex& cx) {
   for (int threads : {2, 3}) {
     SCOPED_TRACE(threads);
     test::expect_same(one, vsg_wireframe(cx, {}, Threads{threads, 16}), "the wireframe");
+  }
+  // The style, a render step of its own, split over threads too.
+  const WireframeStyle style = wireframe_style(cx, one, {}, Threads{1, 16});
+  for (int threads : {2, 3}) {
+    SCOPED_TRACE(threads);
+    EXPECT_TRUE(style == wireframe_style(cx, one, {}, Threads{threads, 16})) << "the style";
   }
 }
 

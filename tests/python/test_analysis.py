@@ -429,3 +429,44 @@ def test_threads_keyword_changes_no_array(shared_data_dir):
     assert s1 == s2
     with pytest.raises(ValueError):
         m.analyze(threads=0)
+
+
+def cli_wireframe_style(cli, path, *flags):
+    """(color_class, color, opacity) per chain of `hbc wireframe --json` (the CLI's own style)."""
+    out = json.loads(subprocess.run([cli, "wireframe", str(path), "--json", *flags], capture_output=True, text=True,
+                                    check=True).stdout)
+    edges = out["edges"]
+    return ([e["color_class"] for e in edges], [e["color"] for e in edges],
+            np.concatenate([np.asarray(e["opacity"], np.float32) for e in edges]))
+
+
+def test_rho_restyles_without_analysing(hbc_cli, shared_data_dir):
+    """The style is the render layer's step: Analysis.wireframe(rho=) and Wireframe.restyled(rho)
+    give at another rho what `hbc wireframe --rho` gives, on the same analysis and the same
+    wireframe arrays (shared, not computed again); the analysis' own rho is only their default."""
+    # The twist cube's whole-mesh wireframe has classes that join at rho 0 (teapot's does not).
+    path = shared_data_dir / TABLE1 / "cube_twist-comp.obj.HYBRID"
+    a = hbc.load(path).analyze(rho=0.8)
+    stats = a.stats
+    w8 = a.wireframe()
+    assert w8.rho == 0.8 and a.rho == 0.8
+    w0 = a.wireframe(rho=0.0)
+    again = w8.restyled(0.0)
+    assert w0.rho == again.rho == 0.0
+    for w, flags in ((w8, ()), (w0, ("--rho", "0")), (again, ("--rho", "0"))):
+        classes, colors, opacity = cli_wireframe_style(hbc_cli, path, *flags)
+        assert w.color_class.tolist() == classes and w.color.tolist() == colors
+        assert np.array_equal(w.point_opacity, opacity)
+    assert len(np.unique(w0.color_class)) < len(np.unique(w8.color_class)), "rho 0 joins classes"
+    # The restyle shares the wireframe: the same polylines, not a copy; the counts are unchanged.
+    assert np.shares_memory(again.polylines_items, w8.polylines_items)
+    assert a.stats["vsg_edges"] == stats["vsg_edges"] and a.stats["timings"] == stats["timings"]
+    # A sheet's wireframe restyles the same way.
+    s = 0
+    ws = a.wireframe(sheet=s, rho=0.0)
+    classes, colors, _ = cli_wireframe_style(hbc_cli, path, "--sheet", str(s), "--rho", "0")
+    assert ws.color_class.tolist() == classes and ws.color.tolist() == colors
+    with pytest.raises(ValueError, match="rho"):
+        w8.restyled(1.5)
+    with pytest.raises(ValueError, match="rho"):
+        a.wireframe(rho=-0.1)

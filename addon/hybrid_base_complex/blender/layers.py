@@ -179,7 +179,7 @@ def build_subsheets(tx, coll, s, st, name):
                           np.tile(P.UNMATCHED_COLOR, (d.num_faces, 1)), None,
                           _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_highlight="unmatched"))
             made += 1
-        lines = s.wireframe(i, k, st.opacity_floor, st.simplified, _by_kind(st))
+        lines = s.wireframe(i, k, st.opacity_floor, st.simplified, _by_kind(st), _rho(st))
         below = np.array(P.spread_translation(k, s.points, below=True), np.float32) if st.spread else offset
         lines.positions = lines.positions + below
         if lines.positions.size:
@@ -196,9 +196,19 @@ def _by_kind(st):
     return getattr(st, "wireframe_colors", "CLASS") == "KIND"
 
 
+def _rho(st):
+    """The panel's ρ (Scene.hbc.rho) the wireframes are styled at; settings without one (the figure
+    script's) leave the structure's (session.analyze's)."""
+    return getattr(st, "rho", None)
+
+
+#: The layers whose colours depend on ρ: a new ρ rebuilds them (restyle) and nothing else.
+STYLED_LAYERS = ("wireframe", "subsheets")
+
+
 def build_wireframe(tx, coll, s, st, name):
     sheet = st.sheet_index if st.wireframe_scope == "SHEET" else None
-    lines = s.wireframe(sheet, None, st.opacity_floor, st.simplified, _by_kind(st))
+    lines = s.wireframe(sheet, None, st.opacity_floor, st.simplified, _by_kind(st), _rho(st))
     if not lines.positions.size:
         return 0
     S.lines_object(tx, coll, f"{name} wireframe" + (f" sheet {sheet}" if sheet is not None else ""), lines,

@@ -70,7 +70,18 @@ def analyze(structure: Structure, rho: float = 0.8, log=print, subsheet_rule: st
                                                 wireframe=True, subsheet_rule=subsheet_rule)
     structure.rho = rho
     structure.subsheet_rule = subsheet_rule
+    structure.analyses += 1
     log(f"hbc: analyzed in {time.perf_counter() - t:.2f} s (subsheets: {subsheet_rule})")
+    return structure
+
+
+def restyle(structure: Structure, rho: float) -> Structure:
+    """A new ρ for the structure's wireframes: their colour classes are the render layer's style
+    (hbc.Wireframe.restyled), so nothing is analysed again (structure.analysis stays the same
+    object; structure.analyses does not grow)."""
+    if not 0.0 <= float(rho) <= 1.0:
+        raise ValueError(f"rho must be in [0, 1], not {rho}")
+    structure.rho = float(rho)
     return structure
 
 

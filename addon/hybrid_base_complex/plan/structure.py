@@ -30,6 +30,10 @@ class Structure:
         self.set_offset(offset)
         self._component_sheets = None
         self.subsheet_rule = "layers"  # the rule the analysis split sheets by (session.analyze sets it)
+        # ρ of the wireframes' colour classes (session.analyze, session.restyle): presentation only,
+        # a new ρ restyles the wireframes and keeps the analysis.
+        self.rho = 0.8
+        self.analyses = 0  # how many times session.analyze ran on this mesh (a restyle runs none)
         self._metrics = (None, None)  # (the analysis they were computed on, Analysis.metrics())
 
     def set_offset(self, offset):
@@ -253,11 +257,11 @@ class Structure:
         return P.csr_row(off, items, index)
 
     # -- VSG wireframe ------------------------------------------------------------------------
-    def wireframe(self, sheet=None, subsheet=None, floor=0.15, simplified=True, by_kind=False) -> P.Lines:
-        """VSG wireframe polylines coloured by palette class (by_kind: by non-hex kind,
-        planning.chain_kind_colors), alpha = opacity (floor mapped)."""
+    def wireframe(self, sheet=None, subsheet=None, floor=0.15, simplified=True, by_kind=False, rho=None) -> P.Lines:
+        """VSG wireframe polylines coloured by palette class at `rho` (None: self.rho; by_kind: by
+        non-hex kind, planning.chain_kind_colors), alpha = opacity (floor mapped)."""
         a = self.analysis
-        kwargs = {}
+        kwargs = {"rho": float(self.rho if rho is None else rho)}
         if sheet is not None and sheet >= 0:
             kwargs["sheet"] = int(sheet)
             if subsheet is not None and subsheet >= 0:

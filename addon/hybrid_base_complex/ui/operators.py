@@ -228,7 +228,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
 
 
 class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
-    """Analyze the active hex-dominant mesh (again, with the current ρ)"""
+    """Analyze the active hex-dominant mesh (again)"""
 
     bl_idname = "hbc.analyze"
     bl_label = "Analyze"

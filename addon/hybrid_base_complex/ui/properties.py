@@ -71,8 +71,10 @@ class HBCSettings(bpy.types.PropertyGroup):
 
     # wireframe
     rho: FloatProperty(name="ρ", default=0.8, min=0.0, max=1.0,
+                       update=lambda self, context: _rho_changed(self),
                        description="Threshold of the wireframe's colour classes (partial-parallel fraction; "
-                                   "only colours depend on it), used when the mesh is analyzed (again)")
+                                   "only colours depend on it): a change restyles the wireframes, "
+                                   "without analysing again")
     subsheet_rule: EnumProperty(
         name="Subsheets", default="layers",
         items=[("layers", "Layers", "The paper's authors' decomposition of self-intersecting sheets"),
@@ -97,6 +99,26 @@ def _sheets_visibility(settings):
     coll = scene.find_layer(root, "sheets") if root is not None else None
     if coll is not None:
         layers.show_sheets([ob for ob in scene.objects_in(coll) if "hbc_sheet" in ob], settings)
+
+
+def _rho_changed(settings):
+    """A new ρ: the active mesh's wireframe layers (layers.STYLED_LAYERS) are rebuilt at it from
+    the analysis in memory, which stays as it is (the style is the render layer's, not the
+    analysis'); a mesh not in memory gets it at its next build."""
+    root = find_root(settings.active_mesh) if settings.active_mesh else None
+    s = session.get(root.name) if root is not None else None
+    if s is None or s.analysis is None:
+        return
+    session.restyle(s, settings.rho)
+    root["hbc_rho"] = float(settings.rho)
+    for layer in layers.STYLED_LAYERS:
+        coll = scene.find_layer(root, layer)
+        if coll is None or coll.get("hbc_stale"):
+            continue
+        try:
+            layers.build_layer(root, layer, s, settings)
+        except Exception as e:  # noqa: BLE001 - an update callback cannot report; the layer stays as it was
+            print(f"hbc: could not restyle {P.LAYER_TITLES[layer]}: {P.describe_error(e)}")
 
 
 def _sheet_picked(settings, context):

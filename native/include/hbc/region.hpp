@@ -26,7 +26,12 @@ const Subsheets& require_subsheets(const Analysis& analysis, int32_t sheet);
 std::vector<int32_t> region_cells(const Mesh& mesh, const Analysis& analysis, std::optional<int32_t> sheet,
                                   std::optional<int32_t> subsheet = std::nullopt);
 
-// The VSG wireframe of that region (the whole mesh without a sheet) at `level`.
+// The VSG wireframe of that region (the whole mesh without a sheet) at `level`, with the view it
+// was computed on (which wireframe_style reads).
+WireframeStage region_wireframe_stage(const Mesh& mesh, const Analysis& analysis, Level level,
+                                      const WireframeOptions& options, std::optional<int32_t> sheet,
+                                      std::optional<int32_t> subsheet = std::nullopt);
+// The same without the view.
 VsgWireframe region_wireframe(const Mesh& mesh, const Analysis& analysis, Level level, const WireframeOptions& options,
                               std::optional<int32_t> sheet, std::optional<int32_t> subsheet = std::nullopt);
 

@@ -28,17 +28,12 @@
 
 #include "hbc/cell_complex.hpp"
 #include "hbc/csr.hpp"
-#include "hbc/wireframe_style.hpp"
 
 namespace hbc {
 
+// The wireframe's one option; its presentation (opacity, ρ colour classes) is a step of the render
+// layer, wireframe_style.hpp, which the wireframe never reads.
 struct WireframeOptions {
-  // Partial-parallel threshold of the colour classes (paper §6.2, Definition 2). Presentation
-  // only: it sets WireframeStyle's classes and colours, and no count depends on it.
-  double rho = 0.8;
-  double opacity_floor = 0.15;  // opacity far from irregular edges and non-hex cells
-  int32_t opacity_hops = 6;     // mesh-edge hops over which opacity falls from 1 to the floor
-  int32_t palette_size = 8;     // colours available to the greedy colouring
   // Complex edges (ids of the CellComplex) removed last when they make up a whole simplified
   // chain: a sheet's parallel edges, so a sheet's wireframe shows what crosses it.
   std::vector<int32_t> parallel_edges;
@@ -97,9 +92,6 @@ struct VsgWireframe {
   int64_t reference_components = 0;
   int64_t shown_components = 0;
 
-  // ---- Presentation: a separate step's result (wireframe_style.hpp), empty from vsg_wireframe_graph ----
-  WireframeStyle style;
-
   size_t size() const { return kind.size(); }
   int64_t wireframe_edges() const { return static_cast<int64_t>(kind.size()); }
   int64_t wireframe_edges_simplified() const { return static_cast<int64_t>(simplified_edges.rows()); }
@@ -112,11 +104,8 @@ struct VsgWireframe {
 // covers k mesh edges).
 int64_t covered_mesh_edges(const CellComplex& complex, const Csr<int32_t>& chains);
 
-// The graph only (no presentation arrays). `threads`: see threads.hpp; results are the same for any thread
-// count.
-VsgWireframe vsg_wireframe_graph(const CellComplex& complex, const WireframeOptions& options = {},
-                                 const Threads& threads = {});
-// vsg_wireframe_graph, then wireframe_style into `style`.
+// The VSG, the complete wireframe and its simplification (no presentation: wireframe_style.hpp).
+// `threads`: see threads.hpp; results are the same for any thread count.
 VsgWireframe vsg_wireframe(const CellComplex& complex, const WireframeOptions& options = {},
                            const Threads& threads = {});
 

@@ -1,6 +1,7 @@
 #pragma once
-// Presentation of a VSG wireframe (paper §6.2), a step separate from the graph (vsg_wireframe.hpp):
-// per-point opacity and per-chain colours, computed from the graph and never read by it.
+// Presentation of a VSG wireframe (paper §6.2), the render layer's step after the analysis
+// (vsg_wireframe.hpp): per-point opacity and per-chain colours, a pure function of the wireframe,
+// its view and the style options, so that a new ρ restyles a wireframe without analysing again.
 //
 // point_opacity (aligned with w.polylines.items): 1 on chains of VSG edges and on chains with an
 // edge touching a non-hex cell; elsewhere max(floor, 1 - (1 - floor) d / opacity_hops), d = mesh-edge
@@ -12,12 +13,20 @@
 #include <cstdint>
 #include <vector>
 
+#include "hbc/cell_complex.hpp"
+#include "hbc/threads.hpp"
+#include "hbc/vsg_wireframe.hpp"
+
 namespace hbc {
 
-struct CellComplex;
-struct VsgWireframe;
-struct WireframeOptions;
-struct Threads;
+struct WireframeStyleOptions {
+  // Partial-parallel threshold of the colour classes (paper §6.2, Definition 2): it sets the
+  // classes and colours only, and no count of the analysis depends on it.
+  double rho = 0.8;
+  double opacity_floor = 0.15;  // opacity far from irregular edges and non-hex cells
+  int32_t opacity_hops = 6;     // mesh-edge hops over which opacity falls from 1 to the floor
+  int32_t palette_size = 8;     // colours available to the greedy colouring
+};
 
 struct WireframeStyle {
   std::vector<float> point_opacity;  // aligned with the wireframe's polylines.items
@@ -28,8 +37,10 @@ struct WireframeStyle {
   bool operator==(const WireframeStyle&) const = default;
 };
 
-// `threads`: see threads.hpp.
-WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options,
-                               const Threads& threads);
+// The style of wireframe `w`, computed on `complex`, the view it was computed on (for an
+// Analysis, its WireframeStage; for a region, region_wireframe_stage). `threads`: see
+// threads.hpp; the result is the same for any thread count.
+WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w,
+                               const WireframeStyleOptions& options = {}, const Threads& threads = {});
 
 }  // namespace hbc

@@ -98,7 +98,7 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
   const auto rule = subsheet_rule_from_name(subsheet_rule);
   if (!rule) throw std::invalid_argument("subsheet_rule must be 'layers' or 'fewest', not '" + subsheet_rule + "'");
   if (search_steps < 0) throw std::invalid_argument("search_steps must be non-negative");
-  if (!(rho >= 0.0 && rho <= 1.0)) throw std::invalid_argument("rho must be in [0, 1], not " + std::to_string(rho));
+  checked_rho(rho);
   const int nthreads = threads.is_none() ? 0 : threads.cast<int>();
   if (nthreads < 0 || (!threads.is_none() && nthreads == 0)) throw py::value_error("threads must be a positive number or None");
   auto out = std::make_shared<PyAnalysis>();
@@ -107,7 +107,7 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
   const Level lv = level_from_name(level);
   o.sheet_level = lv;
   o.wireframe_level = lv;
-  o.wireframe_options.rho = rho;
+  out->rho = rho;
   o.sheets = sheets;
   o.subsheets = sheets && subsheets;
   o.subsheet_options.rule = *rule;
@@ -135,18 +135,53 @@ PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool
 // The CLI's `hbc analyze --json` object without "file" (schema.cpp's stats_dict).
 py::dict analysis_stats(const PyAnalysis& p) { return stats_dict(compute_stats(p.mesh->mesh, p.analysis)); }
 
-PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const py::object& subsheet_arg) {
+}  // namespace
+
+double checked_rho(double rho) {
+  if (!(rho >= 0.0 && rho <= 1.0)) throw std::invalid_argument("rho must be in [0, 1], not " + std::to_string(rho));
+  return rho;
+}
+
+std::shared_ptr<const WireframeStyle> style_of(const CellComplex& view, const VsgWireframe& w, double rho) {
+  WireframeStyleOptions o;
+  o.rho = checked_rho(rho);
+  auto st = std::make_shared<WireframeStyle>();
+  py::gil_scoped_release unlocked;  // the style touches no Python object
+  *st = wireframe_style(view, w, o);
+  return st;
+}
+
+namespace {
+
+// The whole-mesh wireframe (kept by the analysis) or a region's (computed now), styled at rho
+// (the analysis' rho when None): a new rho restyles, it never analyses again.
+PyWireframe wireframe(const PyAnalysisPtr& p, const py::object& sheet_arg, const py::object& subsheet_arg,
+                      const py::object& rho_arg) {
   const auto sheet = optional_id(sheet_arg, "sheet"), subsheet = optional_id(subsheet_arg, "subsheet");
   if (!sheet && subsheet) throw std::invalid_argument("a subsheet needs its sheet");
-  if (!sheet && p->analysis.wireframe_stage)
-    return {std::shared_ptr<const VsgWireframe>(p, &p->analysis.wireframe_stage->wireframe)};
-  auto w = std::make_shared<VsgWireframe>();
+  const double rho = checked_rho(rho_arg.is_none() ? p->rho : rho_arg.cast<double>());
+  PyWireframe out;
+  out.rho = rho;
+  if (!sheet && p->analysis.wireframe_stage) {
+    const WireframeStage& st = *p->analysis.wireframe_stage;
+    out.w = std::shared_ptr<const VsgWireframe>(p, &st.wireframe);
+    out.view = std::shared_ptr<const CellComplex>(p, &st.view);
+    if (!p->whole_style || p->whole_style_rho != rho) {
+      p->whole_style = style_of(st.view, st.wireframe, rho);
+      p->whole_style_rho = rho;
+    }
+    out.style = p->whole_style;
+    return out;
+  }
+  auto st = std::make_shared<WireframeStage>();
   {
     py::gil_scoped_release unlocked;
-    *w = region_wireframe(p->mesh->mesh, p->analysis, p->options.wireframe_level, p->options.wireframe_options,
-                          sheet, subsheet);
+    *st = region_wireframe_stage(p->mesh->mesh, p->analysis, p->options.wireframe_level, {}, sheet, subsheet);
   }
-  return {std::move(w)};
+  out.w = std::shared_ptr<const VsgWireframe>(st, &st->wireframe);
+  out.view = std::shared_ptr<const CellComplex>(st, &st->view);
+  out.style = style_of(st->view, st->wireframe, rho);
+  return out;
 }
 
 SubsheetsView subsheets(const PyAnalysisPtr& p, int64_t sheet) {
@@ -262,8 +297,9 @@ void bind_analysis(py::module_& m) {
                                           "sheets, subsheets, VSG wireframe. Arrays are read-only views.");
   c.def_property_readonly("mesh", [](const PyAnalysis& p) { return p.mesh; }, "The analyzed hbc.Mesh.");
   c.def_property_readonly("level", [](const PyAnalysis& p) { return level_name(p.options.wireframe_level); });
-  c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.options.wireframe_options.rho; },
-                          "The wireframes' colour-class threshold (presentation only: no count depends on it).");
+  c.def_property_readonly("rho", [](const PyAnalysis& p) { return p.rho; },
+                          "The ρ of wireframe() without one (Mesh.analyze(rho=...); presentation only: the "
+                          "analysis does not depend on it).");
   c.def_property_readonly("has_sheets", [](const PyAnalysis& p) { return p.analysis.sheet_stage.has_value(); },
                           "The sheet stage ran (else the per-sheet arrays are empty).");
   c.def_property_readonly("has_subsheets",
@@ -299,8 +335,11 @@ void bind_analysis(py::module_& m) {
   c.def("subsheets", &subsheets, py::arg("sheet"),
         "The subsheets of a self-intersecting sheet; ValueError for any other sheet.");
   c.def("wireframe", &wireframe, py::arg("sheet") = py::none(), py::arg("subsheet") = py::none(),
+        py::arg("rho") = py::none(),
         "The VSG wireframe of the whole mesh (no arguments), or of a sheet / subsheet region (its "
-        "cells plus adjacent non-hex cells), computed on demand with the analysis' rho and level.");
+        "cells plus adjacent non-hex cells), computed on demand at the analysis' level; styled "
+        "(opacity, colours) at rho, else the analysis' rho. A new rho only restyles: nothing is "
+        "analysed again.");
 
   c.def("to_vtu", &to_vtu, py::arg("path"), py::arg("sheet") = py::none(), py::arg("ascii") = false,
         "Writes the mesh with its analysis for ParaView (GIL released): `path` gets the cells with "

@@ -15,6 +15,7 @@
 #include "hbc/mesh.hpp"
 #include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
+#include "hbc/wireframe_style.hpp"
 
 namespace hbc::python {
 
@@ -88,6 +89,12 @@ struct PyAnalysis {
   PyMeshPtr mesh;
   AnalysisOptions options;
   Analysis analysis;
+  // Mesh.analyze(rho=...): the ρ of wireframe() without one. Presentation only, outside the
+  // analysis: the style is the render layer's (wireframe_style.hpp), computed per wireframe.
+  double rho = WireframeStyleOptions{}.rho;
+  // The whole-mesh wireframe's style at whole_style_rho, made on the first wireframe() asking for it.
+  std::shared_ptr<const WireframeStyle> whole_style;
+  double whole_style_rho = -1;
   ClassArrays sheet_classes;               // per sheet
   Csr<int32_t> sheet_components;           // per sheet: base-complex components
   std::vector<int32_t> self_intersecting;  // sheet ids with a decomposition, increasing
@@ -104,11 +111,21 @@ struct PyAnalysis {
 };
 using PyAnalysisPtr = std::shared_ptr<PyAnalysis>;
 
-// What a Python hbc.Wireframe holds: the whole-mesh wireframe of an analysis (an aliasing pointer
-// that keeps the analysis alive) or one computed on demand for a region (owned alone).
+// What a Python hbc.Wireframe holds: the whole-mesh wireframe of an analysis and its view (aliasing
+// pointers that keep the analysis alive) or one computed on demand for a region (owned alone), and
+// its style at `rho` (Wireframe.restyled(rho) shares the wireframe and view, with a new style).
 struct PyWireframe {
   std::shared_ptr<const VsgWireframe> w;
+  std::shared_ptr<const CellComplex> view;  // the view w was computed on, which the style reads
+  std::shared_ptr<const WireframeStyle> style;
+  double rho = WireframeStyleOptions{}.rho;
 };
+
+// The style of wireframe `w` on `view` at rho (the GIL released while it is computed); ValueError
+// for rho outside [0, 1].
+std::shared_ptr<const WireframeStyle> style_of(const CellComplex& view, const VsgWireframe& w, double rho);
+// rho checked to be in [0, 1] (std::invalid_argument otherwise).
+double checked_rho(double rho);
 
 // An optional id argument: None is none; anything else must be an int in [0, INT32_MAX]
 // (std::invalid_argument naming `what` otherwise).

@@ -14,6 +14,17 @@ static_assert(sizeof(WireKind) == 1 && sizeof(TraceStop) == 1, "enums are expose
 
 using IntArray = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
 
+// A read-only view of a vector of the style (Get takes the WireframeStyle); the Wireframe object
+// is the numpy base.
+template <class Get>
+void style_prop(py::class_<PyWireframe>& cls, const char* name, Get get, const char* doc) {
+  cls.def_property_readonly(
+      name, [get](py::object self) -> py::array {
+        const auto& v = get(*self.cast<const PyWireframe&>().style);
+        return view(v.data(), {ssize(v.size())}, self);
+      }, doc);
+}
+
 // A read-only view of a wireframe vector; the Wireframe object is the numpy base.
 template <class Get>
 void wire_prop(py::class_<PyWireframe>& cls, const char* name, Get get, const char* doc, bool as_bool = false) {
@@ -40,7 +51,7 @@ void bind_wireframe(py::module_& m) {
   c.def_property_readonly("count", [](const PyWireframe& p) { return p.w->size(); }, "Number of polylines.");
   def_csr(c, "polylines", [](const PyWireframe& p) -> auto& { return p.w->polylines; }, "count",
           "mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
-  wire_prop(c, "point_opacity", [](const VsgWireframe& w) -> auto& { return w.style.point_opacity; },
+  style_prop(c, "point_opacity", [](const WireframeStyle& s) -> auto& { return s.point_opacity; },
             "float32 (polylines_offsets[-1],), aligned with polylines_items: opacity in [floor, 1].");
   wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
   wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
@@ -56,14 +67,24 @@ void bind_wireframe(py::module_& m) {
   def_csr(c, "simplified_polylines", [](const PyWireframe& p) -> auto& { return p.w->simplified_polylines; },
           "counts['wireframe_edges_simplified']",
           "mesh vertices along each simplified polyline (kept chains re-chained).");
-  wire_prop(c, "color", [](const VsgWireframe& w) -> auto& { return w.style.color; }, "int32 (count,): palette index.");
-  wire_prop(c, "color_class", [](const VsgWireframe& w) -> auto& { return w.style.color_class; },
+  style_prop(c, "color", [](const WireframeStyle& s) -> auto& { return s.color; }, "int32 (count,): palette index.");
+  style_prop(c, "color_class", [](const WireframeStyle& s) -> auto& { return s.color_class; },
             "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
   def_csr(c, "non_hex", [](const PyWireframe& p) -> auto& { return p.w->non_hex; }, "count",
           "int32 non-hex kinds of each polyline, sorted (docs/concepts.md): code >> 16 indexes "
           "CELL_TYPES, code & 0xffff is the face count.");
   def_csr(c, "simplified_non_hex", [](const PyWireframe& p) -> auto& { return p.w->simplified_non_hex; },
           "counts['wireframe_edges_simplified']", "int32 non-hex kinds of each simplified polyline, as non_hex.");
+  c.def_property_readonly("rho", [](const PyWireframe& p) { return p.rho; },
+                          "The ρ of this wireframe's colour classes (point_opacity, color, color_class).");
+  c.def(
+      "restyled",
+      [](const PyWireframe& p, double rho) {
+        return PyWireframe{p.w, p.view, style_of(*p.view, *p.w, rho), rho};
+      },
+      py::arg("rho"),
+      "The same wireframe (shared, not computed again) styled at another rho: new point_opacity, "
+      "color and color_class (GIL released; no analysis runs).");
   c.def_property_readonly(
       "counts",
       [](const PyWireframe& p) { return wireframe_counts(*p.w); },

@@ -125,8 +125,9 @@ class Mesh:
         subsheet_rule: Literal["layers", "fewest"] = "layers",
         search_steps: int = 100000,
     ) -> Analysis:
-        """The structure analysis (GIL released); rho in [0, 1]: the wireframes' colour-class
-        threshold (presentation only, no count depends on it); threads for the stages (None:
+        """The structure analysis (GIL released); rho in [0, 1]: the colour-class threshold of
+        the wireframes that wireframe() styles without one (presentation only: the analysis does
+        not depend on it); threads for the stages (None:
         HBC_THREADS, else every core; results do not depend on it); subsheet_rule: 'layers' (the
         paper's authors' decomposition) or 'fewest' (the fewest subsheets with a lower bound;
         search_steps caps the exact search per sheet)."""
@@ -482,10 +483,17 @@ class Subsheets:
 class Wireframe:
     """A VSG wireframe (paper §5): the complete wireframe's `count` polylines of mesh vertices (a
     closed chain repeats its first vertex) and the simplified wireframe's; polylines and
-    simplified_polylines are CSRs (<name>_offsets, <name>_items)."""
+    simplified_polylines are CSRs (<name>_offsets, <name>_items). point_opacity, color and
+    color_class are its style at `rho` (paper §6.2; the render layer's step, not the analysis):
+    restyled(rho) gives them at another rho without computing the wireframe again."""
 
     @property
     def count(self) -> int: ...
+    @property
+    def rho(self) -> float:
+        """The colour-class threshold of this wireframe's style."""
+    def restyled(self, rho: float) -> Wireframe:
+        """The same wireframe (shared) styled at `rho` in [0, 1]; no analysis runs."""
     @property
     def polylines_offsets(self) -> I32:
         """(count + 1,)"""
@@ -551,7 +559,8 @@ class Analysis:
     @property
     def level(self) -> Level: ...
     @property
-    def rho(self) -> float: ...
+    def rho(self) -> float:
+        """Mesh.analyze(rho=...): the rho of wireframe() without one (presentation only)."""
     @property
     def has_sheets(self) -> bool:
         """The sheet stage ran (else the per-sheet arrays are empty)."""
@@ -640,7 +649,9 @@ class Analysis:
     def self_intersecting_sheets(self) -> I32:
         """(k,) increasing: the sheets with a subsheet decomposition."""
     def subsheets(self, sheet: int) -> Subsheets: ...
-    def wireframe(self, sheet: int | None = None, subsheet: int | None = None) -> Wireframe: ...
+    def wireframe(self, sheet: int | None = None, subsheet: int | None = None, rho: float | None = None) -> Wireframe:
+        """The whole mesh's wireframe (kept by the analysis) or a sheet's / subsheet's (computed
+        now), styled at rho (None: the analysis' rho); a new rho restyles only."""
     def to_vtu(self, path: str, sheet: int | None = None, ascii: bool = False) -> str: ...
 
 def block_soup(mesh: Mesh, analysis: Analysis | None, what: SoupWhat, sheet: int | None = None, shrink: float = 0.0) -> BlockSoup:

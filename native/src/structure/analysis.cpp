@@ -241,13 +241,9 @@ StatsRun stats_run(const Mesh& mesh, Mesh* owned, const AnalysisOptions& opt) {
     release(bc);
     st.view = complex_from_mesh(mesh, par);
   }
-  // vsg_wireframe in its two steps, with the graph's scratch handed back in between: glibc's
-  // malloc serves arrays of up to 32 MB from its heaps once such arrays have been freed, and the
-  // graph's freed ones there would otherwise stay resident under the style's (on the split grid,
-  // 50-60 MB of the analysis's peak).
-  st.wireframe = vsg_wireframe_graph(st.view, opt.wireframe_options, par);
-  detail::return_freed_memory();
-  st.wireframe.style = wireframe_style(st.view, st.wireframe, opt.wireframe_options, par);
+  // The wireframe's presentation (opacity, ρ colours) is no part of the analysis: the render
+  // layer styles a wireframe when a front end shows it (wireframe_style.hpp).
+  st.wireframe = vsg_wireframe(st.view, opt.wireframe_options, par);
   s.timings.vsg_wireframe += since(t);
   wireframe_stats(st.wireframe, s);
   return run;

@@ -76,17 +76,26 @@ std::vector<int32_t> region_parallel_edges(const Analysis& a, const CellComplex&
 
 }  // namespace
 
+WireframeStage region_wireframe_stage(const Mesh& m, const Analysis& a, Level level, const WireframeOptions& options,
+                                      std::optional<int32_t> sheet, std::optional<int32_t> subsheet) {
+  WireframeStage st;
+  if (!sheet && !subsheet) {
+    st.view = level == Level::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m);
+    st.wireframe = vsg_wireframe(st.view, options);
+    return st;
+  }
+  const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);  // checks the ids
+  st.view = level == Level::Complex ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
+                                    : complex_from_mesh(m, cells);
+  WireframeOptions opt = options;
+  opt.parallel_edges = region_parallel_edges(a, st.view, *sheet, subsheet);
+  st.wireframe = vsg_wireframe(st.view, opt);
+  return st;
+}
+
 VsgWireframe region_wireframe(const Mesh& m, const Analysis& a, Level level, const WireframeOptions& options,
                               std::optional<int32_t> sheet, std::optional<int32_t> subsheet) {
-  if (!sheet && !subsheet)
-    return vsg_wireframe(level == Level::Complex ? complex_from_base(m, a.complex) : complex_from_mesh(m), options);
-  const std::vector<int32_t> cells = region_cells(m, a, sheet, subsheet);  // checks the ids
-  const CellComplex cx = level == Level::Complex
-                             ? complex_from_base(m, a.complex, components_of_cells(a.complex, cells))
-                             : complex_from_mesh(m, cells);
-  WireframeOptions opt = options;
-  opt.parallel_edges = region_parallel_edges(a, cx, *sheet, subsheet);
-  return vsg_wireframe(cx, opt);
+  return region_wireframe_stage(m, a, level, options, sheet, subsheet).wireframe;
 }
 
 }  // namespace hbc

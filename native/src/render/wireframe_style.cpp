@@ -132,7 +132,7 @@ void hop_distances(const CellComplex& cx, int32_t horizon, const Threads& par, s
   }
 }
 
-void opacity(const CellComplex& cx, const WireframeOptions& opt, const VsgWireframe& wf, const Threads& par,
+void opacity(const CellComplex& cx, const WireframeStyleOptions& opt, const VsgWireframe& wf, const Threads& par,
              WireframeStyle& st) {
   const size_t nv = cx.num_vertices(), ne = cx.num_edges();
   constexpr int32_t kInf = std::numeric_limits<int32_t>::max() / 4;
@@ -286,7 +286,7 @@ Csr<int32_t> earlier_neighbours(const ClassPoints& cp, const Index& ix, const st
 // The class (lowest wire) of each wire: wires whose parallel edge counts reach rho both ways are
 // joined. The counts and the union-find end here, before the class graph is built (the counts
 // are the wireframe style's largest table, some 100 MB on the split grid).
-std::vector<int32_t> colour_classes(const CellComplex& cx, const WireframeOptions& opt, const Index& ix,
+std::vector<int32_t> colour_classes(const CellComplex& cx, const WireframeStyleOptions& opt, const Index& ix,
                                     const VsgWireframe& wf, const Threads& threads) {
   const size_t nw = wf.size();
   // (w, w', |E_w|): how many complex edges of wire w are parallel (Definition 1) to an edge of
@@ -317,7 +317,7 @@ std::vector<int32_t> colour_classes(const CellComplex& cx, const WireframeOption
   return color_class;
 }
 
-void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix, const VsgWireframe& wf,
+void colours(const CellComplex& cx, const WireframeStyleOptions& opt, const Index& ix, const VsgWireframe& wf,
              const Threads& threads, WireframeStyle& st) {
   const size_t nw = wf.size();
   st.color_class = colour_classes(cx, opt, ix, wf, threads);
@@ -350,7 +350,7 @@ void colours(const CellComplex& cx, const WireframeOptions& opt, const Index& ix
 
 }  // namespace
 
-WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeOptions& options,
+WireframeStyle wireframe_style(const CellComplex& complex, const VsgWireframe& w, const WireframeStyleOptions& options,
                                const Threads& threads) {
   const Threads par = resolved(threads);
   WireframeStyle st;
