@@ -7,7 +7,7 @@
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
-#include "stats_format.hpp"
+#include "hbc/report.hpp"
 
 namespace hbc::cli {
 namespace {

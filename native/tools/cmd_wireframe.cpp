@@ -15,7 +15,7 @@
 #include "hbc/schema.hpp"
 #include "hbc/analysis.hpp"
 #include "hbc/region.hpp"
-#include "json.hpp"
+#include "hbc/json.hpp"
 
 namespace hbc::cli {
 namespace {
@@ -99,7 +99,7 @@ std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeO
   j["seconds_vsg_wireframe"] = seconds;
   j["edges"] = std::move(edges);
   j["simplified_polylines"] = simplified_json(w);
-  return cli::json_text(j);
+  return hbc::json_text(j);
 }
 
 std::string obj_text(const Mesh& m, const VsgWireframe& w, bool all) {
