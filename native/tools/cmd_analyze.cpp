@@ -7,8 +7,8 @@
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
+#include "hbc/report.hpp"
 #include "hbc/wireframe_style.hpp"
-#include "stats_format.hpp"
 
 namespace hbc::cli {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "commands.hpp"
 #include "hbc/check.hpp"
-#include "json.hpp"
-#include "stats_format.hpp"
+#include "hbc/json.hpp"
+#include "hbc/report.hpp"
 
 namespace hbc::cli {
 namespace {

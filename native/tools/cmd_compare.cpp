@@ -23,10 +23,10 @@
 #include "hbc/cell_quality.hpp"
 #include "hbc/metrics.hpp"
 #include "hbc/version.hpp"
-#include "json.hpp"
+#include "hbc/json.hpp"
 #include "metrics_json.hpp"
 #include "run_children.hpp"
-#include "stats_format.hpp"
+#include "hbc/report.hpp"
 
 namespace hbc::cli {
 namespace {

@@ -11,9 +11,9 @@
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
 #include "hbc/metrics.hpp"
-#include "json.hpp"
+#include "hbc/json.hpp"
 #include "metrics_json.hpp"
-#include "stats_format.hpp"
+#include "hbc/report.hpp"
 
 namespace hbc::cli {
 namespace {

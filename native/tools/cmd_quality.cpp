@@ -7,7 +7,7 @@
 
 #include "commands.hpp"
 #include "hbc/cell_quality.hpp"
-#include "json.hpp"
+#include "hbc/json.hpp"
 
 namespace hbc::cli {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
-#include "json.hpp"
+#include "hbc/json.hpp"
 
 namespace hbc::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "commands.hpp"
 #include "hbc/schema.hpp"
 #include "run_children.hpp"
-#include "stats_format.hpp"
+#include "hbc/report.hpp"
 
 namespace hbc::cli {
 namespace {

@@ -15,8 +15,8 @@
 #include "hbc/schema.hpp"
 #include "hbc/analysis.hpp"
 #include "hbc/region.hpp"
+#include "hbc/json.hpp"
 #include "hbc/wireframe_style.hpp"
-#include "json.hpp"
 
 namespace hbc::cli {
 namespace {
@@ -100,7 +100,7 @@ std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeS
   j["seconds_vsg_wireframe"] = seconds;
   j["edges"] = std::move(edges);
   j["simplified_polylines"] = simplified_json(w);
-  return cli::json_text(j);
+  return hbc::json_text(j);
 }
 
 std::string obj_text(const Mesh& m, const VsgWireframe& w, const WireframeStyle& style, bool all) {

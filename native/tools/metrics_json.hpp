@@ -4,7 +4,7 @@
 #include <string>
 
 #include "hbc/metrics.hpp"
-#include "json.hpp"
+#include "hbc/json.hpp"
 
 namespace hbc::cli {
 

@@ -13,15 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "../tools/json.hpp"
-#include "../tools/stats_format.hpp"
 #include "hbc/analysis.hpp"
 #include "hbc/check.hpp"
 #include "hbc/error.hpp"
 #include "hbc/generate.hpp"
 #include "hbc/io.hpp"
+#include "hbc/json.hpp"
 #include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
+#include "hbc/report.hpp"
 #include "hbc/schema.hpp"
 #include "hbc/version.hpp"
 #include "hbc/wireframe_style.hpp"
@@ -102,7 +102,8 @@ class JsMesh {
     for (const std::string& w : mesh().warnings) out.call<void>("push", w);
     return out;
   }
-  // info() of the Python binding and the CLI's `hbc info --json` keys, as a JSON string.
+  // `hbc info --json` of this mesh, the same text ("file" is the name given to load); the Python
+  // binding's info() is the same object without "file".
   std::string info_json() const;
   JsAnalysis analyze(val options) const;
   const Mesh& mesh() const { return m_->mesh; }
@@ -121,10 +122,10 @@ class JsAnalysis {
   }
   // `hbc analyze --json` of this mesh, the same keys and values ("file" is the name given to load).
   std::string stats_json() const {
-    cli::Json j = {{"file", m_->name}};
-    cli::add_stats_json(j, compute_stats(m_->mesh, *a_));
-    cli::add_dropped_json(j, m_->skip_invalid, m_->dropped);
-    return cli::json_text(j);
+    Json j = {{"file", m_->name}};
+    add_stats_json(j, compute_stats(m_->mesh, *a_));
+    add_dropped_json(j, m_->skip_invalid, m_->dropped);
+    return json_text(j);
   }
   // Singularity graph (SingularityGraph in _core.pyi).
   val edge_class() const { return copy(a_->graph.edge_class); }
@@ -272,17 +273,7 @@ class JsAnalysis {
   std::shared_ptr<const ClassArrays> sheet_classes_;  // computed once, as the Python binding does
 };
 
-std::string JsMesh::info_json() const {
-  const Mesh& m = mesh();
-  cli::Json j = {{"file", m_->name}, {"vertices", m.num_vertices()}, {"edges", m.num_edges()},
-                 {"faces", m.num_faces()}, {"cells", m.num_cells()}};
-  cli::Json types = cli::Json::object();
-  std::array<int64_t, 5> count{};
-  for (CellType t : m.cell_type) ++count[static_cast<size_t>(t)];
-  for (size_t t = 0; t < count.size(); ++t) types[cell_type_name(static_cast<CellType>(t))] = count[t];
-  j["cell_types"] = types;
-  return cli::json_text(j);
-}
+std::string JsMesh::info_json() const { return json_text(mesh_info_json(mesh(), m_->name)); }
 
 // options: {level: "complex"|"mesh", subsheet_rule: "layers"|"fewest", rho, sheets, subsheets, wireframe}.
 JsAnalysis JsMesh::analyze(val options) const {
@@ -361,7 +352,7 @@ val cell_centroids(const JsMesh& m) { return copy(hbc::cell_centroids(m.mesh()))
 
 // FORMATS: formats() as JSON [{name, alias, extension, title, writable}].
 std::string formats_json() {
-  cli::Json j = cli::Json::array();
+  Json j = Json::array();
   for (const FormatInfo& f : formats())
     j.push_back({{"name", f.name}, {"alias", f.alias}, {"extension", f.extension}, {"title", f.title}, {"writable", f.writable}});
   return j.dump();
@@ -369,7 +360,7 @@ std::string formats_json() {
 
 // TABLE1_COLUMNS_json: the paper's Table 1 columns from the schema, [{key, label, notation, meaning, timing}].
 std::string table1_columns_json() {
-  cli::Json j = cli::Json::array();
+  Json j = Json::array();
   for (const Table1Column& c : table1_columns())
     j.push_back({{"key", c.field->key}, {"label", c.field->label}, {"notation", c.field->notation},
                  {"meaning", c.field->meaning}, {"kind", field_kind_name(c.field->kind)}, {"timing", c.timing}});

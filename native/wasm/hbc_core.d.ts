@@ -27,7 +27,7 @@ export interface Mesh {
   readonly cell_faces_offsets: Int32Array; readonly cell_faces_items: Int32Array;
   readonly cell_types: Uint8Array;          // (nc) 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron
   readonly face_boundary: Uint8Array;       // (nf) 0/1
-  info_json(): string;                      // {"file","vertices","edges","faces","cells","cell_types":{hex,tet,...}}
+  info_json(): string;                      // `hbc info --json`, the same text: {"file","vertices","edges","faces","cells","hex_cells","hex_ratio","cell_types":{hex,tet,...},"boundary_faces","non_manifold_vertices","dropped_faces","dropped_edges"}
   analyze(options?: AnalyzeOptions): Analysis;
   delete(): void;
 }

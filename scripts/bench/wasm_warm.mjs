@@ -31,7 +31,7 @@ const bytes = readFileSync(meshPath);
 const t0 = performance.now();
 const mesh = core.open([{ path: name, buffer: bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.length) }]);
 const analysis = core.analyze(mesh);
-const stats = JSON.parse(core.analysisJson(mesh, analysis, name));
+const stats = JSON.parse(core.analysisJson(analysis));
 const seconds = (performance.now() - t0) / 1000;
 if (!(stats.cells > 0)) throw new Error(`${name}: no cells in the analysis`);
 console.log(JSON.stringify({ warm_up_seconds: warm, open_seconds: seconds }));

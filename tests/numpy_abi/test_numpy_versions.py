@@ -17,15 +17,9 @@ import sys
 
 import numpy as np
 import pytest
+from conftest import env
 
 HERE = pathlib.Path(__file__).resolve().parent
-
-
-def env(name):
-    value = os.environ.get(name)
-    if not value:
-        pytest.fail(f"{name} is not set (ctest sets it: tests/CMakeLists.txt)")
-    return value
 
 
 @pytest.fixture(scope="module")

@@ -1,8 +1,10 @@
-// The JavaScript binding under node: load teapot from bytes, analyze, and compare stats_json with
-// `hbc analyze --json` of the same file (every key but timings); then the arrays' sizes against the
+// The JavaScript binding under node: load teapot from bytes, compare info_json with `hbc info
+// --json` (the same text), analyze, and compare stats_json with `hbc analyze --json` of the same
+// file (every key but timings); then the arrays' sizes against the
 // stats, a block soup, the wireframe, and a malformed file's error text against the CLI's; a file
 // with invalid cells read with skip_invalid (JSON and warnings against the CLI's); the generator the
-// viewer warms up with, and the warm-up itself (web/src/warmup.js).
+// viewer warms up with, and the warm-up itself (web/src/warmup.js); what web/src/core.js asks the
+// module for.
 //   node tests/wasm/binding_test.mjs HBC_CORE_JS HBC_CLI MESH_DIR
 // HBC_CLI is the native hbc or `node .../hbc.js` run through a wrapper; prints "N passed, N failed".
 import { execFileSync, spawnSync } from 'node:child_process';
@@ -37,6 +39,10 @@ const teapot = join(dataDir, 'hybrid-base-complex', 'teapot.hedra');
 const cliStats = JSON.parse(execFileSync(cli, ['analyze', '--json', '--threads', '1', basename(teapot)],
                                          { cwd: dirname(teapot), encoding: 'utf8' }));
 const mesh = M.load(readFileSync(teapot), basename(teapot), false);
+// info_json is `hbc info --json`'s text, byte for byte (one writer in the library, hbc/report.hpp).
+const cliInfo = execFileSync(cli, ['info', '--json', basename(teapot)], { cwd: dirname(teapot), encoding: 'utf8' });
+check('info_json = hbc info --json, byte for byte', mesh.info_json() === cliInfo,
+      `\n  js:  ${mesh.info_json()}\n  cli: ${cliInfo}`);
 const a = mesh.analyze({ level: 'complex', subsheet_rule: 'layers' });
 const stats = JSON.parse(a.stats_json());
 check('stats equal to the CLI', JSON.stringify(noTimings(stats)) === JSON.stringify(noTimings(cliStats)),
@@ -131,12 +137,20 @@ execFileSync(cli, ['generate', 'cylinder', '--radius-cells', '2', '--layers', '1
 const cliCyl = JSON.parse(execFileSync(cli, ['info', '--json', 'cylinder.mesh'], { cwd: cylDir, encoding: 'utf8' }));
 delete cylInfo.file;
 delete cliCyl.file;
-// The binding's info_json gives some of `hbc info --json`'s keys: each equal.
-check('cylinder as .hedra = hbc generate cylinder', Object.keys(cylInfo).length === 5 &&
-      Object.entries(cylInfo).every(([k, v]) => JSON.stringify(v) === JSON.stringify(cliCyl[k])) &&
+// The mesh the viewer warms up with is the one `hbc generate cylinder` writes: every count equal.
+check('cylinder as .hedra = hbc generate cylinder', JSON.stringify(cylInfo) === JSON.stringify(cliCyl) &&
       cylInfo.cells === 16 && cylInfo.cell_types.hex === 12 && cylInfo.cell_types.prism === 4,
       `\n  js:  ${JSON.stringify(cylInfo)}\n  cli: ${JSON.stringify(cliCyl)}`);
 cyl.delete();
+// web/src/core.js asks the module only for what it exports, and each function once (it probed for
+// load_case, analysis_json, analyze_json, block_soup and lastError, none of which the core has ever
+// exported, and for stats_json twice).
+const coreSrc = readFileSync(new URL('../../web/src/core.js', import.meta.url), 'utf8');
+const moduleNames = new Set([...coreSrc.matchAll(/\bM\.([A-Za-z_]\w*)/g)].map((x) => x[1]));
+const notExported = [...moduleNames].filter((n) => !(n in M));
+check('core.js names only what the module exports', notExported.length === 0, notExported.join(', '));
+const probes = [...coreSrc.matchAll(/typeof\s+([\w.]+)\s*===\s*'function'/g)].map((x) => x[1]);
+check('core.js probes each function once', new Set(probes).size === probes.length, probes.join(', '));
 const rounds = [...warmUpSteps(new Core(M))];
 check('warm-up: every round', WARM_UP.rounds > 0 && rounds.length === WARM_UP.rounds && rounds.at(-1) === WARM_UP.rounds, JSON.stringify(rounds));
 check('no warm-up at 0 rounds', [...warmUpSteps(new Core(M), { radiusCells: 0, layers: 0, rounds: 0 })].length === 0);

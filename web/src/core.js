@@ -65,7 +65,6 @@ export function errorText(M, e) {
     if (typeof M.getExceptionMessage === 'function') {
       try { return M.getExceptionMessage(e).filter(Boolean).join(': '); } catch (_) { /* fall through */ }
     }
-    if (typeof M.lastError === 'function') return M.lastError();
   }
   return String(e);
 }
@@ -140,9 +139,6 @@ export class Core {
       return skipInvalid ? M.load_path(loadPath(files), true) : M.load_path(loadPath(files));
     }
     if (written) throw new Error('This WebAssembly core keeps no file: open the file again.');
-    if (files.length > 1 && typeof M.load_case === 'function') {
-      return M.load_case(files.map((f) => ({ name: f.path, bytes: new Uint8Array(f.buffer) })));
-    }
     if (files.length > 1) {
       throw new Error('An OpenFOAM case (several files) needs a newer WebAssembly core: this one reads one file at a time.');
     }
@@ -160,16 +156,10 @@ export class Core {
     }
   }
 
-  /** `hbc analyze FILE --json` as text, from the library's own JSON writer. */
-  analysisJson(mesh, analysis, file) {
-    const M = this.M;
-    if (typeof analysis.stats_json === 'function') return analysis.stats_json();
-    if (typeof M.analysis_json === 'function') return M.analysis_json(mesh, analysis, file);
-    if (typeof M.analyze_json === 'function') return M.analyze_json(mesh, analysis, file);
-    if (typeof analysis.stats_json === 'function') return analysis.stats_json(file);
-    const stats = get(analysis, 'stats');
-    const obj = typeof stats === 'string' ? JSON.parse(stats) : stats;
-    return JSON.stringify({ file, ...obj });
+  /** `hbc analyze FILE --json` as text, from the library's own JSON writer ("file" is the name
+   *  the mesh was loaded with). */
+  analysisJson(analysis) {
+    return analysis.stats_json();
   }
 
   // The graph's and the base complex's arrays: on their own objects (Python) or on the analysis.
@@ -178,10 +168,7 @@ export class Core {
 
   blockSoup(mesh, analysis, what, sheet, shrink) {
     const id = sheet == null ? -1 : sheet;
-    const s = typeof this.M.block_soup === 'function'
-      ? this.M.block_soup(mesh, analysis, what, id, shrink)
-      : analysis.block_soup(what, id, shrink);
-    return soupArrays(s);
+    return soupArrays(analysis.block_soup(what, id, shrink));
   }
 
   keptSurface(mesh, kept, shrink) {

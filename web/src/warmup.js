@@ -58,7 +58,7 @@ export function* warmUpSteps(core, { radiusCells, layers, rounds } = WARM_UP) {
     try {
       mesh = core.open([{ path: name, buffer: buffer.slice(0) }]);
       analysis = core.analyze(mesh);
-      JSON.parse(core.analysisJson(mesh, analysis, name));
+      JSON.parse(core.analysisJson(analysis));
       touch(core, mesh, analysis);
     } finally {
       core.free(analysis, mesh);

@@ -98,7 +98,7 @@ async function open({ name, files, skipInvalid, again }, t0) {
     throw new Error(errorText(c.M, e).split('/in/').join(''));
   }
   progress(0.85, 'Preparing the layers');
-  const results = JSON.parse(c.analysisJson(mesh, analysis, name));
+  const results = JSON.parse(c.analysisJson(analysis));
   // The core names the file by its path in its in-memory file system (/in/...): name it as the
   // user did, in the same place of the JSON.
   if ('file' in results) results.file = name;

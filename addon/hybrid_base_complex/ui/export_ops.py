@@ -19,7 +19,7 @@ from ..blender.context import active_root, structure_of, subsheet_rule
 from ..plan import figures_job
 from ..plan import native
 from ..plan import planning as P
-from .operators import LAYER_ITEMS, _Reporting, make_log
+from .operators import LAYER_ITEMS, _Reporting, active_job, make_log
 
 
 class _ExportOnActiveMesh(_Reporting, ExportHelper):
@@ -63,10 +63,7 @@ class HBC_OT_export_vtu(_ExportOnActiveMesh, bpy.types.Operator):
                                            "(in_sheet, subsheet arrays)")
 
     def execute(self, context):
-        root = active_root(context)
-        st = context.scene.hbc
-        log = make_log(context)
-        t0 = time.perf_counter()
+        root, st, log, t0 = active_job(context)
         try:
             s = structure_of(root, True, log, st.rho)
             sheet = st.sheet_index if self.picked_sheet and s.num_sheets else None

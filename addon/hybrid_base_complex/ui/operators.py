@@ -46,6 +46,12 @@ def make_log(context):
     return log
 
 
+def active_job(context):
+    """What an operator on the active mesh starts from: the mesh's root collection, the scene's
+    settings, the log and the clock (for the time its report gives)."""
+    return active_root(context), context.scene.hbc, make_log(context), time.perf_counter()
+
+
 class _Progress:
     """Long work in steps: the window manager's progress (the cursor's counter), the step in the
     status bar (printed in background mode), and how long each step took. `begin` names the step
@@ -234,10 +240,7 @@ class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
     bl_label = "Analyze"
 
     def execute(self, context):
-        root = active_root(context)
-        st = context.scene.hbc
-        log = make_log(context)
-        t0 = time.perf_counter()
+        root, st, log, t0 = active_job(context)
         try:
             s = structure_of(root, False, log)
             session.analyze(s, st.rho, log, subsheet_rule(context.scene))
@@ -302,11 +305,8 @@ class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
     bl_label = "Build All"
 
     def execute(self, context):
-        root = active_root(context)
-        st = context.scene.hbc
-        log = make_log(context)
+        root, st, log, t0 = active_job(context)
         prog = _Progress(context, len(BUILD_ALL) + 1)
-        t0 = time.perf_counter()
         try:
             s = structure_of(root, True, log, st.rho)
             if not len(st.sheets):

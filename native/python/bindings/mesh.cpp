@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "hbc/report.hpp"
 
 namespace hbc::python {
 
@@ -55,27 +56,11 @@ void pair_view(Cls& cls, const char* name, Get get, const char* doc) {
       doc);
 }
 
+// `hbc info --json`'s object without "file", read back from the library's one writer of it (so
+// the keys, their order and every value are the CLI's and the WebAssembly binding's).
 py::dict info(const Mesh& m) {
-  int64_t types[5] = {0, 0, 0, 0, 0};
-  for (CellType t : m.cell_type) ++types[static_cast<int>(t)];
-  const auto count = [](const std::vector<uint8_t>& flags) {
-    return static_cast<int64_t>(std::count(flags.begin(), flags.end(), uint8_t{1}));
-  };
-  const int64_t nc = static_cast<int64_t>(m.num_cells());
-  py::dict by_type;
-  for (int t = 0; t < 5; ++t) by_type[cell_type_name(static_cast<CellType>(t))] = types[t];
-  py::dict d;
-  d["vertices"] = m.num_vertices();
-  d["edges"] = m.num_edges();
-  d["faces"] = m.num_faces();
-  d["cells"] = nc;
-  d["hex_cells"] = types[0];
-  d["hex_ratio"] = nc ? static_cast<double>(types[0]) / static_cast<double>(nc) : 0.0;
-  d["cell_types"] = by_type;
-  d["boundary_faces"] = count(m.face_boundary);
-  d["non_manifold_vertices"] = count(m.vert_non_manifold);
-  d["dropped_faces"] = m.dropped_faces;
-  d["dropped_edges"] = m.dropped_edges;
+  py::dict d = py::module_::import("json").attr("loads")(json_text(mesh_info_json(m, "")));
+  d.attr("pop")("file");
   return d;
 }
 

@@ -74,6 +74,18 @@ std::vector<int32_t> compact(const std::vector<uint8_t>& keep, std::vector<int32
   return map;
 }
 
+// Sizes the view's per-edge arrays to its edges (edge_source): the flags start at "no non-hex
+// cell" and "all faces quads", which the fills then clear edge by edge. Returns the edge count.
+size_t size_edge_arrays(CellComplex& cx) {
+  const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
+  cx.edge_verts.resize(nx);
+  cx.edge_valence.resize(nx);
+  cx.edge_boundary.resize(nx);
+  cx.edge_non_hex.assign(nx, 0);
+  cx.edge_all_quad.assign(nx, 1);
+  return nx;
+}
+
 void sort_unique_ids(std::vector<int32_t>& buf) {
   // Rows mapped through monotonic id maps mostly come sorted already: checking is cheaper.
   if (!std::is_sorted(buf.begin(), buf.end())) std::sort(buf.begin(), buf.end());
@@ -195,12 +207,7 @@ CellComplex complex_from_mesh(const Mesh& m, std::span<const int32_t> region_cel
   }
   cx.face_cells = region_face_cells(cx.face_source, m.face_cells, cmap, par);
 
-  const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
-  cx.edge_verts.resize(nx);
-  cx.edge_valence.resize(nx);
-  cx.edge_boundary.resize(nx);
-  cx.edge_non_hex.assign(nx, 0);
-  cx.edge_all_quad.assign(nx, 1);
+  const size_t nx = size_edge_arrays(cx);
   cx.edge_points.items.reserve(2 * nx);
   EdgeFan fan;
   for (size_t i = 0; i < nx; ++i) {
@@ -383,12 +390,7 @@ Csr<int32_t> view_edge_points(const BaseComplex& bc, const std::vector<int32_t>&
 void curve_edges_of_view(const BaseComplex& bc, const BaseViewFacts& f, const std::vector<int32_t>& kmap,
                          const std::vector<int32_t>& pmap, const std::vector<int32_t>& emap,
                          const std::vector<int32_t>& vmap, CellComplex& cx, const Threads& par) {
-  const size_t nx = cx.edge_source.size();  // edge_verts is not sized yet
-  cx.edge_verts.resize(nx);
-  cx.edge_valence.resize(nx);
-  cx.edge_boundary.resize(nx);
-  cx.edge_non_hex.assign(nx, 0);
-  cx.edge_all_quad.assign(nx, 1);
+  const size_t nx = size_edge_arrays(cx);
   // Components and patches around a curve: a cell at a curve's mesh edge has its two faces there
   // among the separation faces (every face at a complex edge separates), so the curve is one of
   // its component's curves, and conversely; likewise a patch holds the curve exactly when one of

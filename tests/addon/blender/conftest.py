@@ -59,3 +59,39 @@ def hbc_meshes(root):
     files = [p for p in files if p.suffix.lower() in MESH_SUFFIXES]
     files.append(root / "openvolumemesh" / "Cylinder.ovm")
     return files
+
+
+def render_from_above(tmp_path, tag, lo, hi, width, height, margin=1.05):
+    """The scene rendered by Workbench with the add-on's Solid settings (colour type Attribute, the
+    enum's "VERTEX"), flat light, from above the world box lo..hi (numpy (3,)), orthographic, its
+    larger side times `margin` in view: (height, width, 4) pixels. The camera, "HBC test camera", is
+    made once and stays (undo tests step over it)."""
+    import numpy as np
+    from hybrid_base_complex.blender import compat
+
+    scene = bpy.context.scene
+    cam = bpy.data.objects.get("HBC test camera")
+    if cam is None:
+        cam = bpy.data.objects.new("HBC test camera", bpy.data.cameras.new("HBC test camera"))
+        scene.collection.objects.link(cam)
+    cam.data.type = "ORTHO"
+    cam.data.ortho_scale = float(max(hi[:2] - lo[:2])) * margin
+    cam.location = (float(lo[0] + hi[0]) / 2, float(lo[1] + hi[1]) / 2, float(hi[2]) + 10.0)
+    cam.rotation_euler = (0.0, 0.0, 0.0)
+    scene.camera = cam
+    scene.render.engine = "BLENDER_WORKBENCH"
+    compat.solid_shading(scene.display.shading)
+    scene.display.shading.light = "FLAT"
+    scene.view_settings.view_transform = "Standard"
+    scene.render.film_transparent = True
+    scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = width, height, 100
+    scene.render.image_settings.file_format = "PNG"
+    scene.render.filepath = str(tmp_path / f"{tag}.png")
+    bpy.ops.render.render(write_still=True)
+    img = bpy.data.images.load(scene.render.filepath)
+    try:
+        px = np.empty(len(img.pixels), np.float32)
+        img.pixels.foreach_get(px)
+    finally:
+        bpy.data.images.remove(img)
+    return px.reshape(height, width, 4)

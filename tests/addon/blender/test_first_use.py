@@ -8,6 +8,8 @@ import numpy as np
 import pytest
 from types import SimpleNamespace
 
+from conftest import render_from_above
+
 TWISTCUBE = ("hybrid-base-complex", "twistcube_s.mesh")  # 1301 cells: hex, prisms, pyramids, tets
 CYLINDER = ("openvolumemesh", "Cylinder.ovm")
 
@@ -94,32 +96,9 @@ def render_solid(tmp_path, tag, size=64):
     shown = [ob for ob in scene.objects if ob.type == "MESH" and not ob.hide_render
              and all(not c.hide_render for c in ob.users_collection)]
     lo, hi = world_box(shown)
-    cam = bpy.data.objects.new("HBC test camera", bpy.data.cameras.new("HBC test camera"))
-    scene.collection.objects.link(cam)
-    cam.data.type = "ORTHO"
-    cam.data.ortho_scale = float(max(hi[:2] - lo[:2])) * 1.05
-    cam.location = (float(lo[0] + hi[0]) / 2, float(lo[1] + hi[1]) / 2, float(hi[2]) + 10.0)
-    scene.camera = cam
-    scene.render.engine = "BLENDER_WORKBENCH"
-    from hybrid_base_complex.blender import compat
-
-    compat.solid_shading(scene.display.shading)
-    scene.display.shading.light = "FLAT"
-    scene.view_settings.view_transform = "Standard"
-    scene.render.film_transparent = True
-    scene.render.resolution_x = scene.render.resolution_y = size
-    scene.render.resolution_percentage = 100
-    scene.render.image_settings.file_format = "PNG"
-    scene.render.filepath = str(tmp_path / f"{tag}.png")
-    bpy.ops.render.render(write_still=True)
-    img = bpy.data.images.load(scene.render.filepath)
-    try:
-        px = np.empty(len(img.pixels), np.float32)
-        img.pixels.foreach_get(px)
-    finally:
-        bpy.data.images.remove(img)
-    bpy.data.objects.remove(cam)
-    return px.reshape(size, size, 4)
+    px = render_from_above(tmp_path, tag, lo, hi, size, size)
+    bpy.data.objects.remove(bpy.data.objects["HBC test camera"])
+    return px
 
 
 def coloured(px):

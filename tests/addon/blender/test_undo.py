@@ -11,6 +11,7 @@ name."""
 import bpy
 import numpy as np
 import pytest
+from conftest import render_from_above
 
 TWISTCUBE = ("hybrid-base-complex", "twistcube_s.mesh")
 
@@ -84,38 +85,13 @@ def assert_same_look(a, b):
 def solid_attribute_render(tmp_path, tag, key="sheet", objects=None):
     """A layer (or some of its objects) rendered by Workbench with colour type Attribute (the look of
     Solid > Attribute in the viewport), flat light, seen from above: (h, w, 4) pixels."""
-    scene = bpy.context.scene
     for c in root().children:
         c.hide_render = c.get("hbc_layer") != key
     for ob in layer_objects(key):
         ob.hide_render = objects is not None and ob.name not in objects
     pts = np.array([ob.matrix_world @ v.co for ob in layer_objects(key) for v in ob.data.vertices])
     lo, hi = pts.min(axis=0), pts.max(axis=0)
-    cam = bpy.data.objects.get("HBC test camera")
-    if cam is None:
-        cam = bpy.data.objects.new("HBC test camera", bpy.data.cameras.new("HBC test camera"))
-        scene.collection.objects.link(cam)
-    cam.data.type = "ORTHO"
-    cam.data.ortho_scale = float(max(hi[:2] - lo[:2])) * 1.1
-    cam.location = (float(lo[0] + hi[0]) / 2, float(lo[1] + hi[1]) / 2, float(hi[2]) + 10.0)
-    cam.rotation_euler = (0.0, 0.0, 0.0)
-    scene.camera = cam
-    scene.render.engine = "BLENDER_WORKBENCH"
-    scene.display.shading.light = "FLAT"
-    scene.display.shading.color_type = "VERTEX"  # labelled "Attribute"
-    scene.view_settings.view_transform = "Standard"
-    scene.render.film_transparent = True
-    scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = 120, 90, 100
-    scene.render.image_settings.file_format = "PNG"
-    scene.render.filepath = str(tmp_path / f"{tag}.png")
-    bpy.ops.render.render(write_still=True)
-    img = bpy.data.images.load(scene.render.filepath)
-    try:
-        px = np.empty(len(img.pixels), np.float32)
-        img.pixels.foreach_get(px)
-    finally:
-        bpy.data.images.remove(img)
-    return px.reshape(90, 120, 4)
+    return render_from_above(tmp_path, tag, lo, hi, 120, 90, margin=1.1)
 
 
 def assert_not_black(px, tag):

@@ -1,4 +1,4 @@
-#include "stats_format.hpp"
+#include "hbc/report.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -7,7 +7,7 @@
 
 #include "hbc/schema.hpp"
 
-namespace hbc::cli {
+namespace hbc {
 namespace {
 
 std::string fmt_real(double v, int digits) {
@@ -25,6 +25,34 @@ std::string value_text(const Field& f, std::optional<double> v) {
 }
 
 }  // namespace
+
+MeshCounts mesh_counts(const Mesh& m) {
+  MeshCounts c;
+  for (CellType t : m.cell_type) ++c.cell_types[static_cast<size_t>(t)];
+  for (uint8_t b : m.face_boundary) c.boundary_faces += b;
+  for (uint8_t b : m.vert_non_manifold) c.non_manifold_vertices += b;
+  const auto nc = static_cast<double>(m.num_cells());
+  c.hex_ratio = nc > 0 ? static_cast<double>(c.cell_types[0]) / nc : 0.0;
+  return c;
+}
+
+Json mesh_info_json(const Mesh& m, const std::string& file) {
+  const MeshCounts c = mesh_counts(m);
+  Json types = Json::object();
+  for (size_t t = 0; t < c.cell_types.size(); ++t) types[cell_type_name(static_cast<CellType>(t))] = c.cell_types[t];
+  return {{"file", file},
+          {"vertices", m.num_vertices()},
+          {"edges", m.num_edges()},
+          {"faces", m.num_faces()},
+          {"cells", static_cast<int64_t>(m.num_cells())},
+          {"hex_cells", c.cell_types[0]},
+          {"hex_ratio", c.hex_ratio},
+          {"cell_types", types},
+          {"boundary_faces", c.boundary_faces},
+          {"non_manifold_vertices", c.non_manifold_vertices},
+          {"dropped_faces", m.dropped_faces},
+          {"dropped_edges", m.dropped_edges}};
+}
 
 void add_stats_json(Json& j, const Stats& s) {
   const auto fields = stat_fields();
@@ -103,4 +131,4 @@ void add_dropped_json(Json& j, bool skip, const std::vector<DroppedCell>& droppe
   j["dropped"] = {{"count", dropped.size()}, {"by_reason", by}, {"cells", cells}};
 }
 
-}  // namespace hbc::cli
+}  // namespace hbc
