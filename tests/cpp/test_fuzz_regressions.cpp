@@ -24,7 +24,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path regressions_dir() { return fs::path(__FILE__).parent_path().parent_path() / "fuzz" / "regressions"; }
+// From the build, not __FILE__: a compiler cache that rewrites paths relative to the build folder
+// (ccache's base_dir) makes __FILE__ relative, and the sanitizer runs start from the source root.
+fs::path regressions_dir() { return fs::path(HBC_FUZZ_REGRESSIONS_DIR); }
 
 // The harnesses replayed here, one per folder under regressions/: a reader per format, and
 // load + analyze.
