@@ -57,15 +57,10 @@ function soupArrays(s) {
   return out;
 }
 
-/** The text of a thrown C++ InputError (or any error) as the CLI prints it. */
+/** The text of a thrown C++ InputError (or any error) as the CLI prints it: the binding turns every
+ *  C++ exception into a JS Error carrying the CLI's message. */
 export function errorText(M, e) {
   if (e && typeof e === 'object' && 'message' in e && e.message) return String(e.message);
-  // A raw C++ exception pointer (exceptions without JS wrapping): ask the module for its text.
-  if (typeof e === 'number') {
-    if (typeof M.getExceptionMessage === 'function') {
-      try { return M.getExceptionMessage(e).filter(Boolean).join(': '); } catch (_) { /* fall through */ }
-    }
-  }
   return String(e);
 }
 
@@ -91,8 +86,7 @@ export class Core {
   /** Table 1's columns from the module's schema, [{key, notation, meaning, kind, timing}], or null. */
   table1() {
     const M = this.M;
-    const t = typeof M.TABLE1_COLUMNS_json === 'function' ? M.TABLE1_COLUMNS_json()
-      : M.TABLE1_COLUMNS ? copy(get(M, 'TABLE1_COLUMNS')) : null;
+    const t = M.TABLE1_COLUMNS_json();
     if (!t) return null;
     const rows = typeof t === 'string' ? JSON.parse(t) : t;
     return rows.map((r) => (Array.isArray(r)
@@ -146,14 +140,7 @@ export class Core {
   }
 
   analyze(mesh) {
-    if (typeof mesh.analyze !== 'function') return this.M.analyze(mesh);
-    try {
-      return mesh.analyze({});
-    } catch (e) {
-      // A binding whose analyze() takes no options (embind checks the argument count).
-      if (/argument|parameter/i.test(String(e && e.message))) return mesh.analyze();
-      throw e;
-    }
+    return mesh.analyze({});
   }
 
   /** `hbc analyze FILE --json` as text, from the library's own JSON writer ("file" is the name
