@@ -26,6 +26,30 @@ hbc_use_pybind11() {
   dir=$(bash "$HBC_ROOT/scripts/env/pybind11.sh") || return 1
   HBC_CMAKE_ARGS+=(-Dpybind11_DIR="$dir")
 }
+# hbc_stamped_venv VENV PACKAGES [CHECK]: makes (once) a virtual environment of $HBC_PYTHON at VENV
+# holding PACKAGES (one pip argument string) and returns; CHECK, Python code, must then run in it.
+# Made under VENV.lock so two runs never build the same folder; the stamp (VENV/.hbc-stamp) holds
+# PACKAGES and is written last, so a half-made or outdated environment is made again. pip's output
+# goes to stderr: the callers print a path on stdout.
+hbc_stamped_venv() {
+  local venv=$1 packages=$2 check=${3:-}
+  mkdir -p "$(dirname "$venv")"
+  (
+    exec 9>"$venv.lock"
+    flock 9
+    [ "$(cat "$venv/.hbc-stamp" 2>/dev/null)" = "$packages" ] && [ -x "$venv/bin/python" ] && exit 0
+    if ! "$HBC_PYTHON" -c "import ensurepip, venv" 2>/dev/null; then
+      echo "$HBC_PYTHON has no venv module: run scripts/env/deps.sh (python3-venv)" >&2
+      exit 1
+    fi
+    rm -rf "$venv"
+    "$HBC_PYTHON" -m venv "$venv" >&2
+    # shellcheck disable=SC2086
+    "$venv/bin/python" -m pip install -q --disable-pip-version-check $packages >&2
+    [ -z "$check" ] || "$venv/bin/python" -c "$check" >&2
+    echo "$packages" >"$venv/.hbc-stamp"
+  )
+}
 # Debian packages scripts/env/deps.sh installs; hbc_missing_packages prints those not installed.
 # openfoam and openfoam-examples make the real snappyHexMesh cases (scripts/env/foam_cases.sh).
 # pybind11-dev (2.10.3) no longer builds the module (hbc_use_pybind11); the test of the module's

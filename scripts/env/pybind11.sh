@@ -14,19 +14,5 @@ VENV=$HBC_ENV_DIR/pybind11
 # The pin; the stamp holds this line, so changing it remakes the environment. pyproject.toml asks
 # `pip install .` for a range starting at the same minimum (2.12).
 PACKAGE="pybind11==2.13.6"
-mkdir -p "$HBC_ENV_DIR"
-exec 9>"$VENV.lock"
-flock 9
-if [ "$(cat "$VENV/.hbc-pybind11" 2>/dev/null)" = "$PACKAGE" ] && [ -x "$VENV/bin/python" ]; then
-  "$VENV/bin/python" -m pybind11 --cmakedir
-  exit 0
-fi
-if ! "$HBC_PYTHON" -c "import ensurepip, venv" 2>/dev/null; then
-  echo "pybind11.sh: $HBC_PYTHON has no venv module: run scripts/env/deps.sh (python3-venv)" >&2
-  exit 1
-fi
-rm -rf "$VENV"
-"$HBC_PYTHON" -m venv "$VENV" >&2
-"$VENV/bin/python" -m pip install -q --disable-pip-version-check "$PACKAGE" >&2
-echo "$PACKAGE" >"$VENV/.hbc-pybind11"
+hbc_stamped_venv "$VENV" "$PACKAGE"
 "$VENV/bin/python" -m pybind11 --cmakedir
