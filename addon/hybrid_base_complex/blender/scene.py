@@ -542,20 +542,25 @@ def selectable(objects):
             ob.hide_select = True
 
 
-def objects_in(coll) -> list:
-    """Every object of a collection and of the collections below it. `Collection.all_objects`
-    reads a cache Blender does not refresh after an undo (3.4: it still lists objects the undo
-    freed, and reading them crashes or yields another object), so the add-on walks the collections
-    itself wherever it may run after an undo (handlers, update callbacks, panels, operators)."""
-    out, seen, stack = [], set(), [coll]
+def iter_objects(coll):
+    """Every object of a collection and of the collections below it, once each, walked lazily (so a
+    caller looking for one can stop at it). `Collection.all_objects` reads a cache Blender does not
+    refresh after an undo (3.4: it still lists objects the undo freed, and reading them crashes or
+    yields another object), so the add-on walks the collections itself wherever it may run after an
+    undo (handlers, update callbacks, panels, operators)."""
+    seen, stack = set(), [coll]
     while stack:
         c = stack.pop()
         for ob in c.objects:
             if ob.name not in seen:
                 seen.add(ob.name)
-                out.append(ob)
+                yield ob
         stack.extend(c.children)
-    return out
+
+
+def objects_in(coll) -> list:
+    """iter_objects as a list."""
+    return list(iter_objects(coll))
 
 
 def find_layer(root, layer: str):
@@ -611,8 +616,14 @@ def layer_shown(coll, view_layer) -> bool:
     path = view_layer_path(view_layer, coll)
     if path is None or any(lc.exclude or lc.hide_viewport or lc.collection.hide_viewport for lc in path[1:]):
         return False
-    obs = objects_in(coll)
-    return not obs or any(not ob.hide_viewport and not ob.hide_get(view_layer=view_layer) for ob in obs)
+    # Drawn by the panel at every redraw: stop at the first object shown (a Blocks layer may hold
+    # one object per component, tens of thousands on a snappyHexMesh case).
+    empty = True
+    for ob in iter_objects(coll):
+        if not ob.hide_viewport and not ob.hide_get(view_layer=view_layer):
+            return True
+        empty = False
+    return empty
 
 
 def show_layer(root, layer: str, view_layer):
