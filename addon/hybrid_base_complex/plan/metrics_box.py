@@ -39,10 +39,11 @@ VECTOR_ROWS = {
     "cells_outside_perfect_sheets": ("Unreached", "share of the hexahedra in no perfect sheet"),
 }
 
-#: The worst places by minimum scaled Jacobian: (kind, id key, scaled Jacobian key, label).
+#: The worst places by minimum scaled Jacobian: (kind, id key, scaled Jacobian key, label); the
+#: labels stand indented under a row "Worst" ("Worst component" is wider than a label may be).
 WORST = (
-    ("component", "worst_component", "worst_component_sj", "Worst component"),
-    ("sheet", "worst_sheet", "worst_sheet_sj", "Worst sheet"),
+    ("component", "worst_component", "worst_component_sj", "component"),
+    ("sheet", "worst_sheet", "worst_sheet_sj", "sheet"),
 )
 
 

@@ -459,14 +459,8 @@ class HBC_OT_help(bpy.types.Operator):
         return {"FINISHED"}
 
 
-class HBC_OT_select_component(bpy.types.Operator):
+class _SelectOwner:
     """Select every face of the picked component or sheet (the active face's owner) in a merged mesh"""
-
-    bl_idname = "hbc.select_component"
-    bl_label = "Select Component"
-    bl_options = {"REGISTER", "UNDO"}
-
-    frame: BoolProperty(name="Frame", default=False, description="Also frame it in the 3D views")
 
     @classmethod
     def poll(cls, context):
@@ -486,11 +480,26 @@ class HBC_OT_select_component(bpy.types.Operator):
         return {"FINISHED"}
 
 
-class HBC_OT_select_block(HBC_OT_select_component):
+class HBC_OT_select_component(_SelectOwner, bpy.types.Operator):
+    """Select every face of the picked component or sheet (the active face's owner) in a merged mesh"""
+
+    bl_idname = "hbc.select_component"
+    bl_label = "Select Component"
+    bl_options = {"REGISTER", "UNDO"}
+
+    frame: BoolProperty(name="Frame", default=False, description="Also frame it in the 3D views")
+
+
+class HBC_OT_select_block(_SelectOwner, bpy.types.Operator):
     """Deprecated name of Select Component (add-on 0.1), kept for scripts"""
 
+    # Not a subclass of HBC_OT_select_component: Blender then ran both ids with the selection
+    # of neither (every face selected).
     bl_idname = "hbc.select_block"
+    bl_label = "Select Component"
     bl_options = {"REGISTER", "UNDO", "INTERNAL"}
+
+    frame: BoolProperty(name="Frame", default=False, description="Also frame it in the 3D views")
 
 
 class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):

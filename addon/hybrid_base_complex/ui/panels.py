@@ -194,14 +194,14 @@ class HBC_PT_metrics(_Sub, bpy.types.Panel):
             _value_row(col, ("  " if indented else "") + label, tip, text)
         col = layout.column(align=True)
         worst = MB.worst(metrics)
+        col.label(text="Worst")
         for kind, _, text, label in worst:
-            _value_row(col, label, f"The {kind} holding the lowest scaled Jacobian (its value in brackets)", text)
+            _value_row(col, "  " + label, f"The {kind} holding the lowest scaled Jacobian (its value in brackets)", text)
         row = layout.row(align=True)
         for kind, i, _, _ in worst:
             sub = row.row(align=True)
             sub.enabled = i is not None
-            sub.operator("hbc.show_worst", text=f"Show {kind}",
-                         icon="RESTRICT_SELECT_OFF").kind = kind
+            sub.operator("hbc.show_worst", text=kind.capitalize(), icon="RESTRICT_SELECT_OFF").kind = kind
 
 
 def layer_controls(context, layout, root, layer):

@@ -100,8 +100,8 @@ def test_box_values_equal_hbc_metrics_json(clean_scene, data_dir):
     assert [rows[k] for k in ("perfect", "type 1", "type 2", "type 3")] == ["1", "16", "2", "1"]
     assert (rows["Non-hex cells"], rows["regions"]) == ("144", "42")
     q = want["quality"]
-    assert rows["Worst component"] == f"{q['worst_component']} ({q['worst_component_sj']:.3f})"
-    assert rows["Worst sheet"] == f"{q['worst_sheet']} ({q['worst_sheet_sj']:.3f})"
+    assert rows["component"] == f"{q['worst_component']} ({q['worst_component_sj']:.3f})"
+    assert rows["sheet"] == f"{q['worst_sheet']} ({q['worst_sheet_sj']:.3f})"
     assert buttons == ["component", "sheet"]
 
 
