@@ -110,7 +110,7 @@ class Glossary:
         for row in table_rows(subsection(section, "Retired words")):
             olds = [phrase(w) for w in re.findall(r"`([^`]+)`", row[0])]
             surfaces = set(re.findall(r"[a-z]+", row[2])) if row[2] != "all" else None
-            aliases = set(re.findall(r"`([^`]+)`", row[3]))
+            aliases = set(re.findall(r"`([^`]+)`", row[3].split("(")[0]))  # a note in brackets after them
             self.retired.append((olds, row[1], surfaces, aliases))
             self.aliases |= aliases
 
@@ -296,6 +296,15 @@ def test_every_word_is_defined():
 def test_no_retired_word():
     _, retired = _problems()
     assert not retired, "retired words on a surface:\n  " + "\n  ".join(retired)
+
+
+def test_deprecated_keys_are_still_written():
+    """Every deprecated JSON key the glossary lists is still in the output (a reader of the old name
+    finds it), as a JSON key and as a CSV column."""
+    g = Glossary()
+    written = {name for surface, _, name, _ in cli_surfaces() if surface == "json"}
+    keys = {a for a in g.aliases if not a.startswith("hbc.")}
+    assert keys and not keys - written, f"listed as kept but not written: {sorted(keys - written)}"
 
 
 def test_tokens_split_keys_and_labels():
