@@ -103,14 +103,14 @@ def time_rebuilds(st, n):
     first, again = [], []
     shrink = st.shrink
     for i in range(n):
-        assert bpy.ops.hbc.clear_layer(layer="blocks") == {"FINISHED"}
+        assert bpy.ops.hbc.clear_layer(layer="components") == {"FINISHED"}
         st.shrink = shrink
         t = time.perf_counter()
-        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+        assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
         first.append(time.perf_counter() - t)
         st.shrink = shrink + 0.05
         t = time.perf_counter()
-        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+        assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
         again.append(time.perf_counter() - t)
     st.shrink = shrink
     return statistics.median(first), statistics.median(again)
@@ -155,7 +155,7 @@ def main():
         root = find_root(st.active_mesh)
         s = session.get(root.name)
         times = {"import": t_import}
-        layers = ["graph", "blocks", "sheets", "wireframe"] if analyzed else []
+        layers = ["graph", "components", "sheets", "wireframe"] if analyzed else []
         if analyzed:
             a = s.analysis
             big = a.largest_self_intersecting
@@ -176,10 +176,10 @@ def main():
             assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}, layer
             times[layer] = time.perf_counter() - t
             splits.append((os.path.basename(path), layer, times[layer], builder["last"]))
-        if "blocks" in layers and args.rebuilds > 0:
+        if "components" in layers and args.rebuilds > 0:
             first, again = time_rebuilds(st, max(args.rebuilds, 1))
             times["rebuild blocks"] = again
-            rebuilds.append((os.path.basename(path), len(S.find_layer(root, "blocks").objects), first, again))
+            rebuilds.append((os.path.basename(path), len(S.find_layer(root, "components").objects), first, again))
         # Tubes are made by geometry nodes when the scene is evaluated (drawn or rendered): time it.
         t = time.perf_counter()
         bpy.context.evaluated_depsgraph_get().update()
@@ -201,7 +201,7 @@ def main():
             failed = True
             print(f"bench_addon: {path}: {total:.2f} s is over the {limit:.0f} s target", flush=True)
 
-    keys = ["import", "metrics", "graph", "blocks", "sheets", "wireframe", "sheet", "subsheets", "rebuild blocks", "evaluate"]
+    keys = ["import", "metrics", "graph", "components", "sheets", "wireframe", "sheet", "subsheets", "rebuild blocks", "evaluate"]
     if args.inspect:
         keys += ["cells", "slice"]
     keys += ["cpu", "peak MB"]

@@ -47,7 +47,7 @@ def parse_args():
                    or os.path.join(ROOT, "build", "addon", "hybrid_base_complex"))
     p.add_argument("--out", default=os.path.join(ROOT, "docs", "images", "panel.png"))
     p.add_argument("--width", type=int, default=960)
-    layers = ("direct", "graph", "blocks", "sheets", "sheet", "subsheets", "wireframe")
+    layers = ("direct", "graph", "components", "sheets", "sheet", "subsheets", "wireframe")
     p.add_argument("--collapse", default=",".join(["HBC_PT_inspect"] + [f"HBC_PT_layer_{x}" for x in layers]),
                    help="comma-separated ids of the add-on's panels to show closed")
     return p.parse_args(argv)

@@ -3,8 +3,9 @@
 # threads (analyze, sheets and wireframe JSON at both levels, the OBJ of the whole complete
 # wireframe, the VTU export) and compares the outputs byte for byte, timings removed. A speed-up or refactor
 # must leave every one of them unchanged (see the README's Correctness section). JSON keys the new build
-# adds (JSON keys are added, never renamed: docs/concepts.md) are listed, not counted as a change: every
-# value of the old output must still be there, the same, at the same place.
+# adds (JSON keys are added; a renamed key keeps its old name as an alias: docs/concepts.md, Glossary)
+# are listed, not counted as a change: every value of the old output must still be there, the same,
+# at the same place.
 #
 #   bash scripts/compare_outputs.sh OLD_HBC NEW_HBC [MESH...]
 #

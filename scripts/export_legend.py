@@ -93,7 +93,7 @@ def main(out: str) -> None:
             "valence": {str(v): entries(P.legend(["graph"], valences=[v])) for v in range(0, MAX_VALENCE + 1)},
             "pseudo": entries(P.legend(["graph"], has_pseudo=True)),
             "non_manifold": entries(P.legend(["graph"], has_non_manifold=True)),
-            "blocks": entries(P.legend(["blocks"], has_non_hex_blocks=True)),
+            "components": entries(P.legend(["components"], has_non_hex_blocks=True)),
             "highlights": entries(P.legend(["sheet"])),
             "wire_kind_type": {str(t): entries(P.wire_kind_legend([t])[:1]) for t in types},
             "wire_kind_rest": entries(P.wire_kind_legend([])),

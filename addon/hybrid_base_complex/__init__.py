@@ -1,5 +1,5 @@
 """Hybrid Base Complex: import hex-dominant volume meshes and build their structure scene
-(direct view, hybrid singularity graph, base complex blocks, sheets and subsheets with their
+(direct view, hybrid singularity graph, base complex components, sheets and subsheets with their
 highlights, VSG wireframes) from the hbc analysis.
 
 Blender 3.4 reads bl_info; 4.2+ reads blender_manifest.toml. The package is layered
@@ -13,7 +13,7 @@ Blender data; ui/ is what the user touches, and ui/addon.py registers everything
 bl_info = {
     "name": "Hex Structure: Hybrid Base Complex",
     "author": "hbc authors",
-    "version": (0, 1, 0),
+    "version": (0, 2, 0),
     "blender": (3, 4, 0),
     "location": "File > Import > Hex-dominant Mesh; 3D View > Sidebar > Hex Structure",
     "description": "Structure of hex-dominant meshes: singularity graph, base complex, sheets, VSG wireframes",

@@ -172,6 +172,10 @@ Json comparison_json(const std::vector<Column>& cols, bool skip_invalid) {
       else row.push_back(nullptr);
     }
   }
+  // The deprecated keys (metric_aliases) too, for readers of the old names.
+  for (const MetricAlias& a : metric_aliases())
+    if (values.contains(std::string(a.group) + "." + std::string(a.key)))
+      values[std::string(a.group) + "." + std::string(a.old_key)] = Json(values[std::string(a.group) + "." + std::string(a.key)]);
   Json& per_mesh = j["metrics"] = Json::array();
   for (const Column& c : cols) per_mesh.push_back(c.error.empty() ? c.metrics : Json());
   Json& sj = j["scaled_jacobian_histograms"];
@@ -190,10 +194,18 @@ Json comparison_json(const std::vector<Column>& cols, bool skip_invalid) {
 std::string comparison_csv(const std::vector<Column>& cols) {
   std::string out = "name,mesh";
   for (const MetricField& f : metric_fields()) out.append(",").append(f.group).append(".").append(f.key);
+  // The deprecated columns (metric_aliases) after the others, before the error.
+  std::vector<const MetricField*> aliased;
+  for (const MetricAlias& a : metric_aliases())
+    if (const int i = metric_index(a.group, a.key); i >= 0) {
+      out.append(",").append(a.group).append(".").append(a.old_key);
+      aliased.push_back(&metric_fields()[static_cast<size_t>(i)]);
+    }
   out += ",error\n";
   for (const Column& c : cols) {
     out += csv_quoted(c.name) + "," + csv_quoted(c.file);
     for (const MetricField& f : metric_fields()) out += "," + number_text(value_of(c, f));
+    for (const MetricField* f : aliased) out += "," + number_text(value_of(c, *f));
     out += "," + csv_quoted(c.error) + "\n";
   }
   return out;

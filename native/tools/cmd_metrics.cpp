@@ -60,6 +60,13 @@ void run_metrics(const MetricsArgs& args) {
       head.append(",").append(fields[i].group).append(".").append(fields[i].key);
       row.append(",").append(number_text(m.values[i]));
     }
+    // The deprecated columns last, so a reader of the old names finds them and the others keep their place.
+    for (const MetricAlias& a : metric_aliases()) {
+      const int i = metric_index(a.group, a.key);
+      if (i < 0) continue;  // a distribution, not a CSV column
+      head.append(",").append(a.group).append(".").append(a.old_key);
+      row.append(",").append(number_text(m.values[static_cast<size_t>(i)]));
+    }
     std::printf("%s\n%s\n", head.c_str(), row.c_str());
   } else {
     std::printf("%s\n", file.c_str());
@@ -93,7 +100,7 @@ Json metrics_json(const std::string& file, const Metrics& m, const Json& timings
   j["census"]["polyhedra_by_faces"] = by_value(m.polyhedra_by_faces);
   j["singular"]["valence_interior"] = by_value(m.singular_valence_interior);
   j["singular"]["valence_boundary"] = by_value(m.singular_valence_boundary);
-  j["singular"]["curve_edges"] = m.singular_curve_edges;
+  j["singular"]["singularity_edges"] = m.singularity_edges;
   j["complex"]["component_cells"] = m.component_cells;
   j["sheets"]["subsheets_per_sheet"] = m.subsheets_per_sheet;
   j["non_hex"]["region_cells"] = m.non_hex_region_cells;
@@ -101,6 +108,11 @@ Json metrics_json(const std::string& file, const Metrics& m, const Json& timings
   summary["vector"] = m.summary_vector;
   summary["vector_keys"] = Json::array();
   for (std::string_view k : summary_fields()) summary["vector_keys"].push_back(std::string(k));
+  // The deprecated keys (metric_aliases) beside the new ones, for readers of the old names.
+  for (const MetricAlias& a : metric_aliases()) {
+    Json& g = j[std::string(a.group)];
+    if (g.contains(std::string(a.key))) g[std::string(a.old_key)] = Json(g[std::string(a.key)]);
+  }
   j["timings"] = timings;
   return j;
 }

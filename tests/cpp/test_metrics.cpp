@@ -33,13 +33,17 @@ TEST(Metrics, BoxOfHexes) {
   EXPECT_EQ(m.value("singular", "edges_interior"), 0);
   EXPECT_EQ(m.value("singular", "edges_boundary"), 24);
   EXPECT_EQ(m.singular_valence_boundary, (std::vector<int64_t>{0, 24}));
-  EXPECT_EQ(m.value("singular", "curves"), 12);
-  EXPECT_EQ(m.value("singular", "curves_boundary_ends"), 12);
-  EXPECT_EQ(m.value("singular", "curves_on_boundary"), 12);
-  EXPECT_EQ(m.value("singular", "curves_closed"), 0);
-  EXPECT_EQ(m.value("singular", "curve_edges_max"), 2);
+  EXPECT_EQ(m.value("singular", "singularities"), 12);
+  EXPECT_EQ(m.value("singular", "singularities_boundary_ends"), 12);
+  EXPECT_EQ(m.value("singular", "singularities_on_boundary"), 12);
+  EXPECT_EQ(m.value("singular", "singularities_closed"), 0);
+  EXPECT_EQ(m.value("singular", "singularity_edges_max"), 2);
   EXPECT_DOUBLE_EQ(m.value("singular", "length"), 24 / std::sqrt(12.0));
+  EXPECT_EQ(m.value("singular", "singular_vertices"), 8);
+  // The deprecated keys read the same values (metric_aliases).
   EXPECT_EQ(m.value("singular", "nodes"), 8);
+  EXPECT_EQ(m.value("singular", "curves"), 12);
+  EXPECT_EQ(m.value("complex", "hex_components"), 1);
   EXPECT_EQ(m.value("complex", "cube_components"), 1);
   EXPECT_EQ(m.value("complex", "corners"), 8);
   EXPECT_EQ(m.value("complex", "curves"), 12);
@@ -94,8 +98,8 @@ TEST(Metrics, ValenceFiveSector) {
   const Metrics m = metrics_of(generate_sector(5, 1, 2));
   EXPECT_EQ(m.value("singular", "edges_interior"), 2);
   EXPECT_EQ(m.singular_valence_interior, (std::vector<int64_t>{0, 0, 0, 0, 0, 2}));
-  EXPECT_EQ(m.value("singular", "curves") - m.value("singular", "curves_on_boundary"), 1);
-  EXPECT_EQ(m.value("singular", "curves_node_ends"), 0);
+  EXPECT_EQ(m.value("singular", "singularities") - m.value("singular", "singularities_on_boundary"), 1);
+  EXPECT_EQ(m.value("singular", "singularities_interior_ends"), 0);
   EXPECT_NEAR(m.summary_vector[1], std::log10(2.0), 1e-12);  // the summary is rounded to 1e-12
 }
 

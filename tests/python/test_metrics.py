@@ -51,7 +51,13 @@ def test_metrics_on_every_shared_mesh(shared_mesh, hbc_cli):
     assert sum(m["census"]["polyhedra_by_faces"].values()) == c["polyhedra"]
     assert 0 <= c["hex_ratio"] <= 1 and 0 <= c["hex_volume_ratio"] <= 1 + 1e-12
     s = m["singular"]
-    assert s["curves"] == s["curves_closed"] + s["curves_boundary_ends"] + s["curves_node_ends"]
+    assert s["singularities"] == (s["singularities_closed"] + s["singularities_boundary_ends"]
+                                  + s["singularities_interior_ends"])
+    assert len(s["singularity_edges"]) == s["singularities"]
+    # The deprecated keys (docs/concepts.md, retired words) beside the new ones, with their values.
+    assert (s["curves"], s["nodes"], s["curve_edges"]) == (s["singularities"], s["singular_vertices"],
+                                                           s["singularity_edges"])
+    assert m["complex"]["cube_components"] == m["complex"]["hex_components"]
     assert sum(s["valence_interior"].values()) == s["edges_interior"]
     assert sum(s["valence_boundary"].values()) == s["edges_boundary"]
     x = m["complex"]

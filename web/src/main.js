@@ -11,7 +11,7 @@ const LAYERS = L.layers.map(([key]) => key);
 const LAYER_TITLES = Object.fromEntries(L.layers);
 
 const state = {
-  layers: { direct: true, graph: true, blocks: false, sheets: false, sheet: false, subsheets: false, wireframe: false },
+  layers: { direct: true, graph: true, components: false, sheets: false, sheet: false, subsheets: false, wireframe: false },
   shrink: 0.1,
   boundaryOpacity: 0.25,
   sheet: -1,
@@ -355,7 +355,7 @@ function legendEntries() {
     if (f.has_pseudo) out.push(...G.pseudo);
     if (f.has_non_manifold) out.push(...G.non_manifold);
   }
-  if (shown.includes('blocks') && f.has_non_hex_blocks) out.push(...G.blocks);
+  if (shown.includes('components') && f.has_non_hex_blocks) out.push(...G.components);
   if (shown.includes('sheet') || shown.includes('subsheets')) out.push(...G.highlights);
   if (state.byKind && (shown.includes('wireframe') || shown.includes('subsheets'))) {
     for (const t of f.non_hex_types) out.push(...G.wire_kind_type[t]);
@@ -472,7 +472,7 @@ function buildControls() {
   });
   $('shrink').addEventListener('change', (e) => {
     state.shrink = +e.target.value;
-    for (const l of ['blocks', 'sheets', 'sheet', 'subsheets']) build(l);
+    for (const l of ['components', 'sheets', 'sheet', 'subsheets']) build(l);
     saveFragment();
   });
   $('boundary-opacity').addEventListener('input', (e) => {
@@ -512,13 +512,13 @@ function setupPicking() {
   el.addEventListener('pointerup', (e) => {
     if (!down || !info || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 4) return;
     const r = el.getBoundingClientRect();
-    const hit = viewer.pick(e.clientX - r.left, e.clientY - r.top, ['sheets', 'blocks', 'sheet', 'subsheets', 'direct']);
+    const hit = viewer.pick(e.clientX - r.left, e.clientY - r.top, ['sheets', 'components', 'sheet', 'subsheets', 'direct']);
     if (!hit) return;
     if (hit.layer === 'sheets') {
       pickSheet(hit.owner);
       return;
     }
-    const what = { blocks: 'component', sheet: 'component', subsheets: 'subsheet', direct: 'cell' }[hit.layer];
+    const what = { components: 'component', sheet: 'component', subsheets: 'subsheet', direct: 'cell' }[hit.layer];
     $('status').textContent = `${LAYER_TITLES[hit.layer]}: ${what} ${hit.owner}`;
   });
 }
@@ -563,6 +563,7 @@ function applyFragment(text) {
   const num = (k, d) => (q.has(k) && Number.isFinite(+q.get(k)) ? +q.get(k) : d);
   if (q.has('layers')) {
     const on = new Set(q.get('layers').split(',').filter(Boolean));
+    if (on.has('blocks')) on.add('components'); // the layer's old key (docs/concepts.md, retired words) in saved links
     for (const l of LAYERS) state.layers[l] = on.has(l);
   }
   state.sheet = info && num('sheet', -1) < info.sheets.length ? Math.trunc(num('sheet', -1)) : -1;

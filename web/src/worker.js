@@ -222,7 +222,7 @@ function buildGraph() {
 
 function buildBlocks(p) {
   const soup = core.blockSoup(S.mesh, S.analysis, 'components', -1, p.shrink);
-  return [soupPart(soup, (o) => componentColor(o, S.componentKind[o]), { cellTypes: S.cellTypes, name: 'blocks' })];
+  return [soupPart(soup, (o) => componentColor(o, S.componentKind[o]), { cellTypes: S.cellTypes, name: 'components' })];
 }
 
 /** Every sheet at once: large (a cell is in up to three sheets), so bounded. */
@@ -362,7 +362,7 @@ function buildWireframe(p) {
   return [{ ...part, subsheet: p.subsheet ?? -1 }];
 }
 
-const BUILDERS = { direct: buildDirect, graph: buildGraph, blocks: buildBlocks, sheets: buildSheets, sheet: buildSheet, subsheets: buildSubsheets, wireframe: buildWireframe };
+const BUILDERS = { direct: buildDirect, graph: buildGraph, components: buildBlocks, sheets: buildSheets, sheet: buildSheet, subsheets: buildSubsheets, wireframe: buildWireframe };
 
 self.onmessage = async (ev) => {
   const msg = ev.data;

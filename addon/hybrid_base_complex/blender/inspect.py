@@ -9,12 +9,12 @@ How it works:
   hbc.block_soup's face_cell, written by scene.py). `ensure_equipped` copies per-cell arrays computed
   in C++ (hbc.cell_quality, hbc.cell_depth, hbc.cell_centroids, the analysis' cell_component and
   the picked sheet's cells) onto the faces, as FACE attributes: `hbc_cell_type` (int, CellType),
-  `hbc_quality` (float, scaled Jacobian), `hbc_depth` (int), `hbc_block` (int, component id, -1
+  `hbc_quality` (float, scaled Jacobian), `hbc_depth` (int), `hbc_component` (int, component id, -1
   without an analysis), `hbc_in_sheet` (int 0/1: the cell is in the picked sheet; rewritten when
   another sheet is picked), `hbc_centroid` (float vector, the cell's vertex centroid, in the object's coordinates).
   A build only marks its cell-based objects (`hbc_inspect`); the attributes and the modifier come
   when a filter that can hide a face is first switched on (`apply_to_object`), or at the build when
-  one already is: written at every build they cost 0.24 s and a quarter of the 10^6-cell Blocks
+  one already is: written at every build they cost 0.24 s and a quarter of the 10^6-cell Components
   mesh (copied again by the depsgraph in 3.4) that most builds never use. A rebuilt layer is
   refilled in place: its meshes lose the attributes and its objects the modifier, so it is
   equipped again by the same rule.
@@ -187,7 +187,7 @@ def write_attributes(me, data, in_sheet):
     _set_attr(me, "hbc_cell_type", "INT", data["type"][cells])
     _set_attr(me, "hbc_quality", "FLOAT", data["quality"][cells])
     _set_attr(me, "hbc_depth", "INT", data["depth"][cells])
-    _set_attr(me, "hbc_block", "INT", data["block"][cells])
+    _set_attr(me, "hbc_component", "INT", data["component"][cells])
     _set_attr(me, "hbc_in_sheet", "INT", in_sheet[cells])
     _set_attr(me, "hbc_centroid", "FLOAT_VECTOR", data["centroid"][cells])
 
@@ -206,7 +206,7 @@ def equip_object(tx, ob, data, in_sheet):
     apply_to_object(ob, settings())
 
 
-FILTER_ATTRS = ("hbc_cell_type", "hbc_quality", "hbc_depth", "hbc_block", "hbc_in_sheet", "hbc_centroid")
+FILTER_ATTRS = ("hbc_cell_type", "hbc_quality", "hbc_depth", "hbc_component", "hbc_in_sheet", "hbc_centroid")
 
 
 def is_equipped(ob) -> bool:
@@ -407,7 +407,7 @@ def set_filters(ob, values, enabled=True):
 def filters_hide_anything(values) -> bool:
     """Whether these modifier inputs can hide a face. When none can, the modifier is switched off:
     evaluating it anyway copies the whole mesh to delete nothing (1.0 s and 0.85 GB for the 4 M
-    faces of a 10^6-cell mesh's Blocks layer in Blender 3.4, at every build and every evaluation of
+    faces of a 10^6-cell mesh's Components layer in Blender 3.4, at every build and every evaluation of
     the object)."""
     return bool(values["Slice"] or values["Peel"] > 0 or values["Types"] != IP.ALL_TYPES
                 or values["Filter Quality"] or values["Sheet Only"])

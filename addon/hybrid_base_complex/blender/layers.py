@@ -29,7 +29,7 @@ def build_direct(tx, coll, s, st, name):
     made = 0
     if st.direct_boundary:
         soup = s.direct_boundary()
-        alpha = st.boundary_alpha if st.direct_transparent else 1.0
+        alpha = st.boundary_opacity if st.direct_transparent else 1.0
         mat = S.material(tx, "flat", P.HEX_COLOR, alpha)
         ob = S.soup_object(tx, coll, f"{name} boundary", soup, None, mat, _props(name, "direct", hbc_part="boundary"))
         # No colour attribute: Solid > Attribute (the add-on's setting) draws such an object in its
@@ -70,11 +70,11 @@ def build_blocks(tx, coll, s, st, name):
     kinds = s.component_kinds()
 
     def props_of(c):
-        return _props(name, "blocks", hbc_component=c, hbc_kind=P.COMPONENT_KINDS[int(kinds[c])])
+        return _props(name, "components", hbc_component=c, hbc_kind=P.COMPONENT_KINDS[int(kinds[c])])
 
     if s.num_components <= st.split_max:
-        return len(S.split_soup_objects(tx, coll, f"{name} block", soup, colors, props_of))
-    S.soup_object(tx, coll, f"{name} blocks", soup, None, None, _props(name, "blocks", hbc_owner="component"),
+        return len(S.split_soup_objects(tx, coll, f"{name} component", soup, colors, props_of))
+    S.soup_object(tx, coll, f"{name} components", soup, None, None, _props(name, "components", hbc_owner="component"),
                   owner_colors=colors)
     return 1
 
@@ -219,7 +219,7 @@ def build_wireframe(tx, coll, s, st, name):
 BUILDERS = {
     "direct": build_direct,
     "graph": build_graph,
-    "blocks": build_blocks,
+    "components": build_blocks,
     "sheets": build_sheets,
     "sheet": build_sheet,
     "subsheets": build_subsheets,

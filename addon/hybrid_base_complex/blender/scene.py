@@ -616,7 +616,7 @@ def layer_shown(coll, view_layer) -> bool:
     path = view_layer_path(view_layer, coll)
     if path is None or any(lc.exclude or lc.hide_viewport or lc.collection.hide_viewport for lc in path[1:]):
         return False
-    # Drawn by the panel at every redraw: stop at the first object shown (a Blocks layer may hold
+    # Drawn by the panel at every redraw: stop at the first object shown (a Components layer may hold
     # one object per component, tens of thousands on a snappyHexMesh case).
     empty = True
     for ob in iter_objects(coll):

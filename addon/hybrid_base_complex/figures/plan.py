@@ -376,12 +376,12 @@ def all_edges(face_sizes, face_vertices):
 LEGEND_LAYERS = {
     "mesh": ("direct",),
     "graph": ("graph",),
-    "complex": ("blocks",),
+    "complex": ("components",),
     "sheet": ("sheet",),
     "vsg": (),
     "wireframe": (),
     "subsheets": ("subsheets",),
-    "cut": ("blocks",),
+    "cut": ("components",),
     "quality": (),
     "mesh_wireframe": (),
 }

@@ -346,7 +346,7 @@ class Subject:
     def panel_mesh(self):
         s, S = self.s, self.addon.S
         see_through = self.args.engine != "workbench"
-        coll = self.build("mesh", "direct", direct_boundary=True, direct_transparent=see_through, boundary_alpha=0.22,
+        coll = self.build("mesh", "direct", direct_boundary=True, direct_transparent=see_through, boundary_opacity=0.22,
                           direct_hex_cells=False, direct_shrink=0.0)
         with S.Transaction() as tx:
             self.outline(tx, coll, f"{self.name} mesh edges", s.direct_boundary(), color=MESH_EDGE_COLOR,
@@ -360,10 +360,10 @@ class Subject:
         return [self.build("graph", "graph")] + self.shell()
 
     def panel_complex(self):
-        coll = self.build("complex", "blocks")
+        coll = self.build("complex", "components")
         st = self.st()
         with self.addon.S.Transaction() as tx:
-            self.outline(tx, coll, f"{self.name} block outlines", self.s.blocks(st.shrink))
+            self.outline(tx, coll, f"{self.name} component outlines", self.s.blocks(st.shrink))
         return [coll]
 
     def panel_sheet(self):
@@ -481,10 +481,10 @@ class Subject:
 
     def panel_cut(self):
         """The base complex's components sliced by the plane (whole cells kept by their centroid)."""
-        coll = self.build("cut", "blocks")
+        coll = self.build("cut", "components")
         self.cut(coll)
         with self.addon.S.Transaction() as tx:
-            self.outline(tx, coll, f"{self.name} cut block outlines", self.kept_by_cut(self.s.blocks(self.st().shrink)))
+            self.outline(tx, coll, f"{self.name} cut component outlines", self.kept_by_cut(self.s.blocks(self.st().shrink)))
         return [coll]
 
     def panel_quality(self):

@@ -18,7 +18,7 @@ from . import planning as P
 from .native import import_hbc
 
 #: The layers whose objects carry per-cell attributes and the filter modifier.
-INSPECT_LAYERS = ("direct", "blocks", "sheets", "sheet", "subsheets")
+INSPECT_LAYERS = ("direct", "components", "sheets", "sheet", "subsheets")
 TYPE_NAMES = P.CELL_TYPE_NAMES
 ALL_TYPES = (1 << len(TYPE_NAMES)) - 1
 
@@ -62,7 +62,7 @@ def quality_histogram(sj):
 
 def cell_data(s) -> dict:
     """{"type", "quality" (scaled Jacobian), "depth", "centroid" (placed like s.points: the
-    filters compare it with the plane in the layer objects' coordinates), "block" (component id,
+    filters compare it with the plane in the layer objects' coordinates), "component" (component id,
     -1 without an analysis), "histogram"} of every cell of the Structure `s`."""
     cache = getattr(s, "_hbc_inspect", None)
     if cache is not None and cache["analysis"] is s.analysis and np.array_equal(cache["offset"], s.offset):
@@ -78,7 +78,7 @@ def cell_data(s) -> dict:
         "quality": np.asarray(hbc.cell_quality(s.mesh)["scaled_jacobian"], np.float32),
         "depth": np.asarray(hbc.cell_depth(s.mesh), np.int32),
         "centroid": s.place(hbc.cell_centroids(s.mesh)),
-        "block": block,
+        "component": block,
     }
     cache["histogram"] = quality_histogram(cache["quality"])
     s._hbc_inspect = cache

@@ -3,7 +3,7 @@
 values are written. No ``bpy`` here.
 
 Key: the summary score and its vector (why the score is what it is), the hex ratio by count and by
-volume, the singular curves, the components and the share of cells in the largest tenth of the
+volume, the singularities, the components and the share of cells in the largest tenth of the
 blocks, the sheets by class, the non-hex regions, and the worst component and worst sheet by
 minimum scaled Jacobian (the box's buttons show and select them)."""
 
@@ -17,7 +17,7 @@ ROWS = (
     ("summary", "score", "Score", False),
     ("census", "hex_ratio", "Hex by count", False),
     ("census", "hex_volume_ratio", "Hex by volume", False),
-    ("singular", "curves", "Sing. curves", False),
+    ("singular", "singularities", "Singularities", False),
     ("complex", "components", "Components", False),
     ("complex", "largest_tenth_share", "Largest tenth", False),
     ("sheets", "sheets", "Sheets", False),
@@ -33,16 +33,17 @@ ROWS = (
 #: (docs/metrics.md, "The refinement-invariant summary").
 VECTOR_ROWS = {
     "non_hex_volume_share": ("Non-hex vol.", "1 - hex volume ratio: volume not meshed by hexahedra"),
-    "log10_1_plus_interior_curves": ("Inner curves", "log10(1 + singular curves off the boundary)"),
-    "log10_blocks": ("Blocks (log)", "log10 of the blocks (components of hexahedra)"),
+    "log10_1_plus_interior_curves": ("Inner chains", "log10(1 + singularities off the boundary)"),
+    "log10_blocks": ("Blocks (log)", "log10 of the blocks (components of hex cells)"),
     "imperfect_sheet_share": ("Imperfect", "share of the sheets that are not perfect"),
     "cells_outside_perfect_sheets": ("Unreached", "share of the hexahedra in no perfect sheet"),
 }
 
-#: The worst places by minimum scaled Jacobian: (kind, id key, scaled Jacobian key, label).
+#: The worst places by minimum scaled Jacobian: (kind, id key, scaled Jacobian key, label); the
+#: labels stand indented under a row "Worst" ("Worst component" is wider than a label may be).
 WORST = (
-    ("component", "worst_component", "worst_component_sj", "Worst block"),
-    ("sheet", "worst_sheet", "worst_sheet_sj", "Worst sheet"),
+    ("component", "worst_component", "worst_component_sj", "component"),
+    ("sheet", "worst_sheet", "worst_sheet_sj", "sheet"),
 )
 
 

@@ -25,7 +25,7 @@ from . import native
 LAYERS = (
     ("direct", "Direct view"),
     ("graph", "Singularity graph"),
-    ("blocks", "Blocks"),
+    ("components", "Components"),
     ("sheets", "Sheets"),
     ("sheet", "Picked sheet"),
     ("subsheets", "Subsheets"),
@@ -39,7 +39,7 @@ def root_name(mesh_name: str) -> str:
 
 
 def layer_collection_name(mesh_name: str, layer: str) -> str:
-    """`<mesh> / Blocks` etc.: unique per mesh so two imported meshes never share a layer."""
+    """`<mesh> / Components` etc.: unique per mesh so two imported meshes never share a layer."""
     return f"{mesh_name} / {LAYER_TITLES[layer]}"
 
 
@@ -569,7 +569,7 @@ LEGEND_COLORS = {
     "valence_other": OTHER_VALENCE_COLOR,
     "pseudo": PSEUDO_COLOR,
     "non_manifold": NON_MANIFOLD_COLOR,
-    "non_hex_block": NON_HEX_COLOR,
+    "non_hex_component": NON_HEX_COLOR,
     "unmatched": UNMATCHED_COLOR,
     "shared": SHARED_COLOR,
     "self_parallel": SELF_PARALLEL_EDGE_COLOR,
@@ -618,8 +618,8 @@ def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_he
             out.append(("pseudo", "Pseudo-singular"))
         if has_non_manifold:
             out.append(("non_manifold", "Non-manifold edge"))
-    if "blocks" in layers and has_non_hex_blocks:
-        out.append(("non_hex_block", "Non-hex component"))
+    if "components" in layers and has_non_hex_blocks:
+        out.append(("non_hex_component", "Non-hex component"))
     if "sheet" in layers or "subsheets" in layers:
         out += [(key, words) for key, words in SHEET_HIGHLIGHTS if highlights is None or key in highlights]
     if wire_by_kind and ("wireframe" in layers or "subsheets" in layers):
@@ -636,7 +636,7 @@ def beside(boxes, lo, hi, gap: float = 0.25):
     return (right + gap * float(hi[0] - lo[0]) - float(lo[0]), 0.0, 0.0)
 
 
-# The layers coloured from the palette (one colour per block, sheet, subsheet or wireframe class):
+# The layers coloured from the palette (one colour per component, sheet, subsheet or wireframe class):
 # a swatch stands for "a colour of its own each", and the wireframes' faint lines for distance. The
 # picked sheet is one sheet in one colour: its swatch is that colour (sheet_color of the sheet the
 # layer draws; the panel's swatch reads it from the scene, this is sheet 0's).
@@ -644,7 +644,7 @@ LEGEND_COLORS.update(palette=tuple(float(x) for x in PALETTE[0]),
                      faint=tuple(float(x) for x in PALETTE[0][:3]) + (0.3,),
                      picked_sheet=sheet_color(0))
 PALETTE_LEGEND = {
-    "blocks": [("palette", "Hex component")],
+    "components": [("palette", "Hex-cell component")],
     "sheets": [("palette", "A colour a sheet")],
     "sheet": [("picked_sheet", "Picked sheet")],
     "subsheets": [("palette", "A colour a subsheet")],

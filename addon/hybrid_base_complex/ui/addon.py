@@ -33,6 +33,7 @@ CLASSES = (
     operators.HBC_OT_copy_table1,
     operators.HBC_OT_explain,
     operators.HBC_OT_help,
+    operators.HBC_OT_select_component,
     operators.HBC_OT_select_block,
     operators.HBC_OT_show_worst,
     operators.HBC_OT_add_cut_plane,

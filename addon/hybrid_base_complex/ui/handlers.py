@@ -1,7 +1,8 @@
 """The add-on's app handlers (ui/addon.py registers them): after undo, redo or loading a file the
-layers look as they did (their colour attribute is the active and rendered one, their material the
+layers look as they did (a file saved by an older add-on first gets this one's names and plane,
+blender/upgrade.py; their colour attribute is the active and rendered one, their material the
 one they were built with) and Blender's object caches of the imported meshes are fresh; the source
-paths are stored the Blender way on save (blender/sources.py); and after a depsgraph update the
+paths are stored the Blender way on save (blender/sources.py) with the file's layout version; and after a depsgraph update the
 inspection follows the dragged cut plane and the picked sheet (blender/inspect.py). Every handler
 is persistent: it stays when a file is opened."""
 
@@ -14,6 +15,7 @@ from ..blender import compat
 from ..blender import inspect
 from ..blender import scene as S
 from ..blender import sources
+from ..blender import upgrade
 
 
 def _is_current(me, attr) -> bool:
@@ -67,6 +69,14 @@ def refresh_caches() -> int:
 
 @persistent
 def on_load(*_args):
+    # A file of an older add-on first gets this one's names (blender/upgrade.py), then its colours.
+    try:
+        done = upgrade.upgrade_file()
+    except Exception as e:  # noqa: BLE001 - a handler cannot report; the file stays as it was read
+        print(f"hbc: could not upgrade the file of an older add-on: {e}")
+    else:
+        if any(done.values()):
+            print("hbc: file of an older add-on upgraded: " + ", ".join(f"{v} {k}" for k, v in done.items() if v))
     relink_colors()
 
 
@@ -80,6 +90,7 @@ def on_undo(*_args):
 def on_save_pre(*args):
     # Blender versions that pass the target path give it as a string argument; 3.4 passes none.
     sources.store_for_save(next((a for a in args if isinstance(a, str) and a), None))
+    upgrade.stamp_file()
 
 
 @persistent

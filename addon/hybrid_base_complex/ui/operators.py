@@ -163,7 +163,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
     analyze: BoolProperty(name="Analyze", default=True,
                           description="Analyze on import: singularity graph, base complex, sheets and wireframe")
     build_layers: BoolProperty(name="Build layers", default=False,
-                               description="Also build the singularity graph, Blocks (components) and wireframe layers")
+                               description="Also build the singularity graph, components and wireframe layers")
     beside: BoolProperty(name="Place beside", default=True,
                          description="Place the mesh to the right of the meshes already imported")
     frame: BoolProperty(name="Frame", default=True, description="Frame the imported mesh in the 3D views")
@@ -177,7 +177,7 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
         if not os.path.isfile(path):
             self.report({"ERROR"}, f"No such file: {path}")
             return {"CANCELLED"}
-        layers = ["direct"] + (["graph", "blocks", "wireframe"] if self.build_layers and self.analyze else [])
+        layers = ["direct"] + (["graph", "components", "wireframe"] if self.build_layers and self.analyze else [])
         prog = _Progress(context, 1 + (1 if self.analyze else 0) + len(layers))
         t0 = time.perf_counter()
         try:
@@ -294,8 +294,8 @@ class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
 
 
 #: Build All's layers, and the one left visible (the others are a click away: their eye icons).
-BUILD_ALL = ("direct", "graph", "blocks", "sheets", "wireframe")
-BUILD_ALL_SHOWN = "blocks"
+BUILD_ALL = ("direct", "graph", "components", "sheets", "wireframe")
+BUILD_ALL_SHOWN = "components"
 
 
 class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
@@ -459,14 +459,8 @@ class HBC_OT_help(bpy.types.Operator):
         return {"FINISHED"}
 
 
-class HBC_OT_select_block(bpy.types.Operator):
+class _SelectOwner:
     """Select every face of the picked component or sheet (the active face's owner) in a merged mesh"""
-
-    bl_idname = "hbc.select_block"
-    bl_label = "Select Block"
-    bl_options = {"REGISTER", "UNDO"}
-
-    frame: BoolProperty(name="Frame", default=False, description="Also frame it in the 3D views")
 
     @classmethod
     def poll(cls, context):
@@ -486,13 +480,35 @@ class HBC_OT_select_block(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class HBC_OT_select_component(_SelectOwner, bpy.types.Operator):
+    """Select every face of the picked component or sheet (the active face's owner) in a merged mesh"""
+
+    bl_idname = "hbc.select_component"
+    bl_label = "Select Component"
+    bl_options = {"REGISTER", "UNDO"}
+
+    frame: BoolProperty(name="Frame", default=False, description="Also frame it in the 3D views")
+
+
+class HBC_OT_select_block(_SelectOwner, bpy.types.Operator):
+    """Deprecated name of Select Component (add-on 0.1), kept for scripts"""
+
+    # Not a subclass of HBC_OT_select_component: Blender then ran both ids with the selection
+    # of neither (every face selected).
+    bl_idname = "hbc.select_block"
+    bl_label = "Select Component"
+    bl_options = {"REGISTER", "UNDO", "INTERNAL"}
+
+    frame: BoolProperty(name="Frame", default=False, description="Also frame it in the 3D views")
+
+
 class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
-    """Show, select and frame the block (component of hexahedra) or the sheet holding the active mesh's lowest scaled Jacobian"""
+    """Show, select and frame the component (of hex cells) or the sheet holding the active mesh's lowest scaled Jacobian"""
 
     bl_idname = "hbc.show_worst"
     bl_label = "Show Worst"
 
-    kind: EnumProperty(name="What", items=[("component", "Block", "The worst component of hexahedra"),
+    kind: EnumProperty(name="What", items=[("component", "Component", "The worst component of hex cells"),
                                            ("sheet", "Sheet", "The worst sheet")])
 
     def execute(self, context):
@@ -513,7 +529,7 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
         st.active_mesh = root.name
         if self.kind == "sheet":
             return self.finish_with(f"{root.name}: worst sheet {which} shown and selected ({n} objects)")
-        return self.finish_with(f"{root.name}: worst block {which} shown and selected ({n} objects or faces), "
+        return self.finish_with(f"{root.name}: worst component {which} shown and selected ({n} objects or faces), "
                                 "the rest of the mesh hidden (Alt+H shows it)")
 
     @staticmethod
@@ -534,15 +550,15 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
 
     @staticmethod
     def _show_component(context, root, s, component, log):
-        """Selects the component's object in the Blocks layer (built when missing) and frames it,
-        isolated: the worst block is often inside the mesh, behind the other blocks, so every other
+        """Selects the component's object in the Components layer (built when missing) and frames it,
+        isolated: the worst component is often inside the mesh, behind the other components, so every other
         object of the mesh but the see-through boundary is hidden (scene.isolate). In a merged
-        Blocks mesh, its faces in edit mode (as Select Block does) with the others hidden."""
+        Components mesh, its faces in edit mode (as Select Component does) with the others hidden."""
         st = context.scene.hbc
         vl = context.view_layer
-        if S.find_layer(root, "blocks") is None:
-            L.build_layer(root, "blocks", s, st, log)
-        coll = S.show_layer(root, "blocks", vl)
+        if S.find_layer(root, "components") is None:
+            L.build_layer(root, "components", s, st, log)
+        coll = S.show_layer(root, "components", vl)
         objects = S.objects_in(coll)
         mine = [ob for ob in objects if ob.get("hbc_component") == component]
         if context.object is not None and context.object.mode != "OBJECT":
@@ -557,7 +573,7 @@ class HBC_OT_show_worst(_OnActiveMesh, bpy.types.Operator):
         compat.frame_objects(context, [merged])
         bpy.ops.object.mode_set(mode="EDIT")
         bpy.ops.mesh.select_mode(type="FACE")
-        bpy.ops.mesh.reveal(select=False)  # the faces an earlier Show block hid
+        bpy.ops.mesh.reveal(select=False)  # the faces an earlier Show component hid
         n = select_owner(merged, component)
         bpy.ops.mesh.hide(unselected=True)
         compat.frame_edit_selection(context)

@@ -194,14 +194,14 @@ class HBC_PT_metrics(_Sub, bpy.types.Panel):
             _value_row(col, ("  " if indented else "") + label, tip, text)
         col = layout.column(align=True)
         worst = MB.worst(metrics)
+        col.label(text="Worst")
         for kind, _, text, label in worst:
-            _value_row(col, label, f"The {kind} holding the lowest scaled Jacobian (its value in brackets)", text)
+            _value_row(col, "  " + label, f"The {kind} holding the lowest scaled Jacobian (its value in brackets)", text)
         row = layout.row(align=True)
         for kind, i, _, _ in worst:
             sub = row.row(align=True)
             sub.enabled = i is not None
-            sub.operator("hbc.show_worst", text=f"Show {'block' if kind == 'component' else kind}",
-                         icon="RESTRICT_SELECT_OFF").kind = kind
+            sub.operator("hbc.show_worst", text=kind.capitalize(), icon="RESTRICT_SELECT_OFF").kind = kind
 
 
 def layer_controls(context, layout, root, layer):
@@ -296,9 +296,9 @@ def _wireframe_options(self, col, st):
 #: The layer sub-panels in their order: layer, title, draw_options.
 LAYER_PANELS = (
     ("direct", "Direct view",
-     _props("direct_boundary", "direct_transparent", "boundary_alpha", "direct_hex_cells", "direct_shrink")),
+     _props("direct_boundary", "direct_transparent", "boundary_opacity", "direct_hex_cells", "direct_shrink")),
     ("graph", "Singularities", _props("line_radius")),
-    ("blocks", "Blocks", _props("shrink", "split_max")),
+    ("components", "Components", _props("shrink", "split_max")),
     ("sheets", "Sheets", _sheets_options),
     ("sheet", "Picked sheet", _props("auto_show", "dot_radius")),
     ("subsheets", "Subsheets", _subsheets_options),
@@ -373,7 +373,7 @@ class HBC_PT_legend(_Sub, bpy.types.Panel):
             split.label(text=words)
 
 
-def picked_block(context):
+def picked_component(context):
     """(component or None, owner kind, object) of the selection: a per-owner object, or the
     active face of a merged mesh in edit mode."""
     ob = context.active_object
@@ -416,7 +416,7 @@ class HBC_PT_selection(_Base, bpy.types.Panel):
                 split = col.split(factor=0.45, align=True)
                 split.label(text=name)
                 split.label(text=text)
-        owner, kind, _ = picked_block(context)
+        owner, kind, _ = picked_component(context)
         if owner is None:
             if kind:
                 layout.label(text="Edit Mode: pick", icon="INFO")
@@ -424,8 +424,8 @@ class HBC_PT_selection(_Base, bpy.types.Panel):
         layout.label(text=f"{kind}: {owner}")
         if kind != "component" or ob.get("hbc_component") is None:
             row = layout.row(align=True)
-            row.operator("hbc.select_block", text="Select", icon="RESTRICT_SELECT_OFF").frame = False
-            row.operator("hbc.select_block", text="Frame", icon="ZOOM_SELECTED").frame = True
+            row.operator("hbc.select_component", text="Select", icon="RESTRICT_SELECT_OFF").frame = False
+            row.operator("hbc.select_component", text="Frame", icon="ZOOM_SELECTED").frame = True
         s = session.get(ob["hbc_mesh"])
         if kind == "component" and s is not None and s.analysis is not None and owner < s.num_components:
             layout.label(text=f"kind: {P.COMPONENT_KINDS[int(s.component_kinds()[owner])]}")

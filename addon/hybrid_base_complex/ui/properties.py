@@ -36,14 +36,14 @@ class HBCSettings(bpy.types.PropertyGroup):
     direct_boundary: BoolProperty(name="Boundary", default=True, description="Show the boundary surface")
     direct_transparent: BoolProperty(name="See-through", default=True,
                                      description="Draw the boundary transparent so the inside shows")
-    boundary_alpha: FloatProperty(name="Alpha", default=0.15, min=0.0, max=1.0,
+    boundary_opacity: FloatProperty(name="Opacity", default=0.15, min=0.0, max=1.0,
                                   description="Opacity of the see-through boundary")
     direct_hex_cells: BoolProperty(name="Hex region", default=False,
                                    description="Also show the surface of the hex region as an opaque solid")
     direct_shrink: FloatProperty(name="Shrink", default=0.0, min=0.0, max=0.9,
                                  description="Pull every non-hex cell towards its centre")
 
-    # components (the Blocks layer), sheets
+    # components (the Components layer), sheets
     shrink: FloatProperty(name="Shrink", default=0.1, min=0.0, max=0.9,
                           description="Pull every component or sheet towards its centre to separate them")
     split_max: IntProperty(name="Max objects", default=1000, min=0,

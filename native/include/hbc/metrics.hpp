@@ -35,7 +35,16 @@ struct MetricField {
 
 // Every scalar metric in output order.
 std::span<const MetricField> metric_fields();
-// The index of group.key in metric_fields(); -1 when there is none.
+// A key renamed to the word of docs/concepts.md, its old key kept as a deprecated alias: written
+// beside the new key in the JSON (and as a last CSV column) and accepted by metric_index. Also the
+// distributions' keys (singular.curve_edges), which are no metric_fields() entry.
+struct MetricAlias {
+  std::string_view group;
+  std::string_view old_key;  // deprecated
+  std::string_view key;      // the glossary's word
+};
+std::span<const MetricAlias> metric_aliases();
+// The index of group.key (or of a deprecated alias) in metric_fields(); -1 when there is none.
 int metric_index(std::string_view group, std::string_view key);
 
 struct Metrics {
@@ -46,7 +55,7 @@ struct Metrics {
   std::vector<int64_t> polyhedra_by_faces;       // [k]: polyhedron cells with k faces
   std::vector<int64_t> singular_valence_interior;  // [v]: interior singular edges of valence v
   std::vector<int64_t> singular_valence_boundary;  // [v]: boundary singular edges of valence v
-  std::vector<int32_t> singular_curve_edges;     // per singularity: its mesh edges
+  std::vector<int32_t> singularity_edges;        // per singularity: its mesh edges
   std::vector<int32_t> component_cells;          // per component of hex cells (kind != NonHex): cells
   std::vector<int32_t> non_hex_region_cells;     // per face-connected region of non-hex cells, largest first
   std::vector<int32_t> subsheets_per_sheet;      // per decomposed (self-intersecting) sheet

@@ -40,7 +40,7 @@ py::dict metrics_dict(const Metrics& m) {
   d["census"]["polyhedra_by_faces"] = by_value(m.polyhedra_by_faces);
   d["singular"]["valence_interior"] = by_value(m.singular_valence_interior);
   d["singular"]["valence_boundary"] = by_value(m.singular_valence_boundary);
-  d["singular"]["curve_edges"] = list(m.singular_curve_edges);
+  d["singular"]["singularity_edges"] = list(m.singularity_edges);
   d["complex"]["component_cells"] = list(m.component_cells);
   d["sheets"]["subsheets_per_sheet"] = list(m.subsheets_per_sheet);
   d["non_hex"]["region_cells"] = list(m.non_hex_region_cells);
@@ -49,6 +49,11 @@ py::dict metrics_dict(const Metrics& m) {
   for (std::string_view k : summary_fields()) keys.append(std::string(k));
   d["summary"]["vector"] = vec;
   d["summary"]["vector_keys"] = keys;
+  // The deprecated keys beside the new ones, as `hbc metrics --json` writes them.
+  for (const MetricAlias& a : metric_aliases()) {
+    py::dict g = d[py::str(std::string(a.group))];
+    if (g.contains(std::string(a.key))) g[py::str(std::string(a.old_key))] = g[py::str(std::string(a.key))];
+  }
   return d;
 }
 

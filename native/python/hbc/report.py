@@ -39,7 +39,7 @@ GROUP_TITLES = {"census": "Census", "singular": "Singular structure", "complex":
 # How a metric changes when every cell is split into 8 (the words of docs/metrics.md).
 REFINEMENT = {"invariant": "unchanged", "x8": "× 8", "x2": "× 2", "x4": "× 4", "none": "no rule"}
 # The bar charts: what a reader compares first (metric keys of metric_fields()).
-KEY_METRICS = ["census.hex_ratio", "census.hex_volume_ratio", "singular.curves", "singular.length",
+KEY_METRICS = ["census.hex_ratio", "census.hex_volume_ratio", "singular.singularities", "singular.length",
                "complex.components", "complex.blocks", "sheets.sheets", "sheets.perfect_cell_share",
                "non_hex.regions", "quality.sj_min", "quality.sj_mean", "summary.score"]
 

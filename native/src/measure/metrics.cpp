@@ -61,26 +61,28 @@ constexpr MetricField kFields[] = {
      "all-hex boundary edges of valence other than 2", R::Edges},
     {"pseudo_singular_edges", "singular", "Pseudo-singular edges", "edges", "edges touching a non-hex cell",
      R::None},
-    {"curves", "singular", "Singular curves", "curves", "singularities: maximal chains of singular edges of one valence",
+    {"singularities", "singular", "Singularities", "singularities",
+     "maximal chains of singular edges of one valence", R::Invariant},
+    {"singularities_closed", "singular", "Closed singularities", "singularities", "singularities that are closed loops",
      R::Invariant},
-    {"curves_closed", "singular", "Closed singular curves", "curves", "singular curves that are closed loops",
-     R::Invariant},
-    {"curves_boundary_ends", "singular", "Curves ending on the boundary", "curves",
-     "open singular curves with both ends on the boundary", R::Invariant},
-    {"curves_node_ends", "singular", "Curves ending at a node", "curves",
-     "open singular curves with an end inside the volume (a singular node or a non-hex cell)", R::Invariant},
-    {"curves_on_boundary", "singular", "Curves on the boundary", "curves",
-     "singular curves made of boundary edges only", R::Invariant},
-    {"curve_edges_mean", "singular", "Mean curve length", "edges", "mean mesh edges per singular curve", R::Edges},
-    {"curve_edges_max", "singular", "Longest curve", "edges", "mesh edges of the longest singular curve", R::Edges},
+    {"singularities_boundary_ends", "singular", "Singularities ending on the boundary", "singularities",
+     "open singularities with both ends on the boundary", R::Invariant},
+    {"singularities_interior_ends", "singular", "Singularities ending inside", "singularities",
+     "open singularities with an end inside the volume (a singular vertex or a non-hex cell)", R::Invariant},
+    {"singularities_on_boundary", "singular", "Singularities on the boundary", "singularities",
+     "singularities made of boundary edges only", R::Invariant},
+    {"singularity_edges_mean", "singular", "Mean singularity length", "edges", "mean mesh edges per singularity",
+     R::Edges},
+    {"singularity_edges_max", "singular", "Longest singularity", "edges", "mesh edges of the longest singularity",
+     R::Edges},
     {"length", "singular", "Singular length", "ratio",
      "total length of the singular edges / the diagonal of the bounding box", R::Invariant},
-    {"nodes", "singular", "Singular nodes", "vertices",
-     "singular curve ends that are not pseudo-singular (where curves meet or stop)", R::Invariant},
+    {"singular_vertices", "singular", "Singular vertices", "vertices",
+     "singularity ends that are not pseudo-singular (where singularities meet or stop)", R::Invariant},
     {"components", "complex", "Components", "components", "components of the hybrid base complex", R::Invariant},
     {"blocks", "complex", "Blocks", "components",
      "components made of hexahedra (cube, ring or other): the blocks sheets run through", R::Invariant},
-    {"cube_components", "complex", "Cube components", "components", "|H_B|: cube-like components of hexahedra",
+    {"hex_components", "complex", "Hex components", "components", "|H_B|: cube-like components of hexahedra",
      R::Invariant},
     {"ring_components", "complex", "Ring components", "components", "components of hexahedra cut into a ring",
      R::Invariant},
@@ -148,6 +150,21 @@ constexpr MetricField kFields[] = {
      R::Invariant},
 };
 static_assert(std::size(kFields) == kFieldCount);
+
+// Keys renamed to the words of docs/concepts.md (its glossary's retired words): readers of the old
+// key find it still, written beside the new one (metrics_json) and accepted by metric_index.
+constexpr MetricAlias kAliases[] = {
+    {"singular", "curves", "singularities"},
+    {"singular", "curves_closed", "singularities_closed"},
+    {"singular", "curves_boundary_ends", "singularities_boundary_ends"},
+    {"singular", "curves_node_ends", "singularities_interior_ends"},
+    {"singular", "curves_on_boundary", "singularities_on_boundary"},
+    {"singular", "curve_edges_mean", "singularity_edges_mean"},
+    {"singular", "curve_edges_max", "singularity_edges_max"},
+    {"singular", "nodes", "singular_vertices"},
+    {"singular", "curve_edges", "singularity_edges"},
+    {"complex", "cube_components", "hex_components"},
+};
 
 constexpr std::string_view kSummary[] = {"non_hex_volume_share", "log10_1_plus_interior_curves",
                                          "log10_blocks", "imperfect_sheet_share", "cells_outside_perfect_sheets"};
@@ -232,7 +249,7 @@ void singular_structure(const Mesh& m, const SingularityGraph& g, Metrics& out) 
   for (size_t s = 0; s < g.num_singularities(); ++s) {
     const auto edges = g.chain_edges[s];
     const auto verts = g.chain_verts[s];
-    out.singular_curve_edges.push_back(static_cast<int32_t>(edges.size()));
+    out.singularity_edges.push_back(static_cast<int32_t>(edges.size()));
     most = std::max<int64_t>(most, edges.size());
     for (int32_t e : edges) {
       const Vec3 a = sub(point(m, m.edge_verts[e][1]), point(m, m.edge_verts[e][0]));
@@ -478,7 +495,11 @@ std::span<const MetricField> metric_fields() { return kFields; }
 
 std::span<const std::string_view> summary_fields() { return kSummary; }
 
+std::span<const MetricAlias> metric_aliases() { return kAliases; }
+
 int metric_index(std::string_view group, std::string_view key) {
+  for (const MetricAlias& a : kAliases)
+    if (a.group == group && a.old_key == key) key = a.key;
   for (size_t i = 0; i < std::size(kFields); ++i)
     if (kFields[i].group == group && kFields[i].key == key) return static_cast<int>(i);
   return -1;

@@ -161,7 +161,7 @@ def build_every_layer_and_check(root, s):
     expected = len(np.unique(g.chain_valence)) + int(np.any(cls == 2)) + int(np.any(cls == 3))
     assert len(layer_objects(root, "graph")) == expected
     # Blocks: one object per component (or one merged mesh with an owner per face).
-    blocks = layer_objects(root, "blocks")
+    blocks = layer_objects(root, "components")
     if s.num_components <= st.split_max:
         assert len(blocks) == s.num_components
         assert sorted(o["hbc_component"] for o in blocks) == list(range(s.num_components))
@@ -195,7 +195,7 @@ def build_every_layer_and_check(root, s):
     n_objects = len(bpy.data.objects)
     n_collections = len(bpy.data.collections)
     n_materials = len(bpy.data.materials)
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
     assert (len(bpy.data.objects), len(bpy.data.collections), len(bpy.data.materials)) == \
         (n_objects, n_collections, n_materials)
     assert sorted(c["hbc_layer"] for c in root.children) == sorted(
@@ -262,10 +262,10 @@ def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
     # Merged blocks when over the split limit; the face owner tells the block, and Select Block
     # selects all the faces of that block.
     st.split_max = 0
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    (merged,) = layer_objects(root, "blocks")
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    (merged,) = layer_objects(root, "components")
     assert merged["hbc_owner"] == "component"
-    from hybrid_base_complex.ui.panels import picked_block
+    from hybrid_base_complex.ui.panels import picked_component
 
     bpy.context.view_layer.objects.active = merged
     merged.select_set(True)
@@ -275,9 +275,9 @@ def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
     bm = bmesh.from_edit_mesh(merged.data)
     bm.faces.ensure_lookup_table()
     bm.faces.active = bm.faces[len(bm.faces) - 1]
-    owner, kind, _ = picked_block(bpy.context)
+    owner, kind, _ = picked_component(bpy.context)
     assert kind == "component" and owner == s.num_components - 1
-    assert bpy.ops.hbc.select_block(frame=True) == {"FINISHED"}
+    assert bpy.ops.hbc.select_component(frame=True) == {"FINISHED"}
     bpy.ops.object.mode_set(mode="OBJECT")
     owners = np.zeros(len(merged.data.polygons), np.int32)
     merged.data.attributes["owner"].data.foreach_get("value", owners)
@@ -285,8 +285,8 @@ def test_every_layer_picking_and_merged_blocks(clean_scene, data_dir):
     merged.data.polygons.foreach_get("select", selected)
     assert np.array_equal(selected, owners == owner) and selected.sum() > 1
     # Clearing removes the layer.
-    assert bpy.ops.hbc.clear_layer(layer="blocks") == {"FINISHED"}
-    assert S.find_layer(root, "blocks") is None
+    assert bpy.ops.hbc.clear_layer(layer="components") == {"FINISHED"}
+    assert S.find_layer(root, "components") is None
     assert P.layer_collection_name(root.name, "sheets") in bpy.data.collections
 
 
@@ -297,14 +297,14 @@ def test_rebuild_gives_first_build_names(clean_scene, data_dir):
     machine."""
     root = import_mesh(data_dir)
     bpy.context.scene.hbc.split_max = 100000
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    names = sorted(o.name for o in layer_objects(root, "blocks"))
-    meshes = sorted(o.data.name for o in layer_objects(root, "blocks"))
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    names = sorted(o.name for o in layer_objects(root, "components"))
+    meshes = sorted(o.data.name for o in layer_objects(root, "components"))
     assert len(names) == 1301 and not any("." in n.rsplit(" ", 1)[-1] for n in names)
     for _ in range(2):
-        assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-        assert sorted(o.name for o in layer_objects(root, "blocks")) == names
-        assert sorted(o.data.name for o in layer_objects(root, "blocks")) == meshes
+        assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+        assert sorted(o.name for o in layer_objects(root, "components")) == names
+        assert sorted(o.data.name for o in layer_objects(root, "components")) == meshes
 
 
 def test_second_import_lands_beside_the_first(clean_scene, data_dir):
@@ -327,12 +327,12 @@ def test_build_all_shows_one_layer_and_reports(clean_scene, data_dir, capsys):
     root = import_mesh(data_dir)
     assert bpy.ops.hbc.build_all() == {"FINISHED"}
     shown = [layer for layer in BUILD_ALL if not S.find_layer(root, layer).hide_viewport]
-    assert shown == [BUILD_ALL_SHOWN] == ["blocks"]
+    assert shown == [BUILD_ALL_SHOWN] == ["components"]
     out = capsys.readouterr().out
     # Progress lines (printed: window_manager.progress_* shows nothing in background) and the
     # INFO report's sentence with its time.
     assert "hbc: [100%] built " + P.LAYER_TITLES["wireframe"] in out
-    assert f"{root.name}: built 5 layers (" in out and " s; showing Blocks" in out
+    assert f"{root.name}: built 5 layers (" in out and " s; showing Components" in out
     assert bpy.ops.hbc.analyze() == {"FINISHED"}
     assert f"Info: Analyzed {root.name}: 1301 components, 20 sheets in " in capsys.readouterr().out
 
@@ -398,7 +398,7 @@ def test_source_gone_says_which_and_keeps_layers(clean_scene, data_dir, tmp_path
     session.clear()  # as after reopening the file: the mesh must be read again
     before = S.datablock_names()
     with pytest.raises(RuntimeError) as info:
-        bpy.ops.hbc.build_layer(layer="blocks")
+        bpy.ops.hbc.build_layer(layer="components")
     text = str(info.value)
     assert f"Source of '{root.name}' is missing: {tmp_path / 'test_2.HYBRID'}" in text
     assert "Hex Structure > Source" in text and "layers are kept" in text
@@ -406,7 +406,7 @@ def test_source_gone_says_which_and_keeps_layers(clean_scene, data_dir, tmp_path
     # Pointing the mesh at the file again (the panel's Source field) makes it build.
     shutil.copy(data_dir / "hybrid-base-complex" / "test_2.HYBRID", tmp_path / "again.HYBRID")
     root.hbc_path = str(tmp_path / "again.HYBRID")
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
 
 
 def test_copy_table1_row(clean_scene, data_dir):
@@ -512,7 +512,7 @@ def test_panels_read_at_default_width(clean_scene, data_dir):
     assert [label for _, label in sorted(by_parent["HBC_PT_main"])] == [
         "Table 1", "Metrics", "Layers", "Legend", "Selection"]
     assert [label for _, label in sorted(by_parent["HBC_PT_layers"])] == [
-        "Direct view", "Singularities", "Blocks", "Sheets", "Picked sheet", "Subsheets", "Wireframe"]
+        "Direct view", "Singularities", "Components", "Sheets", "Picked sheet", "Subsheets", "Wireframe"]
     assert "poll" not in panels.HBC_PT_selection.__dict__
     bpy.context.view_layer.objects.active = None
     assert ("label", "Nothing picked", "") in draw_all(bpy.context)

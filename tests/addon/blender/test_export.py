@@ -58,17 +58,17 @@ def obj_faces(path) -> int:
 @pytest.mark.parametrize("fmt, count", [("OBJ", obj_faces), ("PLY", ply_faces)])
 def test_layer_as_obj_and_ply(clean_scene, data_dir, tmp_path, fmt, count):
     root = import_teapot(data_dir)
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
     from hybrid_base_complex.blender import scene as S
 
-    S.find_layer(root, "blocks").hide_viewport = True  # exported all the same, and left hidden
+    S.find_layer(root, "components").hide_viewport = True  # exported all the same, and left hidden
     bpy.context.view_layer.update()
     out = tmp_path / f"blocks.{fmt.lower()}"
-    assert bpy.ops.hbc.export_layer(filepath=str(out), layer="blocks", format=fmt) == {"FINISHED"}
-    assert S.find_layer(root, "blocks").hide_viewport
-    S.find_layer(root, "blocks").hide_viewport = False
+    assert bpy.ops.hbc.export_layer(filepath=str(out), layer="components", format=fmt) == {"FINISHED"}
+    assert S.find_layer(root, "components").hide_viewport
+    S.find_layer(root, "components").hide_viewport = False
     bpy.context.view_layer.update()
-    expected = layer_faces(root, "blocks")
+    expected = layer_faces(root, "components")
     assert expected > 0 and count(out) == expected
 
 
@@ -76,11 +76,11 @@ def test_the_extension_follows_the_format(clean_scene, data_dir, tmp_path):
     """The file browser keeps the name typed for the first format: switched to PLY, blocks.obj is
     written as blocks.ply (a PLY file), not blocks.obj.ply; and back."""
     import_teapot(data_dir)
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    assert bpy.ops.hbc.export_layer(filepath=str(tmp_path / "blocks.obj"), layer="blocks", format="PLY") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    assert bpy.ops.hbc.export_layer(filepath=str(tmp_path / "blocks.obj"), layer="components", format="PLY") == {"FINISHED"}
     assert sorted(p.name for p in tmp_path.iterdir()) == ["blocks.ply"]
     assert (tmp_path / "blocks.ply").read_bytes().startswith(b"ply")
-    assert bpy.ops.hbc.export_layer(filepath=str(tmp_path / "other.ply"), layer="blocks", format="OBJ") == {"FINISHED"}
+    assert bpy.ops.hbc.export_layer(filepath=str(tmp_path / "other.ply"), layer="components", format="OBJ") == {"FINISHED"}
     assert sorted(p.name for p in tmp_path.iterdir()) == ["blocks.ply", "other.obj"]
 
 

@@ -75,11 +75,11 @@ def test_cut_plane_of_second_mesh_cuts_its_blocks(clean_scene, data_dir):
 
     import_mesh(data_dir, CYLINDER)
     second = import_mesh(data_dir)
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
     from hybrid_base_complex.blender import inspect as I
 
     I.equip_mesh(second)  # what switching a filter on does first
-    obs = [ob for ob in S.objects_in(S.find_layer(second, "blocks")) if ob.type == "MESH"]
+    obs = [ob for ob in S.objects_in(S.find_layer(second, "components")) if ob.type == "MESH"]
     lo, hi = world_box(obs)
     for ob in obs:
         c = np.zeros(3 * len(ob.data.polygons), np.float32)
@@ -442,7 +442,7 @@ def test_frame_layer_selects_what_it_frames(clean_scene, data_dir):
         bpy.ops.hbc.frame_layer(layer="sheet")
 
 
-def test_picked_block_shows_its_cells(clean_scene, data_dir):
+def test_picked_component_shows_its_cells(clean_scene, data_dir):
     """The Selection panel names a picked block's cell count and its cells' types, as the analysis
     has them."""
     from hybrid_base_complex.plan import planning as P
@@ -451,7 +451,7 @@ def test_picked_block_shows_its_cells(clean_scene, data_dir):
 
     root = import_mesh(data_dir, CYLINDER)
     s = session.get(root.name)
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
     ob = next(o for o in bpy.context.scene.objects if o.get("hbc_component") is not None)
     c = int(ob["hbc_component"])
     bpy.context.view_layer.objects.active = ob
@@ -483,7 +483,7 @@ def test_legend_names_every_layers_colours(clean_scene, data_dir, tmp_path):
     for layer in ("sheet", "subsheets"):
         assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}
     expected = {"wireframe": ("palette", "Wire: chain class"), "subsheets": ("palette", "A colour a subsheet"),
-                "sheets": ("palette", "A colour a sheet"), "blocks": ("palette", "Hex component")}
+                "sheets": ("palette", "A colour a sheet"), "components": ("palette", "Hex-cell component")}
 
     def legend_alone(layer):
         for key, _ in P.LAYERS:

@@ -245,7 +245,7 @@ def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
 
     root = import_mesh(data_dir / "hybrid-base-complex" / "twistcube_s.mesh", analyze=True)
     s = session.get(root.name)
-    for layer in ("blocks", "sheets"):
+    for layer in ("components", "sheets"):
         assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}
     comp = np.asarray(s.analysis.complex.cell_component)
     deepest = int(IP.cell_data(s)["depth"].max())
@@ -256,33 +256,33 @@ def test_blocks_and_sheets_layers_are_filtered(reset, data_dir):
     def bare(ob):
         return ob.modifiers.get(I.MODIFIER) is None and not any(a in ob.data.attributes for a in I.FILTER_ATTRS)
 
-    for layer in ("blocks", "sheets"):
+    for layer in ("components", "sheets"):
         obs = objects(layer)
         assert obs and all(o.get("hbc_inspect") and bare(o) for o in obs), layer
-    before = sum(evaluated_cells(o)[0] for o in objects("blocks"))
+    before = sum(evaluated_cells(o)[0] for o in objects("components"))
     assert before > 0
     reset.peel = deepest + 1
-    for layer in ("blocks", "sheets"):
+    for layer in ("components", "sheets"):
         obs = objects(layer)
         assert all(I.is_equipped(o) and o.modifiers[I.MODIFIER].show_viewport for o in obs), layer
         ob = obs[0]
         block = np.zeros(len(ob.data.polygons), np.int32)
-        ob.data.attributes["hbc_block"].data.foreach_get("value", block)
+        ob.data.attributes["hbc_component"].data.foreach_get("value", block)
         assert np.array_equal(block, comp[I.face_cells(ob.data)])
         shown = [o for o in obs if not o.hide_viewport]
         assert shown, layer
         assert sum(evaluated_cells(o)[0] for o in shown) == 0, layer
-    assert I.ensure_equipped(objects("blocks")[0], s) is False  # idempotent
+    assert I.ensure_equipped(objects("components")[0], s) is False  # idempotent
     reset.enabled = False
-    assert sum(evaluated_cells(o)[0] for o in objects("blocks")) == before
+    assert sum(evaluated_cells(o)[0] for o in objects("components")) == before
     reset.enabled = True
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    assert all(I.is_equipped(o) for o in objects("blocks"))
-    assert sum(evaluated_cells(o)[0] for o in objects("blocks")) == 0
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    assert all(I.is_equipped(o) for o in objects("components"))
+    assert sum(evaluated_cells(o)[0] for o in objects("components")) == 0
     reset.peel = 0
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    assert all(bare(o) for o in objects("blocks"))
-    assert sum(evaluated_cells(o)[0] for o in objects("blocks")) == before
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    assert all(bare(o) for o in objects("components"))
+    assert sum(evaluated_cells(o)[0] for o in objects("components")) == before
 
 
 def test_live_surface_of_a_large_mesh(reset, tmp_path):

@@ -98,11 +98,11 @@ def test_layer_colours_are_one_per_owner_on_points(clean_scene, data_dir, split_
     assert bpy.ops.import_mesh.hbc(filepath=str(path), analyze=True) == {"FINISHED"}
     root = find_root(st.active_mesh)
     s = session.get(root.name)
-    for layer in ("blocks", "sheets", "sheet"):
+    for layer in ("components", "sheets", "sheet"):
         assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}, layer
     comp = s.component_colors()
     sheet = P.sheet_colors(s.num_sheets)
-    for layer, colors in (("blocks", comp), ("sheets", sheet)):
+    for layer, colors in (("components", comp), ("sheets", sheet)):
         obs = [o for o in S.find_layer(root, layer).all_objects if o.type == "MESH"]
         assert len(obs) == (1 if split_max == 0 else len(colors)), layer
         for ob in obs:
@@ -132,8 +132,8 @@ def test_filter_modifier_runs_only_when_it_can_hide(clean_scene, data_dir):
     path = data_dir / "hybrid-base-complex" / "twistcube_s.mesh"
     assert bpy.ops.import_mesh.hbc(filepath=str(path), analyze=True) == {"FINISHED"}
     root = find_root(st.active_mesh)
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    (ob,) = S.find_layer(root, "blocks").all_objects
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    (ob,) = S.find_layer(root, "components").all_objects
     assert ob.modifiers.get(I.MODIFIER) is None
     ins.peel = 1
     mod = ob.modifiers[I.MODIFIER]

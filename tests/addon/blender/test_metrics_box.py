@@ -94,14 +94,14 @@ def test_box_values_equal_hbc_metrics_json(clean_scene, data_dir):
     assert rows["Score"] == f"{summary['score']:.3f}" == "5.056"
     for name, value in zip(summary["vector_keys"], summary["vector"]):
         assert rows[MB.VECTOR_ROWS[name][0]] == f"{value:.3f}", name
-    # twistcube_s by hand: 1157 hexahedra of 1301 cells; 43 singular curves; 20 sheets (1 perfect,
+    # twistcube_s by hand: 1157 hexahedra of 1301 cells; 43 singularities; 20 sheets (1 perfect,
     # 16 type 1, 2 type 2, 1 type 3); 144 non-hex cells in 42 regions.
-    assert (rows["Hex by count"], rows["Sing. curves"], rows["Sheets"]) == (f"{1157 / 1301:.3f}", "43", "20")
+    assert (rows["Hex by count"], rows["Singularities"], rows["Sheets"]) == (f"{1157 / 1301:.3f}", "43", "20")
     assert [rows[k] for k in ("perfect", "type 1", "type 2", "type 3")] == ["1", "16", "2", "1"]
     assert (rows["Non-hex cells"], rows["regions"]) == ("144", "42")
     q = want["quality"]
-    assert rows["Worst block"] == f"{q['worst_component']} ({q['worst_component_sj']:.3f})"
-    assert rows["Worst sheet"] == f"{q['worst_sheet']} ({q['worst_sheet_sj']:.3f})"
+    assert rows["component"] == f"{q['worst_component']} ({q['worst_component_sj']:.3f})"
+    assert rows["sheet"] == f"{q['worst_sheet']} ({q['worst_sheet_sj']:.3f})"
     assert buttons == ["component", "sheet"]
 
 
@@ -148,7 +148,7 @@ def test_worst_block_button_selects_that_component(clean_scene, data_dir, split_
     bpy.context.scene.hbc.split_max = split_max
     assert bpy.ops.hbc.show_worst(kind="component") == {"FINISHED"}
     active = bpy.context.view_layer.objects.active
-    assert active in S.objects_in(S.find_layer(root, "blocks"))
+    assert active in S.objects_in(S.find_layer(root, "components"))
     if split_max:
         assert active.get("hbc_component") == want and bpy.context.selected_objects == [active]
         return

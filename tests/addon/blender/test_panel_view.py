@@ -90,7 +90,7 @@ def test_see_through_boundary_does_not_take_the_click(clean_scene, data_dir, tmp
     root = import_mesh(data_dir, build_layers=True)
     st = bpy.context.scene.hbc
     assert st.direct_transparent
-    boundary, block = boundary_of(root), objects(root, "blocks")[0]
+    boundary, block = boundary_of(root), objects(root, "components")[0]
     assert see_through(boundary) and boundary.visible_get() and block.visible_get()
     boundary.select_set(True)
     assert not boundary.select_get()
@@ -151,8 +151,8 @@ def test_show_block_leaves_an_interior_block_in_sight(clean_scene, data_dir, spl
         assert data["depth"][cells].min() >= 1  # inside: no cell of it touches the boundary
         assert bpy.ops.hbc.show_worst(kind="component") == {"FINISHED"}
         bpy.context.view_layer.update()
-        mine = [ob for ob in objects(root, "blocks") if ob.get("hbc_component") == block]
-        merged = None if mine else next(ob for ob in objects(root, "blocks") if ob.get("hbc_owner") == "component")
+        mine = [ob for ob in objects(root, "components") if ob.get("hbc_component") == block]
+        merged = None if mine else next(ob for ob in objects(root, "components") if ob.get("hbc_owner") == "component")
         shown = mine or [merged]
         others = [ob for ob in S.objects_in(root) if ob.type == "MESH" and ob not in shown and ob.visible_get()]
         assert all(see_through(ob) for ob in others), [ob.name for ob in others if not see_through(ob)]
@@ -229,24 +229,24 @@ def test_panel_follows_the_outliner(clean_scene, data_dir):
     def legend_layers():
         return panels.panel_legend(bpy.context)[0]
 
-    assert drawn("blocks") and eye("blocks") == "HIDE_OFF" and legend_layers() == ["blocks"]
+    assert drawn("components") and eye("components") == "HIDE_OFF" and legend_layers() == ["components"]
     assert not drawn("direct") and eye("direct") == "HIDE_ON"
     mesh_eye = layer_collection(root)
     mesh_eye.hide_viewport = True  # the outliner's eye of the mesh
-    assert not drawn("blocks")
-    assert eye("blocks") == "HIDE_ON" and legend_layers() == []
-    assert bpy.ops.hbc.toggle_layer(layer="blocks") == {"FINISHED"}  # the panel's eye
-    assert drawn("blocks") and eye("blocks") == "HIDE_OFF" and legend_layers() == ["blocks"]
+    assert not drawn("components")
+    assert eye("components") == "HIDE_ON" and legend_layers() == []
+    assert bpy.ops.hbc.toggle_layer(layer="components") == {"FINISHED"}  # the panel's eye
+    assert drawn("components") and eye("components") == "HIDE_OFF" and legend_layers() == ["components"]
     assert not any(drawn(layer) for layer in ("direct", "graph", "sheets", "wireframe"))
-    layer_eye = layer_collection(S.find_layer(root, "blocks"))
+    layer_eye = layer_collection(S.find_layer(root, "components"))
     layer_eye.hide_viewport = True  # the outliner's eye of the Blocks layer
-    assert not drawn("blocks") and eye("blocks") == "HIDE_ON" and legend_layers() == []
+    assert not drawn("components") and eye("components") == "HIDE_ON" and legend_layers() == []
     layer_eye.hide_viewport = False
-    assert drawn("blocks") and eye("blocks") == "HIDE_OFF"
-    for ob in objects(root, "blocks"):
+    assert drawn("components") and eye("components") == "HIDE_OFF"
+    for ob in objects(root, "components"):
         ob.hide_set(True)  # the outliner's eyes of the layer's objects
-    assert not drawn("blocks") and eye("blocks") == "HIDE_ON" and legend_layers() == []
-    assert bpy.ops.hbc.toggle_layer(layer="blocks") == {"FINISHED"}
-    assert drawn("blocks") and eye("blocks") == "HIDE_OFF" and legend_layers() == ["blocks"]
-    assert bpy.ops.hbc.toggle_layer(layer="blocks") == {"FINISHED"}
-    assert not drawn("blocks") and eye("blocks") == "HIDE_ON" and legend_layers() == []
+    assert not drawn("components") and eye("components") == "HIDE_ON" and legend_layers() == []
+    assert bpy.ops.hbc.toggle_layer(layer="components") == {"FINISHED"}
+    assert drawn("components") and eye("components") == "HIDE_OFF" and legend_layers() == ["components"]
+    assert bpy.ops.hbc.toggle_layer(layer="components") == {"FINISHED"}
+    assert not drawn("components") and eye("components") == "HIDE_ON" and legend_layers() == []

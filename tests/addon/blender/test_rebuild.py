@@ -118,7 +118,7 @@ def pointers(root, key):
 # Each case: a layer, the setting changed before the rebuild (so that the rebuild writes other
 # geometry, colours or modifier inputs than the layer holds) and its new value.
 CASES = [
-    ("blocks", "shrink", 0.25),
+    ("components", "shrink", 0.25),
     ("sheets", "shrink", 0.25),
     ("sheet", "shrink", 0.25),
     ("graph", "line_radius", 0.01),
@@ -158,22 +158,22 @@ def test_rebuild_removes_what_it_no_longer_makes(clean_scene, data_dir):
     root = import_twistcube(data_dir)
     st = bpy.context.scene.hbc
     st.split_max = 100000
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    split = sorted(ob.name for ob in layer(root, "blocks").objects)
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    split = sorted(ob.name for ob in layer(root, "components").objects)
     counts = (len(bpy.data.objects), len(bpy.data.meshes))
     assert len(split) == 1301
     st.split_max = 0
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    assert [ob.name for ob in layer(root, "blocks").objects] == [f"{root.name} blocks"]
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    assert [ob.name for ob in layer(root, "components").objects] == [f"{root.name} components"]
     assert (len(bpy.data.objects), len(bpy.data.meshes)) == (counts[0] - 1300, counts[1] - 1300)
     assert not any(m.users == 0 for m in bpy.data.meshes)
     st.split_max = 100000
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    assert sorted(ob.name for ob in layer(root, "blocks").objects) == split
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    assert sorted(ob.name for ob in layer(root, "components").objects) == split
     assert (len(bpy.data.objects), len(bpy.data.meshes)) == counts
 
 
-@pytest.mark.parametrize("key,setting,value", [CASES[0], CASES[3]], ids=["blocks", "graph"])
+@pytest.mark.parametrize("key,setting,value", [CASES[0], CASES[3]], ids=["components", "graph"])
 def test_failed_rebuild_puts_the_layer_back(clean_scene, data_dir, monkeypatch, key, setting, value):
     """A builder that refills every object with other settings and then fails: the layer is as it
     was (geometry, colours, modifier inputs, properties) and no datablock is left or lost."""

@@ -169,12 +169,12 @@ def test_undo_of_a_rebuild_in_place_brings_the_old_layer_back(undo, data_dir):
     back in the same objects' names; redo gives the rebuilt ones again."""
     assert bpy.ops.import_mesh.hbc(filepath=str(data_dir.joinpath(*TWISTCUBE))) == {"FINISHED"}
     bpy.context.scene.hbc.split_max = 100000
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
-    push("blocks")
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
+    push("components")
 
     def geometry():
         out = {}
-        for ob in layer_objects("blocks"):
+        for ob in layer_objects("components"):
             co = np.empty(3 * len(ob.data.vertices), np.float32)
             ob.data.vertices.foreach_get("co", co)
             out[ob.name] = (co, colours(ob))
@@ -182,7 +182,7 @@ def test_undo_of_a_rebuild_in_place_brings_the_old_layer_back(undo, data_dir):
 
     first = geometry()
     bpy.context.scene.hbc.shrink = 0.3
-    assert bpy.ops.hbc.build_layer(layer="blocks") == {"FINISHED"}
+    assert bpy.ops.hbc.build_layer(layer="components") == {"FINISHED"}
     push("rebuilt blocks")
     rebuilt = geometry()
     assert not np.array_equal(first[next(iter(first))][0], rebuilt[next(iter(first))][0])

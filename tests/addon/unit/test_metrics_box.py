@@ -35,7 +35,7 @@ def test_rows_put_the_vector_under_the_score_and_fit_the_sidebar():
 def test_worst_names_the_place_or_none():
     q = {"quality": {"worst_component": 1254, "worst_component_sj": 0.48831, "worst_sheet": None,
                      "worst_sheet_sj": None}}
-    assert MB.worst(q) == [("component", 1254, "1254 (0.488)", "Worst block"), ("sheet", None, "-", "Worst sheet")]
+    assert MB.worst(q) == [("component", 1254, "1254 (0.488)", "component"), ("sheet", None, "-", "sheet")]
     assert [w[1] for w in MB.worst({"quality": None})] == [None, None]  # --no-quality: no quality group
 
 

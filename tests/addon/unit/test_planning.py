@@ -90,7 +90,7 @@ def test_names_and_table_row():
     assert P.mesh_name_from_path("teapot.hedra") == "teapot"
     # The Gmsh and VTK formats name their meshes the same way (an import of slab.msh is "slab").
     assert [P.mesh_name_from_path(f"/x/slab.{e}") for e in ("msh", "vtk", "vtu")] == ["slab"] * 3
-    assert P.layer_collection_name("teapot", "blocks") == "teapot / Blocks"
+    assert P.layer_collection_name("teapot", "components") == "teapot / Components"
     row = dict(P.table1_row({"cells": 10, "hex_ratio": 0.5, "components": 4, "hex_components": 3,
                              "sheets": -1, "timings": {"base_complex": 0.0123}}))
     assert row["|C|"] == "10" and row["|H|/|C|"] == "0.5000" and row["|H_B|/|C_B|"] == "0.7500"

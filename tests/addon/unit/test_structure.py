@@ -167,12 +167,12 @@ def test_legend_facts_of_known_meshes(grid, sector5, pyramids):
     facts = Structure(*grid).legend_facts()
     assert facts == {"non_hex_types": [], "valences": [1], "has_pseudo": False, "has_non_manifold": False,
                      "has_non_hex_blocks": False}
-    assert P.legend(["graph", "blocks"], **facts) == [("valence1", "Valence 1 edge")]
+    assert P.legend(["graph", "components"], **facts) == [("valence1", "Valence 1 edge")]
     assert Structure(*sector5).legend_facts()["valences"] == [1, 5]
     split = Structure(*pyramids).legend_facts()
     assert split["non_hex_types"] == [3] and split["has_non_hex_blocks"]
-    assert P.legend(["direct", "blocks"], **split) == [("hex", "Boundary, hex cells"), ("pyramid", "Pyramid cells"),
-                                                       ("non_hex_block", "Non-hex component")]
+    assert P.legend(["direct", "components"], **split) == [("hex", "Boundary, hex cells"), ("pyramid", "Pyramid cells"),
+                                                       ("non_hex_component", "Non-hex component")]
     assert Structure(pyramids[0]).legend_facts() == {"non_hex_types": [3]}  # not analysed: cell types only
 
 

@@ -184,7 +184,7 @@ def test_panel_legends_are_the_addons_words_and_colours():
     assert legend("mesh") == [("hex", "Boundary, hex cells"), ("prism", "Prism cells"), ("pyramid", "Pyramid cells")]
     assert legend("graph") == [("valence3", "Valence 3 edge"), ("valence5", "Valence 5 edge"),
                                ("valence_other", "Valence 7 edge"), ("pseudo", "Pseudo-singular")]
-    assert legend("complex") == legend("cut") == [("non_hex_block", "Non-hex component")]
+    assert legend("complex") == legend("cut") == [("non_hex_component", "Non-hex component")]
     # Only the highlights the panel draws, in the add-on's order.
     assert legend("sheet", {"self_intersecting", "unmatched"}) == [
         ("unmatched", "Dot: unmatched"), ("self_intersecting", "Self-intersecting")]
