@@ -49,17 +49,17 @@ fs::path viewer_page(const std::string& given) {
     return env;
   }
   const fs::path bin = bin_dir();
+  // Appended, not `" " + text`: g++ 12 warns wrongly there (-Wrestrict).
   std::string tried;
   if (!bin.empty()) {
     for (const fs::path& p : {bin / ".." / "web" / "viewer.html", bin / ".." / "share" / "hbc" / "viewer.html"}) {
       if (fs::is_regular_file(p)) return p.lexically_normal();
-      tried += " " + p.lexically_normal().string();
+      tried.append(" ").append(p.lexically_normal().string());
     }
   }
-  std::string message = "no viewer page (tried";  // appended, not `"..." + tried`: g++ 12 warns wrongly there
-  message += tried;
-  message += "); build it with `bash scripts/build_web.sh`, or give --viewer PATH or HBC_VIEWER";
-  throw std::runtime_error(message);
+  throw std::runtime_error(std::string("no viewer page (tried")
+                               .append(tried)
+                               .append("); build it with `bash scripts/build_web.sh`, or give --viewer PATH or HBC_VIEWER"));
 }
 
 }  // namespace hbc::cli

@@ -221,10 +221,11 @@ std::string comparison_csv(const std::vector<ComparisonColumn>& cols) {
   std::string out = "name,mesh";
   for (const MetricField& f : metric_fields()) out.append(",").append(field_key(f));
   out += ",error\n";
+  // Appended piece by piece: `"," + text` makes g++ 12 warn wrongly (-Wrestrict).
   for (const ComparisonColumn& c : cols) {
-    out += csv_quoted(c.name) + "," + csv_quoted(c.file);
-    for (const MetricField& f : metric_fields()) out += "," + number_text(value_of(c, f));
-    out += "," + csv_quoted(c.error) + "\n";
+    out.append(csv_quoted(c.name)).append(",").append(csv_quoted(c.file));
+    for (const MetricField& f : metric_fields()) out.append(",").append(number_text(value_of(c, f)));
+    out.append(",").append(csv_quoted(c.error)).append("\n");
   }
   return out;
 }
