@@ -1,9 +1,10 @@
 """hbc.compare() on a Dask cluster: a LocalCluster of 2 worker processes, through the executor a
-Dask client gives (Client.get_executor(), a concurrent.futures.Executor), against the same
-comparison run locally. Dask's own scheduler and workers, started here: nothing is mocked.
+Dask client gives (Client.get_executor(), a concurrent.futures.Executor), and on submitit's
+executor (local jobs), against the same comparison run locally. Dask's own scheduler and workers,
+submitit's own jobs, started here: nothing is mocked.
 
-Runs in the Dask environment (scripts/env/dask_env.sh: `distributed` from PyPI on the build's
-CPython), started by tests/python/run_dask_test.sh (ctest python_compare_dask). No matplotlib
+Runs in the Dask environment (scripts/env/dask_env.sh: `distributed` and `submitit` from PyPI on
+the build's CPython), started by tests/python/run_dask_test.sh (ctest python_compare_dask). No matplotlib
 there: report=False (the report is tested in test_compare.py).
 """
 
@@ -34,3 +35,21 @@ def test_dask_local_cluster_gives_the_local_results(shared_data_dir, tmp_path, s
         assert same_but_timings(tmp_path / "dask" / name, tmp_path / "local" / name), name
     assert data["errors"] == local["errors"] and list(data["errors"]) == ["broken.mesh"]
     assert data["values"]["census.cells"][0] == 493
+
+
+def test_submitit_local_jobs_give_the_local_results(shared_data_dir, tmp_path, same_but_timings):
+    """submitit's executor (the SLURM form: AutoExecutor(folder) on a cluster; cluster="local" runs
+    each job as a process here), whose jobs are not concurrent.futures futures: hbc.compare polls
+    them. The same tables as the local run."""
+    import submitit
+
+    files = [str(shared_data_dir / m) for m in MESHES[:2]]
+    hbc.compare(files, tmp_path / "local", report=False, threads=1)
+    executor = submitit.AutoExecutor(folder=tmp_path / "jobs", cluster="local")
+    executor.update_parameters(timeout_min=10)
+    data = hbc.compare(files, tmp_path / "submitit", executor=executor, report=False, threads=1)
+    assert data["errors"] == {}
+    # Each mesh ran as a job of its own: submitit's folder holds one result per job.
+    assert len(list((tmp_path / "jobs").glob("*_result.pkl"))) == len(files)
+    for name in ("metrics.json", "metrics.csv", "metrics.tex"):
+        assert same_but_timings(tmp_path / "submitit" / name, tmp_path / "local" / name), name

@@ -2,8 +2,8 @@
 
 Each mesh is one work unit — load, analysis and metrics through the compiled module, which releases
 the GIL — run on a ``concurrent.futures.Executor`` (a thread pool by default; any other: a process
-pool, Dask's ``Client.get_executor()``, Ray's, mpi4py's ``MPIPoolExecutor``, submitit's) and
-collected as it finishes. metrics.json, metrics.csv and metrics.tex are written by the library's
+pool, Dask's ``Client.get_executor()``, Ray's, mpi4py's ``MPIPoolExecutor``; submitit's, whose jobs
+are polled) and collected as it finishes. metrics.json, metrics.csv and metrics.tex are written by the library's
 writers (hbc/comparison.hpp), the text ``hbc compare`` writes; report.html by ``hbc.report``, here.
 No ``hbc`` command runs: the one process chain left is CLI → ``python -m hbc.report`` → Blender.
 """
@@ -14,6 +14,7 @@ import concurrent.futures
 import json
 import os
 import pathlib
+import time
 import warnings
 
 
@@ -67,13 +68,28 @@ def _measure_all(files, executor, format, threads, skip_invalid):
             futures[executor.submit(measure_or_error, f, format, threads, skip_invalid)] = i
         except concurrent.futures.BrokenExecutor as e:  # broken by an earlier unit
             errors[i] = _lost(e)
-    for future in concurrent.futures.as_completed(futures):
+    for future in _as_completed(futures):
         i = futures[future]
         try:
             measurements[i], errors[i] = future.result()
         except Exception as e:  # noqa: BLE001
             errors[i] = _lost(e)
     return measurements, errors
+
+
+def _as_completed(futures):
+    """The futures as they finish: concurrent.futures' own, or, for an executor whose submit gives
+    other objects with done() and result() (submitit's jobs), by polling them."""
+    if all(isinstance(f, concurrent.futures.Future) for f in futures):
+        yield from concurrent.futures.as_completed(futures)
+        return
+    pending = list(futures)
+    while pending:
+        finished = [f for f in pending if f.done()]
+        pending = [f for f in pending if f not in finished]
+        yield from finished
+        if pending and not finished:
+            time.sleep(0.2)
 
 
 def _lost(e: BaseException) -> str:
