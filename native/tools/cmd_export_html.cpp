@@ -3,7 +3,6 @@
 // placeholder element (base64), so the page needs neither a server nor the file beside it.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -13,6 +12,7 @@
 #include <string_view>
 
 #include "commands.hpp"
+#include "locate.hpp"
 #include "hbc/error.hpp"
 
 namespace hbc::cli {
@@ -67,30 +67,6 @@ std::string html_attribute(std::string_view s) {
   return out;
 }
 
-// --viewer, else $HBC_VIEWER, else the build tree's page (<bin>/../web/, where scripts/build.sh puts
-// bin/ and scripts/build_web.sh web/) or the install prefix's (<bin>/../share/hbc/).
-fs::path find_viewer(const std::string& given) {
-  if (!given.empty()) {
-    if (!fs::is_regular_file(given)) throw std::runtime_error("--viewer " + given + ": no such file");
-    return given;
-  }
-  if (const char* env = std::getenv("HBC_VIEWER"); env && *env) {
-    if (!fs::is_regular_file(env)) throw std::runtime_error(std::string("HBC_VIEWER=") + env + ": no such file");
-    return env;
-  }
-  std::error_code ec;
-  const fs::path bin = fs::read_symlink("/proc/self/exe", ec).parent_path();
-  std::string tried;
-  if (!ec) {
-    for (const fs::path& p : {bin / ".." / "web" / "viewer.html", bin / ".." / "share" / "hbc" / "viewer.html"}) {
-      if (fs::is_regular_file(p)) return p.lexically_normal();
-      tried += " " + p.lexically_normal().string();
-    }
-  }
-  throw std::runtime_error("no viewer page (tried" + tried +
-                           "); build it with `bash scripts/build_web.sh`, or give --viewer PATH or HBC_VIEWER");
-}
-
 std::string read_text(const fs::path& p) {
   std::ifstream f(p, std::ios::binary);
   if (!f) throw std::runtime_error("cannot read " + p.string());
@@ -128,7 +104,7 @@ Embedded embedded_mesh(const InputArgs& in, const Mesh& mesh) {
 void run_export_html(const ExportHtmlArgs& args) {
   // The mesh first: a bad file fails as in every other command, before the page is looked for.
   const Mesh mesh = load_for_cli(args.input);
-  const fs::path viewer = find_viewer(args.viewer);
+  const fs::path viewer = viewer_page(args.viewer);
   std::string page = read_text(viewer);
   const size_t at = page.find(kPlaceholder);
   if (at == std::string::npos || page.find(kPlaceholder, at + 1) != std::string::npos)

@@ -10,9 +10,9 @@
 
 #include "commands.hpp"
 #include "hbc/analysis.hpp"
+#include "hbc/comparison.hpp"
 #include "hbc/metrics.hpp"
 #include "hbc/json.hpp"
-#include "metrics_json.hpp"
 #include "hbc/report.hpp"
 
 namespace hbc::cli {
@@ -23,14 +23,6 @@ struct MetricsArgs {
   bool json = false, csv = false, no_quality = false;
   std::string subsheets = "layers";
 };
-
-// A histogram indexed by value (valence, face count) as {"value": count} without the empty bins.
-Json by_value(const std::vector<int64_t>& hist) {
-  Json j = Json::object();
-  for (size_t i = 0; i < hist.size(); ++i)
-    if (hist[i] != 0) j[std::to_string(i)] = hist[i];
-  return j;
-}
 
 void run_metrics(const MetricsArgs& args) {
   AnalysisOptions opt;
@@ -84,38 +76,6 @@ void run_metrics(const MetricsArgs& args) {
 }
 
 }  // namespace
-
-Json metrics_json(const std::string& file, const Metrics& m, const Json& timings) {
-  Json j = {{"file", file}};
-  const auto fields = metric_fields();
-  for (size_t i = 0; i < fields.size(); ++i) {
-    Json& group = j[std::string(fields[i].group)];
-    const double v = m.values[i];
-    // Counts and ids as integers, so that JSON readers see 12 rather than 12.0.
-    if (std::isfinite(v) && fields[i].unit != "ratio" && v == std::floor(v) && std::fabs(v) < 9e15)
-      group[std::string(fields[i].key)] = static_cast<int64_t>(v);
-    else
-      group[std::string(fields[i].key)] = v;
-  }
-  j["census"]["polyhedra_by_faces"] = by_value(m.polyhedra_by_faces);
-  j["singular"]["valence_interior"] = by_value(m.singular_valence_interior);
-  j["singular"]["valence_boundary"] = by_value(m.singular_valence_boundary);
-  j["singular"]["singularity_edges"] = m.singularity_edges;
-  j["complex"]["component_cells"] = m.component_cells;
-  j["sheets"]["subsheets_per_sheet"] = m.subsheets_per_sheet;
-  j["non_hex"]["region_cells"] = m.non_hex_region_cells;
-  Json& summary = j["summary"];
-  summary["vector"] = m.summary_vector;
-  summary["vector_keys"] = Json::array();
-  for (std::string_view k : summary_fields()) summary["vector_keys"].push_back(std::string(k));
-  // The deprecated keys (metric_aliases) beside the new ones, for readers of the old names.
-  for (const MetricAlias& a : metric_aliases()) {
-    Json& g = j[std::string(a.group)];
-    if (g.contains(std::string(a.key))) g[std::string(a.old_key)] = Json(g[std::string(a.key)]);
-  }
-  j["timings"] = timings;
-  return j;
-}
 
 void add_metrics(CLI::App& app) {
   auto args = std::make_shared<MetricsArgs>();

@@ -3,9 +3,11 @@
 The three meshes are the paper's test data (SOURCES.md of the shared data): cube_twist-comp.obj.HYBRID
 from Robust Hex-Dominant Meshing, teapot.hedra from LoopyCuts, twistcube_s.mesh from At-Most-Hexa.
 The broken file is a MEDIT file whose vertex section ends early. The comparison runs once per
-module; the tests read its outputs. The report is drawn by Debian's Python (HBC_PYTHON, default
+module, and once more through hbc.compare() in this process, whose outputs must be the CLI's; the
+tests read them. The CLI's report is drawn by Debian's Python (HBC_PYTHON, default
 /usr/bin/python3, which has python3-matplotlib: scripts/env/deps.sh) and opened in headless
-Chromium (Debian's chromium, same list).
+Chromium (Debian's chromium, same list). Executors and the locating rules: test_compare_executors.py,
+test_locate.py.
 """
 
 import csv
@@ -184,15 +186,54 @@ def test_missing_matplotlib_still_writes_the_tables(hbc_cli, shared_data_dir, tm
     assert not (out / "report.html").exists()
 
 
-def test_python_compare(shared_data_dir, hbc_cli, tmp_path, monkeypatch):
-    monkeypatch.setenv("HBC_CLI", hbc_cli)
-    monkeypatch.setenv("HBC_PYTHON", os.environ.get("HBC_PYTHON", "/usr/bin/python3"))
+@pytest.fixture(scope="module")
+def python_compared(compared, tmp_path_factory):
+    """(out dir, returned dict) of hbc.compare() on the files and names of `compared`, in this
+    process, with no process started (a guard fails the run if one is: no Python -> CLI loop)."""
+    _, _, files, names = compared
+    out = tmp_path_factory.mktemp("python-compare") / "out"
     import hbc
 
-    data = hbc.compare([shared_data_dir / MESHES[0][1], shared_data_dir / MESHES[1][1]], tmp_path / "o",
-                          names=["a", "b"], check=True)
-    assert [m["name"] for m in data["meshes"]] == ["a", "b"] and data["errors"] == {}
-    assert (tmp_path / "o" / "report.html").is_file()
+    real = subprocess.Popen
+
+    def forbidden(*args, **kwargs):
+        raise AssertionError(f"hbc.compare started a process: {args[0] if args else kwargs}")
+
+    subprocess.Popen = forbidden
+    try:
+        data = hbc.compare(files, out, names=names)
+    finally:
+        subprocess.Popen = real
+    return out, data
+
+
+def test_python_compare_writes_what_the_cli_writes(compared, python_compared, same_but_timings):
+    """hbc.compare() measures in this process through the compiled module and writes the CLI's
+    metrics.json, metrics.csv and metrics.tex byte for byte (timings aside), the failed column
+    with the CLI's error text; then report.html, drawn here."""
+    cli_out, _, _, names = compared
+    out, data = python_compared
+    for name in ("metrics.json", "metrics.csv", "metrics.tex"):
+        assert same_but_timings(out / name, cli_out / name), name
+    # The mask hides only the timings' numbers: three per measured mesh.
+    assert len(same_but_timings.pattern.findall((out / "metrics.json").read_text())) == 3 * 3
+    assert data == json.loads((out / "metrics.json").read_text())
+    assert list(data["errors"]) == [BROKEN_NAME] and [m["name"] for m in data["meshes"]] == names
+    html = (out / "report.html").read_text()
+    assert "broken.mesh" in html and "Failed meshes" in html
+    assert len(re.findall(r'<img class="plot"[^>]*src="data:image/png;base64,', html)) == 4
+
+
+def test_python_compare_check_raises_for_a_failed_mesh(compared, tmp_path):
+    import hbc
+
+    _, _, files, names = compared
+    with pytest.raises(hbc.comparison.CompareError, match=re.escape(BROKEN_NAME)):
+        hbc.compare(files[:2], tmp_path / "o", names=names[:2], check=True, report=False)
+    # The tables are written before it raises, and no report was asked for.
+    assert (tmp_path / "o" / "metrics.csv").is_file() and not (tmp_path / "o" / "report.html").exists()
+    data = hbc.compare(files[:1], tmp_path / "p", names=["a"], check=True, report=False)
+    assert data["errors"] == {} and data["meshes"][0]["name"] == "a"
 
 
 def one_cell_broken(source, target):
@@ -207,7 +248,7 @@ def one_cell_broken(source, target):
     target.write_text("\n".join(lines))
 
 
-def test_skip_invalid_reads_a_broken_file(hbc_cli, shared_data_dir, tmp_path, monkeypatch):
+def test_skip_invalid_reads_a_broken_file(hbc_cli, shared_data_dir, tmp_path, same_but_timings):
     """hbc compare and hbc.compare() take the reading options: a published file with one broken cell
     fails its column without --skip-invalid (the message advising that option) and is measured with
     it exactly as `hbc metrics --skip-invalid --json` measures it; metrics.json says what went."""
@@ -236,18 +277,23 @@ def test_skip_invalid_reads_a_broken_file(hbc_cli, shared_data_dir, tmp_path, mo
     got = dict(data["metrics"][1])
     got.pop("timings"), ref.pop("timings")
     assert got == ref
-    # The same from Python, with hbc.load's keywords.
-    monkeypatch.setenv("HBC_CLI", hbc_cli)
+    # The same from Python, with hbc.load's keywords: the CLI's tables, "dropped" included.
     import hbc
 
-    refused = hbc.compare([broken], tmp_path / "c", format="hybrid")
+    hbc.compare([source, broken], tmp_path / "py", format="hybrid", threads=1, skip_invalid=True, report=False)
+    for name in ("metrics.json", "metrics.csv", "metrics.tex"):
+        assert same_but_timings(tmp_path / "py" / name, tmp_path / "b" / name), name
+    refused = hbc.compare([broken], tmp_path / "c", format="hybrid", report=False)
     assert "--skip-invalid" in refused["errors"]["cube_twist-broken.txt"]
-    measured = hbc.compare([broken], tmp_path / "d", format="hybrid", threads=1, skip_invalid=True, check=True)
+    measured = hbc.compare([broken], tmp_path / "d", format="hybrid", threads=1, skip_invalid=True, check=True,
+                           report=False)
     assert measured["metrics"][0]["census"] == ref["census"]
     assert measured["meshes"][0]["dropped"] == data["meshes"][1]["dropped"]
-    for bad in ({"format": "stl"}, {"threads": 0}):
+    # Refused before any work: nothing is written.
+    for bad in ({"format": "stl"}, {"threads": 0}, {"jobs": 0}, {"names": ["a", "b"]}):
         with pytest.raises(ValueError):
             hbc.compare([broken], tmp_path / "e", **bad)
+        assert not (tmp_path / "e").exists(), bad
 
 
 STUB_BLENDER = """#!/usr/bin/env python3
@@ -266,9 +312,10 @@ print("wrote " + path)
 """
 
 
-def test_figures_run_render_figures_per_pair(compared, hbc_cli, tmp_path):
-    """--figures: render_figures.py --compare on the measured meshes two by two (the failed one left
-    out; the odd last beside the first), each figure embedded. Blender itself is stubbed here (the
+def test_figures_run_render_figures_per_pair(compared, tmp_path):
+    """--figures: the add-on's figures/render_figures.py --compare (the add-on found by hbc.locate:
+    the build's, beside this package) on the measured meshes two by two (the failed one left out;
+    the odd last beside the first), each figure embedded. Blender itself is stubbed here (the
     panels are tested in tests/figures/)."""
     out, _, files, _ = compared
     work = tmp_path / "out"
@@ -284,16 +331,20 @@ def test_figures_run_render_figures_per_pair(compared, hbc_cli, tmp_path):
     stub = tmp_path / "blender"
     stub.write_text(STUB_BLENDER.replace("@LOG@", repr(str(log))).replace("@PNG@", repr(str(png))))
     stub.chmod(0o755)
-    run = subprocess.run([sys.executable, "-m", "hbc.report", str(work), "--figures", "--blender", str(stub),
-                          "--cli", hbc_cli], capture_output=True, text=True)
+    env = {k: v for k, v in os.environ.items() if k not in ("HBC_ADDON_DIR", "HBC_RENDER_FIGURES")}
+    run = subprocess.run([sys.executable, "-m", "hbc.report", str(work), "--figures", "--blender", str(stub)],
+                         capture_output=True, text=True, env=env)
     assert run.returncode == 0, run.stderr
     calls = [json.loads(ln) for ln in log.read_text().splitlines()]
     pairs = [c["argv"][c["argv"].index("--compare") + 1:][:2] for c in calls]
     assert pairs == [[files[0], files[2]], [files[3], files[0]]]
+    import hbc
+
+    addon = pathlib.Path(hbc.__file__).resolve().parents[2] / "addon" / "hybrid_base_complex"
     for c in calls:
         script = pathlib.Path(c["argv"][c["argv"].index("--python") + 1])
-        assert script == REPO / "blender_scripts" / "render_figures.py"
-        assert c["addon"] == str(pathlib.Path(hbc_cli).resolve().parent.parent / "addon" / "hybrid_base_complex")
+        assert script == addon / "figures" / "render_figures.py" and script.is_file()
+        assert c["addon"] == str(addon)
     html = (work / "report.html").read_text()
     import base64
     embedded = base64.b64encode(png.read_bytes()).decode("ascii")
@@ -388,3 +439,19 @@ def test_names_must_match_the_files(hbc_cli, shared_data_dir, tmp_path):
                          capture_output=True, text=True)
     assert run.returncode == 1 and "--names gives 1 names for 2 files" in run.stderr
     assert not (tmp_path / "o").exists()
+
+
+def test_cli_report_python(hbc_cli, shared_data_dir, tmp_path):
+    """The Python the command draws report.html with (native/tools/locate.cpp): $HBC_PYTHON when it
+    is set (a wrong one fails the report alone, saying so); else the Python the build tree was
+    configured for, so that the report is drawn with no python3 on PATH at all."""
+    f = str(shared_data_dir / MESHES[0][1])
+    env = {k: v for k, v in os.environ.items() if k != "HBC_PYTHON"}
+    env["PATH"] = str(tmp_path / "nothing-here")
+    run = subprocess.run([hbc_cli, "compare", f, "-o", str(tmp_path / "a")], capture_output=True, text=True, env=env)
+    assert run.returncode == 0, run.stderr
+    assert (tmp_path / "a" / "report.html").is_file()
+    env["HBC_PYTHON"] = str(tmp_path / "no-such-python")
+    run = subprocess.run([hbc_cli, "compare", f, "-o", str(tmp_path / "b")], capture_output=True, text=True, env=env)
+    assert run.returncode == 2 and "no Python to run hbc.report (set HBC_PYTHON)" in run.stderr, run.stderr
+    assert (tmp_path / "b" / "metrics.json").is_file() and not (tmp_path / "b" / "report.html").exists()

@@ -148,6 +148,7 @@ void bind_geometry(py::module_& m);  // geometry.cpp: block_soup(), polylines()
 void bind_quality(py::module_& m);   // quality.cpp: cell_quality(), cell_depth()
 void bind_schema(py::module_& m);    // schema.cpp: the fields and name tables of what hbc reports
 void bind_metrics(py::module_& m);   // metrics.cpp: Analysis.metrics(), METRIC_FIELDS (after bind_analysis)
+void bind_comparison(py::module_& m);  // comparison.cpp: hbc.compare's measurement and tables
 // schema.cpp: a statistics dict / wireframe counts dict keyed by the schema's fields.
 py::dict stats_dict(const Stats& s);
 py::dict wireframe_counts(const VsgWireframe& w);

@@ -1,17 +1,16 @@
 """The comparison report of several meshes: ``report.html``, one self-contained file (docs/compare.md).
 
-``hbc compare FILES... -o DIR`` measures the meshes (one child process each) and writes
-``DIR/metrics.json``, ``metrics.csv`` and ``metrics.tex``; it then runs this module, which reads
-``metrics.json`` only and writes ``DIR/report.html``: the table, bar charts of the key metrics,
-histograms (singular edge valences, component sizes, scaled Jacobian per cell type), every
-metric's definition, and with ``--figures`` the comparison panels rendered by Blender
-(``blender_scripts/render_figures.py --compare``). Images are inline (base64 PNG): nothing is
-fetched when the file is opened.
+``hbc.compare(paths, out)`` (hbc/comparison.py) and the ``hbc compare`` command write
+``DIR/metrics.json``, ``metrics.csv`` and ``metrics.tex``; this module reads ``metrics.json`` only
+and writes ``DIR/report.html``: the table, bar charts of the key metrics, histograms (singular edge
+valences, component sizes, scaled Jacobian per cell type), every metric's definition, and with
+``--figures`` the comparison panels rendered by Blender (the add-on's
+``figures/render_figures.py --compare``; hbc.locate says where Blender and the add-on are looked
+for). Images are inline (base64 PNG): nothing is fetched when the file is opened.
 
-    python -m hbc.report DIR [--figures] [--blender CMD] [--render-script PATH] [--addon DIR]
+    python -m hbc.report DIR [--figures] [--blender CMD] [--addon DIR] [--engine E]
 
-From Python, ``hbc.compare(paths, out, names=...)`` (hbc/comparison.py) runs the whole (the ``hbc``
-command) and returns the parsed ``metrics.json``; ``write_report(out)`` here redraws the report.
+hbc.compare() calls ``write_report(out)`` in its own process; the command runs this module.
 Plots need matplotlib, imported only when drawing.
 """
 
@@ -30,6 +29,8 @@ import shutil
 import subprocess
 import sys
 import tempfile
+
+from . import locate
 
 # The headings of docs/metrics.md's generated tables (scripts/metrics_doc.py), whose anchors the
 # report links to; tests/python/test_compare.py checks that each heading is there.
@@ -62,7 +63,8 @@ def _pyplot():
     except ImportError as e:
         raise ReportError(
             f"matplotlib is not installed for {sys.executable} (Debian: apt-get install python3-matplotlib; "
-            "else pip install matplotlib, or set HBC_PYTHON to a Python that has it)") from e
+            "else pip install matplotlib; the hbc command draws the report with $HBC_PYTHON, which can name a "
+            "Python that has it)") from e
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     plt.rcParams.update({"font.size": 9, "axes.spines.top": False, "axes.spines.right": False,
@@ -240,50 +242,24 @@ def jacobian_histograms(data: dict, ok: list[int]) -> str:
 
 # ---- Blender panels ------------------------------------------------------------------------
 
-def _build_dir(cli: str | None) -> pathlib.Path | None:
-    """The build folder of an ``hbc`` in BUILD/bin (the CLI passes its own path)."""
-    if not cli:
-        return None
-    b = pathlib.Path(cli).resolve().parent.parent
-    return b if (b / "CMakeCache.txt").is_file() else None
-
-
-def find_render_script(cli: str | None) -> pathlib.Path | None:
-    env = os.environ.get("HBC_RENDER_FIGURES")
-    if env:
-        return pathlib.Path(env)
-    for p in pathlib.Path(__file__).resolve().parents:
-        if (p / "blender_scripts" / "render_figures.py").is_file():
-            return p / "blender_scripts" / "render_figures.py"
-    b = _build_dir(cli)
-    if b:
-        for line in (b / "CMakeCache.txt").read_text(errors="replace").splitlines():
-            if line.startswith("CMAKE_HOME_DIRECTORY:"):
-                p = pathlib.Path(line.split("=", 1)[1]) / "blender_scripts" / "render_figures.py"
-                if p.is_file():
-                    return p
-    return None
-
-
 def render_panels(data: dict, ok: list[int], out: pathlib.Path, args) -> list[tuple[str, str]]:
     """Renders the paper's comparison layout (render_figures.py --compare) for the meshes two by two
     (an odd last one beside the first); returns (caption, base64 PNG) per figure."""
-    script = pathlib.Path(args.render_script) if args.render_script else find_render_script(args.cli)
-    if not script or not script.is_file():
-        raise ReportError("--figures: blender_scripts/render_figures.py not found (set HBC_RENDER_FIGURES)")
-    addon = args.addon or os.environ.get("HBC_ADDON_DIR")
-    if not addon and _build_dir(args.cli):
-        addon = str(_build_dir(args.cli) / "addon" / "hybrid_base_complex")
-    blender = args.blender or os.environ.get("HBC_BLENDER", "blender")
+    try:
+        addon = pathlib.Path(args.addon) if args.addon else locate.addon_dir()
+        script = locate.figures_script(addon)
+        blender = args.blender or locate.blender()
+    except locate.LocateError as e:
+        raise ReportError(f"--figures: {e}") from e
     figdir = out / "figures"
     figdir.mkdir(exist_ok=True)
     pairs = [ok[k:k + 2] for k in range(0, len(ok), 2)]
     if len(pairs[-1]) == 1 and len(ok) > 1:
         pairs[-1] = [pairs[-1][0], ok[0]]
     figures = []
-    env = dict(os.environ)
-    if addon:
-        env["HBC_ADDON_DIR"] = addon
+    # The add-on's entry renders with its own package; HBC_ADDON_DIR tells a deprecated
+    # HBC_RENDER_FIGURES script (blender_scripts/render_figures.py) the same add-on.
+    env = dict(os.environ, HBC_ADDON_DIR=str(addon))
     cfg = tempfile.mkdtemp(prefix="hbc-report-blender-")
     env.update(BLENDER_USER_CONFIG=cfg + "/config", BLENDER_USER_SCRIPTS=cfg + "/scripts")
     for pair in pairs:
@@ -382,19 +358,6 @@ def _img(b64: str, alt: str, caption: str) -> str:
             f"<figcaption>{caption}</figcaption></figure>")
 
 
-def docs_link(cli: str | None) -> str:
-    """docs/metrics.md of the source tree as a file:// URL when it is found, else the relative path."""
-    env = os.environ.get("HBC_METRICS_DOC")
-    if env:
-        return env
-    script = find_render_script(cli)
-    if script:
-        doc = script.parent.parent / "docs" / "metrics.md"
-        if doc.is_file():
-            return doc.resolve().as_uri()
-    return "docs/metrics.md"
-
-
 # Reports the layout of the images (for the browser test) when opened as report.html#layout: the
 # title becomes their bounding boxes, which `chromium --dump-dom` prints.
 LAYOUT_SCRIPT = """<script>
@@ -435,7 +398,7 @@ def build_html(data: dict, plots: list[tuple[str, str, str]], panels: list[tuple
     if panels:
         parts.append("<h2>Structure side by side (Blender)</h2>")
         parts += [_img(b64, cap, f"{e(cap)}; rows: the mesh, its singularity graph, base complex, VSG wireframe "
-                                 "and a sheet (blender_scripts/render_figures.py --compare)")
+                                 "and a sheet (the add-on's figures/render_figures.py --compare)")
                   for cap, b64 in panels]
     parts += ["<h2>Definitions</h2>", definitions(data, docs), "</body></html>\n"]
     return "\n".join(parts)
@@ -463,7 +426,7 @@ def write_report(out, figures: bool = False, args=None) -> pathlib.Path:
                   "the legend; below 0: inverted).")]
     panels = render_panels(data, ok, out, args) if figures and ok else []
     path = out / "report.html"
-    path.write_text(build_html(data, plots, panels, docs_link(args.cli)), encoding="utf-8")
+    path.write_text(build_html(data, plots, panels, locate.metrics_doc()), encoding="utf-8")
     return path
 
 
@@ -474,11 +437,10 @@ def parse_args(argv):
                                  description="Writes DIR/report.html from DIR/metrics.json (hbc compare).")
     ap.add_argument("dir")
     ap.add_argument("--figures", action="store_true", help="render the comparison panels in Blender")
-    ap.add_argument("--blender", help="the Blender command (default: $HBC_BLENDER, else blender)")
-    ap.add_argument("--render-script", help="render_figures.py (default: $HBC_RENDER_FIGURES, else found)")
-    ap.add_argument("--addon", help="the add-on folder (default: $HBC_ADDON_DIR, else the build's)")
+    ap.add_argument("--blender", help="the Blender command (default: hbc.locate.blender(): $HBC_BLENDER, else blender)")
+    ap.add_argument("--addon", help="the add-on package whose figures/render_figures.py renders (default: "
+                                    "hbc.locate.addon_dir(): $HBC_ADDON_DIR, else the build's)")
     ap.add_argument("--engine", default="workbench", choices=["workbench", "eevee", "cycles"])
-    ap.add_argument("--cli", help=argparse.SUPPRESS)  # the hbc executable that ran us (finds its build)
     return ap.parse_args(argv)
 
 
