@@ -458,7 +458,11 @@ Part read_processor(const fs::path& dir) {
                        files[5].view(), files[6].view(), files[7].view(), files[5].name, files[6].name, files[7].name,
                        files[4].view(), files[4].name};
   p = read_part(f);
-  p.files = std::move(files);  // the addressing's views stay valid: the maps and strings move, not their bytes
+  // Only the addressing is read again (fail_label): the mesh files' maps and inflated bytes go now,
+  // in place. Moving the vector hands its buffer over, so the kept strings (and the views into
+  // them, even of a short inflated file) stay where they are.
+  for (size_t i = 0; i < 5; ++i) files[i].map.reset(), files[i].bytes = std::string();
+  p.files = std::move(files);
   return p;
 }
 
