@@ -7,7 +7,7 @@ by decomposePar's addressing) against `CASE` (constant/polyMesh, the mesh decomp
 analyze --json (timings aside), check --json and info --json equal, the Python arrays equal item
 for item (the addressing gives back decomposePar's numbering), and OpenFOAM's checkMesh on the
 undecomposed case counts the same points, faces and cells. A case holding only processor folders
-is read decomposed by its folder.
+is read decomposed by its folder; processors written in binary and gzip'd ASCII read the same.
 
 Environment (set by ctest): PYTHONPATH holds the built package, HBC_CLI the `hbc` command.
 Skipped, with the reason, only where Debian's OpenFOAM is not installed.
@@ -158,3 +158,18 @@ def test_a_missing_processor_is_an_error_naming_it(tmp_path):
     run = subprocess.run([os.environ["HBC_CLI"], "info", f"{case}/processor*"], capture_output=True, text=True)
     assert run.returncode == 2
     assert "processor1/constant/polyMesh/boundary:" in run.stderr and "processor2" in run.stderr, run.stderr
+
+
+@pytest.mark.parametrize("fmt,compression", [("binary", "off"), ("ascii", "on")])
+def test_binary_and_gzip_processors(flange, tmp_path, fmt, compression):
+    # decomposePar writes the processors in the controlDict's writeFormat and writeCompression.
+    case = copy_mesh(flange / "ascii", tmp_path / "case")
+    for key, value in (("writeFormat", fmt), ("writeCompression", compression)):
+        foam(case, f"foamDictionary -entry {key} -set {value} system/controlDict >/dev/null")
+    split(case, 2, "simple", "(2 1 1)")
+    polymesh = case / "processor1/constant/polyMesh"
+    assert (polymesh / "faces.gz").exists() == (compression == "on")
+    whole, _ = cli_json("analyze", case)
+    joined, err = cli_json("analyze", f"{case}/processor*")
+    assert joined == whole and whole["cells"] == 19314
+    assert "decomposed case: 2 processor folders joined" in err
