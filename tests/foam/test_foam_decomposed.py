@@ -158,6 +158,10 @@ def test_a_missing_processor_is_an_error_naming_it(tmp_path):
     run = subprocess.run([os.environ["HBC_CLI"], "info", f"{case}/processor*"], capture_output=True, text=True)
     assert run.returncode == 2
     assert "processor1/constant/polyMesh/boundary:" in run.stderr and "processor2" in run.stderr, run.stderr
+    import hbc
+
+    with pytest.raises(hbc.MeshFormatError, match="expected the folder processor2 that patch procBoundary1to2 faces"):
+        hbc.load(f"{case}/processor*")
 
 
 @pytest.mark.parametrize("fmt,compression", [("binary", "off"), ("ascii", "on")])
