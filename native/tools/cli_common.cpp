@@ -48,7 +48,7 @@ void add_format(CLI::App& cmd, std::string& format) {
 }
 
 void add_input(CLI::App& cmd, InputArgs& in) {
-  cmd.add_option("FILE", in.file, "mesh file (" + format_list(true) + ") or OpenFOAM case folder")->required();
+  cmd.add_option("FILE", in.file, "mesh file (" + format_list(true) + ") or OpenFOAM case folder ('CASE/processor*': its processors joined)")->required();
   add_reading_options(cmd, in);
 }
 

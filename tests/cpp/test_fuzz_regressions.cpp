@@ -35,6 +35,7 @@ const std::map<std::string, Format> kReaderHarnesses = {
     {"hedra", Format::Hedra},   {"msh", Format::Msh},   {"vtk", Format::Vtk},     {"vtu", Format::Vtu},
     {"foam", Format::Foam}};
 const std::string kAnalyzeHarness = "analyze";
+const std::string kFoamDecomposedHarness = "foam_decomposed";
 
 std::optional<Format> format_of_harness(const std::string& h) {
   const auto it = kReaderHarnesses.find(h);
@@ -111,6 +112,12 @@ TEST(FuzzRegressions, AnalyzeOnlyInputErrorOrAnAnalysis) {
   replay(kAnalyzeHarness, [](const std::string& b) { return fuzz::load_and_analyze(b); });
 }
 
+TEST(FuzzRegressions, FoamDecomposedOnlyInputErrorOrAMesh) {
+  const Outcome o = replay(kFoamDecomposedHarness, [](const std::string& b) { return fuzz::join_and_build(b); });
+  EXPECT_GT(o.accepted, 0);  // the decomposed hex2 is a mesh: the path can accept
+  EXPECT_GT(o.rejected, 0);
+}
+
 // The folder is where the harnesses' findings are kept: every folder in it must be a harness
 // replayed above (a folder of a new or misspelt harness would otherwise never be replayed), and
 // every harness must have its folder.
@@ -119,10 +126,12 @@ TEST(FuzzRegressions, FoldersAreTheReplayedHarnesses) {
   for (const auto& e : fs::directory_iterator(regressions_dir()))
     if (e.is_directory()) {
       const std::string name = e.path().filename().string();
-      EXPECT_TRUE(name == kAnalyzeHarness || format_of_harness(name)) << "no harness replays " << e.path();
+      EXPECT_TRUE(name == kAnalyzeHarness || name == kFoamDecomposedHarness || format_of_harness(name))
+          << "no harness replays " << e.path();
     }
   for (const std::string& h : reader_harness_names()) EXPECT_TRUE(fs::is_directory(regressions_dir() / h)) << h;
   EXPECT_TRUE(fs::is_directory(regressions_dir() / kAnalyzeHarness));
+  EXPECT_TRUE(fs::is_directory(regressions_dir() / kFoamDecomposedHarness));
   EXPECT_FALSE(format_of_harness("no-such-harness"));
 }
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hbc/analysis.hpp"
 #include "hbc/io.hpp"
@@ -26,6 +27,26 @@ inline FoamFiles foam_files(std::string_view bytes) {
     bytes = end == std::string_view::npos ? std::string_view() : bytes.substr(end + 7);
   }
   return {part[0], part[1], part[2], part[3], "points", "faces", "owner", "neighbour"};
+}
+
+// The decomposed-case harness's input: the files of each processor (points, faces, owner,
+// neighbour, point-, face- and cellProcAddressing, boundary), all ended by "#-#-#" lines as above,
+// processor after processor; at most 4 processors (8 files each, the last one's missing files empty).
+inline std::vector<FoamProcessorFiles> foam_processors(std::string_view bytes) {
+  std::vector<FoamProcessorFiles> out;
+  while (!bytes.empty() && out.size() < 4) {
+    std::string_view part[8];
+    for (auto& p : part) {
+      const size_t end = bytes.find("\n#-#-#\n");
+      p = bytes.substr(0, end);
+      bytes = end == std::string_view::npos ? std::string_view() : bytes.substr(end + 7);
+    }
+    const std::string d = "processor" + std::to_string(out.size()) + "/";
+    out.push_back({{part[0], part[1], part[2], part[3], d + "points", d + "faces", d + "owner", d + "neighbour"},
+                   part[4], part[5], part[6], d + "pointProcAddressing", d + "faceProcAddressing",
+                   d + "cellProcAddressing", part[7], d + "boundary"});
+  }
+  return out;
 }
 
 inline MeshInput read_as(Format f, std::string_view bytes) {
@@ -67,6 +88,21 @@ inline bool read_and_build(Format f, std::string_view bytes) {
             "face cells in range");
     for (const auto& e : m.edge_verts)
       check(e[0] >= 0 && e[0] < e[1] && static_cast<size_t>(e[1]) < m.num_vertices(), "edge ends in range");
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// join_foam_processors (one thread and two: the same result) + build_mesh.
+inline bool join_and_build(std::string_view bytes) {
+  try {
+    const std::vector<FoamProcessorFiles> procs = foam_processors(bytes);
+    MeshInput one = join_foam_processors(procs, "case", {1, 1});
+    const MeshInput two = join_foam_processors(procs, "case", {2, 1});
+    check(one.points == two.points && one.faces == two.faces && one.cells == two.cells, "same join for any thread count");
+    const Mesh m = build_mesh(std::move(one));
+    check(m.face_cells.size() == m.num_faces(), "array sizes");
     return true;
   } catch (const InputError&) {
     return false;

@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,analyze}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,analyze}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -38,6 +38,18 @@ for c in "$HERE"/../data/formats/foam/*/constant/polyMesh; do
     if [ -f "$c/$f" ]; then cat "$c/$f"; else gzip -dc "$c/$f.gz"; fi
     printf '\n#-#-#\n'
   done > "$OUT/foam/src_$name"
+done
+
+# Decomposed cases: each processor's eight files (fuzz_targets.hpp, foam_processors), processor
+# after processor.
+for c in "$HERE"/../data/formats/foam/hex2_decomposed*; do
+  for p in "$c"/processor*; do
+    for f in points faces owner neighbour pointProcAddressing faceProcAddressing cellProcAddressing boundary; do
+      m=$p/constant/polyMesh/$f
+      if [ -f "$m" ]; then cat "$m"; else gzip -dc "$m.gz"; fi
+      printf '\n#-#-#\n'
+    done
+  done > "$OUT/foam_decomposed/src_$(basename "$c")"
 done
 
 # Generated meshes: every generator, every split kind, sizes that stay a few KB. Grids and

@@ -61,8 +61,42 @@ MeshInput read_foam(const FoamFiles& files);
 // polyMesh when snappyHexMesh wrote one there, else constant/polyMesh. InputError naming `path`
 // when it is none of these.
 std::string foam_mesh_dir(const std::string& path);
-// foam_mesh_dir + read_foam on its files, each plain or gzip-compressed (`points` or `points.gz`).
-MeshInput read_foam_case(const std::string& path);
+// foam_mesh_dir + read_foam on its files, each plain or gzip-compressed (`points` or `points.gz`);
+// or, for a decomposed case (foam_decomposed_case), read_foam_decomposed.
+MeshInput read_foam_case(const std::string& path, const Threads& threads = {});
+
+// Decomposed OpenFOAM cases (decomposePar's processor0/ .. processorN-1/). One processor: its
+// polyMesh files and decomposePar's addressing beside them, labelLists giving for each local point,
+// face and cell its id in the undecomposed mesh (faceProcAddressing: id + 1, negative where this
+// processor sees the face reversed, i.e. the cell here is the face's neighbour); and its `boundary`
+// file, whose processor patches name the processor holding each face's other side (empty: not
+// checked).
+struct FoamProcessorFiles {
+  FoamFiles mesh;
+  std::string_view point_addressing, face_addressing, cell_addressing;
+  std::string point_addressing_name, face_addressing_name, cell_addressing_name;
+  std::string_view boundary;
+  std::string boundary_name;
+};
+// The processors' union as the undecomposed mesh, numbered as decomposePar's input was: the
+// MeshInput read_foam gives for that mesh (points, face loops and cells equal, item for item;
+// reconstructParMesh, which merges processors by geometry, numbers points and faces otherwise).
+// Each processor-boundary face, seen by both sides, becomes one internal face. Processors are read
+// in parallel; `source` names the case in messages. InputError naming the file and line (byte
+// offset when binary) of a label out of range, of a processor patch whose faces lack their twins on
+// the processor it names (or that processor's folder), and the case for counts that do not add up
+// (a point, face or cell on no processor).
+MeshInput join_foam_processors(std::span<const FoamProcessorFiles> processors, const std::string& source,
+                               const Threads& threads = {});
+// The case folder `path` asks to read decomposed, else empty: a path ending in `processor*` (the
+// literal name: the case's processor folders joined, whatever else the case holds), or a case
+// folder or .foam file whose case has processor0/ but no reconstructed mesh (no polyMesh `owner` in
+// constant/ nor in a time folder).
+std::string foam_decomposed_case(const std::string& path);
+// join_foam_processors on the case's processor0/ .. processorN-1/, each processor's mesh where
+// foam_mesh_dir finds it in the processor folder (constant/polyMesh or a time folder) with its
+// addressing files beside it; a warning in the MeshInput says it was joined.
+MeshInput read_foam_decomposed(const std::string& case_dir, const Threads& threads = {});
 
 // Reads a whole file; throws InputError when it cannot be opened.
 std::string read_file_bytes(const std::string& path);

@@ -1,4 +1,5 @@
-// Where an OpenFOAM case keeps its mesh, and reading its four files (plain or .gz).
+// Where an OpenFOAM case keeps its mesh, and reading its four files (plain or .gz); a decomposed
+// case goes to read_foam_decomposed.cpp.
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
@@ -6,8 +7,8 @@
 #include <system_error>
 
 #include "hbc/io.hpp"
+#include "io/detail/foam_files.hpp"
 #include "io/detail/gunzip.hpp"
-#include "platform/file_map.hpp"
 #include "platform/charconv.hpp"
 
 namespace hbc {
@@ -29,6 +30,10 @@ bool time_value(const std::string& name, double& t) {
   return r.ec == std::errc() && r.ptr == e;
 }
 
+}  // namespace
+
+namespace detail {
+
 // The case's mesh: the polyMesh of the newest time folder that holds one (snappyHexMesh without
 // -overwrite writes there), else constant/polyMesh; empty when there is neither.
 fs::path case_mesh(const fs::path& c) {
@@ -47,34 +52,25 @@ fs::path case_mesh(const fs::path& c) {
   return is_mesh_dir(c / "constant" / "polyMesh") ? c / "constant" / "polyMesh" : fs::path();
 }
 
-// One file's bytes: mapped when plain, inflated when .gz.
-struct FileText {
-  std::string name;
-  std::unique_ptr<detail::FileMap> map;
-  std::string bytes;
-  std::string_view view() const { return map && map->mapped() ? map->view() : std::string_view(bytes); }
-};
-
-// `dir`/name, or name.gz inflated.
-FileText mesh_file(const fs::path& dir, const char* name) {
+FileText mesh_file(const fs::path& dir, const char* name, const char* what) {
   std::error_code ec;
   FileText out;
   const fs::path plain = dir / name;
   if (fs::is_regular_file(plain, ec)) {
     out.name = plain.string();
-    out.map = std::make_unique<detail::FileMap>(out.name);
+    out.map = std::make_unique<FileMap>(out.name);
     if (!out.map->mapped()) out.bytes = read_file_bytes(out.name);
     return out;
   }
   const fs::path gz = dir / (std::string(name) + ".gz");
   if (!fs::is_regular_file(gz, ec))
-    throw InputError(plain.string(), {}, std::string("expected the polyMesh file ") + name + " (or " + name + ".gz), found neither");
+    throw InputError(plain.string(), {}, std::string("expected the ") + what + " " + name + " (or " + name + ".gz), found neither");
   out.name = gz.string();
-  out.bytes = detail::gunzip(read_file_bytes(out.name), out.name);
+  out.bytes = gunzip(read_file_bytes(out.name), out.name);
   return out;
 }
 
-}  // namespace
+}  // namespace detail
 
 std::string foam_mesh_dir(const std::string& path) {
   std::error_code ec;
@@ -84,7 +80,7 @@ std::string foam_mesh_dir(const std::string& path) {
   if (fs::is_directory(p, ec)) {
     if (is_mesh_dir(p)) dir = p;                                  // constant/polyMesh itself
     else if (is_mesh_dir(p / "polyMesh")) dir = p / "polyMesh";   // constant/
-    else dir = case_mesh(p);                                      // the case folder
+    else dir = detail::case_mesh(p);                                      // the case folder
     if (dir.empty())
       throw InputError(path, {}, "expected a mesh file or an OpenFOAM case (a folder with constant/polyMesh/owner, or polyMesh "
                                  "itself), found a folder that is neither");
@@ -95,16 +91,18 @@ std::string foam_mesh_dir(const std::string& path) {
     // A .foam marker: the case is the folder it stands in (its content, often empty, is not read).
     if (!fs::exists(p, ec)) throw InputError(path, {}, "expected a readable file (cannot open it)");
     const fs::path c = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-    dir = case_mesh(c);
+    dir = detail::case_mesh(c);
     if (dir.empty())
       throw InputError(path, {}, "expected an OpenFOAM case beside the .foam file, found no " + c.string() + "/constant/polyMesh/owner");
   }
   return dir.string();
 }
 
-MeshInput read_foam_case(const std::string& path) {
+MeshInput read_foam_case(const std::string& path, const Threads& threads) {
+  if (const std::string c = foam_decomposed_case(path); !c.empty()) return read_foam_decomposed(c, threads);
   const fs::path dir = foam_mesh_dir(path);
-  const FileText points = mesh_file(dir, "points"), faces = mesh_file(dir, "faces"), owner = mesh_file(dir, "owner"),
+  using detail::mesh_file;
+  const detail::FileText points = mesh_file(dir, "points"), faces = mesh_file(dir, "faces"), owner = mesh_file(dir, "owner"),
                  neighbour = mesh_file(dir, "neighbour");
   return read_foam({points.view(), faces.view(), owner.view(), neighbour.view(), points.name, faces.name, owner.name,
                     neighbour.name});

@@ -54,10 +54,12 @@ Format format_from_path(const std::string& path) {
   static const std::string kExtensions =
       "a file name ending in " + listed([](const FormatInfo& f) { return std::string(f.extension); }) +
       " (or --format)";
-  // OpenFOAM keeps a mesh in a folder of files without extensions: the folder, or its owner file.
+  // OpenFOAM keeps a mesh in a folder of files without extensions: the folder, or its owner file;
+  // `case/processor*` names a decomposed case's processors.
   std::error_code ec;
   const std::string base = std::filesystem::path(path).filename().string();
-  if (std::filesystem::is_directory(path, ec) || base == "owner" || base == "owner.gz") return Format::Foam;
+  if (std::filesystem::is_directory(path, ec) || base == "owner" || base == "owner.gz" || base == "processor*")
+    return Format::Foam;
   const auto dot = path.find_last_of('.');
   const auto slash = path.find_last_of('/');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
@@ -125,7 +127,7 @@ class FileBytes {
 
 MeshInput read_input(const std::string& path, Format format, const Threads& threads) {
   if (format == Format::Auto) format = format_from_path(path);
-  if (format == Format::Foam) return read_foam_case(path);  // four files, not one
+  if (format == Format::Foam) return read_foam_case(path, threads);  // four files (or a folder of processors), not one
   const FileBytes file(path);
   const std::string_view bytes = file.view();
   switch (format) {

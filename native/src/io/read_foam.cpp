@@ -419,3 +419,28 @@ MeshInput read_foam(const FoamFiles& files) {
 }
 
 }  // namespace hbc
+
+namespace hbc::detail {
+
+// A labelList file (the processor addressing of a decomposed case): its labels, and with `locs`
+// where each one stands (line, or byte offset when binary), for the message of a caller that finds
+// one wrong only once every processor has been read.
+std::vector<int64_t> read_foam_labels(std::string_view bytes, const std::string& source, std::vector<int64_t>* locs,
+                                      bool* binary) {
+  FoamText f(bytes, source);
+  const List l = f.open_list("the number of labels", f.binary() ? f.label_bytes() : 2);
+  std::vector<int64_t> out(static_cast<size_t>(l.n));
+  if (locs) locs->resize(out.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (locs) (*locs)[i] = f.binary() ? f.raw_loc() : f.loc();
+    if (!l.uniform || i == 0) out[i] = f.label("a label");
+    else out[i] = out[0];
+  }
+  if (l.uniform && l.n == 0) f.label("the value of the uniform list");
+  f.close_list(l);
+  f.expect_end("the list of labels");
+  if (binary) *binary = f.binary();
+  return out;
+}
+
+}  // namespace hbc::detail
