@@ -59,9 +59,7 @@ Json sj_histograms(const Mesh& mesh, const Threads& threads) {
 // rule) beside the per-type scaled Jacobian histograms, and with --skip-invalid what was dropped
 // (as `hbc analyze --json` says it), as one JSON document on stdout.
 void run_compare_one(const InputArgs& input) {
-  AnalysisOptions opt;
-  opt.threads = input.threads;
-  opt.wireframe = false;
+  const AnalysisOptions opt = analysis_options(input, {{"wireframe", false}});
   double t_load = 0;
   std::vector<DroppedCell> dropped;
   const Mesh mesh = load_for_cli(input, &t_load, &dropped);
