@@ -102,6 +102,11 @@ void add_level(CLI::App& cmd, std::string& level, const std::string& help) {
 
 CLI::Range at_least(int min) { return CLI::Range(min, std::numeric_limits<int32_t>::max()); }
 
+AnalysisOptions analysis_options(const InputArgs& in, std::vector<OptionSetting> settings) {
+  if (in.threads > 0) settings.push_back({"threads", int64_t{in.threads}});
+  return analyze_settings(settings).options;
+}
+
 Mesh load_for_cli(const InputArgs& in, double* seconds, std::vector<DroppedCell>* dropped) {
   auto t0 = std::chrono::steady_clock::now();
   std::vector<DroppedCell> skipped;

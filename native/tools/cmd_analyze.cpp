@@ -22,12 +22,10 @@ struct AnalyzeArgs {
 };
 
 void run_analyze(const AnalyzeArgs& args) {
-  AnalysisOptions opt;
-  opt.threads = args.input.threads;
-  opt.sheets = !args.no_sheets;
-  opt.wireframe = !args.no_wireframe;
-  opt.sheet_level = opt.wireframe_level = level_from_name(args.level);
-  opt.subsheet_options.rule = *subsheet_rule_from_name(args.subsheets);
+  const AnalysisOptions opt = analysis_options(args.input, {{"sheets", !args.no_sheets},
+                                                            {"wireframe", !args.no_wireframe},
+                                                            {"level", args.level},
+                                                            {"subsheet_rule", args.subsheets}});
   double t_load = 0;
   std::vector<DroppedCell> dropped;
   Mesh m = load_for_cli(args.input, &t_load, &dropped);

@@ -23,11 +23,8 @@ struct ExportSurfaceArgs {
 
 FaceSelection selection(const Mesh& mesh, const ExportSurfaceArgs& args) {
   if (args.what == "boundary") return boundary_selection(mesh);
-  AnalysisOptions opt;
-  opt.threads = args.input.threads;
-  opt.sheets = args.what == "sheets";
-  opt.subsheets = false;
-  opt.wireframe = false;
+  const AnalysisOptions opt =
+      analysis_options(args.input, {{"sheets", args.what == "sheets"}, {"subsheets", false}, {"wireframe", false}});
   const Analysis a = analyze(mesh, opt);
   if (args.what == "patches") return patch_selection(mesh, a.complex);
   if (args.what == "components") return component_selection(mesh, a.complex);

@@ -26,10 +26,7 @@ void run_export_vtu(const ExportVtuArgs& args) {
   VtuExportOptions vo;
   vo.ascii = args.ascii;
   vo.sheet = args.sheet;
-  AnalysisOptions opt;
-  opt.threads = args.input.threads;
-  opt.wireframe = false;
-  opt.sheet_level = level_from_name(args.level);
+  const AnalysisOptions opt = analysis_options(args.input, {{"wireframe", false}, {"level", args.level}});
   const Mesh mesh = load_for_cli(args.input);
   const Analysis a = analyze(mesh, opt);
   check_sheet_option(a, args.sheet);

@@ -25,10 +25,8 @@ struct MetricsArgs {
 };
 
 void run_metrics(const MetricsArgs& args) {
-  AnalysisOptions opt;
-  opt.threads = args.input.threads;
-  opt.wireframe = false;  // no metric reads the wireframe
-  opt.subsheet_options.rule = *subsheet_rule_from_name(args.subsheets);
+  // No metric reads the wireframe.
+  const AnalysisOptions opt = analysis_options(args.input, {{"wireframe", false}, {"subsheet_rule", args.subsheets}});
   double t_load = 0;
   const Mesh mesh = load_for_cli(args.input, &t_load);
   const auto t0 = std::chrono::steady_clock::now();

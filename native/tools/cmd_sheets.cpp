@@ -91,12 +91,10 @@ void print_sheets_table(const std::string& file, const SheetStage& st) {
 }
 
 void run_sheets(const SheetsArgs& args) {
-  AnalysisOptions opt;
-  opt.threads = args.input.threads;
-  opt.wireframe = false;
-  opt.sheet_level = level_from_name(args.level);
-  opt.subsheet_options.rule = *subsheet_rule_from_name(args.subsheets);
-  opt.subsheet_options.node_budget = args.search_steps;
+  const AnalysisOptions opt = analysis_options(args.input, {{"wireframe", false},
+                                                            {"level", args.level},
+                                                            {"subsheet_rule", args.subsheets},
+                                                            {"search_steps", args.search_steps}});
   const Mesh m = load_for_cli(args.input);
   const Analysis a = analyze(m, opt);
   const SheetStage& st = *a.sheet_stage;  // opt.sheets is on

@@ -136,11 +136,8 @@ std::string obj_text(const Mesh& m, const VsgWireframe& w, const WireframeStyle&
 void run_wireframe(const WireframeArgs& args) {
   const Mesh m = load_for_cli(args.input);
   // --sheet picks a complex-level sheet at either level (the paper's sheets).
-  AnalysisOptions analysis_opt;
-  analysis_opt.threads = args.input.threads;
-  analysis_opt.sheets = args.sheet.has_value();
-  analysis_opt.subsheets = false;
-  analysis_opt.wireframe = false;
+  const AnalysisOptions analysis_opt = analysis_options(
+      args.input, {{"sheets", args.sheet.has_value()}, {"subsheets", false}, {"wireframe", false}});
   const Analysis a = analyze(m, analysis_opt);
   check_sheet_option(a, args.sheet);
   WireframeStyleOptions opt;

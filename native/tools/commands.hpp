@@ -12,6 +12,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/check.hpp"
+#include "hbc/exports.hpp"
 #include "hbc/io.hpp"
 #include "hbc/level.hpp"
 
@@ -71,6 +72,11 @@ void check_sheet_option(const Analysis& analysis, const std::optional<int32_t>& 
 
 // An integer option's range [min, INT32_MAX] (CLI11's NonNegativeNumber prints DBL_MAX).
 CLI::Range at_least(int min);
+
+// The analysis options of a command: `settings` (analyze's options by name, hbc/exports.hpp, the
+// reader Python's and JavaScript's analyze use) and --threads when given. CLI11 has checked every
+// value the command line gave, so a throw here is a command's own mistake.
+AnalysisOptions analysis_options(const InputArgs& in, std::vector<OptionSetting> settings);
 
 // Loads a mesh and prints its warnings on stderr (with --skip-invalid, what was dropped, which
 // `dropped` receives when given).

@@ -1,10 +1,12 @@
 // The JavaScript binding (embind): the same names as the Python binding (native/python/hbc/_core.pyi),
-// typed arrays in place of numpy arrays. Every array is a copy (a view into the wasm heap would be
+// typed arrays in place of numpy arrays. Every array is registered by a name of the library's table
+// (hbc/exports.hpp), which tests/wasm/binding_test.mjs checks this module and hbc_core.d.ts against. Every array is a copy (a view into the wasm heap would be
 // invalidated when the heap grows). Errors are JS Errors whose message is the CLI's text
 // ("file:line: expected ..."). hbc_core.d.ts documents each function and array shape.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -16,6 +18,7 @@
 #include "hbc/analysis.hpp"
 #include "hbc/check.hpp"
 #include "hbc/error.hpp"
+#include "hbc/exports.hpp"
 #include "hbc/generate.hpp"
 #include "hbc/io.hpp"
 #include "hbc/json.hpp"
@@ -49,6 +52,17 @@ val copy(const std::vector<T>& v) {
 }
 template <class T, size_t K>
 val copy_flat(const std::vector<std::array<T, K>>& v) { return copy(reinterpret_cast<const T*>(v.data()), v.size() * K); }
+
+// `name` when the table (hbc/exports.hpp) lists it for JavaScript on `holder`; else std::logic_error,
+// which stops the module's load (EMSCRIPTEN_BINDINGS) or the call that would hand it out.
+const char* js_name(const char* holder, const char* name) {
+  const ExportedArray* e = find_exported_array(holder, name);
+  if (!e || !(e->surfaces & kJs))
+    throw std::logic_error(std::string("hbc_core: ") + holder + "." + name + " is not an exported JavaScript array of hbc/exports.hpp");
+  return name;
+}
+// o[name] = v on a plain object (Wireframe, BlockSoup, Subsheets, GeneratedMesh) through the table.
+void set(val& o, const char* holder, const char* name, val v) { o.set(js_name(holder, name), std::move(v)); }
 
 [[noreturn]] void throw_js(const std::string& message) { val::global("Error").new_(message).throw_(); }
 
@@ -117,8 +131,11 @@ class JsAnalysis {
  public:
   JsAnalysis(std::shared_ptr<LoadedMesh> m, std::shared_ptr<Analysis> a, const AnalysisOptions& options, double rho)
       : m_(std::move(m)), a_(std::move(a)), level_(options.wireframe_level), rho_(rho) {
-    if (a_->sheet_stage)
-      sheet_classes_ = std::make_shared<ClassArrays>(flatten_classes(a_->sheet_stage->domain, a_->sheet_stage->sheets.classes));
+    if (a_->sheet_stage) {
+      const SheetStage& st = *a_->sheet_stage;
+      sheet_classes_ = std::make_shared<ClassArrays>(flatten_classes(st.domain, st.sheets.classes));
+      sheet_components_ = std::make_shared<Csr<int32_t>>(blocks_as_components(st.domain, st.sheets.sheet_blocks));
+    }
   }
   // `hbc analyze --json` of this mesh, the same keys and values ("file" is the name given to load).
   std::string stats_json() const {
@@ -157,9 +174,14 @@ class JsAnalysis {
   int num_sheets() const { return a_->sheet_stage ? static_cast<int>(a_->sheet_stage->sheets.size()) : 0; }
   val sheet_cells_offsets() const { return copy(sheets().sheet_cells.offsets); }
   val sheet_cells_items() const { return copy(sheets().sheet_cells.items); }
+  val sheet_components_offsets() const { return copy(components().offsets); }
+  val sheet_components_items() const { return copy(components().items); }
+  val sheet_type() const { return copy(classes().type); }
+  // Deprecated: the names before the Python ones (hbc_core.d.ts). sheet_blocks holds the sheet
+  // domain's block ids, as it always did; sheet_components the base complex's component ids.
   val sheet_blocks_offsets() const { return copy(sheets().sheet_blocks.offsets); }
   val sheet_blocks_items() const { return copy(sheets().sheet_blocks.items); }
-  val sheet_types() const { return copy(classes().type); }
+  val sheet_types() const { return sheet_type(); }
   // The picked sheet's highlights (Analysis.sheet_* CSRs in _core.pyi), one row per sheet.
   val sheet_unmatched_vertices_offsets() const { return copy(classes().unmatched_vertices.offsets); }
   val sheet_unmatched_vertices_items() const { return copy(classes().unmatched_vertices.items); }
@@ -169,29 +191,30 @@ class JsAnalysis {
   val sheet_self_parallel_curves_items() const { return copy(classes().self_parallel_curves.items); }
   val sheet_self_intersecting_components_offsets() const { return copy(classes().self_intersecting_components.offsets); }
   val sheet_self_intersecting_components_items() const { return copy(classes().self_intersecting_components.items); }
-  // The subsheets of one self-intersecting sheet: {count, subsheet_cells_offsets, _items, subsheet_types};
-  // null when the sheet has none.
+  // The subsheets of one self-intersecting sheet (Subsheets of hbc_core.d.ts); null when the sheet
+  // has none.
   val subsheets(int sheet) const {
     sheets();
     const Subsheets* s = a_->sheet_stage->subsheets_of(sheet);
     if (!s) return val::null();
+    const SheetDomain& domain = a_->sheet_stage->domain;
     val o = val::object();
     o.set("sheet", s->sheet);
     o.set("count", static_cast<int>(s->size()));
-    o.set("subsheet_cells_offsets", copy(s->cells.offsets));
-    o.set("subsheet_cells_items", copy(s->cells.items));
-    o.set("subsheet_blocks_offsets", copy(s->blocks.offsets));
-    o.set("subsheet_blocks_items", copy(s->blocks.items));
-    const ClassArrays c = flatten_classes(a_->sheet_stage->domain, s->classes);
-    o.set("subsheet_types", copy(c.type));
+    const ClassArrays c = flatten_classes(domain, s->classes);
+    const Csr<int32_t> components = blocks_as_components(domain, s->blocks);
     const std::pair<const char*, const Csr<int32_t>*> rows[] = {
-        {"unmatched_vertices", &c.unmatched_vertices}, {"shared_vertices", &c.shared_vertices},
-        {"self_parallel_curves", &c.self_parallel_curves},
-        {"self_intersecting_components", &c.self_intersecting_components}};
+        {"subsheet_cells", &s->cells}, {"subsheet_components", &components},
+        {"subsheet_blocks", &s->blocks},  // deprecated: the sheet domain's block ids
+        {"subsheet_unmatched_vertices", &c.unmatched_vertices}, {"subsheet_shared_vertices", &c.shared_vertices},
+        {"subsheet_self_parallel_curves", &c.self_parallel_curves},
+        {"subsheet_self_intersecting_components", &c.self_intersecting_components}};
     for (const auto& [name, csr] : rows) {
-      o.set(std::string("subsheet_") + name + "_offsets", copy(csr->offsets));
-      o.set(std::string("subsheet_") + name + "_items", copy(csr->items));
+      set(o, "Subsheets", (std::string(name) + "_offsets").c_str(), copy(csr->offsets));
+      set(o, "Subsheets", (std::string(name) + "_items").c_str(), copy(csr->items));
     }
+    set(o, "Subsheets", "subsheet_type", copy(c.type));
+    set(o, "Subsheets", "subsheet_types", copy(c.type));  // deprecated
     return o;
   }
   // The whole-mesh VSG wireframe (Wireframe in _core.pyi), or null when it did not run; styled at
@@ -221,19 +244,20 @@ class JsAnalysis {
   static val wire_object(const VsgWireframe& w, const WireframeStyle& style) {
     val o = val::object();
     o.set("count", static_cast<int>(w.size()));
-    o.set("polylines_offsets", copy(w.polylines.offsets));
-    o.set("polylines_items", copy(w.polylines.items));
-    o.set("point_opacity", copy(style.point_opacity));
-    o.set("kind", copy(w.kind));
-    o.set("shown", copy(w.shown));
-    o.set("color", copy(style.color));
-    o.set("color_class", copy(style.color_class));
-    o.set("non_hex_offsets", copy(w.non_hex.offsets));
-    o.set("non_hex_items", copy(w.non_hex.items));
-    o.set("simplified_polylines_offsets", copy(w.simplified_polylines.offsets));
-    o.set("simplified_polylines_items", copy(w.simplified_polylines.items));
-    o.set("simplified_non_hex_offsets", copy(w.simplified_non_hex.offsets));
-    o.set("simplified_non_hex_items", copy(w.simplified_non_hex.items));
+    const auto put = [&o](const char* name, val v) { set(o, "Wireframe", name, std::move(v)); };
+    put("polylines_offsets", copy(w.polylines.offsets));
+    put("polylines_items", copy(w.polylines.items));
+    put("point_opacity", copy(style.point_opacity));
+    put("kind", copy(w.kind));
+    put("shown", copy(w.shown));
+    put("color", copy(style.color));
+    put("color_class", copy(style.color_class));
+    put("non_hex_offsets", copy(w.non_hex.offsets));
+    put("non_hex_items", copy(w.non_hex.items));
+    put("simplified_polylines_offsets", copy(w.simplified_polylines.offsets));
+    put("simplified_polylines_items", copy(w.simplified_polylines.items));
+    put("simplified_non_hex_offsets", copy(w.simplified_non_hex.offsets));
+    put("simplified_non_hex_items", copy(w.simplified_non_hex.items));
     return o;
   }
   // block_soup(what, sheet, shrink) of _core.pyi: a BlockSoup object of typed arrays. sheet < 0: none.
@@ -247,13 +271,14 @@ class JsAnalysis {
   }
   static val soup_object(const BlockSoup& b) {
     val o = val::object();
-    o.set("positions", copy(b.positions));
-    o.set("point_vertex", copy(b.point_vertex));
-    o.set("face_vertices_offsets", copy(b.face_vertices.offsets));
-    o.set("face_vertices_items", copy(b.face_vertices.items));
-    o.set("face_owner", copy(b.face_owner));
-    o.set("face_source", copy(b.face_source));
-    o.set("face_cell", copy(b.face_cell));
+    const auto put = [&o](const char* name, val v) { set(o, "BlockSoup", name, std::move(v)); };
+    put("positions", copy(b.positions));
+    put("point_vertex", copy(b.point_vertex));
+    put("face_vertices_offsets", copy(b.face_vertices.offsets));
+    put("face_vertices_items", copy(b.face_vertices.items));
+    put("face_owner", copy(b.face_owner));
+    put("face_source", copy(b.face_source));
+    put("face_cell", copy(b.face_cell));
     return o;
   }
 
@@ -266,33 +291,44 @@ class JsAnalysis {
     sheets();
     return *sheet_classes_;
   }
+  const Csr<int32_t>& components() const {
+    sheets();
+    return *sheet_components_;
+  }
   std::shared_ptr<LoadedMesh> m_;
   std::shared_ptr<Analysis> a_;
   Level level_;
   double rho_;  // the wireframes' rho without one (analyze's option; presentation only)
   std::shared_ptr<const ClassArrays> sheet_classes_;  // computed once, as the Python binding does
+  std::shared_ptr<const Csr<int32_t>> sheet_components_;
 };
 
 std::string JsMesh::info_json() const { return json_text(mesh_info_json(mesh(), m_->name)); }
 
-// options: {level: "complex"|"mesh", subsheet_rule: "layers"|"fewest", rho, sheets, subsheets, wireframe}.
+// options: analyze's options by name (hbc/exports.hpp, the AnalyzeOptions of hbc_core.d.ts), read by
+// the library's one reader of them, as the CLI's and Python's are; undefined or null leaves an
+// option at its default. One thread unless asked: the module has no others.
 JsAnalysis JsMesh::analyze(val options) const {
   return guarded([&] {
-    AnalysisOptions opt;
-    opt.threads = 1;
-    auto get = [&](const char* k) { return options.isUndefined() || options.isNull() ? val::undefined() : options[k]; };
-    if (val v = get("level"); !v.isUndefined()) opt.sheet_level = opt.wireframe_level = level_from_name(v.as<std::string>());
-    if (val v = get("subsheet_rule"); !v.isUndefined()) {
-      const auto rule = subsheet_rule_from_name(v.as<std::string>());
-      if (!rule) throw std::invalid_argument("subsheet_rule: 'layers' or 'fewest', not '" + v.as<std::string>() + "'");
-      opt.subsheet_options.rule = *rule;
+    std::vector<OptionSetting> settings;
+    if (!options.isUndefined() && !options.isNull()) {
+      const val keys = val::global("Object").call<val>("keys", options);
+      const int n = keys["length"].as<int>();
+      for (int i = 0; i < n; ++i) {
+        const std::string key = keys[i].as<std::string>();
+        const val v = options[key];
+        const std::string type = v.typeOf().as<std::string>();
+        if (v.isUndefined() || v.isNull()) continue;
+        if (type == "boolean") settings.push_back({key, v.as<bool>()});
+        else if (type == "number") settings.push_back({key, v.as<double>()});
+        else if (type == "string") settings.push_back({key, v.as<std::string>()});
+        else throw std::invalid_argument(key + " must be a boolean, a number or a string, not a " + type);
+      }
     }
-    double rho = WireframeStyleOptions{}.rho;  // not the analysis': the wireframes' style
-    if (val v = get("rho"); !v.isUndefined()) rho = v.as<double>();
-    if (val v = get("sheets"); !v.isUndefined()) opt.sheets = v.as<bool>();
-    if (val v = get("subsheets"); !v.isUndefined()) opt.subsheets = v.as<bool>();
-    if (val v = get("wireframe"); !v.isUndefined()) opt.wireframe = v.as<bool>();
-    return JsAnalysis(m_, std::make_shared<Analysis>(hbc::analyze(m_->mesh, opt)), opt, rho);
+    AnalyzeSettings defaults;
+    defaults.options.threads = 1;
+    const AnalyzeSettings set = analyze_settings(settings, defaults);
+    return JsAnalysis(m_, std::make_shared<Analysis>(hbc::analyze(m_->mesh, set.options)), set.options, set.rho);
   });
 }
 
@@ -384,13 +420,38 @@ val generate_cylinder_arrays(int radius_cells, int layers) {
   return guarded([&] {
     const MeshInput in = generate_cylinder(radius_cells, layers);
     val o = val::object();
-    o.set("points", copy(in.points));
-    o.set("faces_offsets", copy(in.faces.offsets));
-    o.set("faces_items", copy(in.faces.items));
-    o.set("cells_offsets", copy(in.cells.offsets));
-    o.set("cells_items", copy(in.cells.items));
+    const auto put = [&o](const char* name, val v) { set(o, "GeneratedMesh", name, std::move(v)); };
+    put("points", copy(in.points));
+    put("faces_offsets", copy(in.faces.offsets));
+    put("faces_items", copy(in.faces.items));
+    put("cells_offsets", copy(in.cells.offsets));
+    put("cells_items", copy(in.cells.items));
     return o;
   });
+}
+
+// EXPORTS_json: the binding surface's description (hbc/exports.hpp) as JSON {arrays: [{holder,
+// name, dtype, csr, rows, width, python, js, deprecated, meaning}], dimensions: {symbol: meaning},
+// options: [{key, type, default, choices, min, max, meaning}]}, which the binding test checks the
+// module's objects and hbc_core.d.ts against.
+std::string exports_json() {
+  Json arrays = Json::array(), options = Json::array(), dims = Json::object();
+  for (const ExportedArray& a : exported_arrays())
+    arrays.push_back({{"holder", a.holder}, {"name", a.name}, {"dtype", dtype_name(a.dtype)}, {"csr", a.csr},
+                      {"rows", a.rows}, {"width", a.width}, {"python", (a.surfaces & kPython) != 0},
+                      {"js", (a.surfaces & kJs) != 0}, {"deprecated", a.deprecated}, {"meaning", a.meaning}});
+  for (const Dimension& d : dimensions()) dims[std::string(d.symbol)] = d.meaning;
+  for (const AnalyzeOption& o : analyze_options()) {
+    Json choices = Json::array();
+    for (size_t b = 0; !o.choices.empty() && b <= o.choices.size();) {
+      const size_t e = std::min(o.choices.find('|', b), o.choices.size());
+      choices.push_back(o.choices.substr(b, e - b));
+      b = e + 1;
+    }
+    options.push_back({{"key", o.key}, {"type", option_type_name(o.type)}, {"default", o.default_text},
+                       {"choices", choices}, {"min", o.min}, {"max", o.max}, {"meaning", o.meaning}});
+  }
+  return Json{{"arrays", arrays}, {"dimensions", dims}, {"options", options}}.dump();
 }
 
 std::string version_string() { return std::string(version()); }
@@ -401,66 +462,74 @@ std::string version_string() { return std::string(version()); }
 EMSCRIPTEN_BINDINGS(hbc_core) {
   using namespace emscripten;
   using namespace hbc::js;
-  class_<JsMesh>("Mesh")
-      .property("num_vertices", &JsMesh::num_vertices)
-      .property("num_edges", &JsMesh::num_edges)
-      .property("num_faces", &JsMesh::num_faces)
-      .property("num_cells", &JsMesh::num_cells)
-      .property("source", &JsMesh::source)
-      .property("points", &JsMesh::points)
-      .property("points64", &JsMesh::points64)
-      .property("edges", &JsMesh::edges)
-      .property("face_vertices_offsets", &JsMesh::face_vertices_offsets)
-      .property("face_vertices_items", &JsMesh::face_vertices_items)
-      .property("face_cells", &JsMesh::face_cells)
-      .property("cell_faces_offsets", &JsMesh::cell_faces_offsets)
-      .property("cell_faces_items", &JsMesh::cell_faces_items)
-      .property("cell_types", &JsMesh::cell_types)
-      .property("face_boundary", &JsMesh::face_boundary)
-      .property("warnings", &JsMesh::warnings)
-      .function("info_json", &JsMesh::info_json)
-      .function("analyze", &JsMesh::analyze);
-  class_<JsAnalysis>("Analysis")
-      .function("stats_json", &JsAnalysis::stats_json)
-      .property("edge_class", &JsAnalysis::edge_class)
-      .property("edge_chain", &JsAnalysis::edge_chain)
-      .property("chain_vertices_offsets", &JsAnalysis::chain_vertices_offsets)
-      .property("chain_vertices_items", &JsAnalysis::chain_vertices_items)
-      .property("chain_edges_offsets", &JsAnalysis::chain_edges_offsets)
-      .property("chain_edges_items", &JsAnalysis::chain_edges_items)
-      .property("chain_valence", &JsAnalysis::chain_valence)
-      .property("chain_boundary", &JsAnalysis::chain_boundary)
-      .property("chain_closed", &JsAnalysis::chain_closed)
-      .property("singular_vertices", &JsAnalysis::singular_vertices)
-      .property("pseudo_singular_vertices", &JsAnalysis::pseudo_singular_vertices)
-      .property("num_singularities", &JsAnalysis::num_singularities)
-      .property("cell_component", &JsAnalysis::cell_component)
-      .property("component_kind", &JsAnalysis::component_kind)
-      .property("component_cells_offsets", &JsAnalysis::component_cells_offsets)
-      .property("component_cells_items", &JsAnalysis::component_cells_items)
-      .property("face_patch", &JsAnalysis::face_patch)
-      .property("curve_vertices_offsets", &JsAnalysis::curve_vertices_offsets)
-      .property("curve_vertices_items", &JsAnalysis::curve_vertices_items)
-      .property("curve_closed", &JsAnalysis::curve_closed)
-      .property("corners", &JsAnalysis::corners)
-      .property("num_components", &JsAnalysis::num_components)
-      .property("num_curves", &JsAnalysis::num_curves)
-      .property("num_patches", &JsAnalysis::num_patches)
-      .property("num_sheets", &JsAnalysis::num_sheets)
-      .property("sheet_cells_offsets", &JsAnalysis::sheet_cells_offsets)
-      .property("sheet_cells_items", &JsAnalysis::sheet_cells_items)
-      .property("sheet_blocks_offsets", &JsAnalysis::sheet_blocks_offsets)
-      .property("sheet_blocks_items", &JsAnalysis::sheet_blocks_items)
-      .property("sheet_types", &JsAnalysis::sheet_types)
-      .property("sheet_unmatched_vertices_offsets", &JsAnalysis::sheet_unmatched_vertices_offsets)
-      .property("sheet_unmatched_vertices_items", &JsAnalysis::sheet_unmatched_vertices_items)
-      .property("sheet_shared_vertices_offsets", &JsAnalysis::sheet_shared_vertices_offsets)
-      .property("sheet_shared_vertices_items", &JsAnalysis::sheet_shared_vertices_items)
-      .property("sheet_self_parallel_curves_offsets", &JsAnalysis::sheet_self_parallel_curves_offsets)
-      .property("sheet_self_parallel_curves_items", &JsAnalysis::sheet_self_parallel_curves_items)
-      .property("sheet_self_intersecting_components_offsets", &JsAnalysis::sheet_self_intersecting_components_offsets)
-      .property("sheet_self_intersecting_components_items", &JsAnalysis::sheet_self_intersecting_components_items)
-      .function("subsheets", &JsAnalysis::subsheets)
+  // An array property: its name must be the table's (hbc/exports.hpp), else the module stops loading.
+  const auto array = [](const auto& cls, const char* holder, const char* name, auto getter) {
+    cls.property(js_name(holder, name), getter);
+  };
+  const auto mesh = class_<JsMesh>("Mesh");
+  mesh.property("num_vertices", &JsMesh::num_vertices);
+  mesh.property("num_edges", &JsMesh::num_edges);
+  mesh.property("num_faces", &JsMesh::num_faces);
+  mesh.property("num_cells", &JsMesh::num_cells);
+  mesh.property("source", &JsMesh::source);
+  array(mesh, "Mesh", "points", &JsMesh::points);
+  array(mesh, "Mesh", "points64", &JsMesh::points64);
+  array(mesh, "Mesh", "edges", &JsMesh::edges);
+  array(mesh, "Mesh", "face_vertices_offsets", &JsMesh::face_vertices_offsets);
+  array(mesh, "Mesh", "face_vertices_items", &JsMesh::face_vertices_items);
+  array(mesh, "Mesh", "face_cells", &JsMesh::face_cells);
+  array(mesh, "Mesh", "cell_faces_offsets", &JsMesh::cell_faces_offsets);
+  array(mesh, "Mesh", "cell_faces_items", &JsMesh::cell_faces_items);
+  array(mesh, "Mesh", "cell_types", &JsMesh::cell_types);
+  array(mesh, "Mesh", "face_boundary", &JsMesh::face_boundary);
+  mesh.property("warnings", &JsMesh::warnings);
+  mesh.function("info_json", &JsMesh::info_json);
+  mesh.function("analyze", &JsMesh::analyze);
+  const auto analysis = class_<JsAnalysis>("Analysis");
+  analysis.function("stats_json", &JsAnalysis::stats_json);
+  array(analysis, "SingularityGraph", "edge_class", &JsAnalysis::edge_class);
+  array(analysis, "SingularityGraph", "edge_chain", &JsAnalysis::edge_chain);
+  array(analysis, "SingularityGraph", "chain_vertices_offsets", &JsAnalysis::chain_vertices_offsets);
+  array(analysis, "SingularityGraph", "chain_vertices_items", &JsAnalysis::chain_vertices_items);
+  array(analysis, "SingularityGraph", "chain_edges_offsets", &JsAnalysis::chain_edges_offsets);
+  array(analysis, "SingularityGraph", "chain_edges_items", &JsAnalysis::chain_edges_items);
+  array(analysis, "SingularityGraph", "chain_valence", &JsAnalysis::chain_valence);
+  array(analysis, "SingularityGraph", "chain_boundary", &JsAnalysis::chain_boundary);
+  array(analysis, "SingularityGraph", "chain_closed", &JsAnalysis::chain_closed);
+  array(analysis, "SingularityGraph", "singular_vertices", &JsAnalysis::singular_vertices);
+  array(analysis, "SingularityGraph", "pseudo_singular_vertices", &JsAnalysis::pseudo_singular_vertices);
+  analysis.property("num_singularities", &JsAnalysis::num_singularities);
+  array(analysis, "BaseComplex", "cell_component", &JsAnalysis::cell_component);
+  array(analysis, "BaseComplex", "component_kind", &JsAnalysis::component_kind);
+  array(analysis, "BaseComplex", "component_cells_offsets", &JsAnalysis::component_cells_offsets);
+  array(analysis, "BaseComplex", "component_cells_items", &JsAnalysis::component_cells_items);
+  array(analysis, "BaseComplex", "face_patch", &JsAnalysis::face_patch);
+  array(analysis, "BaseComplex", "curve_vertices_offsets", &JsAnalysis::curve_vertices_offsets);
+  array(analysis, "BaseComplex", "curve_vertices_items", &JsAnalysis::curve_vertices_items);
+  array(analysis, "BaseComplex", "curve_closed", &JsAnalysis::curve_closed);
+  array(analysis, "BaseComplex", "corners", &JsAnalysis::corners);
+  analysis.property("num_components", &JsAnalysis::num_components);
+  analysis.property("num_curves", &JsAnalysis::num_curves);
+  analysis.property("num_patches", &JsAnalysis::num_patches);
+  analysis.property("num_sheets", &JsAnalysis::num_sheets);
+  array(analysis, "Analysis", "sheet_cells_offsets", &JsAnalysis::sheet_cells_offsets);
+  array(analysis, "Analysis", "sheet_cells_items", &JsAnalysis::sheet_cells_items);
+  array(analysis, "Analysis", "sheet_components_offsets", &JsAnalysis::sheet_components_offsets);
+  array(analysis, "Analysis", "sheet_components_items", &JsAnalysis::sheet_components_items);
+  array(analysis, "Analysis", "sheet_type", &JsAnalysis::sheet_type);
+  // Deprecated names (hbc_core.d.ts), kept for old callers.
+  array(analysis, "Analysis", "sheet_blocks_offsets", &JsAnalysis::sheet_blocks_offsets);
+  array(analysis, "Analysis", "sheet_blocks_items", &JsAnalysis::sheet_blocks_items);
+  array(analysis, "Analysis", "sheet_types", &JsAnalysis::sheet_types);
+  array(analysis, "Analysis", "sheet_unmatched_vertices_offsets", &JsAnalysis::sheet_unmatched_vertices_offsets);
+  array(analysis, "Analysis", "sheet_unmatched_vertices_items", &JsAnalysis::sheet_unmatched_vertices_items);
+  array(analysis, "Analysis", "sheet_shared_vertices_offsets", &JsAnalysis::sheet_shared_vertices_offsets);
+  array(analysis, "Analysis", "sheet_shared_vertices_items", &JsAnalysis::sheet_shared_vertices_items);
+  array(analysis, "Analysis", "sheet_self_parallel_curves_offsets", &JsAnalysis::sheet_self_parallel_curves_offsets);
+  array(analysis, "Analysis", "sheet_self_parallel_curves_items", &JsAnalysis::sheet_self_parallel_curves_items);
+  array(analysis, "Analysis", "sheet_self_intersecting_components_offsets", &JsAnalysis::sheet_self_intersecting_components_offsets);
+  array(analysis, "Analysis", "sheet_self_intersecting_components_items", &JsAnalysis::sheet_self_intersecting_components_items);
+  analysis.function("subsheets", &JsAnalysis::subsheets)
       // Overloaded on the number of arguments: wireframe() or wireframe(sheet, subsheet).
       .function("wireframe", select_overload<val() const>(&JsAnalysis::wireframe))
       .function("wireframe", select_overload<val(int, int) const>(&JsAnalysis::wireframe))
@@ -475,5 +544,6 @@ EMSCRIPTEN_BINDINGS(hbc_core) {
   function("FORMATS", &formats_json);
   function("TABLE1_COLUMNS_json", &table1_columns_json);
   function("generate_cylinder", &generate_cylinder_arrays);
+  function("EXPORTS_json", &exports_json);
   function("version", &version_string);
 }

@@ -54,7 +54,7 @@ check('components', a.num_components === cliStats.components && a.cell_component
 check('singularities', a.num_singularities === cliStats.singularities &&
       a.chain_vertices_offsets.length === cliStats.singularities + 1 && a.chain_valence.length === cliStats.singularities);
 check('curves', a.num_curves === cliStats.curves && a.curve_vertices_offsets.length === cliStats.curves + 1);
-check('sheets', a.num_sheets === cliStats.sheets && a.sheet_types.length === cliStats.sheets);
+check('sheets', a.num_sheets === cliStats.sheets && a.sheet_type.length === cliStats.sheets);
 const w = a.wireframe();
 check('wireframe', w.count === cliStats.wireframe_edges && w.point_opacity.length === w.polylines_items.length &&
       w.non_hex_offsets.length === w.count + 1);

@@ -72,9 +72,9 @@ function touch(core, mesh, analysis) {
   arr(mesh, 'points');
   const types = arr(mesh, 'cell_types');
   arr(core.complex(analysis), 'component_kind');
-  const sheetTypes = arr(analysis, 'sheet_type', 'sheet_types') ?? [];
+  const sheetTypes = arr(analysis, 'sheet_type') ?? [];
   csr(analysis, 'sheet_cells');
-  csr(analysis, 'sheet_components', 'sheet_blocks');
+  csr(analysis, 'sheet_components');
   for (const name of ['sheet_unmatched_vertices', 'sheet_shared_vertices', 'sheet_self_parallel_curves',
     'sheet_self_intersecting_components']) csr(analysis, name);
   const g = core.graph(analysis);

@@ -109,9 +109,9 @@ async function open({ name, files, skipInvalid, again }, t0) {
   S.cellTypes = Uint8Array.from(arr(mesh, 'cell_types'));
   const cx = c.complex(analysis);
   S.componentKind = Uint8Array.from(arr(cx, 'component_kind'));
-  S.sheetType = Uint8Array.from(arr(analysis, 'sheet_type', 'sheet_types') ?? []);
+  S.sheetType = Uint8Array.from(arr(analysis, 'sheet_type') ?? []);
   const sc = csr(analysis, 'sheet_cells');
-  const sp = csr(analysis, 'sheet_components', 'sheet_blocks');
+  const sp = csr(analysis, 'sheet_components');
   const sheets = [];
   for (let i = 0; i < S.sheetType.length; i++) {
     sheets.push({ id: i, type: S.sheetType[i], cells: sc.offsets[i + 1] - sc.offsets[i], blocks: sp.offsets[i + 1] - sp.offsets[i] });
@@ -319,7 +319,7 @@ function buildSubsheets(p) {
   const count = Number(get(sub, 'count'));
   const soup = core.blockSoup(S.mesh, S.analysis, 'subsheets', i, p.shrink);
   const un = csr(sub, 'subsheet_unmatched_vertices');
-  const types = arr(sub, 'subsheet_type', 'subsheet_types');
+  const types = arr(sub, 'subsheet_type');
   const cells = csr(sub, 'subsheet_cells').offsets;
   const list = Array.from({ length: count }, (_, k) => ({ type: types[k], cells: cells[k + 1] - cells[k] }));
   const parts = [];

@@ -13,6 +13,7 @@
 
 #include "bindings.hpp"
 #include "hbc/vtu_export.hpp"
+#include <vector>
 
 namespace hbc::python {
 
@@ -57,63 +58,73 @@ py::array enums(const std::vector<E>& v, py::handle owner) {
   return view(reinterpret_cast<const uint8_t*>(v.data()), {ssize(v.size())}, owner);
 }
 
-// A read-only array property of class H computed by f(analysis, self).
+// A read-only array property of class H computed by f(analysis, self), described by the table.
 template <class H, class... Opts, class F>
-void prop(py::class_<H, Opts...>& cls, const char* name, F f, const char* doc) {
+void prop(py::class_<H, Opts...>& cls, const char* name, F f) {
   cls.def_property_readonly(
-      name, [f](py::object self) -> py::array { return f(analysis_of(self.cast<const H&>()), self); }, doc);
+      name, [f](py::object self) -> py::array { return f(analysis_of(self.cast<const H&>()), self); },
+      array_doc(exported(cls, name)).c_str());
 }
 
 // The CSR get(analysis) returns as `<name>_offsets` / `<name>_items` (def_csr) of class H.
 template <class H, class... Opts, class Get>
-void csr(py::class_<H, Opts...>& cls, const std::string& name, Get get, const std::string& rows, const std::string& doc) {
-  def_csr(cls, name, [get](const H& h) -> const Csr<int32_t>& { return get(analysis_of(h)); }, rows, doc);
+void csr(py::class_<H, Opts...>& cls, const std::string& name, Get get) {
+  def_csr(cls, name, [get](const H& h) -> const Csr<int32_t>& { return get(analysis_of(h)); });
 }
 
-// The per-row classification arrays shared by Analysis (row "sheet", rows "num_sheets") and
-// Subsheets (row "subsheet", rows "count"): `<row>_type`, `<row>_flags` and four CSRs.
+// The per-row classification arrays shared by Analysis (row "sheet") and Subsheets (row
+// "subsheet"): `<row>_type`, `<row>_flags` and four CSRs.
 template <class H, class... Opts, class Get>
-void class_arrays(py::class_<H, Opts...>& cls, const std::string& row, const std::string& rows, Get get) {
+void class_arrays(py::class_<H, Opts...>& cls, const std::string& row, Get get) {
   cls.def_property_readonly((row + "_type").c_str(), [get](py::object self) -> py::array {
     return vec(get(self.cast<const H&>()).type, self);
-  }, ("uint8 (" + rows + ",): 0 perfect, 1 type 1 (non-hex), 2 type 2 (self-parallel), 3 type 3 (self-intersecting).").c_str());
+  }, array_doc(exported(cls, row + "_type")).c_str());
   cls.def_property_readonly((row + "_flags").c_str(), [get](py::object self) -> py::array {
     const auto& f = get(self.cast<const H&>()).flags;
     return view(f.data(), {ssize(f.size() / 3), 3}, self, py::dtype::of<bool>());
-  }, ("bool (" + rows + ", 3): type 1, type 2, type 3 configurations present.").c_str());
-  const std::tuple<const char*, Csr<int32_t> ClassArrays::*, const char*> csrs[] = {
-      {"unmatched_vertices", &ClassArrays::unmatched_vertices, "mesh vertices left unmatched by a maximum matching."},
-      {"shared_vertices", &ClassArrays::shared_vertices, "mesh vertices shared by two parallel curves."},
-      {"self_parallel_curves", &ClassArrays::self_parallel_curves, "curve ids of type 2 (self-parallel) pairs."},
-      {"self_intersecting_components", &ClassArrays::self_intersecting_components,
-       "base-complex components holding two parallel curves sharing an end (type 3 pairs)."}};
-  for (const auto& [name, member, doc] : csrs)
-    def_csr(cls, row + "_" + name, [get, member = member](const H& h) -> const Csr<int32_t>& { return get(h).*member; },
-            rows, doc);
+  }, array_doc(exported(cls, row + "_flags")).c_str());
+  const std::pair<const char*, Csr<int32_t> ClassArrays::*> csrs[] = {
+      {"unmatched_vertices", &ClassArrays::unmatched_vertices},
+      {"shared_vertices", &ClassArrays::shared_vertices},
+      {"self_parallel_curves", &ClassArrays::self_parallel_curves},
+      {"self_intersecting_components", &ClassArrays::self_intersecting_components}};
+  for (const auto& [name, member] : csrs)
+    def_csr(cls, row + "_" + name, [get, member = member](const H& h) -> const Csr<int32_t>& { return get(h).*member; });
 }
 
-PyAnalysisPtr analyze(PyMeshPtr mesh, double rho, const std::string& level, bool sheets, bool subsheets,
-                      bool wireframe, const py::object& threads, const std::string& subsheet_rule,
-                      int64_t search_steps) {
-  const auto rule = subsheet_rule_from_name(subsheet_rule);
-  if (!rule) throw std::invalid_argument("subsheet_rule must be 'layers' or 'fewest', not '" + subsheet_rule + "'");
-  if (search_steps < 0) throw std::invalid_argument("search_steps must be non-negative");
-  checked_rho(rho);
-  const int nthreads = threads.is_none() ? 0 : threads.cast<int>();
-  if (nthreads < 0 || (!threads.is_none() && nthreads == 0)) throw py::value_error("threads must be a positive number or None");
+// A keyword argument as the library's option value: bool before int (a Python bool is an int),
+// anything with __index__ (numpy's integers) as an int, anything with __float__ as a float.
+OptionValue option_value(const std::string& key, const py::handle& v) {
+  if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (PyIndex_Check(v.ptr())) return v.cast<int64_t>();
+  if (py::hasattr(v, "__float__")) return v.cast<double>();
+  throw py::type_error("analyze(" + key + "=...): a bool, int, float or str, not " +
+                       py::str(py::type::of(v).attr("__name__")).cast<std::string>());
+}
+
+// Mesh.analyze(**options): the keyword arguments read by the library's one reader of analyze's
+// options (hbc/exports.hpp), as the CLI's and JavaScript's are. None leaves an option whose
+// default is none (threads) at that default; an unknown keyword is a TypeError, as Python's own.
+PyAnalysisPtr analyze(PyMeshPtr mesh, const py::kwargs& kwargs) {
+  std::vector<OptionSetting> settings;
+  for (const auto& [k, v] : kwargs) {
+    const std::string key = py::str(k);
+    const AnalyzeOption* o = find_analyze_option(key);
+    if (o && v.is_none() && o->default_text == "none") continue;
+    settings.push_back({key, v.is_none() ? OptionValue(std::string("None")) : option_value(key, v)});
+  }
+  AnalyzeSettings set;
+  try {
+    set = analyze_settings(settings);
+  } catch (const UnknownOptionError& e) {
+    throw py::type_error(e.what());
+  }
   auto out = std::make_shared<PyAnalysis>();
   out->mesh = std::move(mesh);
-  AnalysisOptions& o = out->options;
-  const Level lv = level_from_name(level);
-  o.sheet_level = lv;
-  o.wireframe_level = lv;
-  out->rho = rho;
-  o.sheets = sheets;
-  o.subsheets = sheets && subsheets;
-  o.subsheet_options.rule = *rule;
-  o.subsheet_options.node_budget = search_steps;
-  o.wireframe = wireframe;
-  o.threads = nthreads;
+  out->options = set.options;
+  out->rho = set.rho;
+  const AnalysisOptions& o = out->options;
   {
     py::gil_scoped_release unlocked;  // the analysis touches no Python object
     PyAnalysis& p = *out;
@@ -193,62 +204,37 @@ SubsheetsView subsheets(const PyAnalysisPtr& p, int64_t sheet) {
 void bind_graph(py::module_& m) {
   py::class_<GraphView> g(m, "SingularityGraph",
                           "The hybrid singularity graph of an Analysis (paper §3.2); arrays are views.");
-  prop(g, "edge_class", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.graph.edge_class, s); },
-       "uint8 (ne,): 0 regular, 1 singular, 2 pseudo-singular, 3 non-manifold.");
-  prop(g, "edge_irregular", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.edge_irregular, s); },
-       "bool (ne,): valence other than 4 inside / 2 on the boundary.");
-  prop(g, "edge_chain", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.edge_chain, s); },
-       "int32 (ne,): singularity of a singular edge, else -1.");
-  csr(g, "chain_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; }, "ns",
-      "ordered vertices of each singularity (a closed chain does not repeat its first vertex).");
-  csr(g, "chain_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; }, "ns",
-      "ordered edges of each singularity; edge i joins chain vertices i and i+1 (mod n).");
-  prop(g, "chain_valence", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.chain_valence, s); },
-       "int32 (ns,): valence of each singularity.");
-  prop(g, "chain_boundary", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.chain_boundary, s); },
-       "bool (ns,): all its edges on the boundary.");
-  prop(g, "chain_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.chain_closed, s); },
-       "bool (ns,): a closed loop.");
-  prop(g, "singular_vertices", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.singular_vertices, s); },
-       "int32, sorted: singularity ends that are not pseudo-singular (not the wireframe's singular vertices).");
+  prop(g, "edge_class", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.graph.edge_class, s); });
+  prop(g, "edge_irregular", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.edge_irregular, s); });
+  prop(g, "edge_chain", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.edge_chain, s); });
+  csr(g, "chain_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_verts; });
+  csr(g, "chain_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.graph.chain_edges; });
+  prop(g, "chain_valence", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.chain_valence, s); });
+  prop(g, "chain_boundary", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.chain_boundary, s); });
+  prop(g, "chain_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.graph.chain_closed, s); });
+  prop(g, "singular_vertices", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.singular_vertices, s); });
   prop(g, "pseudo_singular_vertices",
-       [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.pseudo_singular_vertices, s); },
-       "int32, sorted: ends of pseudo-singular and non-manifold edges.");
-  prop(g, "pseudo_singular_edges", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.pseudo_singular_edges, s); },
-       "int32, sorted: edges touching a non-hex cell.");
-  prop(g, "non_manifold_edges", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.non_manifold_edges, s); },
-       "int32, sorted: edges touching a non-manifold vertex (neither singular nor pseudo-singular).");
+       [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.pseudo_singular_vertices, s); });
+  prop(g, "pseudo_singular_edges", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.pseudo_singular_edges, s); });
+  prop(g, "non_manifold_edges", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.graph.non_manifold_edges, s); });
   g.def_property_readonly("num_singularities", [](const GraphView& v) { return v.a->analysis.graph.num_singularities(); });
 }
 
 void bind_complex(py::module_& m) {
   py::class_<ComplexView> c(m, "BaseComplex", "The hybrid base complex of an Analysis (paper §3.3); arrays are views.");
-  prop(c, "cell_component", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.cell_component, s); },
-       "int32 (nc,): component of each cell.");
-  prop(c, "component_kind", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.complex.component_kind, s); },
-       "uint8 (ncomp,): 0 cube, 1 ring, 2 other, 3 non-hex.");
-  csr(c, "component_cells", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; }, "ncomp",
-      "sorted cells of each component.");
-  csr(c, "component_adjacency", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_adjacency; },
-      "ncomp", "sorted components sharing a separation face with each component.");
-  prop(c, "face_separation", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.face_separation, s); },
-       "bool (nf,): separation face.");
-  prop(c, "face_patch", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.face_patch, s); },
-       "int32 (nf,): patch of a separation face, else -1.");
-  csr(c, "patch_faces", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; }, "npatch",
-      "sorted mesh faces of each patch.");
-  csr(c, "curve_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; }, "ncurve",
-      "mesh vertex polyline of each curve (a closed curve does not repeat its first vertex).");
-  csr(c, "curve_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; }, "ncurve",
-      "ordered mesh edges of each curve.");
-  prop(c, "curve_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.curve_closed, s); },
-       "bool (ncurve,): a closed curve (no corner on it).");
-  prop(c, "edge_curve", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.edge_curve, s); },
-       "int32 (ne,): curve of a complex edge, else -1.");
-  prop(c, "corners", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.corners, s); },
-       "int32, sorted: corner vertices.");
-  prop(c, "self_adjacent_faces", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.self_adjacent_faces, s); },
-       "int32: interior separation faces with one component on both sides.");
+  prop(c, "cell_component", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.cell_component, s); });
+  prop(c, "component_kind", [](const PyAnalysis& p, py::handle s) { return enums(p.analysis.complex.component_kind, s); });
+  csr(c, "component_cells", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_cells; });
+  csr(c, "component_adjacency", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.component_adjacency; });
+  prop(c, "face_separation", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.face_separation, s); });
+  prop(c, "face_patch", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.face_patch, s); });
+  csr(c, "patch_faces", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.patch_faces; });
+  csr(c, "curve_vertices", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_verts; });
+  csr(c, "curve_edges", [](const PyAnalysis& p) -> auto& { return p.analysis.complex.curve_edges; });
+  prop(c, "curve_closed", [](const PyAnalysis& p, py::handle s) { return flags(p.analysis.complex.curve_closed, s); });
+  prop(c, "edge_curve", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.edge_curve, s); });
+  prop(c, "corners", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.corners, s); });
+  prop(c, "self_adjacent_faces", [](const PyAnalysis& p, py::handle s) { return vec(p.analysis.complex.self_adjacent_faces, s); });
   c.def_property_readonly("num_components", [](const ComplexView& v) { return v.a->analysis.complex.num_components(); });
   c.def_property_readonly("num_patches", [](const ComplexView& v) { return v.a->analysis.complex.num_patches(); });
   c.def_property_readonly("num_curves", [](const ComplexView& v) { return v.a->analysis.complex.num_curves(); });
@@ -267,13 +253,10 @@ void bind_subsheets(py::module_& m) {
   c.def_property_readonly("proven", [sub](const SubsheetsView& v) { return sub(v).proven; },
                           "'fewest': count equals lower_bound (the count is the minimum).");
   const auto flat = [](const SubsheetsView& v) -> const PyAnalysis::Sub& { return v.a->subsheets[v.index]; };
-  def_csr(c, "subsheet_components", [flat](const SubsheetsView& v) -> auto& { return flat(v).components; }, "count",
-          "base-complex components of each subsheet, sorted.");
-  def_csr(c, "subsheet_cells", [sub](const SubsheetsView& v) -> auto& { return sub(v).cells; }, "count",
-          "mesh hex cells of each subsheet, sorted.");
-  def_csr(c, "subsheet_curves", [sub](const SubsheetsView& v) -> auto& { return sub(v).curves; }, "count",
-          "parallel curves of each subsheet, sorted (complex curves, or mesh edges at level 'mesh').");
-  class_arrays(c, "subsheet", "count", [flat](const SubsheetsView& v) -> const ClassArrays& { return flat(v).classes; });
+  def_csr(c, "subsheet_components", [flat](const SubsheetsView& v) -> auto& { return flat(v).components; });
+  def_csr(c, "subsheet_cells", [sub](const SubsheetsView& v) -> auto& { return sub(v).cells; });
+  def_csr(c, "subsheet_curves", [sub](const SubsheetsView& v) -> auto& { return sub(v).curves; });
+  class_arrays(c, "subsheet", [flat](const SubsheetsView& v) -> const ClassArrays& { return flat(v).classes; });
 }
 
 std::string to_vtu(const PyAnalysis& p, const std::string& path, py::object sheet, bool ascii) {
@@ -313,25 +296,19 @@ void bind_analysis(py::module_& m) {
   c.def_property_readonly("complex", [](const PyAnalysisPtr& p) { return ComplexView{p}; });
 
   c.def_property_readonly("num_sheets", [](const PyAnalysis& p) { return p.sheets().size(); });
-  csr(c, "sheet_components", [](const PyAnalysis& p) -> auto& { return p.sheet_components; }, "num_sheets",
-      "base-complex components of each sheet, sorted.");
-  csr(c, "sheet_cells", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_cells; }, "num_sheets",
-      "mesh hex cells of each sheet, sorted.");
-  csr(c, "sheet_curves", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_curves; }, "num_sheets",
-      "parallel curves E_P of each sheet, sorted (complex curves, or mesh edges at level 'mesh').");
-  csr(c, "sheet_edges", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_edges; }, "num_sheets",
-      "mesh edges of each sheet's parallel curves, sorted.");
-  csr(c, "sheet_non_hex_cells", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_non_hex_cells; },
-      "num_sheets", "non-hex cells adjacent to each sheet, sorted.");
-  class_arrays(c, "sheet", "num_sheets", [](const PyAnalysis& p) -> const ClassArrays& { return p.sheet_classes; });
+  csr(c, "sheet_components", [](const PyAnalysis& p) -> auto& { return p.sheet_components; });
+  csr(c, "sheet_cells", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_cells; });
+  csr(c, "sheet_curves", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_curves; });
+  csr(c, "sheet_edges", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_edges; });
+  csr(c, "sheet_non_hex_cells", [](const PyAnalysis& p) -> auto& { return p.sheets().sheet_non_hex_cells; });
+  class_arrays(c, "sheet", [](const PyAnalysis& p) -> const ClassArrays& { return p.sheet_classes; });
   c.def_property_readonly(
       "largest_self_intersecting",
       [](const PyAnalysis& p) -> std::optional<int32_t> {
         return p.analysis.sheet_stage ? p.analysis.sheet_stage->largest_self_intersecting : std::nullopt;
       },
       "The self-intersecting sheet with most cells; None without one (or without the sheet stage).");
-  prop(c, "self_intersecting_sheets", [](const PyAnalysis& p, py::handle s) { return vec(p.self_intersecting, s); },
-       "int32: the sheets with a subsheet decomposition, increasing.");
+  prop(c, "self_intersecting_sheets", [](const PyAnalysis& p, py::handle s) { return vec(p.self_intersecting, s); });
   c.def("subsheets", &subsheets, py::arg("sheet"),
         "The subsheets of a self-intersecting sheet; ValueError for any other sheet.");
   c.def("wireframe", &wireframe, py::arg("sheet") = py::none(), py::arg("subsheet") = py::none(),
@@ -348,15 +325,12 @@ void bind_analysis(py::module_& m) {
         "<path stem>_graph.vtu the singularity graph as lines. Returns the graph file's path.");
 
   auto mesh_cls = py::reinterpret_borrow<py::class_<PyMesh, PyMeshPtr>>(m.attr("Mesh"));
-  mesh_cls.def("analyze", &analyze, py::arg("rho") = 0.8, py::arg("level") = "complex", py::arg("sheets") = true,
-               py::arg("subsheets") = true, py::arg("wireframe") = true, py::arg("threads") = py::none(),
-               py::arg("subsheet_rule") = "layers", py::arg("search_steps") = SubsheetOptions{}.node_budget,
-               "Runs the structure analysis (GIL released). rho in [0, 1]: the threshold of the wireframes' "
-               "colour classes (paper §6.2; no count depends on it). level: 'complex' (the paper's) or 'mesh'. "
-               "threads: how many threads the stages may use (results are the same for any number; "
-               "None: HBC_THREADS, else every core). subsheet_rule: 'layers' (the paper's authors' "
-               "decomposition) or 'fewest' (the fewest subsheets with a lower bound; search_steps caps its "
-               "exact search per sheet).");
+  std::string doc = "Runs the structure analysis (GIL released) with these options (hbc/exports.hpp; "
+                    "hbc._core.ANALYZE_OPTIONS):";
+  for (const AnalyzeOption& o : analyze_options())
+    doc += "\n  " + std::string(o.key) + " (" + option_type_name(o.type) + ", default " + std::string(o.default_text) +
+           "): " + std::string(o.meaning) + ".";
+  mesh_cls.def("analyze", &analyze, doc.c_str());
 }
 
 }  // namespace hbc::python

@@ -8,10 +8,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hbc/analysis.hpp"
 #include "hbc/check.hpp"
+#include "hbc/exports.hpp"
 #include "hbc/mesh.hpp"
 #include "hbc/region.hpp"
 #include "hbc/render_geometry.hpp"
@@ -56,13 +58,20 @@ py::array adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape, py::dtype dt
   return py::array(std::move(dtype), std::move(shape), std::vector<py::ssize_t>{}, heap->data(), owner);
 }
 
+// The entry of the exported-array table (hbc/exports.hpp) that class `cls` (its Python name is the
+// holder) binds as `name`: every array property is registered through it, so a name the table
+// does not list for Python stops the module at import (std::logic_error), and its docstring is
+// the table's ("int32 (ne,): meaning.").
+const ExportedArray& exported(py::handle cls, std::string_view name);
+const ExportedArray& exported(std::string_view holder, std::string_view name);
+std::string array_doc(const ExportedArray& a);
+
 // Every CSR is exposed the same way: `<name>_offsets`, int32 (rows + 1,), and `<name>_items`,
 // int32 (<name>_offsets[-1],), read-only views of the Csr get(holder) returns, whose numpy base is
-// the Python object (which keeps the data alive). `rows` names the row count in the docstring;
-// `doc` says what the items of a row are.
+// the Python object (which keeps the data alive); rows and meaning are the table's.
 template <class H, class... Opts, class Get>
-void def_csr(py::class_<H, Opts...>& cls, const std::string& name, Get get, const std::string& rows,
-             const std::string& doc) {
+void def_csr(py::class_<H, Opts...>& cls, const std::string& name, Get get) {
+  const ExportedArray& e = exported(cls, name);
   // pybind11 copies names and docstrings, so temporaries are fine.
   cls.def_property_readonly(
       (name + "_offsets").c_str(),
@@ -70,8 +79,8 @@ void def_csr(py::class_<H, Opts...>& cls, const std::string& name, Get get, cons
         const auto& v = get(self.cast<const H&>()).offsets;
         return view(v.data(), {ssize(v.size())}, self);
       },
-      ("int32 (" + rows + " + 1,): row r's items are " + name + "_items[" + name + "_offsets[r]:" + name +
-       "_offsets[r + 1]].")
+      ("int32 (" + std::string(e.rows) + " + 1,): row r's items are " + name + "_items[" + name + "_offsets[r]:" +
+       name + "_offsets[r + 1]].")
           .c_str());
   cls.def_property_readonly(
       (name + "_items").c_str(),
@@ -79,7 +88,7 @@ void def_csr(py::class_<H, Opts...>& cls, const std::string& name, Get get, cons
         const auto& v = get(self.cast<const H&>()).items;
         return view(v.data(), {ssize(v.size())}, self);
       },
-      ("int32 (" + name + "_offsets[-1],): " + doc).c_str());
+      array_doc(e).c_str());
 }
 
 // What a Python hbc.Analysis holds: the mesh it was computed on (kept alive), the options (for
@@ -149,6 +158,7 @@ void bind_quality(py::module_& m);   // quality.cpp: cell_quality(), cell_depth(
 void bind_schema(py::module_& m);    // schema.cpp: the fields and name tables of what hbc reports
 void bind_metrics(py::module_& m);   // metrics.cpp: Analysis.metrics(), METRIC_FIELDS (after bind_analysis)
 void bind_comparison(py::module_& m);  // comparison.cpp: hbc.compare's measurement and tables
+void bind_exports(py::module_& m);   // exports.cpp: EXPORTED_ARRAYS, DIMENSIONS, ANALYZE_OPTIONS
 // schema.cpp: a statistics dict / wireframe counts dict keyed by the schema's fields.
 py::dict stats_dict(const Stats& s);
 py::dict wireframe_counts(const VsgWireframe& w);

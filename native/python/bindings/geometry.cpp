@@ -17,17 +17,20 @@ using IntArray = py::array_t<int32_t, py::array::c_style | py::array::forcecast>
 // A read-only view of a vector of the style (Get takes the WireframeStyle); the Wireframe object
 // is the numpy base.
 template <class Get>
-void style_prop(py::class_<PyWireframe>& cls, const char* name, Get get, const char* doc) {
+void style_prop(py::class_<PyWireframe>& cls, const char* name, Get get) {
   cls.def_property_readonly(
       name, [get](py::object self) -> py::array {
         const auto& v = get(*self.cast<const PyWireframe&>().style);
         return view(v.data(), {ssize(v.size())}, self);
-      }, doc);
+      }, array_doc(exported(cls, name)).c_str());
 }
 
-// A read-only view of a wireframe vector; the Wireframe object is the numpy base.
+// A read-only view of a wireframe vector, one-byte ones as the table's dtype (uint8 or bool); the
+// Wireframe object is the numpy base.
 template <class Get>
-void wire_prop(py::class_<PyWireframe>& cls, const char* name, Get get, const char* doc, bool as_bool = false) {
+void wire_prop(py::class_<PyWireframe>& cls, const char* name, Get get) {
+  const ExportedArray& e = exported(cls, name);
+  const bool as_bool = e.dtype == Dtype::Bool;
   cls.def_property_readonly(
       name,
       [get, as_bool](py::object self) -> py::array {
@@ -40,7 +43,7 @@ void wire_prop(py::class_<PyWireframe>& cls, const char* name, Get get, const ch
           return view(v.data(), {ssize(v.size())}, self);
         }
       },
-      doc);
+      array_doc(e).c_str());
 }
 
 void bind_wireframe(py::module_& m) {
@@ -49,32 +52,19 @@ void bind_wireframe(py::module_& m) {
                             "opacity and per-polyline kind, simplification flags and colours, and the simplified "
                             "wireframe's polylines. Arrays are views.");
   c.def_property_readonly("count", [](const PyWireframe& p) { return p.w->size(); }, "Number of polylines.");
-  def_csr(c, "polylines", [](const PyWireframe& p) -> auto& { return p.w->polylines; }, "count",
-          "mesh vertices along each polyline (a closed VSG chain repeats its first vertex).");
-  style_prop(c, "point_opacity", [](const WireframeStyle& s) -> auto& { return s.point_opacity; },
-            "float32 (polylines_offsets[-1],), aligned with polylines_items: opacity in [floor, 1].");
-  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; }, "uint8 (count,): 0 chain of VSG (irregular) edges only, 1 other chain.");
-  wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; },
-            "int32 (count,): region valence of the chain's first edge.");
-  wire_prop(c, "stop", [](const VsgWireframe& w) -> auto& { return w.stop; },
-            "uint8 (count,): the chain's last vertex: 0 closed chain, 1 singular vertex of the wireframe, 2 boundary, 3 neither.");
-  wire_prop(c, "shown", [](const VsgWireframe& w) -> auto& { return w.shown; },
-            "bool (count,): every edge of the chain lies on the simplified wireframe.", true);
-  wire_prop(c, "non_important", [](const VsgWireframe& w) -> auto& { return w.non_important; },
-            "uint8 (count,): 0 kept, 1 both ends redundant, 2 in a removable pair at a singular vertex.");
-  wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; },
-            "bool (count,): non-important but kept: it continues a kept chain (reactivation).", true);
-  def_csr(c, "simplified_polylines", [](const PyWireframe& p) -> auto& { return p.w->simplified_polylines; },
-          "counts['wireframe_edges_simplified']",
-          "mesh vertices along each simplified polyline (kept chains re-chained).");
-  style_prop(c, "color", [](const WireframeStyle& s) -> auto& { return s.color; }, "int32 (count,): palette index.");
-  style_prop(c, "color_class", [](const WireframeStyle& s) -> auto& { return s.color_class; },
-            "int32 (count,): colour class (lowest polyline of a set of partially parallel ones).");
-  def_csr(c, "non_hex", [](const PyWireframe& p) -> auto& { return p.w->non_hex; }, "count",
-          "int32 non-hex kinds of each polyline, sorted (docs/concepts.md): code >> 16 indexes "
-          "CELL_TYPES, code & 0xffff is the face count.");
-  def_csr(c, "simplified_non_hex", [](const PyWireframe& p) -> auto& { return p.w->simplified_non_hex; },
-          "counts['wireframe_edges_simplified']", "int32 non-hex kinds of each simplified polyline, as non_hex.");
+  def_csr(c, "polylines", [](const PyWireframe& p) -> auto& { return p.w->polylines; });
+  style_prop(c, "point_opacity", [](const WireframeStyle& s) -> auto& { return s.point_opacity; });
+  wire_prop(c, "kind", [](const VsgWireframe& w) -> auto& { return w.kind; });
+  wire_prop(c, "valence", [](const VsgWireframe& w) -> auto& { return w.valence; });
+  wire_prop(c, "stop", [](const VsgWireframe& w) -> auto& { return w.stop; });
+  wire_prop(c, "shown", [](const VsgWireframe& w) -> auto& { return w.shown; });
+  wire_prop(c, "non_important", [](const VsgWireframe& w) -> auto& { return w.non_important; });
+  wire_prop(c, "reactivated", [](const VsgWireframe& w) -> auto& { return w.reactivated; });
+  def_csr(c, "simplified_polylines", [](const PyWireframe& p) -> auto& { return p.w->simplified_polylines; });
+  style_prop(c, "color", [](const WireframeStyle& s) -> auto& { return s.color; });
+  style_prop(c, "color_class", [](const WireframeStyle& s) -> auto& { return s.color_class; });
+  def_csr(c, "non_hex", [](const PyWireframe& p) -> auto& { return p.w->non_hex; });
+  def_csr(c, "simplified_non_hex", [](const PyWireframe& p) -> auto& { return p.w->simplified_non_hex; });
   c.def_property_readonly("rho", [](const PyWireframe& p) { return p.rho; },
                           "The ρ of this wireframe's colour classes (point_opacity, color, color_class).");
   c.def(
@@ -94,17 +84,22 @@ void bind_wireframe(py::module_& m) {
       "shown_components (connected pieces of the complete and of the simplified wireframe).");
 }
 
+// block_soup's dict; each key is the table's (a BlockSoup entry of hbc/exports.hpp).
 py::dict soup_dict(BlockSoup&& s) {
   const py::ssize_t np = ssize(s.num_points()), nf = ssize(s.num_faces());
   const py::ssize_t nfv = ssize(s.face_vertices.items.size());
   py::dict d;
-  d["positions"] = adopt(std::move(s.positions), {np, 3});
-  d["face_vertices_offsets"] = adopt(std::move(s.face_vertices.offsets), {nf + 1});
-  d["face_vertices_items"] = adopt(std::move(s.face_vertices.items), {nfv});
-  d["face_owner"] = adopt(std::move(s.face_owner), {nf});
-  d["face_source"] = adopt(std::move(s.face_source), {nf});
-  d["face_cell"] = adopt(std::move(s.face_cell), {nf});
-  d["point_vertex"] = adopt(std::move(s.point_vertex), {np});
+  const auto key = [](const char* name) {
+    exported("BlockSoup", name);
+    return py::str(name);
+  };
+  d[key("positions")] = adopt(std::move(s.positions), {np, 3});
+  d[key("face_vertices_offsets")] = adopt(std::move(s.face_vertices.offsets), {nf + 1});
+  d[key("face_vertices_items")] = adopt(std::move(s.face_vertices.items), {nfv});
+  d[key("face_owner")] = adopt(std::move(s.face_owner), {nf});
+  d[key("face_source")] = adopt(std::move(s.face_source), {nf});
+  d[key("face_cell")] = adopt(std::move(s.face_cell), {nf});
+  d[key("point_vertex")] = adopt(std::move(s.point_vertex), {np});
   return d;
 }
 

@@ -31,29 +31,32 @@ py::array points32(py::object self) {
   return view(pm.points32.data(), {ssize(pm.mesh.num_vertices()), 3}, self);
 }
 
-// A property returning a view of get(mesh), a vector of one-byte values (0/1 flags, enums) as
-// `dtype`: uint8 or bool.
+// A property returning a view of get(mesh), a vector of one-byte values (0/1 flags, enums) as the
+// table's dtype: uint8 or bool.
 template <class Get>
-void byte_view(Cls& cls, const char* name, Get get, py::dtype dtype, const char* doc) {
+void byte_view(Cls& cls, const char* name, Get get) {
+  const ExportedArray& e = exported(cls, name);
+  const py::dtype dtype(e.dtype == Dtype::Bool ? "bool" : "uint8");
   cls.def_property_readonly(
       name,
       [get, dtype](py::object self) {
         const auto& v = get(self.cast<const PyMesh&>().mesh);
         return view(reinterpret_cast<const uint8_t*>(v.data()), {ssize(v.size())}, self, dtype);
       },
-      doc);
+      array_doc(e).c_str());
 }
 
 // A property returning a view of get(mesh), a vector of id pairs, as int32 (n, 2).
 template <class Get>
-void pair_view(Cls& cls, const char* name, Get get, const char* doc) {
+void pair_view(Cls& cls, const char* name, Get get) {
+  const std::string doc = array_doc(exported(cls, name));
   cls.def_property_readonly(
       name,
       [get](py::object self) {
         const auto& v = get(self.cast<const PyMesh&>().mesh);
         return view(reinterpret_cast<const int32_t*>(v.data()), {ssize(v.size()), 2}, self);
       },
-      doc);
+      doc.c_str());
 }
 
 // `hbc info --json`'s object without "file", read back from the library's one writer of it (so
@@ -94,42 +97,27 @@ void bind_mesh(py::module_& mod) {
   cls.def_property_readonly("num_faces", [](const PyMesh& p) { return p.mesh.num_faces(); });
   cls.def_property_readonly("num_cells", [](const PyMesh& p) { return p.mesh.num_cells(); });
 
-  cls.def_property_readonly("points", &points32,
-                            "float32 (nv, 3): vertex positions (a cached float32 copy).");
+  cls.def_property_readonly("points", &points32, array_doc(exported(cls, "points")).c_str());
   cls.def_property_readonly(
       "points64",
       [](py::object self) {
         const Mesh& m = self.cast<const PyMesh&>().mesh;
         return view(m.points.data(), {ssize(m.num_vertices()), 3}, self);
       },
-      "float64 (nv, 3): vertex positions as stored (no copy).");
-  pair_view(cls, "edges", [](const Mesh& m) -> auto& { return m.edge_verts; },
-            "int32 (ne, 2): edge end vertices, lower id first.");
+      array_doc(exported(cls, "points64")).c_str());
+  pair_view(cls, "edges", [](const Mesh& m) -> auto& { return m.edge_verts; });
 
-  def_csr(cls, "face_vertices", [](const PyMesh& p) -> auto& { return p.mesh.face_verts; }, "nf",
-          "the vertex loop of each face.");
+  def_csr(cls, "face_vertices", [](const PyMesh& p) -> auto& { return p.mesh.face_verts; });
   // Stored as items aligned with face_vertices_items; the offsets are those of face_vertices.
-  def_csr(cls, "face_edges", [](const PyMesh& p) { return RowsOf{p.mesh.face_verts.offsets, p.mesh.face_edge_ids}; }, "nf",
-          "aligned with face_vertices_items: entry i of a face is the edge joining its loop vertices i and i+1.");
-  pair_view(cls, "face_cells", [](const Mesh& m) -> auto& { return m.face_cells; },
-            "int32 (nf, 2): the cells on both sides of each face; column 1 is -1 on the boundary.");
-  def_csr(cls, "cell_faces", [](const PyMesh& p) -> auto& { return p.mesh.cell_faces; }, "nc",
-          "the face ids of each cell.");
-  const py::dtype u8 = py::dtype::of<uint8_t>(), boolean = py::dtype::of<bool>();
-  byte_view(cls, "cell_face_flip", [](const Mesh& m) -> auto& { return m.cell_face_flip; }, u8,
-            "uint8 (cell_faces_offsets[-1],): aligned with cell_faces_items; 1 when the cell sees the face "
-            "loop reversed.");
-  byte_view(cls, "cell_types", [](const Mesh& m) -> auto& { return m.cell_type; }, u8,
-            "uint8 (nc,): 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron.");
-  byte_view(cls, "face_boundary", [](const Mesh& m) -> auto& { return m.face_boundary; }, boolean,
-            "bool (nf,): face has a cell on one side only.");
-  byte_view(cls, "edge_boundary", [](const Mesh& m) -> auto& { return m.edge_boundary; }, boolean,
-            "bool (ne,): edge lies on a boundary face.");
-  byte_view(cls, "vertex_boundary", [](const Mesh& m) -> auto& { return m.vert_boundary; }, boolean,
-            "bool (nv,): vertex lies on a boundary face.");
-  byte_view(cls, "vertex_non_manifold", [](const Mesh& m) -> auto& { return m.vert_non_manifold; }, boolean,
-            "bool (nv,): non-manifold vertex: its cells are not face-connected around it, or one of them "
-            "meets it in fewer than 3 faces (docs/concepts.md).");
+  def_csr(cls, "face_edges", [](const PyMesh& p) { return RowsOf{p.mesh.face_verts.offsets, p.mesh.face_edge_ids}; });
+  pair_view(cls, "face_cells", [](const Mesh& m) -> auto& { return m.face_cells; });
+  def_csr(cls, "cell_faces", [](const PyMesh& p) -> auto& { return p.mesh.cell_faces; });
+  byte_view(cls, "cell_face_flip", [](const Mesh& m) -> auto& { return m.cell_face_flip; });
+  byte_view(cls, "cell_types", [](const Mesh& m) -> auto& { return m.cell_type; });
+  byte_view(cls, "face_boundary", [](const Mesh& m) -> auto& { return m.face_boundary; });
+  byte_view(cls, "edge_boundary", [](const Mesh& m) -> auto& { return m.edge_boundary; });
+  byte_view(cls, "vertex_boundary", [](const Mesh& m) -> auto& { return m.vert_boundary; });
+  byte_view(cls, "vertex_non_manifold", [](const Mesh& m) -> auto& { return m.vert_non_manifold; });
 
   cls.def_property_readonly(
       "edge_valence",
@@ -140,7 +128,7 @@ void bind_mesh(py::module_& mod) {
         for (size_t e = 0; e < m.num_edges(); ++e) out[e] = m.edge_valence(e);
         return a;
       },
-      "int32 (ne,): number of cells around each edge (a new array each call).");
+      array_doc(exported(cls, "edge_valence")).c_str());
 
   cls.def("info", [](const PyMesh& p) { return info(p.mesh); },
           "The summary `hbc info --json` prints, as a dict (without 'file').");

@@ -18,4 +18,5 @@ PYBIND11_MODULE(_core, m) {
   hp::bind_schema(m);
   hp::bind_metrics(m);  // adds Analysis.metrics, so after bind_analysis
   hp::bind_comparison(m);
+  hp::bind_exports(m);
 }

@@ -94,7 +94,7 @@ class Mesh:
         """(cell_faces_offsets[-1],) the face ids of each cell."""
     @property
     def cell_face_flip(self) -> U8:
-        """(cell_faces_offsets[-1],) aligned with cell_faces_items: 1 when the cell sees the face loop reversed."""
+        """(ncf,) aligned with cell_faces_items: 1 when the cell sees the face loop reversed."""
     @property
     def cell_types(self) -> U8:
         """(nc,) 0 hex, 1 tet, 2 prism, 3 pyramid, 4 polyhedron."""
@@ -116,6 +116,7 @@ class Mesh:
     def info(self) -> MeshInfo: ...
     def analyze(
         self,
+        *,
         rho: float = 0.8,
         level: Level = "complex",
         sheets: bool = True,
@@ -125,7 +126,8 @@ class Mesh:
         subsheet_rule: Literal["layers", "fewest"] = "layers",
         search_steps: int = 100000,
     ) -> Analysis:
-        """The structure analysis (GIL released); rho in [0, 1]: the colour-class threshold of
+        """The structure analysis (GIL released), its options read by the library (ANALYZE_OPTIONS,
+        the CLI's and JavaScript's reader too: an unknown one is a TypeError); rho in [0, 1]: the colour-class threshold of
         the wireframes that wireframe() styles without one (presentation only: the analysis does
         not depend on it); threads for the stages (None:
         HBC_THREADS, else every core; results do not depend on it); subsheet_rule: 'layers' (the
@@ -250,6 +252,14 @@ class FormatInfo(TypedDict):
 
 FORMATS: tuple[FormatInfo, ...]
 
+# The binding surface described once (hbc/exports.hpp), which this stub, the objects and the
+# JavaScript binding are checked against: every exported array {holder, name, dtype, csr, rows,
+# width, python, js, deprecated, meaning}; what each rows symbol counts; analyze()'s options
+# {key, type, default, choices, min, max, meaning}.
+EXPORTED_ARRAYS: tuple[dict[str, Any], ...]
+DIMENSIONS: dict[str, str]
+ANALYZE_OPTIONS: tuple[dict[str, Any], ...]
+
 class AnalysisStats(TypedDict, total=False):
     """`hbc analyze FILE --json` without "file"; keys of stages not run are absent."""
 
@@ -295,11 +305,11 @@ class BlockSoup(TypedDict):
 
     positions: npt.NDArray[np.float32]  # (np, 3)
     point_vertex: I32  # (np,) mesh vertex of each point
-    face_vertices_offsets: I32  # (nf + 1,)
+    face_vertices_offsets: I32  # (nsf + 1,) nsf: the soup's faces
     face_vertices_items: I32  # (face_vertices_offsets[-1],) point ids, loops outward
-    face_owner: I32  # (nf,) grouped by increasing owner
-    face_source: I32  # (nf,) mesh face ids
-    face_cell: I32  # (nf,) mesh cell on the owner's side (the face points out of it)
+    face_owner: I32  # (nsf,) grouped by increasing owner
+    face_source: I32  # (nsf,) mesh face ids
+    face_cell: I32  # (nsf,) mesh cell on the owner's side (the face points out of it)
 
 class SingularityGraph:
     """The hybrid singularity graph (paper §3.2) of an Analysis, as views; ne edges, ns
@@ -502,7 +512,7 @@ class Wireframe:
         """(polylines_offsets[-1],) mesh vertices along each polyline."""
     @property
     def point_opacity(self) -> npt.NDArray[np.float32]:
-        """(polylines_offsets[-1],) aligned with polylines_items."""
+        """(npp,) aligned with polylines_items (npp = polylines_offsets[-1])."""
     @property
     def kind(self) -> U8:
         """(count,) 0 chain of VSG (irregular) edges only, 1 other chain."""
@@ -523,7 +533,7 @@ class Wireframe:
         """(count,)"""
     @property
     def simplified_polylines_offsets(self) -> I32:
-        """(counts['wireframe_edges_simplified'] + 1,)"""
+        """(nsimp + 1,) nsimp = counts['wireframe_edges_simplified']."""
     @property
     def simplified_polylines_items(self) -> I32:
         """(simplified_polylines_offsets[-1],) mesh vertices along each simplified polyline."""
@@ -542,7 +552,7 @@ class Wireframe:
         CELL_TYPES, code & 0xffff is the face count (docs/concepts.md)."""
     @property
     def simplified_non_hex_offsets(self) -> I32:
-        """(counts['wireframe_edges_simplified'] + 1,)"""
+        """(nsimp + 1,)"""
     @property
     def simplified_non_hex_items(self) -> I32:
         """(simplified_non_hex_offsets[-1],) non-hex kinds of each simplified polyline, as non_hex."""
