@@ -138,6 +138,21 @@ def main_thread_share():
 
 
 @pytest.fixture(scope="session")
+def held_gil_share(main_thread_share):
+    """The main thread's share beside work that holds the GIL throughout (one `sorted()` of a million
+    floats, about 0.5 s in C): the scale of a held GIL on this machine now. A test of a released GIL
+    passes when its share is above 0.15 (an idle or lightly loaded machine: 0.35 or more) or three
+    times this one: on a machine loaded 10-25 times over by other jobs a released GIL still gave
+    0.06-0.14 against 0.013-0.018 held (measured), where a fixed threshold alone failed."""
+    import random
+
+    rng = random.Random(1)
+    numbers = [rng.random() for _ in range(1_000_000)]
+    held, _ = main_thread_share(lambda: sorted(numbers))
+    return held
+
+
+@pytest.fixture(scope="session")
 def same_but_timings():
     """compare(a, b): two files of hbc compare (metrics.json, .csv, .tex) equal byte for byte but for
     the per-mesh timings ("load", "analysis", "metrics" under "timings"), whose numbers are masked:

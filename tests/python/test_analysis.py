@@ -396,11 +396,11 @@ def test_no_leak_over_100_analyze_cycles(shared_data_dir, resident_growth):
     assert growth < 4e6, f"resident memory grew by {growth / 1e6:.1f} MB over 100 cycles"
 
 
-def test_analyze_releases_the_gil(shared_data_dir, main_thread_share):
+def test_analyze_releases_the_gil(shared_data_dir, main_thread_share, held_gil_share):
     m = hbc.load(shared_data_dir / "hexalab-edge-cone-rectification" / "armadillo_out.mesh")
     share, elapsed = main_thread_share(m.analyze)
     assert elapsed > 0.1, "the analyses were too quick to tell"
-    assert share > 0.15, (share, elapsed)
+    assert share > 0.15 or share > 3 * held_gil_share, (share, held_gil_share, elapsed)
 
 
 def analysis_arrays(a):

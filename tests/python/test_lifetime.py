@@ -42,7 +42,7 @@ def test_no_leak_over_100_load_cycles(shared_data_dir, tmp_path, resident_growth
     assert growth < bound, f"resident memory grew by {growth / 1e6:.1f} MB over 100 cycles"
 
 
-def test_load_releases_the_gil(tmp_path, hbc_cli, main_thread_share):
+def test_load_releases_the_gil(tmp_path, hbc_cli, main_thread_share, held_gil_share):
     # The shared meshes load in 20-30 ms, too quick for the main thread's CPU share to mean much next
     # to starting and joining the thread: a generated 60^3 grid (216,000 hexes, 14 MB) takes about
     # 0.1 s a load.
@@ -51,4 +51,4 @@ def test_load_releases_the_gil(tmp_path, hbc_cli, main_thread_share):
                    check=True, capture_output=True)
     share, elapsed = main_thread_share(lambda: hbc.load(path))
     assert elapsed > 0.1, "the loads were too quick to tell"
-    assert share > 0.15, (share, elapsed)
+    assert share > 0.15 or share > 3 * held_gil_share, (share, held_gil_share, elapsed)

@@ -133,7 +133,7 @@ def test_cli_json_per_type_on_a_split_grid(hbc_cli, tmp_path):
     assert doc["inverted"] == 0
 
 
-def test_quality_releases_the_gil(hbc_cli, tmp_path, main_thread_share):
+def test_quality_releases_the_gil(hbc_cli, tmp_path, main_thread_share, held_gil_share):
     m = hbc.load(generate(hbc_cli, tmp_path, "grid", "--size", "60", "60", "60"))
 
     def work():
@@ -142,4 +142,4 @@ def test_quality_releases_the_gil(hbc_cli, tmp_path, main_thread_share):
 
     share, elapsed = main_thread_share(work)
     assert elapsed > 0.1, "the calls were too quick to tell"
-    assert share > 0.15, (share, elapsed)
+    assert share > 0.15 or share > 3 * held_gil_share, (share, held_gil_share, elapsed)
