@@ -140,16 +140,13 @@ class Structure:
 
     # -- legend -------------------------------------------------------------------------------
     def legend_facts(self) -> dict:
-        """planning.legend's facts about this mesh: its non-hex cell types and, analysed, the
-        singularity valences, whether pseudo-singular and non-manifold edges and non-hex components
-        occur."""
-        types = np.asarray(self.mesh.cell_types)
-        facts = {"non_hex_types": sorted(int(t) for t in np.unique(types) if t != 0)}
-        if self.analysis is not None:
-            cls = np.asarray(self.analysis.graph.edge_class)
-            facts.update(valences=[int(v) for v in np.unique(self.analysis.graph.chain_valence)],
-                         has_pseudo=bool(np.any(cls == 2)), has_non_manifold=bool(np.any(cls == 3)),
-                         has_non_hex_blocks=bool(np.any(self.component_kinds() == 3)))
+        """planning.legend's facts about this mesh (hbc.legend_facts): its non-hex cell types and,
+        analysed, the singularity valences, whether pseudo-singular and non-manifold edges and
+        non-hex components occur. Keyed as planning.legend's arguments (and the facts a saved file
+        keeps, blender/layers.py)."""
+        facts = dict(import_hbc().legend_facts(self.mesh, self.analysis))
+        if "has_non_hex_components" in facts:
+            facts["has_non_hex_blocks"] = facts.pop("has_non_hex_components")
         return facts
 
     # -- base complex -----------------------------------------------------------------------
