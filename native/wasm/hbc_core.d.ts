@@ -123,6 +123,12 @@ export interface HbcModule {
   generate_cylinder(radius_cells: number, layers: number): GeneratedMesh;
   FORMATS(): string;                          // JSON [{name, alias, extension, title, writable}]
   TABLE1_COLUMNS_json(): string;              // JSON [{key, label, notation, meaning, kind, timing}] (kind: count|ratio|seconds) in Table 1's order
+  // The layer plan (hbc/layer_plan.hpp, native/wasm/layer_plan_json.cpp): JSON of the layers
+  // [[key, title]], every colour by its role (linear RGBA), the legend's colours by key and its
+  // entries [[key, words]] per fact (direct, cell_type[t], valence[v], pseudo, non_manifold, blocks,
+  // highlights, wire_kind_type[t], wire_kind_rest, palette[layer]), sheet_type_short,
+  // subsheets_unavailable[t], wire_floor, spread_gap: web/src/colors.js' L.
+  layer_plan_json(): string;
   FS: any;                                    // emscripten's in-memory file system (for load_path)
   version(): string;
 }

@@ -121,7 +121,7 @@ async function open({ name, files, skipInvalid, again }, t0) {
   const warnings = (arr(mesh, 'warnings') ?? []).map((w) => `${name}: ${w}`);
   // What the user waited for: from the file's bytes reaching the worker to the counts.
   const seconds = (performance.now() - t0) / 1000;
-  post({ type: 'ready', name, results, timings, info, warnings, table1: L.table1 ?? c.table1(), seconds });
+  post({ type: 'ready', name, results, timings, info, warnings, table1: c.table1(), seconds });
 }
 
 /** What the page shows beside the layers: counts, the box, the sheets, the legend's facts. */
