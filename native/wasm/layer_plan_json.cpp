@@ -1,9 +1,10 @@
-// The layer plans (hbc/layer_plan.hpp) for the web viewer, as one JSON text: layer_plan_json().
-// scripts/build_web.sh asks the core for it (web/build.mjs, under node) and inlines it in the page
-// as web/src/colors.js' `L`, so the page draws with the colours and words the add-on draws with and
-// the web build runs no Python. The legend is given per fact (one valence, one cell type ...),
-// each in the order legend() lists it, so that the page composes a mesh's legend from its facts.
+// The layer plans (hbc/layer_plan.hpp) for the web viewer. layer_plan_json(): the layers, colours
+// and words as one JSON text, which scripts/build_web.sh asks the core for (web/build.mjs, under
+// node) and inlines in the page as web/src/colors.js' `L`, so the page draws with the colours and
+// words the add-on draws with and the web build runs no Python. legends_json(): a mesh's legend
+// for every set of shown layers, which the worker asks for once the mesh is analysed.
 #include <emscripten/bind.h>
+#include <emscripten/val.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -37,37 +38,8 @@ Json entries(const std::vector<LegendEntry>& es) {
   return j;
 }
 
-// The highest valence the page names: far beyond any real mesh.
+// The highest valence the page has a colour for: far beyond any real mesh.
 constexpr int kMaxValence = 16;
-
-Json legend_per_fact() {
-  const std::optional<std::vector<std::string>> all;
-  auto one = [&](std::vector<std::string> layers, const LegendFacts& f) {
-    return legend(layers, f, all, false);
-  };
-  Json g;
-  g["direct"] = entries(one({"direct"}, {}));
-  Json types, valences, kinds;
-  for (int t = 1; t < 5; ++t) {
-    auto es = one({"direct"}, {{t}, {}, false, false, true});
-    es.erase(es.begin());  // the hex boundary's entry, given by "direct"
-    types[std::to_string(t)] = entries(es);
-    kinds[std::to_string(t)] = entries({wire_kind_legend({t}).front()});
-  }
-  for (int v = 0; v <= kMaxValence; ++v) valences[std::to_string(v)] = entries(one({"graph"}, {{}, {v}, false, false, true}));
-  g["cell_type"] = types;
-  g["valence"] = valences;
-  g["pseudo"] = entries(one({"graph"}, {{}, {}, true, false, true}));
-  g["non_manifold"] = entries(one({"graph"}, {{}, {}, false, true, true}));
-  g["blocks"] = entries(one({"blocks"}, {}));
-  g["highlights"] = entries(one({"sheet"}, {}));
-  g["wire_kind_type"] = kinds;
-  g["wire_kind_rest"] = entries(wire_kind_legend({}));
-  Json palette;
-  for (const auto& l : layer_titles()) palette[l.key] = entries(palette_legend({l.key}, false));
-  g["palette"] = palette;
-  return g;
-}
 
 Json colors_json(const LayerPalette& p) {
   Json j;
@@ -116,11 +88,54 @@ std::string layer_plan_json() {
   j["sheet_type_short"] = sheet_type_short();
   j["wire_floor"] = kWireOpacityFloor;
   j["spread_gap"] = kSpreadGap;
-  j["legend"] = legend_per_fact();
   j["subsheets_unavailable"] = unavailable;
   return json_text(j);
 }
 
+template <class T>
+std::vector<T> as(const emscripten::val& a) {
+  const auto bytes = emscripten::convertJSArrayToNumberVector<uint8_t>(a);
+  std::vector<T> out(bytes.size());
+  for (size_t i = 0; i < bytes.size(); ++i) out[i] = static_cast<T>(bytes[i]);
+  return out;
+}
+
+// A mesh's facts and its legend for every set of shown layers, so that the page shows what the
+// library's legend() lists without composing it: "legends" keyed by the shown layers' keys in
+// building order joined by "," then "|1" (wireframes coloured by non-hex kind) or "|0", each
+// legend() then palette_legend(). The arrays: Mesh.cell_types, the graph's edge_class and
+// chain_valence, the complex's component_kind, as the worker holds them.
+std::string legends_json(const emscripten::val& cell_type, const emscripten::val& edge_class,
+                         const emscripten::val& chain_valence, const emscripten::val& component_kind) {
+  const auto types = as<CellType>(cell_type);
+  const auto classes = as<EdgeClass>(edge_class);
+  const auto valences = emscripten::convertJSArrayToNumberVector<int32_t>(chain_valence);
+  const auto kinds = as<ComponentKind>(component_kind);
+  const LegendFacts f = legend_facts(types, classes, valences, kinds);
+  const auto layers = layer_titles();
+  Json legends;
+  for (unsigned set = 1; set < (1u << layers.size()); ++set) {
+    std::vector<std::string> shown;
+    for (size_t i = 0; i < layers.size(); ++i)
+      if (set >> i & 1) shown.push_back(layers[i].key);
+    std::string key;
+    for (const auto& l : shown) key += (key.empty() ? "" : ",") + l;
+    for (bool by_kind : {false, true}) {
+      auto es = legend(shown, f, std::nullopt, by_kind);
+      for (auto& e : palette_legend(shown, by_kind)) es.push_back(std::move(e));
+      legends[key + (by_kind ? "|1" : "|0")] = entries(es);
+    }
+  }
+  Json j;
+  j["facts"] = {{"non_hex_types", f.non_hex_types}, {"valences", f.valences}, {"has_pseudo", f.has_pseudo},
+                {"has_non_manifold", f.has_non_manifold}, {"has_non_hex_blocks", f.has_non_hex_components}};
+  j["legends"] = legends;
+  return j.dump();
+}
+
 }  // namespace
 
-EMSCRIPTEN_BINDINGS(hbc_layer_plan) { emscripten::function("layer_plan_json", &layer_plan_json); }
+EMSCRIPTEN_BINDINGS(hbc_layer_plan) {
+  emscripten::function("layer_plan_json", &layer_plan_json);
+  emscripten::function("legends_json", &legends_json);
+}

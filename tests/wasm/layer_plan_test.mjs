@@ -3,7 +3,9 @@
 // data/layer_plan_main.json, what the page was given before the move (main at 3ed11c3:
 // scripts/export_legend.py, which evaluated the add-on's Python planning, run with the compiled
 // module; its "source" and "table1" left out: the page asks the core's schema for Table 1). Every
-// key, colour and word the same, and nothing more.
+// key, colour and word the same, and nothing more. The legend, which the page composed from that
+// file's entries per fact, now comes per mesh from the core (legends_json): for arrays with known
+// facts, each set of layers gives the entries the page composed from the old file.
 //   node tests/wasm/layer_plan_test.mjs HBC_CORE_JS
 // prints "N passed, N failed".
 import { readFileSync } from 'node:fs';
@@ -19,6 +21,8 @@ const plan = JSON.parse(M.layer_plan_json());
 const ref = JSON.parse(readFileSync(join(here, 'data', 'layer_plan_main.json'), 'utf8'));
 delete ref.source;
 delete ref.table1;
+const G = ref.legend;  // the old entries per fact
+delete ref.legend;
 
 let passed = 0, failed = 0;
 function check(what, ok, detail = '') {
@@ -29,9 +33,30 @@ check('the same keys', isDeepStrictEqual(Object.keys(plan).sort(), Object.keys(r
 for (const key of Object.keys(ref)) {
   check(key, isDeepStrictEqual(plan[key], ref[key]), `\n  core: ${JSON.stringify(plan[key])}\n  main: ${JSON.stringify(ref[key])}`);
 }
-// The legend per fact in the order the legend lists it: valence 4 (no colour of its own) the
-// "other" swatch, each cell type its own.
-check('valence 4 is other', plan.legend.valence['4'][0][0] === 'valence_other');
-check('tet cells', isDeepStrictEqual(plan.legend.cell_type['1'], [['tet', 'Tet cells']]));
+// A mesh of hexes, tets and pyramids (cell types 0, 1, 3); a pseudo-singular and a non-manifold
+// edge (classes 2, 3); singularities of valence 5, 3, 4 and 3; a non-hex component (kind 3).
+const { facts, legends } = JSON.parse(M.legends_json(Uint8Array.from([0, 1, 3, 0]), Uint8Array.from([0, 2, 3, 1]),
+                                                     Int32Array.from([5, 3, 4, 3]), Uint8Array.from([0, 3])));
+check('facts', isDeepStrictEqual(facts, { non_hex_types: [1, 3], valences: [3, 4, 5], has_pseudo: true,
+                                          has_non_manifold: true, has_non_hex_blocks: true }), JSON.stringify(facts));
+check('every set of the 7 layers, by class and by kind', Object.keys(legends).length === 2 * 127);
+const expected = {
+  // The page's composition of the old file (web/src/main.js before the move): legend by fact, then
+  // each shown layer's palette entries once, the wireframe's only when coloured by class.
+  'direct|0': [...G.direct, ...G.cell_type['1'], ...G.cell_type['3']],
+  'graph|0': [...G.valence['3'], ...G.valence['4'], ...G.valence['5'], ...G.pseudo, ...G.non_manifold],
+  'blocks|0': [...G.blocks, ...G.palette.blocks],
+  'sheets|0': [...G.palette.sheets],
+  'sheet,subsheets|0': [...G.highlights, ...G.palette.sheet, ...G.palette.subsheets],
+  'wireframe|0': [...G.palette.wireframe],
+  'wireframe|1': [...G.wire_kind_type['1'], ...G.wire_kind_type['3'], ...G.wire_kind_rest],
+  'direct,subsheets,wireframe|1': [...G.direct, ...G.cell_type['1'], ...G.cell_type['3'], ...G.highlights,
+                                   ...G.wire_kind_type['1'], ...G.wire_kind_type['3'], ...G.wire_kind_rest,
+                                   ...G.palette.subsheets],
+};
+for (const [key, entries] of Object.entries(expected)) {
+  check(`legend ${key}`, isDeepStrictEqual(legends[key], entries),
+        `\n  core: ${JSON.stringify(legends[key])}\n  main: ${JSON.stringify(entries)}`);
+}
 console.log(`${passed} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);

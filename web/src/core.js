@@ -187,6 +187,12 @@ export class Core {
     return a.wireframe();
   }
 
+  /** The library's legend of this mesh for every set of shown layers, and its facts
+   *  (layer_plan_json.cpp's legends_json): { facts, legends: { "direct,graph|0": [[key, words]] } }. */
+  legends(cellTypes, edgeClass, chainValence, componentKind) {
+    return JSON.parse(this.M.legends_json(cellTypes, edgeClass, chainValence, componentKind));
+  }
+
   hasCut() {
     return typeof this.M.kept_surface_soup === 'function' && typeof this.M.cell_centroids === 'function';
   }

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -71,6 +72,10 @@ struct LegendFacts {
 };
 // `analysis` null: the mesh's facts alone.
 LegendFacts legend_facts(const Mesh& mesh, const Analysis* analysis);
+// The same from the arrays themselves (Mesh::cell_type, SingularityGraph::edge_class and
+// chain_valence, BaseComplex::component_kind), for a front end holding copies of them.
+LegendFacts legend_facts(std::span<const CellType> cell_type, std::span<const EdgeClass> edge_class,
+                         std::span<const int32_t> chain_valence, std::span<const ComponentKind> component_kind);
 
 struct LegendEntry {
   std::string key;    // a key of legend_colors

@@ -142,22 +142,41 @@ std::vector<std::pair<std::string, Rgba>> legend_colors(const LayerPalette& p) {
   return out;
 }
 
-LegendFacts legend_facts(const Mesh& mesh, const Analysis* analysis) {
-  LegendFacts f;
-  std::array<bool, 5> type_seen{};
-  for (CellType t : mesh.cell_type) type_seen[static_cast<size_t>(t)] = true;
+namespace {
+
+std::vector<int> non_hex_types(std::span<const CellType> cell_type) {
+  std::array<bool, 5> seen{};
+  for (CellType t : cell_type) seen[static_cast<size_t>(t)] = true;
+  std::vector<int> out;
   for (int t = 1; t < 5; ++t)
-    if (type_seen[t]) f.non_hex_types.push_back(t);
-  if (!analysis) return f;
-  f.valences.assign(analysis->graph.chain_valence.begin(), analysis->graph.chain_valence.end());
+    if (seen[t]) out.push_back(t);
+  return out;
+}
+
+}  // namespace
+
+LegendFacts legend_facts(std::span<const CellType> cell_type, std::span<const EdgeClass> edge_class,
+                         std::span<const int32_t> chain_valence, std::span<const ComponentKind> component_kind) {
+  LegendFacts f;
+  f.non_hex_types = non_hex_types(cell_type);
+  f.valences.assign(chain_valence.begin(), chain_valence.end());
   std::sort(f.valences.begin(), f.valences.end());
   f.valences.erase(std::unique(f.valences.begin(), f.valences.end()), f.valences.end());
-  const auto& cls = analysis->graph.edge_class;
-  f.has_pseudo = std::find(cls.begin(), cls.end(), EdgeClass::PseudoSingular) != cls.end();
-  f.has_non_manifold = std::find(cls.begin(), cls.end(), EdgeClass::NonManifold) != cls.end();
-  const auto& kinds = analysis->complex.component_kind;
-  f.has_non_hex_components = std::find(kinds.begin(), kinds.end(), ComponentKind::NonHex) != kinds.end();
+  f.has_pseudo = std::find(edge_class.begin(), edge_class.end(), EdgeClass::PseudoSingular) != edge_class.end();
+  f.has_non_manifold = std::find(edge_class.begin(), edge_class.end(), EdgeClass::NonManifold) != edge_class.end();
+  f.has_non_hex_components =
+      std::find(component_kind.begin(), component_kind.end(), ComponentKind::NonHex) != component_kind.end();
   return f;
+}
+
+LegendFacts legend_facts(const Mesh& mesh, const Analysis* analysis) {
+  if (!analysis) {
+    LegendFacts f;
+    f.non_hex_types = non_hex_types(mesh.cell_type);
+    return f;
+  }
+  return legend_facts(mesh.cell_type, analysis->graph.edge_class, analysis->graph.chain_valence,
+                      analysis->complex.component_kind);
 }
 
 std::vector<LegendEntry> sheet_highlights() {
