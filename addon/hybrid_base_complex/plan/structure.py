@@ -254,9 +254,11 @@ class Structure:
         return P.csr_row(off, items, index)
 
     # -- VSG wireframe ------------------------------------------------------------------------
-    def wireframe(self, sheet=None, subsheet=None, floor=0.15, simplified=True, by_kind=False, rho=None) -> P.Lines:
+    def wireframe(self, sheet=None, subsheet=None, floor=None, simplified=True, by_kind=False, rho=None) -> P.Lines:
         """VSG wireframe polylines coloured by palette class at `rho` (None: self.rho; by_kind: by
-        non-hex kind, planning.chain_kind_colors), alpha = opacity (floor mapped)."""
+        non-hex kind, planning.chain_kind_colors), alpha = opacity (floor mapped; None: the layer
+        plan's WIRE_OPACITY_FLOOR, the web page's too)."""
+        floor = P.WIRE_OPACITY_FLOOR if floor is None else floor
         a = self.analysis
         kwargs = {"rho": float(self.rho if rho is None else rho)}
         if sheet is not None and sheet >= 0:
