@@ -32,7 +32,7 @@ std::vector<LayerTitle> layer_titles();
 
 // Every colour by its role.
 struct LayerPalette {
-  // Colours a owner each (component, sheet, subsheet, wireframe class): well-separated hues.
+  // One colour per owner (component, sheet, subsheet, wireframe class): well-separated hues.
   std::vector<Rgba> cycle;               // kPaletteSize
   Rgba non_hex{};                        // non-hex components; a negative palette index
   double ring_darken = 0;                // ring-like hex components: their colour times this

@@ -682,7 +682,7 @@ Rgba = tuple[float, float, float, float]
 F32 = npt.NDArray[np.float32]
 LegendEntry = tuple[str, str]
 LAYERS: tuple[tuple[str, str], ...]  # (key, title) in building order
-PALETTE_SIZE: int  # 24: the colours a owner each
+PALETTE_SIZE: int  # 24: one colour per owner
 LEGEND_MAX_WORDS: int  # the longest legend words (beside a swatch in the sidebar)
 WIRE_OPACITY_FLOOR: float  # the wireframe's faintest opacity by default
 SPREAD_GAP: float  # the gap between copies laid side by side, a fraction of the model's width
