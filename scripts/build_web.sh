@@ -2,16 +2,15 @@
 # Builds the browser viewer (web/) into one self-contained HTML file:
 #   bash scripts/build_web.sh [OUT]        (default OUT: build/web)
 # OUT/viewer.html (= OUT/index.html) holds the page's JS (three.js), the worker with the
-# WebAssembly core, the add-on's colours and words (scripts/export_legend.py) and the CSS; it
-# fetches nothing. `hbc export-html` fills the same file with a mesh (docs/web.md).
+# WebAssembly core, the layer plan's colours and words (asked of that core: hbc/layer_plan.hpp, the
+# add-on's source too; no Python runs) and the CSS; it fetches nothing. `hbc export-html` fills the same file with a mesh (docs/web.md).
 # Runs scripts/build_wasm.sh first when build-wasm/ is missing or older than native/ or the
 # script; `npm ci` only when web/node_modules does not match the lockfile (so an offline machine
-# that has node_modules builds). HBC_PYTHON: the Python with numpy for the legend. HBC_WASM_DIR:
+# that has node_modules builds). HBC_WASM_DIR:
 # a folder holding hbc_core.js (+ .wasm) built elsewhere, taken as it is (no rebuild).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 OUT=$(realpath -m "${1:-$ROOT/build/web}")
-PY=${HBC_PYTHON:-/usr/bin/python3}
 
 if [[ -n ${HBC_WASM_DIR:-} ]]; then
   WASM_DIR=$(realpath "$HBC_WASM_DIR")
@@ -30,11 +29,4 @@ if [[ ! -f node_modules/.package-lock.json ]] || [[ package-lock.json -nt node_m
   npm ci --no-audit --no-fund --prefer-offline
 fi
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-# Table 1's columns come from the compiled hbc module when this Python finds one (the Release
-# build's, build/python, if nothing else); without it the page asks the WebAssembly core.
-pypath=${PYTHONPATH:-}
-[[ -d $ROOT/build/python/hbc ]] && pypath=${pypath:+$pypath:}$ROOT/build/python
-PYTHONPATH=$pypath "$PY" "$ROOT/scripts/export_legend.py" "$tmp/legend.json"
-node build.mjs --out "$OUT" --legend "$tmp/legend.json" --wasm "$WASM_DIR"
+node build.mjs --out "$OUT" --wasm "$WASM_DIR"

@@ -1,16 +1,17 @@
 // Bundles the viewer into one self-contained HTML file: the page's JS (three.js included), the
 // worker (the WebAssembly core's JS and, unless it is already inside, its wasm as base64), the
-// colours and words of the add-on's planning module, and the CSS, all inline.
-// usage: node build.mjs --out DIR --legend legend.json [--wasm DIR with hbc_core.js (+ .wasm)]
+// layer plan (colours, legend words, layers: hbc/layer_plan.hpp, asked of that same core under
+// node), and the CSS, all inline.
+// usage: node build.mjs --out DIR --wasm DIR (with hbc_core.js + hbc_core.wasm)
 import * as esbuild from 'esbuild';
 import fs from 'node:fs';
+import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => (a.startsWith('--') ? [...acc, [a.slice(2), all[i + 1]]] : acc), []));
 const out = path.resolve(args.out ?? path.join(here, '..', 'build', 'web'));
-const legend = fs.readFileSync(args.legend, 'utf8');
 const wasmDir = args.wasm ? path.resolve(args.wasm) : null;
 
 function read(file) {
@@ -19,7 +20,15 @@ function read(file) {
 
 const coreJs = wasmDir ? read(path.join(wasmDir, 'hbc_core.js')) : null;
 const coreWasm = wasmDir ? read(path.join(wasmDir, 'hbc_core.wasm')) : null;
-if (!coreJs) console.warn(`build.mjs: no hbc_core.js in ${wasmDir}: the page will say the core is missing`);
+if (!coreJs) throw new Error(`build.mjs: no hbc_core.js in ${wasmDir}: the page's colours and words come from the core`);
+
+/** The core's layer plan (web/src/colors.js' L): the colours and words the add-on draws with. */
+async function layerPlan() {
+  const createHbcModule = createRequire(import.meta.url)(path.join(wasmDir, 'hbc_core.js'));
+  const M = await createHbcModule();
+  return JSON.stringify(JSON.parse(M.layer_plan_json()));
+}
+const legend = await layerPlan();
 
 async function bundle(entry, define) {
   const r = await esbuild.build({
@@ -30,7 +39,7 @@ async function bundle(entry, define) {
     target: ['es2020'],
     write: false,
     legalComments: 'none',
-    define: { __HBC_LEGEND__: legend.trim(), ...define },
+    define: { __HBC_LEGEND__: legend, ...define },
     logLevel: 'warning',
   });
   return r.outputFiles[0].text;

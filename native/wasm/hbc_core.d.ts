@@ -174,6 +174,15 @@ export interface HbcModule {
   FORMATS(): string;                          // JSON [{name, alias, extension, title, writable}]
   TABLE1_COLUMNS_json(): string;              // JSON [{key, label, notation, meaning, kind, timing}] (kind: count|ratio|seconds) in Table 1's order
   EXPORTS_json(): string;                     // JSON {arrays: [{holder, name, dtype, csr, rows, width, python, js, deprecated, meaning}], dimensions: {symbol: meaning}, options: [{key, type, default, choices, min, max, meaning}]}: this file's arrays and options, described once (hbc/exports.hpp)
+  // The layer plan (hbc/layer_plan.hpp, native/wasm/layer_plan_json.cpp): JSON of the layers
+  // [[key, title]], every colour by its role (linear RGBA), the legend's colours by key,
+  // sheet_type_short, subsheets_unavailable[t], wire_floor, spread_gap: web/src/colors.js' L.
+  layer_plan_json(): string;
+  // A mesh's legend: JSON {facts: {non_hex_types, valences, has_pseudo, has_non_manifold,
+  // has_non_hex_blocks}, legends: {"<shown layer keys in order, comma-joined>|<1: wireframes by
+  // non-hex kind, else 0>": [[colour key, words]]}} for every non-empty set of layers.
+  legends_json(cell_types: Uint8Array, edge_class: Uint8Array, chain_valence: Int32Array,
+               component_kind: Uint8Array): string;
   FS: any;                                    // emscripten's in-memory file system (for load_path)
   version(): string;
 }

@@ -54,7 +54,8 @@ def test_stub_matches_module():
     # Helper types that exist only for typing (TypedDicts, aliases) are not in the module.
     typing_only = {"Format", "CellTypeCounts", "MeshInfo", "Level", "SoupWhat", "I32", "U8", "Bool",
                    "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup", "CellQuality", "FormatInfo",
-                   "CheckReport", "DefectClass", "DefectItem", "Dropped", "DroppedCell"}
+                   "CheckReport", "DefectClass", "DefectItem", "Dropped", "DroppedCell",
+                   "F32", "Rgba", "LegendEntry", "LayerPalette", "LegendFacts"}
     assert public(stub_top) - typing_only == public(dir(_core))
     assert "__version__" in stub_top
 

@@ -1,5 +1,6 @@
-// Colours and words of the add-on's planning module (addon/hybrid_base_complex/plan/planning.py),
-// exported at build time by scripts/export_legend.py: the page holds no colour of its own.
+// Colours and words of the library's layer plan (native/include/hbc/layer_plan.hpp), the add-on's
+// source too: web/build.mjs asks the WebAssembly core for them (layer_plan_json) and inlines them,
+// so the page holds no colour of its own.
 /* global __HBC_LEGEND__ */
 export const L = __HBC_LEGEND__;
 

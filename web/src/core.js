@@ -89,9 +89,11 @@ export class Core {
     const t = M.TABLE1_COLUMNS_json();
     if (!t) return null;
     const rows = typeof t === 'string' ? JSON.parse(t) : t;
+    // The column's tooltip as the add-on's (planning.table1_columns): "label: meaning", times "(seconds)".
+    const seconds = (timing) => (timing ? ' (seconds)' : '');
     return rows.map((r) => (Array.isArray(r)
-      ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}`, kind: r[0].kind, timing: !!r[1] }
-      : { ...r, meaning: r.label && !String(r.meaning).startsWith(r.label) ? `${r.label}: ${r.meaning}` : r.meaning, timing: !!r.timing }));
+      ? { key: r[0].key, notation: r[0].notation, meaning: `${r[0].label}: ${r[0].meaning}${seconds(r[1])}`, kind: r[0].kind, timing: !!r[1] }
+      : { ...r, meaning: (r.label && !String(r.meaning).startsWith(r.label) ? `${r.label}: ${r.meaning}` : r.meaning) + seconds(r.timing), timing: !!r.timing }));
   }
 
   writeFiles(files) {
@@ -183,6 +185,12 @@ export class Core {
     }
     if (s >= 0) throw new Error("This build of the core draws the whole mesh's wireframe only.");
     return a.wireframe();
+  }
+
+  /** The library's legend of this mesh for every set of shown layers, and its facts
+   *  (layer_plan_json.cpp's legends_json): { facts, legends: { "direct,graph|0": [[key, words]] } }. */
+  legends(cellTypes, edgeClass, chainValence, componentKind) {
+    return JSON.parse(this.M.legends_json(cellTypes, edgeClass, chainValence, componentKind));
   }
 
   hasCut() {

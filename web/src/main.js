@@ -340,38 +340,12 @@ function pickSheet(id) {
 }
 
 // -- legend and Table 1 ------------------------------------------------------------------------
-/** planning.legend for the layers shown and this mesh's facts, then planning.palette_legend. */
+/** The library's legend for the layers shown (hbc::legend, then palette_legend, as the add-on's
+ *  planning.legend and palette_legend): the worker asked the core for every set of shown layers. */
 function legendEntries() {
   const shown = LAYERS.filter((l) => state.layers[l] && viewer.layers.has(l));
-  const f = info ? info.facts : { non_hex_types: [], valences: [] };
-  const G = L.legend;
-  const out = [];
-  if (shown.includes('direct')) {
-    out.push(...G.direct);
-    for (const t of f.non_hex_types) out.push(...G.cell_type[t]);
-  }
-  if (shown.includes('graph')) {
-    for (const v of f.valences) out.push(...(G.valence[v] ?? [['valence_other', `Valence ${v} edge`]]));
-    if (f.has_pseudo) out.push(...G.pseudo);
-    if (f.has_non_manifold) out.push(...G.non_manifold);
-  }
-  if (shown.includes('components') && f.has_non_hex_blocks) out.push(...G.components);
-  if (shown.includes('sheet') || shown.includes('subsheets')) out.push(...G.highlights);
-  if (state.byKind && (shown.includes('wireframe') || shown.includes('subsheets'))) {
-    for (const t of f.non_hex_types) out.push(...G.wire_kind_type[t]);
-    out.push(...G.wire_kind_rest);
-  }
-  const seen = new Set();
-  for (const layer of shown) {
-    if (layer === 'wireframe' && state.byKind) continue;
-    for (const e of G.palette[layer] ?? []) {
-      if (!seen.has(e.join())) {
-        seen.add(e.join());
-        out.push(e);
-      }
-    }
-  }
-  return out;
+  if (!info || !shown.length) return [];
+  return info.legends[`${shown.join(',')}|${state.byKind ? 1 : 0}`];
 }
 
 function legend() {

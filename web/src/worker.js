@@ -121,10 +121,10 @@ async function open({ name, files, skipInvalid, again }, t0) {
   const warnings = (arr(mesh, 'warnings') ?? []).map((w) => `${name}: ${w}`);
   // What the user waited for: from the file's bytes reaching the worker to the counts.
   const seconds = (performance.now() - t0) / 1000;
-  post({ type: 'ready', name, results, timings, info, warnings, table1: L.table1 ?? c.table1(), seconds });
+  post({ type: 'ready', name, results, timings, info, warnings, table1: c.table1(), seconds });
 }
 
-/** What the page shows beside the layers: counts, the box, the sheets, the legend's facts. */
+/** What the page shows beside the layers: counts, the box, the sheets, the legend's facts and entries. */
 function summary(c, analysis, sheets) {
   const lo = [Infinity, Infinity, Infinity];
   const hi = [-Infinity, -Infinity, -Infinity];
@@ -138,26 +138,14 @@ function summary(c, analysis, sheets) {
   const typeCounts = [0, 0, 0, 0, 0];
   for (const t of S.cellTypes) typeCounts[t]++;
   const g = c.graph(analysis);
-  const cls = arr(g, 'edge_class');
-  let hasPseudo = false;
-  let hasNonManifold = false;
-  for (const k of cls) {
-    if (k === 2) hasPseudo = true;
-    else if (k === 3) hasNonManifold = true;
-  }
-  const valences = [...new Set(arr(g, 'chain_valence'))].sort((a, b) => a - b);
+  const { facts, legends } = c.legends(S.cellTypes, arr(g, 'edge_class'), arr(g, 'chain_valence'), S.componentKind);
   return {
     cells: S.cellTypes.length,
     typeCounts,
     bbox: [lo, hi],
     sheets,
-    facts: {
-      non_hex_types: typeCounts.map((n, t) => (t > 0 && n > 0 ? t : -1)).filter((t) => t > 0),
-      valences,
-      has_pseudo: hasPseudo,
-      has_non_manifold: hasNonManifold,
-      has_non_hex_blocks: S.componentKind.includes(3),
-    },
+    facts,  // the library's (hbc::legend_facts)
+    legends,  // the library's legend per set of shown layers (hbc::legend, palette_legend)
   };
 }
 

@@ -9,7 +9,7 @@ Arrays follow the hbc module's conventions: int32 ids, float32 positions, CSR li
 
 from __future__ import annotations
 
-import colorsys
+import functools
 import os
 import re
 from dataclasses import dataclass
@@ -19,19 +19,60 @@ import numpy as np
 from . import native
 
 # ---------------------------------------------------------------------------------------------
-# Layers and names
+# The layer plan: layers, colours and legend words are the library's (hbc/layer_plan.hpp), the one
+# source the add-on, its figures and the web viewer draw from. Read when first asked: this module
+# must import before the compiled hbc is known to load (the add-on registers without it).
 
-#: Layer keys in building order, with the collection name each lives in under `<mesh>`.
-LAYERS = (
-    ("direct", "Direct view"),
-    ("graph", "Singularity graph"),
-    ("components", "Components"),
-    ("sheets", "Sheets"),
-    ("sheet", "Picked sheet"),
-    ("subsheets", "Subsheets"),
-    ("wireframe", "Wireframe"),
-)
-LAYER_TITLES = dict(LAYERS)
+#: Names served from the library's plan (module __getattr__): LAYERS (key, title) in building
+#: order, LAYER_TITLES, the colours by role (linear RGBA), the words of legends and sheet rows.
+_PLAN_NAMES = frozenset({
+    "LAYERS", "LAYER_TITLES", "PALETTE_SIZE", "PALETTE", "NON_HEX_COLOR", "RING_DARKEN", "HEX_COLOR",
+    "CELL_TYPE_COLORS", "VALENCE_COLORS", "OTHER_VALENCE_COLOR", "PSEUDO_COLOR",
+    "NON_MANIFOLD_COLOR", "UNMATCHED_COLOR", "SHARED_COLOR", "SELF_PARALLEL_EDGE_COLOR",
+    "SELF_INTERSECTING_COLOR", "WIRE_SEVERAL_COLOR", "WIRE_HEX_COLOR", "SHEET_TYPE_SHORT", "LEGEND_COLORS",
+    "LEGEND_MAX", "SHEET_HIGHLIGHTS", "WIRE_OPACITY_FLOOR", "SPREAD_GAP"})
+
+
+@functools.lru_cache(maxsize=1)
+def _plan() -> dict:
+    hbc = native.import_hbc()
+    p = hbc.layer_palette()
+    palette = np.array(p["cycle"], np.float32)
+    palette.flags.writeable = False  # shared by every caller
+    cell_types = np.array(p["cell_type"], np.float32)
+    cell_types.flags.writeable = False
+    legend_colors = hbc.legend_colors()
+    return {
+        "LAYERS": tuple(hbc.LAYERS), "LAYER_TITLES": dict(hbc.LAYERS), "PALETTE_SIZE": int(hbc.PALETTE_SIZE),
+        "PALETTE": palette, "NON_HEX_COLOR": p["non_hex"], "RING_DARKEN": p["ring_darken"],
+        "HEX_COLOR": legend_colors["hex"], "CELL_TYPE_COLORS": cell_types,
+        "VALENCE_COLORS": dict(p["valence"]), "OTHER_VALENCE_COLOR": p["other_valence"],
+        "PSEUDO_COLOR": p["pseudo"], "NON_MANIFOLD_COLOR": p["non_manifold"], "UNMATCHED_COLOR": p["unmatched"],
+        "SHARED_COLOR": p["shared"], "SELF_PARALLEL_EDGE_COLOR": p["self_parallel"],
+        "SELF_INTERSECTING_COLOR": p["self_intersecting"], "WIRE_SEVERAL_COLOR": p["wire_several"],
+        "WIRE_HEX_COLOR": p["wire_hex"], "SHEET_TYPE_SHORT": tuple(hbc.SHEET_TYPE_SHORT),
+        "LEGEND_COLORS": legend_colors, "LEGEND_MAX": int(hbc.LEGEND_MAX_WORDS),
+        "SHEET_HIGHLIGHTS": tuple(hbc.SHEET_HIGHLIGHTS), "WIRE_OPACITY_FLOOR": float(hbc.WIRE_OPACITY_FLOOR),
+        "SPREAD_GAP": float(hbc.SPREAD_GAP),
+    }
+
+
+def legend_color_keys() -> list:
+    """The keys of LEGEND_COLORS, none when the compiled module is not usable here (the add-on then
+    registers without legend swatches: nothing can be analysed to show a legend for)."""
+    return [] if native.module_problem() else list(_plan()["LEGEND_COLORS"])
+
+
+def layer_items() -> list:
+    """[(key, title, description)] of LAYERS for the layer choices of the operators, none when the
+    compiled module is not usable here. The same list every time: Blender keeps no copy of the
+    strings of an enum's items callback."""
+    return [] if native.module_problem() else _layer_items()
+
+
+@functools.lru_cache(maxsize=1)
+def _layer_items() -> list:
+    return [(k, title, f"Build the {title.lower()} layer") for k, title in _plan()["LAYERS"]]
 
 
 def root_name(mesh_name: str) -> str:
@@ -40,7 +81,7 @@ def root_name(mesh_name: str) -> str:
 
 def layer_collection_name(mesh_name: str, layer: str) -> str:
     """`<mesh> / Components` etc.: unique per mesh so two imported meshes never share a layer."""
-    return f"{mesh_name} / {LAYER_TITLES[layer]}"
+    return f"{mesh_name} / {_plan()['LAYER_TITLES'][layer]}"
 
 
 def mesh_extensions():
@@ -70,16 +111,9 @@ def mesh_name_from_path(path: str) -> str:
 # ---------------------------------------------------------------------------------------------
 # Colours (linear RGBA, float)
 
-def _hsv_palette(n: int) -> np.ndarray:
-    """n well-separated saturated colours: hue by the golden ratio, two value levels."""
-    out = np.empty((n, 4), np.float32)
-    for i in range(n):
-        h = (i * 0.618033988749895) % 1.0
-        s = 0.85 if i % 2 == 0 else 0.6
-        v = 0.95 if (i // 2) % 2 == 0 else 0.7
-        out[i, :3] = srgb_to_linear(colorsys.hsv_to_rgb(h, s, v))
-        out[i, 3] = 1.0
-    return out
+#: hbc.CELL_TYPES, here too: the inspection's per-type settings are registered before the compiled
+#: module is known to load.
+CELL_TYPE_NAMES = ("hex", "tet", "prism", "pyramid", "polyhedron")
 
 
 def srgb_to_linear(c):
@@ -88,43 +122,11 @@ def srgb_to_linear(c):
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
-PALETTE_SIZE = 24
-PALETTE = _hsv_palette(PALETTE_SIZE)
-
-NON_HEX_COLOR = (0.35, 0.35, 0.38, 1.0)
-RING_DARKEN = 0.6  # ring-like hex components: darker shade of their colour
-HEX_COLOR = (0.80, 0.80, 0.80, 1.0)
-CELL_TYPE_COLORS = np.array([
-    HEX_COLOR,                  # hex
-    (0.90, 0.25, 0.20, 1.0),    # tet
-    (0.20, 0.55, 0.90, 1.0),    # prism
-    (0.95, 0.70, 0.15, 1.0),    # pyramid
-    (0.60, 0.30, 0.80, 1.0),    # polyhedron
-], np.float32)
-CELL_TYPE_NAMES = ("hex", "tet", "prism", "pyramid", "polyhedron")
-
-VALENCE_COLORS = {
-    1: (0.0, 0.8, 0.8, 1.0),
-    2: (0.1, 0.3, 1.0, 1.0),
-    3: (0.1, 0.3, 1.0, 1.0),
-    5: (1.0, 0.15, 0.1, 1.0),
-    6: (1.0, 0.0, 0.9, 1.0),
-}
-OTHER_VALENCE_COLOR = (1.0, 0.85, 0.0, 1.0)
-PSEUDO_COLOR = (0.1, 0.8, 0.2, 1.0)
-NON_MANIFOLD_COLOR = (1.0, 0.5, 0.0, 1.0)
-UNMATCHED_COLOR = (1.0, 0.0, 0.0, 1.0)
-SHARED_COLOR = (1.0, 0.85, 0.0, 1.0)
-SELF_PARALLEL_EDGE_COLOR = (1.0, 0.55, 0.0, 1.0)
-SELF_INTERSECTING_COLOR = (0.85, 0.1, 0.85, 1.0)
-
-#: The sheet type for narrow list rows: the label without its word (the labels are hbc.SHEET_TYPES').
-SHEET_TYPE_SHORT = ("perfect", "type 1", "type 2", "type 3")
-
-
 def __getattr__(name):
-    # Names the library defines once (hbc.COMPONENT_KINDS, hbc.SHEET_TYPES' labels), read when first
-    # asked: the module must import before the compiled hbc is known to load.
+    # The plan's names (_PLAN_NAMES) and the names the library defines once (hbc.COMPONENT_KINDS,
+    # hbc.SHEET_TYPES' labels), read when first asked.
+    if name in _PLAN_NAMES:
+        return _plan()[name]
     if name == "COMPONENT_KINDS":
         return native.import_hbc().COMPONENT_KINDS
     if name == "SHEET_TYPES":
@@ -132,16 +134,14 @@ def __getattr__(name):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
+def _ids(values) -> np.ndarray:
+    return np.ascontiguousarray(np.asarray(values, np.int64).reshape(-1))
+
+
 def palette_color(index) -> np.ndarray:
     """Palette colour(s) of integer index/indices; negative indices give the non-hex grey."""
     idx = np.asarray(index, np.int64)
-    out = PALETTE[np.mod(idx, PALETTE_SIZE)]
-    if out.ndim == 2:
-        out = out.copy()
-        out[idx < 0] = NON_HEX_COLOR
-    elif idx < 0:
-        out = np.array(NON_HEX_COLOR, np.float32)
-    return out
+    return native.import_hbc().palette_colors(_ids(idx)).reshape(idx.shape + (4,))
 
 
 #: Colouring the wireframe by the non-hex kinds of its chains (hbc.Wireframe.non_hex_*; docs/concepts.md,
@@ -183,47 +183,42 @@ def chain_kind_types(offsets, items) -> np.ndarray:
 def chain_kind_colors(offsets, items) -> np.ndarray:
     """(n,4) colours of n chains by their non-hex kinds (see WIRE_SEVERAL_COLOR)."""
     t = chain_kind_types(offsets, items)
-    out = CELL_TYPE_COLORS[np.clip(t, 0, 4)].copy()
-    out[t == 0] = WIRE_HEX_COLOR
-    out[t < 0] = WIRE_SEVERAL_COLOR
+    plan = _plan()
+    out = plan["CELL_TYPE_COLORS"][np.clip(t, 0, 4)].copy()
+    out[t == 0] = plan["WIRE_HEX_COLOR"]
+    out[t < 0] = plan["WIRE_SEVERAL_COLOR"]
     return out
 
 
 def spread_ids(ids) -> np.ndarray:
     """Permutes ids so that consecutive ids (often neighbours) get distant palette entries."""
-    return (np.asarray(ids, np.int64) * 7) % PALETTE_SIZE
+    return np.asarray(native.import_hbc().spread_ids(_ids(ids)), np.int64)
 
 
 def component_colors(kinds) -> np.ndarray:
     """(n,4) colours of base complex components: palette by id, rings darker, non-hex grey."""
-    kinds = np.asarray(kinds, np.uint8)
-    colors = PALETTE[spread_ids(np.arange(len(kinds)))].copy()
-    ring = kinds == 1
-    colors[ring, :3] *= RING_DARKEN
-    colors[kinds == 3] = NON_HEX_COLOR
-    return colors
+    return native.import_hbc().component_colors(np.ascontiguousarray(kinds, np.uint8).reshape(-1))
 
 
 def sheet_colors(n: int) -> np.ndarray:
-    return PALETTE[spread_ids(np.arange(n))].copy()
+    return native.import_hbc().spread_colors(np.arange(n, dtype=np.int64))
 
 
 def subsheet_colors(n: int) -> np.ndarray:
-    """(n,4) colours of a sheet's subsheets: the sheets' palette order walked from its other end
-    (subsheet k takes the entry sheet -1-k would), so subsheet k is never drawn in sheet k's colour:
-    sheet k is entry 7k mod 24, subsheet k entry -7(k+1) mod 24, and their sum 14k+7 is odd, never a
-    multiple of the even palette size. Consecutive subsheets stay as far apart as consecutive sheets."""
-    return PALETTE[spread_ids(-1 - np.arange(n))].copy()
+    """(n,4) colours of a sheet's subsheets: never sheet k's colour for subsheet k (hbc.spread_colors
+    of -1-k; hbc/layer_plan.hpp says why)."""
+    return native.import_hbc().spread_colors(-1 - np.arange(n, dtype=np.int64))
 
 
 def sheet_color(sheet: int) -> tuple:
     """The colour of one sheet (sheet_colors' entry for it): the sheets layer's and the picked-sheet
     layer's, and the legend's *Picked sheet* swatch."""
-    return tuple(float(x) for x in PALETTE[int(spread_ids(int(sheet)))])
+    return tuple(float(x) for x in native.import_hbc().spread_colors(np.array([int(sheet)], np.int64))[0])
 
 
 def valence_color(valence: int):
-    return VALENCE_COLORS.get(int(valence), OTHER_VALENCE_COLOR)
+    plan = _plan()
+    return plan["VALENCE_COLORS"].get(int(valence), plan["OTHER_VALENCE_COLOR"])
 
 
 def opacity_alpha(opacity, floor: float) -> np.ndarray:
@@ -422,9 +417,11 @@ def characteristic_length(points) -> float:
     return d if d > 0 else 1.0
 
 
-def spread_translation(index: int, points, gap: float = 0.25, below: bool = False):
+def spread_translation(index: int, points, gap: float | None = None, below: bool = False):
     """Offset laying out the index-th of several copies of a model side by side along X (and, with
-    `below`, one row lower along -Z: the wireframe beneath its subsheet)."""
+    `below`, one row lower along -Z: the wireframe beneath its subsheet); gap: a fraction of the
+    model's size, SPREAD_GAP (the web viewer's too) unless given."""
+    gap = _plan()["SPREAD_GAP"] if gap is None else gap
     lo, hi = bbox(points)
     size = hi - lo
     dx = float(size[0]) * (1.0 + gap) * index
@@ -540,12 +537,7 @@ def wrap_message(text: str, width: int = 60) -> list[str]:
 
 def subsheets_unavailable(sheet_type) -> str | None:
     """Why the subsheets layer cannot be built for a picked sheet of this type, or None."""
-    if sheet_type is None:
-        return "Pick a sheet in the list first"
-    if int(sheet_type) != 3:
-        return (f"Sheet is {__getattr__('SHEET_TYPES')[int(sheet_type)]}: only self-intersecting (type 3) sheets "
-                "have subsheets")
-    return None
+    return native.import_hbc().subsheets_unavailable(None if sheet_type is None else int(sheet_type))
 
 
 def sheet_order(types, cells, by: str) -> list:
@@ -561,70 +553,27 @@ def sheet_order(types, cells, by: str) -> list:
     return idx.tolist()
 
 
-#: Every colour a legend can show, by key (the panel draws each as a swatch property).
-LEGEND_COLORS = {
-    "hex": HEX_COLOR,
-    **{CELL_TYPE_NAMES[t]: tuple(float(x) for x in CELL_TYPE_COLORS[t]) for t in range(1, 5)},
-    **{f"valence{v}": c for v, c in VALENCE_COLORS.items()},
-    "valence_other": OTHER_VALENCE_COLOR,
-    "pseudo": PSEUDO_COLOR,
-    "non_manifold": NON_MANIFOLD_COLOR,
-    "non_hex_component": NON_HEX_COLOR,
-    "unmatched": UNMATCHED_COLOR,
-    "shared": SHARED_COLOR,
-    "self_parallel": SELF_PARALLEL_EDGE_COLOR,
-    "self_intersecting": SELF_INTERSECTING_COLOR,
-    "wire_several": WIRE_SEVERAL_COLOR,
-    "wire_hex": WIRE_HEX_COLOR,
-}
-
-
-#: Longest legend words: beside a swatch at the default sidebar width about 20 characters show.
-LEGEND_MAX = 19
-
-#: The highlights of a picked sheet (and its subsheets), in legend order, with their words.
-SHEET_HIGHLIGHTS = (
-    ("unmatched", "Dot: unmatched"),
-    ("shared", "Dot: shared vertex"),
-    ("self_parallel", "Self-parallel edge"),
-    ("self_intersecting", "Self-intersecting"),
-)
-
-
 def wire_kind_legend(non_hex_types=()):
     """The legend of a wireframe coloured by non-hex kind (chain_kind_colors): one entry per cell
     type of the mesh's non-hex cells, then several types and none."""
-    out = [(CELL_TYPE_NAMES[t], f"Wire at {CELL_TYPE_NAMES[t]}") for t in non_hex_types]
-    return out + [("wire_several", "Wire at 2+ types"), ("wire_hex", "Wire at hexes only")]
+    return native.import_hbc().wire_kind_legend([int(t) for t in non_hex_types])
 
 
 def legend(layers, valences=(), has_pseudo=False, has_non_manifold=False, non_hex_types=(),
            has_non_hex_blocks=True, highlights=None, wire_by_kind=False):
     """[(colour key of LEGEND_COLORS, words)] for the layers shown: what each colour, dot and
-    edge means (the swatch gives the colour, the words what it marks). The add-on's Legend panel and
-    the figure script's legend strip (figures/) both show exactly this.
+    edge means (hbc.legend). The add-on's Legend panel and the figure script's legend strip
+    (figures/) both show exactly this. The facts are Structure.legend_facts()'.
     highlights: the sheet highlights drawn (keys of SHEET_HIGHLIGHTS), None for all of them.
     wire_by_kind: the wireframes (the wireframe layer, the subsheets' wireframes) are coloured by
     non-hex kind; the palette's class colours mean nothing beyond telling chains apart."""
-    out = []
-    if "direct" in layers:
-        out.append(("hex", "Boundary, hex cells"))
-        out += [(CELL_TYPE_NAMES[t], f"{CELL_TYPE_NAMES[t].capitalize()} cells") for t in non_hex_types]
-    if "graph" in layers:
-        for v in valences:
-            key = f"valence{int(v)}" if int(v) in VALENCE_COLORS else "valence_other"
-            out.append((key, f"Valence {int(v)} edge"))
-        if has_pseudo:
-            out.append(("pseudo", "Pseudo-singular"))
-        if has_non_manifold:
-            out.append(("non_manifold", "Non-manifold edge"))
-    if "components" in layers and has_non_hex_blocks:
-        out.append(("non_hex_component", "Non-hex component"))
-    if "sheet" in layers or "subsheets" in layers:
-        out += [(key, words) for key, words in SHEET_HIGHLIGHTS if highlights is None or key in highlights]
-    if wire_by_kind and ("wireframe" in layers or "subsheets" in layers):
-        out += wire_kind_legend(non_hex_types)
-    return out
+    return native.import_hbc().legend(
+        list(layers), non_hex_types=[int(t) for t in non_hex_types], valences=[int(v) for v in valences],
+        has_pseudo=bool(has_pseudo), has_non_manifold=bool(has_non_manifold),
+        has_non_hex_components=bool(has_non_hex_blocks),
+        # The panel gathers highlights from objects, some of which hold none (None).
+        highlights=None if highlights is None else sorted(h for h in highlights if h is not None),
+        wire_by_kind=bool(wire_by_kind))
 
 
 def beside(boxes, lo, hi, gap: float = 0.25):
@@ -636,33 +585,11 @@ def beside(boxes, lo, hi, gap: float = 0.25):
     return (right + gap * float(hi[0] - lo[0]) - float(lo[0]), 0.0, 0.0)
 
 
-# The layers coloured from the palette (one colour per component, sheet, subsheet or wireframe class):
-# a swatch stands for "a colour of its own each", and the wireframes' faint lines for distance. The
-# picked sheet is one sheet in one colour: its swatch is that colour (sheet_color of the sheet the
-# layer draws; the panel's swatch reads it from the scene, this is sheet 0's).
-LEGEND_COLORS.update(palette=tuple(float(x) for x in PALETTE[0]),
-                     faint=tuple(float(x) for x in PALETTE[0][:3]) + (0.3,),
-                     picked_sheet=sheet_color(0))
-PALETTE_LEGEND = {
-    "components": [("palette", "Hex-cell component")],
-    "sheets": [("palette", "A colour a sheet")],
-    "sheet": [("picked_sheet", "Picked sheet")],
-    "subsheets": [("palette", "A colour a subsheet")],
-    "wireframe": [("palette", "Wire: chain class"), ("faint", "Faint: far away")],
-}
-
-
 def palette_legend(layers, wire_by_kind=False) -> list:
     """[(colour key, words)] for the palette colours of the layers shown (the panel's legend: each
     shown layer says what its colours mean; the figures' legend strips leave them out). The
     wireframe's class colours only when it is coloured by class."""
-    out = []
-    for layer in layers:
-        if layer == "wireframe" and wire_by_kind:
-            continue
-        out += [e for e in PALETTE_LEGEND.get(layer, ()) if e not in out]
-    return out
-
+    return native.import_hbc().palette_legend(list(layers), wire_by_kind=bool(wire_by_kind))
 
 
 class Progress:

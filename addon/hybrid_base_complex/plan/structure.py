@@ -140,16 +140,13 @@ class Structure:
 
     # -- legend -------------------------------------------------------------------------------
     def legend_facts(self) -> dict:
-        """planning.legend's facts about this mesh: its non-hex cell types and, analysed, the
-        singularity valences, whether pseudo-singular and non-manifold edges and non-hex components
-        occur."""
-        types = np.asarray(self.mesh.cell_types)
-        facts = {"non_hex_types": sorted(int(t) for t in np.unique(types) if t != 0)}
-        if self.analysis is not None:
-            cls = np.asarray(self.analysis.graph.edge_class)
-            facts.update(valences=[int(v) for v in np.unique(self.analysis.graph.chain_valence)],
-                         has_pseudo=bool(np.any(cls == 2)), has_non_manifold=bool(np.any(cls == 3)),
-                         has_non_hex_blocks=bool(np.any(self.component_kinds() == 3)))
+        """planning.legend's facts about this mesh (hbc.legend_facts): its non-hex cell types and,
+        analysed, the singularity valences, whether pseudo-singular and non-manifold edges and
+        non-hex components occur. Keyed as planning.legend's arguments (and the facts a saved file
+        keeps, blender/layers.py)."""
+        facts = dict(import_hbc().legend_facts(self.mesh, self.analysis))
+        if "has_non_hex_components" in facts:
+            facts["has_non_hex_blocks"] = facts.pop("has_non_hex_components")
         return facts
 
     # -- base complex -----------------------------------------------------------------------
@@ -257,9 +254,11 @@ class Structure:
         return P.csr_row(off, items, index)
 
     # -- VSG wireframe ------------------------------------------------------------------------
-    def wireframe(self, sheet=None, subsheet=None, floor=0.15, simplified=True, by_kind=False, rho=None) -> P.Lines:
+    def wireframe(self, sheet=None, subsheet=None, floor=None, simplified=True, by_kind=False, rho=None) -> P.Lines:
         """VSG wireframe polylines coloured by palette class at `rho` (None: self.rho; by_kind: by
-        non-hex kind, planning.chain_kind_colors), alpha = opacity (floor mapped)."""
+        non-hex kind, planning.chain_kind_colors), alpha = opacity (floor mapped; None: the layer
+        plan's WIRE_OPACITY_FLOOR, the web page's too)."""
+        floor = P.WIRE_OPACITY_FLOOR if floor is None else floor
         a = self.analysis
         kwargs = {"rho": float(self.rho if rho is None else rho)}
         if sheet is not None and sheet >= 0:

@@ -29,7 +29,12 @@ from ..plan import session
 # The file browser's filter: every extension the readers take, as files spell it and in lower case,
 # and OpenFOAM's owner file.
 FILTER = ";".join(sorted({f"*{e}" for x in P.mesh_extensions() for e in (x, x.lower())}) + list(P.MESH_FILE_NAMES)) or "*"
-LAYER_ITEMS = [(k, title, f"Build the {title.lower()} layer") for k, title in P.LAYERS]
+
+
+def LAYER_ITEMS(_self, _context):  # noqa: N802 - an enum's items, as a callback
+    """The layer choices: the library's layers (planning.layer_items), asked when a choice is made
+    so that the add-on registers without the compiled module."""
+    return P.layer_items()
 
 
 def make_log(context):

@@ -24,8 +24,9 @@ class HBCSheetItem(bpy.types.PropertyGroup):
     components: IntProperty()
 
 
-def _legend_color(color):
-    return FloatVectorProperty(subtype="COLOR", size=4, min=0.0, max=1.0, get=lambda self: tuple(color),
+def _legend_color(key):
+    return FloatVectorProperty(subtype="COLOR", size=4, min=0.0, max=1.0,
+                               get=lambda self: tuple(P.LEGEND_COLORS[key]),
                                description="Legend colour (read-only)")
 
 
@@ -148,9 +149,11 @@ def _picked_sheet_swatch(settings):
     return P.sheet_color(settings.sheet_index if sheet is None else sheet)
 
 
-# Legend swatches: one read-only colour property per planning.LEGEND_COLORS key; the picked sheet's
+# Legend swatches: one read-only colour property per planning.LEGEND_COLORS key (the library's
+# layer plan; none without the compiled module, when no legend can be shown); the picked sheet's
 # is the colour of that sheet.
-HBCSettings.__annotations__.update({f"legend_{k}": _legend_color(c) for k, c in P.LEGEND_COLORS.items()})
+HBCSettings.__annotations__.update({f"legend_{k}": _legend_color(k) for k in P.legend_color_keys()
+                                    if k != "picked_sheet"})
 HBCSettings.__annotations__["legend_picked_sheet"] = FloatVectorProperty(
     subtype="COLOR", size=4, min=0.0, max=1.0, get=_picked_sheet_swatch,
     description="Legend colour: the picked sheet's own (read-only)")

@@ -3,6 +3,10 @@
 #include "numpy_abi.hpp"
 #include "hbc/version.hpp"
 
+namespace hbc::python {
+void bind_layer_plan(py::module_& m);  // layer_plan.cpp: layers, colours by role, legends
+}
+
 PYBIND11_MODULE(_core, m) {
   namespace hp = hbc::python;
   hp::require_numpy_abi();  // before anything: never a module whose arrays are wrong
@@ -16,6 +20,7 @@ PYBIND11_MODULE(_core, m) {
   hp::bind_geometry(m);
   hp::bind_quality(m);
   hp::bind_schema(m);
+  hp::bind_layer_plan(m);
   hp::bind_metrics(m);  // adds Analysis.metrics, so after bind_analysis
   hp::bind_comparison(m);
   hp::bind_exports(m);

@@ -44,6 +44,28 @@ from ._core import (
     polygon_edges,  # a viewer's helper (the Blender add-on's mesh edges), not in __all__
     polylines,
 )
+# The layer plan (hbc/layer_plan.hpp): the layers, colours by role and legend words the add-on, its
+# figures and the web viewer draw with; viewers' helpers, not in __all__.
+from ._core import (  # noqa: F401
+    LAYERS,
+    LEGEND_MAX_WORDS,
+    PALETTE_SIZE,
+    SHEET_HIGHLIGHTS,
+    SHEET_TYPE_SHORT,
+    SPREAD_GAP,
+    WIRE_OPACITY_FLOOR,
+    component_colors,
+    layer_palette,
+    legend,
+    legend_colors,
+    legend_facts,
+    palette_colors,
+    palette_legend,
+    spread_colors,
+    spread_ids,
+    subsheets_unavailable,
+    wire_kind_legend,
+)
 from .comparison import compare  # hbc compare from Python (docs/compare.md)
 
 __all__ = [

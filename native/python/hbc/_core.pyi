@@ -1,6 +1,7 @@
 """Type stubs for hbc._core (the compiled half of the hbc package)."""
 
 import os
+from collections.abc import Sequence
 from typing import Any, Literal, TypedDict
 
 import numpy as np
@@ -684,3 +685,64 @@ class CellQuality(TypedDict):
 def cell_quality(mesh: Mesh) -> CellQuality: ...
 def cell_depth(mesh: Mesh) -> I32:
     """(num_cells,) cell layers from the boundary: 0 with a boundary vertex, else BFS over faces."""
+
+# The layer plan (hbc/layer_plan.hpp): what the add-on, its figures and the web viewer draw with.
+# Colours are linear RGBA; legend entries are (colour key of legend_colors(), words).
+Rgba = tuple[float, float, float, float]
+F32 = npt.NDArray[np.float32]
+LegendEntry = tuple[str, str]
+LAYERS: tuple[tuple[str, str], ...]  # (key, title) in building order
+PALETTE_SIZE: int  # 24: one colour per owner
+LEGEND_MAX_WORDS: int  # the longest legend words (beside a swatch in the sidebar)
+WIRE_OPACITY_FLOOR: float  # the wireframe's faintest opacity by default
+SPREAD_GAP: float  # the gap between copies laid side by side, a fraction of the model's width
+SHEET_TYPE_SHORT: tuple[str, ...]  # by sheet type, for narrow list rows: "perfect", "type 1", ...
+SHEET_HIGHLIGHTS: tuple[LegendEntry, ...]  # a picked sheet's highlights in legend order
+
+class LayerPalette(TypedDict):
+    cycle: F32  # (PALETTE_SIZE, 4)
+    cell_type: F32  # (5, 4) by CELL_TYPES; [0] the hex boundary's grey
+    valence: dict[int, Rgba]  # singularities of these valences; any other: other_valence
+    ring_darken: float  # ring-like hex components: their colour times this
+    non_hex: Rgba
+    other_valence: Rgba
+    pseudo: Rgba
+    non_manifold: Rgba
+    unmatched: Rgba
+    shared: Rgba
+    self_parallel: Rgba
+    self_intersecting: Rgba
+    wire_several: Rgba
+    wire_hex: Rgba
+
+class LegendFacts(TypedDict, total=False):
+    non_hex_types: list[int]  # CELL_TYPES indices present other than hex, ascending
+    valences: list[int]  # singularity valences, ascending (with an analysis only, as the rest)
+    has_pseudo: bool
+    has_non_manifold: bool
+    has_non_hex_components: bool
+
+def layer_palette() -> LayerPalette:
+    """Every colour of the layers by its role."""
+def legend_colors() -> dict[str, Rgba]:
+    """Every colour a legend entry names, by key, in the legend's order."""
+def spread_ids(ids: npt.ArrayLike) -> I32:
+    """(n,) palette entries of owner ids: consecutive ids far apart."""
+def spread_colors(ids: npt.ArrayLike) -> F32:
+    """(n, 4) the spread palette entries of owner ids (sheets: 0..n-1; subsheets: -1-k)."""
+def palette_colors(index: npt.ArrayLike) -> F32:
+    """(n, 4) palette entries by index; a negative index is the non-hex grey."""
+def component_colors(kinds: npt.ArrayLike) -> F32:
+    """(n, 4) components by id and kind: palette, rings darker, non-hex grey."""
+def legend_facts(mesh: Mesh, analysis: Analysis | None = None) -> LegendFacts:
+    """What a legend names of this mesh (and its analysis)."""
+def legend(layers: Sequence[str], *, non_hex_types: Sequence[int] = (), valences: Sequence[int] = (),
+           has_pseudo: bool = False, has_non_manifold: bool = False, has_non_hex_components: bool = True,
+           highlights: Sequence[str] | None = None, wire_by_kind: bool = False) -> list[LegendEntry]:
+    """What each colour, dot and edge of the shown layers means; highlights: those drawn, None all."""
+def palette_legend(layers: Sequence[str], wire_by_kind: bool = False) -> list[LegendEntry]:
+    """What the palette colours of the shown layers mean, each entry once."""
+def wire_kind_legend(non_hex_types: Sequence[int] = ()) -> list[LegendEntry]:
+    """A wireframe coloured by non-hex kind: per type, then 2+ types, hexes only."""
+def subsheets_unavailable(sheet_type: int | None) -> str | None:
+    """Why the subsheets layer cannot be built for a picked sheet of this type, or None."""
