@@ -24,6 +24,9 @@ constexpr FormatInfo kFormats[] = {
     {Format::Vtk, "vtk", "", ".vtk", "legacy VTK unstructured grid", false},
     {Format::Vtu, "vtu", "", ".vtu", "VTK XML unstructured grid", false},
     {Format::Foam, "foam", "openfoam", ".foam", "OpenFOAM polyMesh (case folder, .foam file or polyMesh/owner)", false},
+    {Format::Su2, "su2", "", ".su2", "SU2 native mesh (zones joined)", false},
+    {Format::Ugrid, "ugrid", "", ".ugrid", "AFLR3 UGRID: ASCII, .b8/.lb8 binary, .r8/.lr8 Fortran records", false},
+    {Format::Fluent, "fluent", "", ".msh", "Fluent mesh, ASCII or binary (.msh told from Gmsh's by content)", false},
 };
 
 // "a, b, c or d" of each format's `part`.
@@ -121,6 +124,12 @@ class FileBytes {
   std::string_view view_;
 };
 
+// Gmsh's .msh starts with $MeshFormat (or $NOD), Fluent's with a section "(".
+bool starts_like_fluent(std::string_view bytes) {
+  const size_t at = bytes.find_first_not_of(" \t\r\n");
+  return at != std::string_view::npos && bytes[at] == '(';
+}
+
 }  // namespace
 
 MeshInput read_input(const std::string& path, Format format, const Threads& threads) {
@@ -134,9 +143,12 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Medit: return read_medit(bytes, path, threads);
     case Format::Hybrid: return read_hybrid(bytes, path);
     case Format::Hedra: return read_hedra(bytes, path);
-    case Format::Msh: return read_msh(bytes, path);
+    case Format::Msh: return starts_like_fluent(bytes) ? read_fluent(bytes, path) : read_msh(bytes, path);
     case Format::Vtk: return read_vtk(bytes, path);
     case Format::Vtu: return read_vtu(bytes, path);
+    case Format::Su2: return read_su2(bytes, path);
+    case Format::Ugrid: return read_ugrid(bytes, path, ugrid_encoding_of(path));
+    case Format::Fluent: return read_fluent(bytes, path);
     case Format::Foam:
     case Format::Auto: break;
   }
