@@ -144,6 +144,27 @@ TEST(CfdFormatsSu2, ZonesAreJoinedApart) {
   EXPECT_EQ(m.num_faces(), 22u);
 }
 
+TEST(CfdFormatsSkipInvalid, ThreeCopiesOfAHexahedronLoseTheDuplicates) {
+  // The unit cube three times: each face in three cells, which build_mesh refuses; --skip-invalid
+  // drops one duplicate (the second copy: SU2 line 4, UGRID line 11), and the two cells left
+  // share all their faces, which a face in two cells allows.
+  const std::string hex = "0 1 2 3 4 5 6 7";
+  const std::string pts = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
+  const std::string su2 = "NDIME= 3\nNELEM= 3\n12 " + hex + "\n12 " + hex + "\n12 " + hex + "\nNPOIN= 8\n" + pts;
+  const std::string ugrid = "8 0 0 0 0 0 3\n" + pts + "1 2 3 4 5 6 7 8\n1 2 3 4 5 6 7 8\n1 2 3 4 5 6 7 8\n";
+  const MeshInput inputs[2] = {read_su2(su2, "three.su2"), read_ugrid(ugrid, "three.ugrid", UgridEncoding::Ascii)};
+  const int64_t first_dropped_line[2] = {4, 11};
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_THROW(build_mesh(inputs[i]), InputError);
+    std::vector<DroppedCell> dropped;
+    const Mesh m = build_mesh_skipping_invalid(inputs[i], dropped);
+    EXPECT_EQ(m.num_cells(), 2u);
+    ASSERT_EQ(dropped.size(), 1u);
+    EXPECT_EQ(dropped[0].reason, Defect::DuplicateCells);
+    EXPECT_EQ(dropped[0].loc.line, first_dropped_line[i]);
+  }
+}
+
 TEST(CfdFormatsUgrid, APyramidInAflr3sOrder) {
   // The pyramid over the unit square with its apex at (0.5, 0.5, 1): volume 1/3. UGRID lists the
   // base as 1-2-5-4 around the apex 3 (meshio's permutation [1, 0, 3, 4, 2] to VTK's order): here

@@ -318,6 +318,9 @@ MeshInput FluentReader::read() {
   if (gap != have_node_.end())
     throw InputError(in_.source, {}, "expected every node from 1 to " + std::to_string(have_node_.size()) + " in a node section, node " +
                                          std::to_string(gap - have_node_.begin() + 1) + " is in none");
+  // Each cell has a face side: checked before the cells' offsets are allocated.
+  if (nc_ > 2 * static_cast<int64_t>(written_.size()))
+    fail_at(nc_loc_, "cell ids up to twice the number of faces (" + std::to_string(2 * written_.size()) + "), found " + std::to_string(nc_));
   int32_t empty = -1;
   in_.cells = detail::cells_from_sides(written_, reversed_, static_cast<int32_t>(nc_), empty);
   if (empty >= 0)
