@@ -75,14 +75,20 @@ struct Fields {
     auto r = ::hbc::detail::from_chars(b, e, v);
     return !t.empty() && r.ec == std::errc() && r.ptr == e;
   }
-  size_t count() const {
-    size_t n = 0;
-    for (size_t i = 0; i < rest.size();) {
-      while (i < rest.size() && blank(rest[i])) ++i;
-      if (i < rest.size()) ++n;
-      while (i < rest.size() && !blank(rest[i])) ++i;
+  // The line's numbers in one pass, up to `max` into `out`: how many the line holds (max + 1 for
+  // more), or -1 - i when token i is not a number of type T.
+  template <class T>
+  int numbers(T* out, int max) {
+    const char* p = rest.data();
+    const char* e = p + rest.size();
+    for (int n = 0;; ++n) {
+      while (p < e && blank(*p)) ++p;
+      if (p == e) return n;
+      if (n == max) return max + 1;
+      const auto r = ::hbc::detail::from_chars(p + (*p == '+'), e, out[n]);
+      if (r.ec != std::errc() || (r.ptr < e && !blank(*r.ptr))) return -1 - n;
+      p = r.ptr;
     }
-    return n;
   }
 };
 
@@ -148,18 +154,20 @@ void Su2Reader::points(int64_t n) {
   if (zone_points_ >= 0) fail("one NPOIN= section in the zone, found a second");
   zone_points_ = n;
   in_.points.reserve(in_.points.size() + static_cast<size_t>(3 * n));
-  size_t columns = 0;
+  int columns = 0;
+  double x[4];
   for (int64_t i = 0; i < n; ++i) {
     Fields f = line("a point line (x y z [index])");
+    const int k = f.numbers(x, 4);
+    if (k < 0) fail("a point coordinate (a finite number)");
     // The first line says whether an index column follows the coordinates.
-    const size_t k = i == 0 ? (columns = f.count()) : f.count();
+    if (i == 0) columns = k;
     if (k != columns || (k != 3 && k != 4))
       fail("a point line of " + (i == 0 ? std::string("3 or 4") : std::to_string(columns)) + " numbers (x y z [index]), found " +
            std::to_string(k));
     for (int a = 0; a < 3; ++a) {
-      double x = 0;
-      if (!f.number(x) || !std::isfinite(x)) fail("a point coordinate (a finite number)");
-      in_.points.push_back(x);
+      if (!std::isfinite(x[a])) fail("a point coordinate (a finite number)");
+      in_.points.push_back(x[a]);
     }
     in_.vertex_loc.push_back(line_);
   }
@@ -168,19 +176,16 @@ void Su2Reader::points(int64_t n) {
 void Su2Reader::elements(int64_t n, bool volume) {
   for (int64_t i = 0; i < n; ++i) {
     Fields f = line("an element line (type ids [index])");
-    int64_t type = 0;
-    if (!f.number(type)) fail("an element type (an integer)");
-    const Su2Type* t = su2_type(type);
-    if (!t) fail("an SU2 element type (3 line, 5 triangle, 9 quadrilateral, 10, 12, 13, 14), found " + std::to_string(type));
-    const size_t k = f.count();
-    if (k != static_cast<size_t>(t->nodes) && k != static_cast<size_t>(t->nodes) + 1)
-      fail(std::to_string(t->nodes) + " point ids (and an optional index) for type " + std::to_string(type) + ", found " +
-           std::to_string(k) + " numbers");
-    for (int a = 0; a < t->nodes; ++a) {
-      int64_t id = 0;
-      if (!f.number(id)) fail("a point id (an integer)");
-      if (t->dim == 3 && volume) ids_.push_back(id);
-    }
+    int64_t v[11];
+    const int k = f.numbers(v, 10);
+    if (k < 0) fail(k == -1 ? "an element type (an integer)" : "a point id (an integer)");
+    if (k == 0) fail("an element type (an integer)");
+    const Su2Type* t = su2_type(v[0]);
+    if (!t) fail("an SU2 element type (3 line, 5 triangle, 9 quadrilateral, 10, 12, 13, 14), found " + std::to_string(v[0]));
+    if (k - 1 != t->nodes && k - 1 != t->nodes + 1)
+      fail(std::to_string(t->nodes) + " point ids (and an optional index) for type " + std::to_string(v[0]) + ", found " +
+           (k > 10 ? std::string("more") : std::to_string(k - 1)) + " numbers");
+    if (t->dim == 3 && volume) ids_.insert(ids_.end(), v + 1, v + 1 + t->nodes);
     if (t->dim < 3 || !volume) {
       tally_.skip(t->dim);
       continue;
