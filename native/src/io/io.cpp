@@ -1,10 +1,12 @@
 #include "hbc/io.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "io/detail/text_scanner.hpp"
 #include "platform/file_map.hpp"
@@ -29,15 +31,14 @@ constexpr FormatInfo kFormats[] = {
     {Format::Fluent, "fluent", "", ".msh", "Fluent mesh, ASCII or binary (.msh told from Gmsh's by content)", false},
 };
 
-// "a, b, c or d" of each format's `part`.
+// "a, b, c or d" of each format's `part`, each once (Gmsh and Fluent share .msh).
 template <class Part>
 std::string listed(Part part) {
+  std::vector<std::string> parts;
+  for (const FormatInfo& f : kFormats)
+    if (std::find(parts.begin(), parts.end(), part(f)) == parts.end()) parts.push_back(part(f));
   std::string out;
-  const size_t n = std::size(kFormats);
-  for (size_t i = 0; i < n; ++i) {
-    if (i) out += i + 1 == n ? " or " : ", ";
-    out += part(kFormats[i]);
-  }
+  for (size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? "" : i + 1 == parts.size() ? " or " : ", ") + parts[i];
   return out;
 }
 
