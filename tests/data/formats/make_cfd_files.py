@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """Writes the CFD-format files under real/ from the slab (slab.geo): SU2, AFLR3 UGRID, Fluent.
 
-Run with a Python holding PyPI's meshio 5.3 (scripts/env/check_env.sh's environment) where Debian's
-gmsh and openfoam (v1912) are installed. The files are committed, so the tests need none of them.
+Run with a Python holding PyPI's meshio 5.3 and NumPy 1 (meshio 5.3.5 writes ASCII UGRID counts as
+"np.int64(192)" under NumPy 2), where Debian's gmsh and openfoam (v1912) are installed:
+  source scripts/env/common.sh; hbc_stamped_venv ~/.cache/hbc-envs/py-meshio53 "meshio==5.3.5 numpy<2"
+  ~/.cache/hbc-envs/py-meshio53/bin/python tests/data/formats/make_cfd_files.py
+The files are committed, so the tests need none of them.
 Every file holds the mesh of real/slab_41.msh (82 hexahedra, 28 prisms):
   slab_gmsh.su2                      gmsh's SU2 writer (with its boundary markers)
   slab_meshio.su2                    meshio's SU2 writer
