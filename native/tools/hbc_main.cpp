@@ -4,9 +4,11 @@
 #include <exception>
 #include <new>
 #include <stdexcept>
+#include <string>
 
 #include "commands.hpp"
 #include "hbc/error.hpp"
+#include "hbc/io.hpp"
 #include "hbc/version.hpp"
 
 namespace {
@@ -19,11 +21,18 @@ int exit_status(const CLI::ParseError& e, int cli11_status) {
   return bad_value ? 2 : 1;
 }
 
+// "ovm, ovmb, ...": the names of the one format table.
+std::string format_names() {
+  std::string s;
+  for (const hbc::FormatInfo& f : hbc::formats()) s += (s.empty() ? "" : ", ") + std::string(f.name);
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"hbc: structure of hex-dominant meshes (hybrid singularity graph, base complex, sheets, VSG wireframe)."
-               "\nformats: ovm, ovmb, mesh, hybrid, hedra, msh, vtk, vtu (chosen by extension unless --format is given)",
+               "\nformats: " + format_names() + " (chosen by extension unless --format is given)",
                "hbc"};
   app.set_version_flag("--version", std::string("hbc ") + hbc::version());
   app.require_subcommand(1);

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -118,6 +119,9 @@ MeshInput read_as(Format f, std::string_view bytes, const std::string& name) {
     case Format::Msh: return read_msh(bytes, name);
     case Format::Vtk: return read_vtk(bytes, name);
     case Format::Vtu: return read_vtu(bytes, name);
+    case Format::Su2: return read_su2(bytes, name);
+    case Format::Ugrid: return read_ugrid(bytes, name, ugrid_encoding_of(name));
+    case Format::Fluent: return read_fluent(bytes, name);
     case Format::Foam:  // four files: see the Foam cases below
     case Format::Auto: break;
   }
@@ -604,6 +608,123 @@ void expect_foam_rejected(const std::string& dir, const std::vector<FoamCase>& c
 
 std::string foam_file(const std::string& dir, const std::string& name) {
   return read_file_bytes(std::string(HBC_FORMATS_DIR) + "/foam/" + dir + "/constant/polyMesh/" + name);
+}
+
+// Two unit cubes along x with a boundary marker (lines 1-21): NELEM first, then 12 points with
+// their index column on lines 6-17, one marker quadrangle on line 21.
+std::string su2_sample() {
+  std::string s = "NDIME= 3\nNELEM= 2\n12 0 1 4 3 6 7 10 9 0\n12 1 2 5 4 7 8 11 10 1\nNPOIN= 12\n";
+  for (int i = 0; i < 12; ++i)
+    s += std::to_string(i % 3) + " " + std::to_string(i / 3 % 2) + " " + std::to_string(i / 6) + " " + std::to_string(i) + "\n";
+  return s + "NMARK= 1\nMARKER_TAG= bottom\nMARKER_ELEMS= 1\n9 0 3 4 1\n";
+}
+
+TEST(Malformed, Su2) {
+  const std::string t = su2_sample();
+  ASSERT_NO_THROW(build_mesh(read_su2(t, "ok.su2")));
+  expect_all_rejected(Format::Su2, {
+      {"empty", "", 1, "NDIME= 3 in an SU2 file"},
+      {"dimension", with_line(t, 1, "NDIME= 2"), 1, "NDIME= 3"},
+      {"unknown_type", with_line(t, 3, "11 0 1 4 3 6 7 10 9 0"), 3, "found 11"},
+      {"too_few_ids", with_line(t, 3, "12 0 1 4 3 6 7 10"), 3, "8 point ids (and an optional index) for type 12, found 7"},
+      {"id_out_of_range", with_line(t, 4, "12 1 2 5 4 7 8 11 12 1"), 4, "a point id in [0, 11], found 12"},
+      // 5 point lines of 8 bytes cannot hold 12 points.
+      {"truncated_points", first_lines(t, 10), 5, "number of points that the rest of the file can hold"},
+      {"truncated_elements", first_lines(t, 3), 3, "an element line (type ids [index]), found the end of the file"},
+      {"no_points", first_lines(t, 4), 4, "an NPOIN= section in the zone"},
+      {"keyword", with_line(t, 18, "NMARKS= 1"), 18, "an SU2 keyword"},
+      {"columns", with_line(t, 7, "1 0"), 7, "a point line of 4 numbers (x y z [index]), found 2"},
+      {"non_numeric", with_line(t, 6, "0 zero 0 0"), 6, "a point coordinate (a finite number)"},
+      {"no_keyword", with_line(t, 18, "1 2 3"), 18, "a KEYWORD= line"},
+  });
+}
+
+// One pyramid (lines 1-7): the counts, 5 nodes on lines 2-6, the pyramid on line 7.
+const std::string kUgrid = "5 0 0 0 1 0 0\n1 0 0\n0 0 0\n0.5 0.5 1\n1 1 0\n0 1 0\n1 2 3 4 5\n";
+
+TEST(Malformed, Ugrid) {
+  ASSERT_NO_THROW(build_mesh(read_ugrid(kUgrid, "ok.ugrid", UgridEncoding::Ascii)));
+  expect_all_rejected(Format::Ugrid, {
+      {"empty", "", 1, "the number of nodes, found the end of the file"},
+      {"huge_count", with_line(kUgrid, 1, "500 0 0 0 1 0 0"), 1, "the number of nodes that the rest of the file can hold"},
+      {"truncated", first_lines(kUgrid, 6), 6, "a node id of a volume element, found the end of the file"},
+      {"truncated_coordinate", first_lines(kUgrid, 5) + "0 1", 6, "a node coordinate, found the end of the file"},
+      {"id_out_of_range", with_line(kUgrid, 7, "1 2 3 4 6"), 7, "a node id in [1, 5], found 6"},
+      {"no_volume", with_line(kUgrid, 1, "5 0 0 0 0 0 0"), 6, "at least one volume element"},
+      {"non_numeric", with_line(kUgrid, 3, "0 x 0"), 3, "a node coordinate (a finite number), found 'x'"},
+  });
+}
+
+TEST(Malformed, UgridBinary) {
+  // kUgrid little-endian (lb8): counts at bytes 0-27, coordinates 28-147, the pyramid 148-167.
+  test::Bytes b;
+  for (int32_t v : {5, 0, 0, 0, 1, 0, 0}) b.put<int32_t>(v);
+  for (double x : {1., 0., 0., 0., 0., 0., 0.5, 0.5, 1., 1., 1., 0., 0., 1., 0.}) b.put<double>(x);
+  for (int32_t v : {1, 2, 3, 4, 5}) b.put<int32_t>(v);
+  const std::string t = b.s;
+  ASSERT_NO_THROW(build_mesh(read_ugrid(t, "ok.lb8.ugrid", UgridEncoding::LittleEndian)));
+  auto rejected = [](const std::string& bytes, UgridEncoding enc, int64_t at, const std::string& what) {
+    try {
+      read_ugrid(bytes, "bad.ugrid", enc);
+      ADD_FAILURE() << "accepted: " << what;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.loc().byte_offset, at) << e.what();
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  rejected(t.substr(0, 160), UgridEncoding::LittleEndian, 160, "a node id of a volume element (4 bytes), found the end of the file");
+  rejected(patched<int32_t>(t, 164, 6), UgridEncoding::LittleEndian, 164, "a node id in [1, 5], found 6");
+  rejected(patched<double>(t, 36, std::nan("")), UgridEncoding::LittleEndian, 36, "a node coordinate (a finite number)");
+  // Read as big-endian, the count 5 is 83886080: more nodes than 168 bytes hold.
+  rejected(t, UgridEncoding::BigEndian, 4, "the number of nodes that the rest of the file can hold");
+}
+
+// Two unit cubes as Fluent writes them: nodes on lines 7-18, the interior face on line 22, the
+// ten boundary faces on lines 25-34 (see test_cfd_formats.cpp for their sides).
+std::string fluent_sample() {
+  std::string s = "(0 \"two cubes\")\n(2 3)\n(10 (0 1 c 0 3))\n(12 (0 1 2 0 0))\n(13 (0 1 b 0 0))\n(10 (1 1 c 1 3)(\n";
+  for (int i = 0; i < 12; ++i) s += std::to_string(i % 3) + " " + std::to_string(i / 3 % 2) + " " + std::to_string(i / 6) + "\n";
+  s += "))\n(12 (2 1 2 1 4))\n(13 (3 1 1 2 0)(\n4 2 5 b 8 2 1\n))\n(13 (4 2 b 3 4)(\n";
+  for (const char* f : {"1 4 a 7 1 0", "1 7 8 2 1 0", "4 5 b a 1 0", "1 2 5 4 1 0", "7 a b 8 1 0", "3 9 c 6 2 0", "2 8 9 3 2 0",
+                        "5 6 c b 2 0", "2 3 6 5 2 0", "8 b c 9 2 0"})
+    s += std::string(f) + "\n";
+  return s + "))\n(45 (2 fluid fluid)())\n(39 (3 interior int)())\n";
+}
+
+TEST(Malformed, Fluent) {
+  const std::string t = fluent_sample();
+  ASSERT_NO_THROW(build_mesh(read_fluent(t, "ok.msh")));
+  expect_all_rejected(Format::Fluent, {
+      {"empty", "", 1, "a face section (13) in a Fluent mesh, found the end of the file"},
+      {"dimension", with_line(t, 2, "(2 2)"), 2, "a 3D mesh"},
+      {"node_out_of_range", with_line(t, 22, "4 2 5 b d 2 1"), 22, "a node id of a node section (1 to 12), found 13"},
+      // 6 lines of faces cannot hold the 10 the zone header announces.
+      {"truncated", first_lines(t, 30), 24, "a face zone that the rest of the file can hold"},
+      {"truncated_face", first_lines(t, 33) + "8 b c", 34, "a node id of a face (a hexadecimal integer), found the end of the file"},
+      {"cell_id", with_line(t, 25, "1 4 a 7 -1 0"), 25, "a cell id in [0, 2^31 - 1), found -1"},
+      {"no_faces", first_lines(t, 19), 19, "a face section (13) in a Fluent mesh"},
+      {"unclosed", t + "(45 (5 wall", 38, "')' closing section 45, found the end of the file"},
+      {"node_twice", with_line(t, 20, "(10 (2 1 1 1 3)(0 0 0))"), 20, "each node once, found node 1 again"},
+      {"bad_hex", with_line(t, 21, "(13 (3 1 1 2 z)("), 21, "the element type or dimension of the zone (a hexadecimal integer)"},
+      {"cell_without_faces", with_line(t, 4, "(12 (0 1 3 0 0))"), 4, "every cell from 1 to 3 to have faces, cell 3 has none"},
+      {"not_a_section", "hello", 1, "'(' opening a Fluent section, found 'hello'"},
+  });
+}
+
+TEST(Malformed, FluentBinary) {
+  // A node section of 3010 (doubles) cut short: byte offsets from the start of the file.
+  test::Bytes b;
+  b.text("(2 3)\n(3010 (1 1 2 1 3)(");  // the coordinates start at byte 24
+  for (int i = 0; i < 5; ++i) b.put<double>(0.5);
+  try {
+    read_fluent(b.s + "End of Binary Section 3010)\n", "bad.msh");
+    ADD_FAILURE() << "accepted a truncated binary node section";
+  } catch (const InputError& e) {
+    // The sixth coordinate (byte 64) would need the 8 bytes "End of B": read as a double it is
+    // finite, so the reader then misses the ')' closing the binary data.
+    EXPECT_EQ(e.loc().byte_offset, 72) << e.what();
+    EXPECT_NE(std::string(e.what()).find("')' closing the binary data"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Malformed, FoamAscii) {

@@ -60,6 +60,12 @@ inline MeshInput read_as(Format f, std::string_view bytes) {
     case Format::Vtk: return read_vtk(bytes, "fuzz");
     case Format::Vtu: return read_vtu(bytes, "fuzz");
     case Format::Foam: return read_foam(foam_files(bytes));
+    case Format::Su2: return read_su2(bytes, "fuzz");
+    // The first byte picks the encoding, so one corpus holds all five.
+    case Format::Ugrid:
+      if (bytes.empty()) return read_ugrid(bytes, "fuzz", UgridEncoding::Ascii);
+      return read_ugrid(bytes.substr(1), "fuzz", static_cast<UgridEncoding>(static_cast<uint8_t>(bytes[0]) % 5));
+    case Format::Fluent: return read_fluent(bytes, "fuzz");
     case Format::Auto: break;
   }
   std::abort();

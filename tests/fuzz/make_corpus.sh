@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,analyze}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,su2,ugrid,fluent,analyze}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -28,6 +28,15 @@ done < <(find "$DATA" -type f -size -100k | sort)
 for f in "$HERE"/../data/formats/*.{msh,vtk,vtu} "$HERE"/../data/formats/real/*.{msh,vtk,vtu}; do
   [ -f "$f" ] || continue
   cp "$f" "$OUT/${f##*.}/src_$(basename "$f")"
+done
+
+# The CFD formats: SU2 and Fluent as they are; UGRID after the byte that picks the encoding
+# (fuzz_targets.hpp: 0 ASCII, 1 b8, 2 lb8, 3 r8, 4 lr8).
+R="$HERE"/../data/formats/real
+cp "$R"/*.su2 "$OUT/su2/"
+cp "$R"/slab_fluent.msh "$OUT/fluent/"
+for e in ugrid:0 b8.ugrid:1 lb8.ugrid:2 r8.ugrid:3 lr8.ugrid:4; do
+  { printf "\\x0${e#*:}"; cat "$R/slab.${e%%:*}"; } > "$OUT/ugrid/slab.${e%%:*}"
 done
 
 # OpenFOAM cases (tests/data/formats/foam): the harness takes points, faces, owner and neighbour

@@ -11,7 +11,7 @@
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Su2, Ugrid, Fluent };
 
 // Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
 // hbc.FORMATS and the Blender add-on's file filter come from it.
@@ -28,7 +28,8 @@ std::span<const FormatInfo> formats();
 // A name or alias of formats() ("ovm", "mesh", "medit", ...); case-insensitive. Throws
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
-// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam; a folder
+// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam .su2 .ugrid
+// (also .b8.ugrid ...); a folder
 // and a polyMesh `owner` file (or owner.gz) are OpenFOAM too. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
@@ -46,6 +47,16 @@ MeshInput read_hedra(std::string_view text, const std::string& source);   // Loo
 MeshInput read_msh(std::string_view bytes, const std::string& source);    // Gmsh 2.2 / 4.1, ASCII or binary
 MeshInput read_vtk(std::string_view bytes, const std::string& source);    // legacy VTK UNSTRUCTURED_GRID
 MeshInput read_vtu(std::string_view bytes, const std::string& source);    // VTK XML UnstructuredGrid
+MeshInput read_su2(std::string_view text, const std::string& source);     // SU2 native .su2 (zones joined)
+// AFLR3 UGRID; the encoding is named by the file's second extension (ugrid_encoding_of):
+// .ugrid ASCII, .b8.ugrid / .lb8.ugrid big- / little-endian binary, .r8.ugrid / .lr8.ugrid the same
+// as Fortran unformatted records.
+enum class UgridEncoding { Ascii, BigEndian, LittleEndian, FortranBigEndian, FortranLittleEndian };
+UgridEncoding ugrid_encoding_of(const std::string& path);
+MeshInput read_ugrid(std::string_view bytes, const std::string& source, UgridEncoding encoding);
+// Fluent mesh .msh (ASCII and binary sections), face-based: cells from the faces' two sides.
+// Gmsh's .msh starts with $MeshFormat, Fluent's with '(': read_input tells them apart by content.
+MeshInput read_fluent(std::string_view bytes, const std::string& source);
 
 // OpenFOAM constant/polyMesh: the bytes of its points, faces, owner and neighbour files (inflated
 // when they were gzip-compressed) and the names messages give them. Each cell's faces are those it

@@ -1,10 +1,12 @@
 #include "hbc/io.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "io/detail/text_scanner.hpp"
 #include "platform/file_map.hpp"
@@ -24,17 +26,19 @@ constexpr FormatInfo kFormats[] = {
     {Format::Vtk, "vtk", "", ".vtk", "legacy VTK unstructured grid", false},
     {Format::Vtu, "vtu", "", ".vtu", "VTK XML unstructured grid", false},
     {Format::Foam, "foam", "openfoam", ".foam", "OpenFOAM polyMesh (case folder, .foam file or polyMesh/owner)", false},
+    {Format::Su2, "su2", "", ".su2", "SU2 native mesh (zones joined)", false},
+    {Format::Ugrid, "ugrid", "", ".ugrid", "AFLR3 UGRID: ASCII, .b8/.lb8 binary, .r8/.lr8 Fortran records", false},
+    {Format::Fluent, "fluent", "", ".msh", "Fluent mesh, ASCII or binary (.msh told from Gmsh's by content)", false},
 };
 
-// "a, b, c or d" of each format's `part`.
+// "a, b, c or d" of each format's `part`, each once (Gmsh and Fluent share .msh).
 template <class Part>
 std::string listed(Part part) {
+  std::vector<std::string> parts;
+  for (const FormatInfo& f : kFormats)
+    if (std::find(parts.begin(), parts.end(), part(f)) == parts.end()) parts.push_back(part(f));
   std::string out;
-  const size_t n = std::size(kFormats);
-  for (size_t i = 0; i < n; ++i) {
-    if (i) out += i + 1 == n ? " or " : ", ";
-    out += part(kFormats[i]);
-  }
+  for (size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? "" : i + 1 == parts.size() ? " or " : ", ") + parts[i];
   return out;
 }
 
@@ -123,6 +127,12 @@ class FileBytes {
   std::string_view view_;
 };
 
+// Gmsh's .msh starts with $MeshFormat (or $NOD), Fluent's with a section "(".
+bool starts_like_fluent(std::string_view bytes) {
+  const size_t at = bytes.find_first_not_of(" \t\r\n");
+  return at != std::string_view::npos && bytes[at] == '(';
+}
+
 }  // namespace
 
 MeshInput read_input(const std::string& path, Format format, const Threads& threads) {
@@ -136,9 +146,12 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Medit: return read_medit(bytes, path, threads);
     case Format::Hybrid: return read_hybrid(bytes, path);
     case Format::Hedra: return read_hedra(bytes, path);
-    case Format::Msh: return read_msh(bytes, path);
+    case Format::Msh: return starts_like_fluent(bytes) ? read_fluent(bytes, path) : read_msh(bytes, path);
     case Format::Vtk: return read_vtk(bytes, path);
     case Format::Vtu: return read_vtu(bytes, path);
+    case Format::Su2: return read_su2(bytes, path);
+    case Format::Ugrid: return read_ugrid(bytes, path, ugrid_encoding_of(path));
+    case Format::Fluent: return read_fluent(bytes, path);
     case Format::Foam:
     case Format::Auto: break;
   }

@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "hbc/io.hpp"
+#include "io/detail/face_cells.hpp"
 #include "io/detail/text_scanner.hpp"
 #include "platform/charconv.hpp"
 
@@ -400,21 +401,11 @@ MeshInput read_foam(const FoamFiles& files) {
   for (int32_t c : owner) nc = std::max(nc, c + 1);
   for (int32_t c : neighbour) nc = std::max(nc, c + 1);
   // Each cell's faces in face order: 2*f for its owned faces, 2*f + 1 for those it sees reversed.
-  in.cells.offsets.assign(static_cast<size_t>(nc) + 1, 0);
-  for (int32_t c : owner) ++in.cells.offsets[static_cast<size_t>(c) + 1];
-  for (int32_t c : neighbour) ++in.cells.offsets[static_cast<size_t>(c) + 1];
-  for (size_t c = 0; c < static_cast<size_t>(nc); ++c) {
-    if (in.cells.offsets[c + 1] == 0)
-      throw InputError(files.owner_name, {}, "expected every cell below the highest label to own or neighbour a face, cell " +
-                                                 std::to_string(c) + " has none");
-    in.cells.offsets[c + 1] += in.cells.offsets[c];
-  }
-  in.cells.items.resize(owner.size() + neighbour.size());
-  std::vector<int32_t> fill(in.cells.offsets.begin(), in.cells.offsets.end() - 1);
-  for (size_t f = 0; f < owner.size(); ++f) {
-    in.cells.items[static_cast<size_t>(fill[static_cast<size_t>(owner[f])]++)] = static_cast<int32_t>(2 * f);
-    if (f < neighbour.size()) in.cells.items[static_cast<size_t>(fill[static_cast<size_t>(neighbour[f])]++)] = static_cast<int32_t>(2 * f + 1);
-  }
+  int32_t empty = -1;
+  in.cells = detail::cells_from_sides(owner, neighbour, nc, empty);
+  if (empty >= 0)
+    throw InputError(files.owner_name, {}, "expected every cell below the highest label to own or neighbour a face, cell " +
+                                               std::to_string(empty) + " has none");
   return in;
 }
 
