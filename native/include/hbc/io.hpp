@@ -11,7 +11,7 @@
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Exodus, Cgns };
 
 // Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
 // hbc.FORMATS and the Blender add-on's file filter come from it.
@@ -28,7 +28,8 @@ std::span<const FormatInfo> formats();
 // A name or alias of formats() ("ovm", "mesh", "medit", ...); case-insensitive. Throws
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
-// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam; a folder
+// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam .exo .e .g
+// .cgns; a folder
 // and a polyMesh `owner` file (or owner.gz) are OpenFOAM too. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
@@ -46,6 +47,14 @@ MeshInput read_hedra(std::string_view text, const std::string& source);   // Loo
 MeshInput read_msh(std::string_view bytes, const std::string& source);    // Gmsh 2.2 / 4.1, ASCII or binary
 MeshInput read_vtk(std::string_view bytes, const std::string& source);    // legacy VTK UNSTRUCTURED_GRID
 MeshInput read_vtu(std::string_view bytes, const std::string& source);    // VTK XML UnstructuredGrid
+// Exodus II through netCDF-C (classic, 64-bit offset or netCDF-4/HDF5, from memory): every element
+// block, NFACED polyhedra over the face blocks; messages name the block and variable (no lines).
+MeshInput read_exodus(std::string_view bytes, const std::string& source);
+// CGNS through the CGNS library, which opens files only: this reader takes the path. Every zone of
+// the first base, joined without merging shared vertices; structured zones as hexahedra.
+MeshInput read_cgns(const std::string& path);
+// Builds without netCDF-C (HBC_EXODUS=OFF) or the CGNS library (HBC_CGNS=OFF), and the WebAssembly
+// core, list both formats and refuse their files with an InputError naming the missing library.
 
 // OpenFOAM constant/polyMesh: the bytes of its points, faces, owner and neighbour files (inflated
 // when they were gzip-compressed) and the names messages give them. Each cell's faces are those it

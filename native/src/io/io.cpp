@@ -24,6 +24,11 @@ constexpr FormatInfo kFormats[] = {
     {Format::Vtk, "vtk", "", ".vtk", "legacy VTK unstructured grid", false},
     {Format::Vtu, "vtu", "", ".vtu", "VTK XML unstructured grid", false},
     {Format::Foam, "foam", "openfoam", ".foam", "OpenFOAM polyMesh (case folder, .foam file or polyMesh/owner)", false},
+    // Exodus II has three extensions: one row each, so that every list (--format, file filters) has them.
+    {Format::Exodus, "exo", "exodus", ".exo", "Exodus II (Cubit, MOOSE; netCDF classic or HDF5)", false},
+    {Format::Exodus, "e", "", ".e", "Exodus II", false},
+    {Format::Exodus, "g", "", ".g", "Exodus II (Genesis)", false},
+    {Format::Cgns, "cgns", "", ".cgns", "CGNS (ADF or HDF5; unstructured and structured zones)", false},
 };
 
 // "a, b, c or d" of each format's `part`.
@@ -126,6 +131,7 @@ class FileBytes {
 MeshInput read_input(const std::string& path, Format format, const Threads& threads) {
   if (format == Format::Auto) format = format_from_path(path);
   if (format == Format::Foam) return read_foam_case(path);  // four files, not one
+  if (format == Format::Cgns) return read_cgns(path);        // the CGNS library opens the file itself
   const FileBytes file(path);
   const std::string_view bytes = file.view();
   switch (format) {
@@ -137,7 +143,9 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Msh: return read_msh(bytes, path);
     case Format::Vtk: return read_vtk(bytes, path);
     case Format::Vtu: return read_vtu(bytes, path);
+    case Format::Exodus: return read_exodus(bytes, path);
     case Format::Foam:
+    case Format::Cgns:
     case Format::Auto: break;
   }
   throw InputError(path, {}, "a known format");
