@@ -222,7 +222,7 @@ void ExodusReader::element_block(int64_t b) {
   const ExoType* t = exo_type(lower);
   if (!t) fail("an Exodus element type (HEX8, WEDGE6, PYRAMID5, TETRA4, NFACED, SHELL4, ...) for " + block + ", found '" + type + "'");
   const int64_t per = dim("num_nod_per_el" + s);
-  if (per < t->corners || per > 64) fail("at least " + std::to_string(t->corners) + " nodes per element for " + type + " (num_nod_per_el" + s + ", " + block + "), found " + std::to_string(per));
+  if (per < t->corners || (t->dim == 3 && per > 64)) fail(std::to_string(t->corners) + " to 64 nodes per element for " + type + " (num_nod_per_el" + s + ", " + block + "), found " + std::to_string(per));
   if (t->dim < 3) {
     for (int64_t e = 0; e < n; ++e) tally_.skip(t->dim);
     return;
