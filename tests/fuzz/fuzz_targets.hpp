@@ -4,8 +4,12 @@
 // only exception caught is hbc::InputError (the readers' verdict on bad input). Anything else
 // escapes: under libFuzzer an uncaught exception, a crash, UB or a leak stops the run and keeps the
 // input; the regression test reports it as a failure naming the file.
+#include <unistd.h>
+
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -28,6 +32,13 @@ inline FoamFiles foam_files(std::string_view bytes) {
   return {part[0], part[1], part[2], part[3], "points", "faces", "owner", "neighbour"};
 }
 
+// CGNS's library opens files only: the bytes go to a file of this process's own first.
+inline MeshInput read_cgns_bytes(std::string_view bytes) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("hbc_fuzz_" + std::to_string(::getpid()) + ".cgns")).string();
+  std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  return read_cgns(path);
+}
+
 inline MeshInput read_as(Format f, std::string_view bytes) {
   switch (f) {
     case Format::Ovm: return read_ovm(bytes, "fuzz");
@@ -39,6 +50,8 @@ inline MeshInput read_as(Format f, std::string_view bytes) {
     case Format::Vtk: return read_vtk(bytes, "fuzz");
     case Format::Vtu: return read_vtu(bytes, "fuzz");
     case Format::Foam: return read_foam(foam_files(bytes));
+    case Format::Exodus: return read_exodus(bytes, "fuzz");
+    case Format::Cgns: return read_cgns_bytes(bytes);
     case Format::Auto: break;
   }
   std::abort();

@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,analyze}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,analyze,exodus,cgns}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -28,6 +28,13 @@ done < <(find "$DATA" -type f -size -100k | sort)
 for f in "$HERE"/../data/formats/*.{msh,vtk,vtu} "$HERE"/../data/formats/real/*.{msh,vtk,vtu}; do
   [ -f "$f" ] || continue
   cp "$f" "$OUT/${f##*.}/src_$(basename "$f")"
+done
+
+# Exodus II and CGNS: the tool-made twins of tests/data/formats/real (classic and HDF5 storage).
+for f in "$HERE"/../data/formats/real/*.{exo,e,cgns}; do
+  [ -f "$f" ] || continue
+  case "$f" in *.cgns) dir=cgns ;; *) dir=exodus ;; esac
+  cp "$f" "$OUT/$dir/src_$(basename "$f")"
 done
 
 # OpenFOAM cases (tests/data/formats/foam): the harness takes points, faces, owner and neighbour
