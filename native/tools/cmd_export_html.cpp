@@ -74,8 +74,9 @@ std::string read_text(const fs::path& p) {
 }
 
 // What the page reads: the file's own bytes under its own name when it is one file whose extension
-// names its format; else (an OpenFOAM case, a format given by --format, cells dropped by
-// --skip-invalid) the loaded mesh written as OpenVolumeMesh ASCII, which keeps every cell as read.
+// names its format and the page's core reads it; else (an OpenFOAM case, Exodus II or CGNS, a
+// format given by --format, cells dropped by --skip-invalid) the loaded mesh written as
+// OpenVolumeMesh ASCII, which keeps every cell as read.
 // Then the page cannot tell what reading the source said (how many cells --skip-invalid dropped,
 // ...): `warnings` carries the CLI's warning lines ("FILE: TEXT"), which the page shows.
 struct Embedded {
@@ -91,7 +92,9 @@ Embedded embedded_mesh(const InputArgs& in, const Mesh& mesh) {
       by_name = Format::Auto;  // read by --format; its name would not tell the page the format
     }
   }
-  const bool as_read = by_name != Format::Foam && by_name != Format::Auto && !in.skip_invalid &&
+  // The page's WebAssembly core has neither netCDF-C nor the CGNS library: those go in as .ovm.
+  const bool page_reads = by_name != Format::Exodus && by_name != Format::Cgns;
+  const bool as_read = by_name != Format::Foam && by_name != Format::Auto && page_reads && !in.skip_invalid &&
                        (in.format.empty() || in.parsed_format() == by_name);
   if (as_read) return {path.filename().string(), read_file_bytes(in.file), {}};
   std::string stem = fs::is_directory(path) ? fs::absolute(path).lexically_normal().filename().string() : path.stem().string();

@@ -131,6 +131,27 @@ TEST_F(CliExportHtml, EmbedsAFileReadByFormatAsOvm) {
   EXPECT_EQ(from_page, from_file);
 }
 
+#if HBC_TEST_EXODUS && HBC_TEST_CGNS
+// The page's WebAssembly core reads neither Exodus II nor CGNS: their meshes go in as .ovm, with
+// the counts of the file itself.
+TEST_F(CliExportHtml, EmbedsExodusAndCgnsAsOvm) {
+  for (const char* name : {"slab_hdf5.exo", "mixed4.cgns"}) {
+    SCOPED_TRACE(name);
+    const std::string file = std::string(HBC_FORMATS_DIR) + "/real/" + name;
+    const test::CliRun r = run_cli("export-html " + q(file) + " -o " + q(dir_ / "x.html") + " --viewer " + q(tpl_));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Embedded e = embedded(dir_ / "x.html");
+    EXPECT_EQ(e.name, fs::path(name).stem().string() + ".ovm");
+    write_file(dir_ / e.name, e.bytes);
+    nlohmann::json from_page = run_cli("info --json " + q(dir_ / e.name)).json();
+    nlohmann::json from_file = run_cli("info --json " + q(file)).json();
+    from_page.erase("file");
+    from_file.erase("file");
+    EXPECT_EQ(from_page, from_file);
+  }
+}
+#endif
+
 // With --skip-invalid the page reads the kept cells (as .ovm) and cannot count the dropped ones:
 // the element carries the CLI's warnings about the source in data-warnings, one line each as the
 // CLI prints them on stderr without "hbc: warning: ", for the page to show.

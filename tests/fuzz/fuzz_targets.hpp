@@ -4,8 +4,12 @@
 // only exception caught is hbc::InputError (the readers' verdict on bad input). Anything else
 // escapes: under libFuzzer an uncaught exception, a crash, UB or a leak stops the run and keeps the
 // input; the regression test reports it as a failure naming the file.
+#include <unistd.h>
+
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -49,6 +53,13 @@ inline std::vector<FoamProcessorFiles> foam_processors(std::string_view bytes) {
   return out;
 }
 
+// CGNS's library opens files only: the bytes go to a file of this process's own first.
+inline MeshInput read_cgns_bytes(std::string_view bytes) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("hbc_fuzz_" + std::to_string(::getpid()) + ".cgns")).string();
+  std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  return read_cgns(path);
+}
+
 inline MeshInput read_as(Format f, std::string_view bytes) {
   switch (f) {
     case Format::Ovm: return read_ovm(bytes, "fuzz");
@@ -66,6 +77,8 @@ inline MeshInput read_as(Format f, std::string_view bytes) {
       if (bytes.empty()) return read_ugrid(bytes, "fuzz", UgridEncoding::Ascii);
       return read_ugrid(bytes.substr(1), "fuzz", static_cast<UgridEncoding>(static_cast<uint8_t>(bytes[0]) % 5));
     case Format::Fluent: return read_fluent(bytes, "fuzz");
+    case Format::Exodus: return read_exodus(bytes, "fuzz");
+    case Format::Cgns: return read_cgns_bytes(bytes);
     case Format::Auto: break;
   }
   std::abort();

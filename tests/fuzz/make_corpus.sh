@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,su2,ugrid,fluent,analyze}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,su2,ugrid,fluent,analyze,exodus,cgns}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -37,6 +37,13 @@ cp "$R"/*.su2 "$OUT/su2/"
 cp "$R"/slab_fluent.msh "$OUT/fluent/"
 for e in ugrid:0 b8.ugrid:1 lb8.ugrid:2 r8.ugrid:3 lr8.ugrid:4; do
   { printf "\\x0${e#*:}"; cat "$R/slab.${e%%:*}"; } > "$OUT/ugrid/slab.${e%%:*}"
+done
+
+# Exodus II and CGNS: the tool-made twins of tests/data/formats/real (classic and HDF5 storage).
+for f in "$HERE"/../data/formats/real/*.{exo,e,cgns}; do
+  [ -f "$f" ] || continue
+  case "$f" in *.cgns) dir=cgns ;; *) dir=exodus ;; esac
+  cp "$f" "$OUT/$dir/src_$(basename "$f")"
 done
 
 # OpenFOAM cases (tests/data/formats/foam): the harness takes points, faces, owner and neighbour

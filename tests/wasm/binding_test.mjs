@@ -108,6 +108,17 @@ M.FS.writeFile('/defects.HYBRID', readFileSync(defects));
 let refused = '';
 try { M.load_path('/defects.HYBRID'); } catch (e) { refused = String(e.message); }
 check('load_path refuses invalid cells', refused.includes('--skip-invalid'), refused);
+// Exodus II and CGNS are listed (the picker takes them) but the core has neither library: the
+// message says they need the desktop tool.
+const formats = JSON.parse(M.FORMATS());
+check('FORMATS lists Exodus II and CGNS', ['.exo', '.e', '.g', '.cgns'].every((x) => formats.some((f) => f.extension === x)));
+for (const name of ['/slab.exo', '/slab.cgns']) {
+  M.FS.writeFile(name, readFileSync(join(dirname(new URL(import.meta.url).pathname), '..', 'data', 'formats', 'real',
+                                         name === '/slab.exo' ? 'slab_hdf5.exo' : 'slab.cgns')));
+  let why = '';
+  try { M.load_path(name); } catch (e) { why = String(e.message); }
+  check(`${name} needs the desktop tool`, why.includes('need the desktop tool'), why);
+}
 const skipped = M.load_path('/defects.HYBRID', true);
 const skippedStats = JSON.parse(skipped.analyze({}).stats_json());
 const cliSkip = JSON.parse(execFileSync(cli, ['analyze', '--json', '--skip-invalid', 'defects.HYBRID'],

@@ -11,7 +11,7 @@
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Su2, Ugrid, Fluent };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Su2, Ugrid, Fluent, Exodus, Cgns };
 
 // Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
 // hbc.FORMATS and the Blender add-on's file filter come from it.
@@ -29,7 +29,7 @@ std::span<const FormatInfo> formats();
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
 // By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam .su2 .ugrid
-// (also .b8.ugrid ...); a folder
+// (also .b8.ugrid ...) .exo .e .g .cgns; a folder
 // and a polyMesh `owner` file (or owner.gz) are OpenFOAM too. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
@@ -57,6 +57,14 @@ MeshInput read_ugrid(std::string_view bytes, const std::string& source, UgridEnc
 // Fluent mesh .msh (ASCII and binary sections), face-based: cells from the faces' two sides.
 // Gmsh's .msh starts with $MeshFormat, Fluent's with '(': read_input tells them apart by content.
 MeshInput read_fluent(std::string_view bytes, const std::string& source);
+// Exodus II through netCDF-C (classic, 64-bit offset or netCDF-4/HDF5, from memory): every element
+// block, NFACED polyhedra over the face blocks; messages name the block and variable (no lines).
+MeshInput read_exodus(std::string_view bytes, const std::string& source);
+// CGNS through the CGNS library, which opens files only: this reader takes the path. Every zone of
+// the first base, joined without merging shared vertices; structured zones as hexahedra.
+MeshInput read_cgns(const std::string& path);
+// Builds without netCDF-C (HBC_EXODUS=OFF) or the CGNS library (HBC_CGNS=OFF), and the WebAssembly
+// core, list both formats and refuse their files with an InputError naming the missing library.
 
 // OpenFOAM constant/polyMesh: the bytes of its points, faces, owner and neighbour files (inflated
 // when they were gzip-compressed) and the names messages give them. Each cell's faces are those it

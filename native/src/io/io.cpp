@@ -29,6 +29,11 @@ constexpr FormatInfo kFormats[] = {
     {Format::Su2, "su2", "", ".su2", "SU2 native mesh (zones joined)", false},
     {Format::Ugrid, "ugrid", "", ".ugrid", "AFLR3 UGRID: ASCII, .b8/.lb8 binary, .r8/.lr8 Fortran records", false},
     {Format::Fluent, "fluent", "", ".msh", "Fluent mesh, ASCII or binary (.msh told from Gmsh's by content)", false},
+    // Exodus II has three extensions: one row each, so that every list (--format, file filters) has them.
+    {Format::Exodus, "exo", "exodus", ".exo", "Exodus II (Cubit, MOOSE; netCDF classic or HDF5)", false},
+    {Format::Exodus, "e", "", ".e", "Exodus II", false},
+    {Format::Exodus, "g", "", ".g", "Exodus II (Genesis)", false},
+    {Format::Cgns, "cgns", "", ".cgns", "CGNS (ADF or HDF5; unstructured and structured zones)", false},
 };
 
 // "a, b, c or d" of each format's `part`, each once (Gmsh and Fluent share .msh).
@@ -138,6 +143,7 @@ bool starts_like_fluent(std::string_view bytes) {
 MeshInput read_input(const std::string& path, Format format, const Threads& threads) {
   if (format == Format::Auto) format = format_from_path(path);
   if (format == Format::Foam) return read_foam_case(path, threads);  // four files (or a folder of processors), not one
+  if (format == Format::Cgns) return read_cgns(path);        // the CGNS library opens the file itself
   const FileBytes file(path);
   const std::string_view bytes = file.view();
   switch (format) {
@@ -152,7 +158,9 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Su2: return read_su2(bytes, path);
     case Format::Ugrid: return read_ugrid(bytes, path, ugrid_encoding_of(path));
     case Format::Fluent: return read_fluent(bytes, path);
+    case Format::Exodus: return read_exodus(bytes, path);
     case Format::Foam:
+    case Format::Cgns:
     case Format::Auto: break;
   }
   throw InputError(path, {}, "a known format");
