@@ -20,4 +20,6 @@ fi
 [ "$step" = build ] && exit 0
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+# The HDF5, netCDF and CGNS libraries keep allocations of their own past exit (tests/fuzz/lsan.supp).
+export LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan.supp
 "$BUILD/tests/hbc_tests" --gtest_brief=1 "$@"
