@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,analyze}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,abaqus,nastran,lsdyna,analyze}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -28,6 +28,13 @@ done < <(find "$DATA" -type f -size -100k | sort)
 for f in "$HERE"/../data/formats/*.{msh,vtk,vtu} "$HERE"/../data/formats/real/*.{msh,vtk,vtu}; do
   [ -f "$f" ] || continue
   cp "$f" "$OUT/${f##*.}/src_$(basename "$f")"
+done
+
+# The finite-element decks: the tool-made twins of the slab (tests/data/formats/real).
+for f in "$HERE"/../data/formats/real/*.{inp,bdf,k,key}; do
+  [ -f "$f" ] || continue
+  case "$f" in *.inp) dir=abaqus ;; *.bdf) dir=nastran ;; *) dir=lsdyna ;; esac
+  cp "$f" "$OUT/$dir/src_$(basename "$f")"
 done
 
 # OpenFOAM cases (tests/data/formats/foam): the harness takes points, faces, owner and neighbour

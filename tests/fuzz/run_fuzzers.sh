@@ -8,7 +8,7 @@ set -euo pipefail
 SECONDS_EACH=${1:?usage: run_fuzzers.sh SECONDS [harness...]}
 shift
 HARNESSES=("$@")
-[ ${#HARNESSES[@]} -eq 0 ] && HARNESSES=(ovm ovmb medit hybrid hedra msh vtk vtu foam analyze)
+[ ${#HARNESSES[@]} -eq 0 ] && HARNESSES=(ovm ovmb medit hybrid hedra msh vtk vtu foam abaqus nastran lsdyna analyze)
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${BUILD:-$ROOT/build-fuzz}
 JOBS=${JOBS:-1}

@@ -2,6 +2,7 @@
 // Readers and writers for the volume mesh formats real hex-dominant meshers write.
 // Every reader parses from memory (so fuzzers and tests need no files) and reports bad input as
 // InputError with the file name and the line (byte offset for binary files).
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -11,7 +12,7 @@
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Abaqus, Nastran, LsDyna };
 
 // Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
 // hbc.FORMATS and the Blender add-on's file filter come from it.
@@ -28,7 +29,8 @@ std::span<const FormatInfo> formats();
 // A name or alias of formats() ("ovm", "mesh", "medit", ...); case-insensitive. Throws
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
-// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam; a folder
+// By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam .inp
+// .bdf .nas .k .key; a folder
 // and a polyMesh `owner` file (or owner.gz) are OpenFOAM too. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
@@ -46,6 +48,24 @@ MeshInput read_hedra(std::string_view text, const std::string& source);   // Loo
 MeshInput read_msh(std::string_view bytes, const std::string& source);    // Gmsh 2.2 / 4.1, ASCII or binary
 MeshInput read_vtk(std::string_view bytes, const std::string& source);    // legacy VTK UNSTRUCTURED_GRID
 MeshInput read_vtu(std::string_view bytes, const std::string& source);    // VTK XML UnstructuredGrid
+
+// Finite-element decks: nodes by label (any positive integers, in any order), volume elements by
+// their corners (second-order ones too), beams, shells and points skipped and counted. A deck may
+// include other files: `include` fetches one, given the including file's name and the path as
+// written, and names it for messages (`name`); without it an include is an InputError. Cells and
+// vertices from an included file are located at the line of the top file that includes it.
+using IncludeReader = std::function<std::string(const std::string& from, const std::string& path, std::string& name)>;
+// Included files from disk, relative to the including file's folder.
+IncludeReader include_from_disk();
+// Abaqus .inp: *NODE, *ELEMENT (C3D4/5/6/8/10/15/20/27 and their variants), parts flattened
+// through their *INSTANCEs (translated and rotated, one label scope each), *INCLUDE.
+MeshInput read_abaqus(std::string_view text, const std::string& source, const IncludeReader& include = {});
+// Nastran bulk data .bdf/.nas: GRID, CHEXA, CPENTA, CPYRAM, CTETRA in small, large and free field;
+// a GRID in a coordinate system other than the basic one is refused.
+MeshInput read_nastran(std::string_view text, const std::string& source, const IncludeReader& include = {});
+// LS-DYNA keyword .k/.key: *NODE, *ELEMENT_SOLID (fixed-width standard, long `+` and i10 `%`
+// forms, free format; one- and two-card), hexahedra with repeated nodes as prisms, pyramids and tets.
+MeshInput read_lsdyna(std::string_view text, const std::string& source, const IncludeReader& include = {});
 
 // OpenFOAM constant/polyMesh: the bytes of its points, faces, owner and neighbour files (inflated
 // when they were gzip-compressed) and the names messages give them. Each cell's faces are those it

@@ -24,6 +24,9 @@ constexpr FormatInfo kFormats[] = {
     {Format::Vtk, "vtk", "", ".vtk", "legacy VTK unstructured grid", false},
     {Format::Vtu, "vtu", "", ".vtu", "VTK XML unstructured grid", false},
     {Format::Foam, "foam", "openfoam", ".foam", "OpenFOAM polyMesh (case folder, .foam file or polyMesh/owner)", false},
+    {Format::Abaqus, "inp", "abaqus", ".inp", "Abaqus input deck", false},
+    {Format::Nastran, "bdf", "nas", ".bdf", "Nastran bulk data (also .nas)", false},
+    {Format::LsDyna, "k", "key", ".k", "LS-DYNA keyword file (also .key)", false},
 };
 
 // "a, b, c or d" of each format's `part`.
@@ -99,6 +102,14 @@ std::string read_file_bytes(const std::string& path) {
   return bytes;
 }
 
+IncludeReader include_from_disk() {
+  return [](const std::string& from, const std::string& path, std::string& name) {
+    const std::filesystem::path p(path);
+    name = p.is_absolute() ? path : (std::filesystem::path(from).parent_path() / p).string();
+    return read_file_bytes(name);
+  };
+}
+
 namespace {
 
 // A file's bytes for parsing: a regular file mapped where the platform maps files, anything else
@@ -137,6 +148,9 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Msh: return read_msh(bytes, path);
     case Format::Vtk: return read_vtk(bytes, path);
     case Format::Vtu: return read_vtu(bytes, path);
+    case Format::Abaqus: return read_abaqus(bytes, path, include_from_disk());
+    case Format::Nastran: return read_nastran(bytes, path, include_from_disk());
+    case Format::LsDyna: return read_lsdyna(bytes, path, include_from_disk());
     case Format::Foam:
     case Format::Auto: break;
   }
