@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "hbc/error.hpp"
+#include "hbc/io.hpp"
 #include "hbc/version.hpp"
 
 namespace {
@@ -19,11 +20,18 @@ int exit_status(const CLI::ParseError& e, int cli11_status) {
   return bad_value ? 2 : 1;
 }
 
+// "ovm, ovmb, ..." from formats(), the one list.
+std::string format_names() {
+  std::string out;
+  for (const hbc::FormatInfo& f : hbc::formats()) out += (out.empty() ? "" : ", ") + std::string(f.name);
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"hbc: structure of hex-dominant meshes (hybrid singularity graph, base complex, sheets, VSG wireframe)."
-               "\nformats: ovm, ovmb, mesh, hybrid, hedra, msh, vtk, vtu (chosen by extension unless --format is given)",
+               "\nformats: " + format_names() + " (chosen by extension unless --format is given)",
                "hbc"};
   app.set_version_flag("--version", std::string("hbc ") + hbc::version());
   app.require_subcommand(1);

@@ -135,8 +135,8 @@ TEST(DecksAbaqus, InstancesOfAPartArePlacedWithTheirOwnLabels) {
 }
 
 // A 20-node hexahedron over two lines (the first ending in a comma), a 10-node tetrahedron on its
-// top face (corners 5 6 7 and the apex 30), a truss: 8 + 1 corners are vertices, the 12 + 6
-// mid-edge nodes (100..111, 200..205) are dropped.
+// top edge 5-6 (corners 5 6 30 31), a truss: 8 + 2 corners are vertices, the 12 + 6 mid-edge nodes
+// (100..111, 200..205) are dropped.
 const char* const kSecondOrder = R"(*NODE, NSET=all
 1,0,0,0
 2,1,0,0
@@ -147,6 +147,7 @@ const char* const kSecondOrder = R"(*NODE, NSET=all
 7,1,1,1
 8,0,1,1
 30,0.5,0.5,2
+31,0.5,-0.5,1.5
 100,.5,0,0
 101,1,.5,0
 102,.5,1,0
@@ -169,18 +170,18 @@ const char* const kSecondOrder = R"(*NODE, NSET=all
 1, 1, 2, 3, 4, 5, 6, 7, 8, 100, 101, 102, 103, 104, 105, 106,
 107, 108, 109, 110, 111
 *ELEMENT, TYPE=C3D10
-2, 5, 6, 7, 30, 200, 201, 202, 203, 204, 205
+2, 5, 6, 30, 31, 200, 201, 202, 203, 204, 205
 *ELEMENT, TYPE=T3D2
 3, 1, 2
 )";
 
 TEST(DecksAbaqus, SecondOrderElementsByTheirCornersAndContinuationLines) {
   const Mesh m = build_mesh(read_abaqus(kSecondOrder, "second.inp"));
-  EXPECT_EQ(m.num_vertices(), 9u);
+  EXPECT_EQ(m.num_vertices(), 10u);
   ASSERT_EQ(m.num_cells(), 2u);
   EXPECT_EQ(m.cell_type[0], CellType::Hex);
   EXPECT_EQ(m.cell_type[1], CellType::Tet);
-  EXPECT_EQ(m.num_faces(), 6u + 3u);  // the tetrahedron shares the triangle 5 6 7? no: the hex's top is a quad
+  EXPECT_EQ(m.num_faces(), 6u + 4u);  // sharing an edge, no face
   ASSERT_EQ(m.warnings.size(), 1u);
   EXPECT_NE(m.warnings[0].find("1 line"), std::string::npos) << m.warnings[0];
 }
@@ -254,7 +255,7 @@ GRID    1               0.      0.      0.
 GRID    2               1.      0.      0.
 GRID    3               1.      1.      0.
 GRID    4               0.      1.      0.
-GRID*   5                                               0.              0.
+GRID*   5                               0.              0.
 *       1.
 GRID,6,,1.,0.,1.
 GRID,7,0,1.,1.,1.
@@ -280,7 +281,7 @@ TEST(DecksNastran, SmallLargeAndFreeFieldsAndNastransReals) {
   EXPECT_DOUBLE_EQ(in.points[3 * 8 + 2], 1.5);
   EXPECT_DOUBLE_EQ(in.points[3 * 9 + 1], -0.5);
   EXPECT_DOUBLE_EQ(in.points[3 * 9 + 2], 1.5);
-  EXPECT_EQ(in.cell_loc, (std::vector<int64_t>{19, 21, 22}));
+  EXPECT_EQ(in.cell_loc, (std::vector<int64_t>{18, 20, 21}));
   const Mesh m = build_mesh(in);
   ASSERT_EQ(m.num_cells(), 3u);
   EXPECT_EQ(m.cell_type[0], CellType::Hex);
@@ -307,7 +308,7 @@ TEST(DecksNastran, AGridInAnotherCoordinateSystemIsRefused) {
 // LS-DYNA
 
 // Four cells as LS-DYNA writes them, each an 8-node card: a hexahedron (nodes 1..8), a prism
-// (N5=N6, N7=N8: quad 1 2 3 4 of the cube's... here over nodes 11..16), a pyramid (N5..N8 the apex)
+// (N5=N6, N7=N8: the quad 11 12 13 14, triangles 11 12 15 and 14 13 16), a pyramid (N5..N8 the apex)
 // and a tetrahedron (N4..N8 equal). In the standard (i8), I10 (`%`) and free formats and the
 // two-card form; '$' comments; *END ends the input.
 const char* const kLsDyna = R"($ four cells
@@ -362,7 +363,7 @@ TEST(DecksLsDyna, DegenerateHexahedraAreThePrismPyramidAndTetTheyStandFor) {
   EXPECT_EQ(m.cell_type[2], CellType::Pyramid);
   EXPECT_EQ(m.cell_type[3], CellType::Tet);
   EXPECT_EQ(m.num_faces(), 6u + 5u + 5u + 4u);
-  EXPECT_EQ(in.cell_loc, (std::vector<int64_t>{33, 34, 37, 38}));
+  EXPECT_EQ(in.cell_loc, (std::vector<int64_t>{30, 31, 34, 35}));
   ASSERT_EQ(m.warnings.size(), 1u);
   EXPECT_NE(m.warnings[0].find("1 surface"), std::string::npos) << m.warnings[0];
 }
@@ -379,9 +380,8 @@ TEST(DecksLsDyna, TheTenNodeTetrahedronByItsCorners) {
 }
 
 TEST(Decks, SkipInvalidDropsTheCellsBuildMeshRefuses) {
-  // A Nastran cube and a CTETRA whose four grids lie in one plane (no volume? build_mesh accepts
-  // flat cells) -- instead a CHEXA that repeats its face: every corner the same as the first
-  // four, which leaves fewer than four faces: dropped by --skip-invalid, named by its line.
+  // A Nastran cube and a CHEXA whose top repeats its bottom (N5..N8 = N1..N4): its faces collapse
+  // to one, no volume; build_mesh refuses the file, --skip-invalid drops that cell alone.
   const std::string t = std::string("GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\n") +
                         "GRID,5,,0.,0.,1.\nGRID,6,,1.,0.,1.\nGRID,7,,1.,1.,1.\nGRID,8,,0.,1.,1.\n" +
                         "CHEXA,1,1,1,2,3,4,5,6,+\n+,7,8\nCHEXA,2,1,1,2,3,4,1,2,+\n+,3,4\n";

@@ -717,7 +717,7 @@ TEST(Malformed, Abaqus) {
       {"cylindrical", with_line(t, 1, "*NODE, SYSTEM=C"), 1, "SYSTEM=R"},
       {"instance_of_nothing", t + "*INSTANCE, NAME=I, PART=NONE\n", 8, "*INSTANCE of a *PART defined before it, found PART=NONE"},
       {"include_without_files", with_line(t, 1, "*NODE\n*INCLUDE, INPUT=more.inp"), 2, "no include"},
-      {"flat", with_line(t, 5, "4, 1., 1., 0."), 7, "volume"},
+      {"repeated_corner", with_line(t, 7, "1, 1, 2, 3, 3"), 7, "a cell with at least 2 faces"},
   });
 }
 

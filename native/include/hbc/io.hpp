@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hbc/check.hpp"
 #include "hbc/mesh.hpp"
@@ -23,7 +24,10 @@ struct FormatInfo {
   std::string_view extension;  // as files usually spell it, with the dot (".HYBRID")
   std::string_view title;      // what writes it, in words
   bool writable;               // write_mesh writes it too
+  std::string_view more_extensions = {};  // other extensions files of it carry (".nas"), space-separated
 };
+// Every extension of a format: its `extension`, then its `more_extensions`.
+std::vector<std::string_view> extensions_of(const FormatInfo& f);
 std::span<const FormatInfo> formats();
 
 // A name or alias of formats() ("ovm", "mesh", "medit", ...); case-insensitive. Throws

@@ -25,8 +25,8 @@ constexpr FormatInfo kFormats[] = {
     {Format::Vtu, "vtu", "", ".vtu", "VTK XML unstructured grid", false},
     {Format::Foam, "foam", "openfoam", ".foam", "OpenFOAM polyMesh (case folder, .foam file or polyMesh/owner)", false},
     {Format::Abaqus, "inp", "abaqus", ".inp", "Abaqus input deck", false},
-    {Format::Nastran, "bdf", "nas", ".bdf", "Nastran bulk data (also .nas)", false},
-    {Format::LsDyna, "k", "key", ".k", "LS-DYNA keyword file (also .key)", false},
+    {Format::Nastran, "bdf", "nas", ".bdf", "Nastran bulk data", false, ".nas"},
+    {Format::LsDyna, "k", "key", ".k", "LS-DYNA keyword file", false, ".key"},
 };
 
 // "a, b, c or d" of each format's `part`.
@@ -44,6 +44,16 @@ std::string listed(Part part) {
 }  // namespace
 
 std::span<const FormatInfo> formats() { return kFormats; }
+
+std::vector<std::string_view> extensions_of(const FormatInfo& f) {
+  std::vector<std::string_view> out{f.extension};
+  for (std::string_view m = f.more_extensions; !m.empty();) {
+    const size_t sp = m.find(' ');
+    if (sp != 0) out.push_back(m.substr(0, sp));
+    m = sp == std::string_view::npos ? std::string_view() : m.substr(sp + 1);
+  }
+  return out;
+}
 
 Format format_from_name(std::string_view name) {
   const std::string n = detail::lower(name);

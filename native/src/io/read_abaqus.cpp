@@ -156,8 +156,9 @@ void AbaqusReader::lines(std::string_view text, int32_t file, int depth) {
     const std::string_view t = detail::trim(line);
     if (t.empty() || t.rfind("**", 0) == 0) continue;
     if (t[0] == '*') {
-      end_record();
-      keyword(parse_keyword(t), at, depth);
+      const Keyword k = parse_keyword(t);
+      if (k.name != "INCLUDE") end_record();
+      keyword(k, at, depth);
       continue;
     }
     detail::split_commas(t, fields_);
@@ -167,17 +168,17 @@ void AbaqusReader::lines(std::string_view text, int32_t file, int depth) {
     else if (mode_ == Mode::Element) element(fields_, continues, at);
     else if (mode_ == Mode::Instance) placement(fields_, at);
   }
-  if (file == 0 && !stop_) end_.line = c.line();
+  if (file == 0 && !stop_) end_.line = std::max<int64_t>(1, c.line());
 }
 
 void AbaqusReader::keyword(const Keyword& k, const DeckLoc& at, int depth) {
-  mode_ = Mode::Other;
   const std::string& n = k.name;
-  if (n == "INCLUDE") {
+  if (n == "INCLUDE") {  // its lines go on with the keyword before it (*NODE, then the nodes' file)
     const std::string path = k.param("INPUT");
     if (path.empty()) files_.fail(at, "*INCLUDE, INPUT=<file>");
     return include(path, at, depth);
   }
+  mode_ = Mode::Other;
   if (n == "STEP") {
     stop_ = true;
     return;

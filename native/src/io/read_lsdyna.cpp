@@ -97,7 +97,7 @@ void LsDynaReader::lines(std::string_view text, int32_t file, int depth) {
       case Mode::Other: break;
     }
   }
-  if (file == 0) end_.line = c.line();
+  if (file == 0) end_.line = std::max<int64_t>(1, c.line());
 }
 
 void LsDynaReader::keyword(std::string_view line, const DeckLoc& at) {

@@ -159,6 +159,7 @@ void NastranReader::lines(std::string_view text, int32_t file, int depth, bool s
     data_.clear();
     data_fields(line, free, large);
   }
+  if (file == 0 && !done_) end_.line = std::max<int64_t>(1, c.line());
 }
 
 void NastranReader::entry() {
