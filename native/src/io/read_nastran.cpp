@@ -20,9 +20,11 @@ namespace {
 
 using detail::DeckLoc;
 
+// ASCII upper case (std::toupper asks the locale for every character: a tenth of the read).
 std::string upper(std::string_view s) {
   std::string r(s);
-  for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (char& c : r)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
   return r;
 }
 
@@ -126,7 +128,10 @@ void NastranReader::lines(std::string_view text, int32_t file, int depth, bool s
     if (file == 0) end_ = at;
     if (const size_t d = line.find('$'); d != std::string_view::npos) line = line.substr(0, d);
     if (detail::trim(line).empty()) continue;
-    const std::string head = upper(detail::trim(line).substr(0, 10));
+    // Only BEGIN BULK, ENDDATA and INCLUDE are looked for by their words.
+    const std::string_view tl = detail::trim(line);
+    const char h = static_cast<char>(tl[0] & ~0x20);
+    const std::string head = skip_to_bulk || h == 'E' || h == 'I' ? upper(tl.substr(0, 10)) : std::string();
     if (skip_to_bulk) {
       skip_to_bulk = head.rfind("BEGIN BULK", 0) != 0;
       continue;
@@ -171,6 +176,7 @@ void NastranReader::entry() {
       if (name_ == k.name) {
         if (k.shape == CellShape::Faces) mesh_.skip(k.dim);
         else element(k);
+        break;
       }
   }
   name_.clear();

@@ -45,7 +45,7 @@ void LabelledMesh::element(CellShape shape, const int64_t* keys, int n, const De
 
 namespace {
 
-// Key -> vertex id: a dense table when the keys are about as many as their range (the usual
+// Key -> vertex id: a dense table when the keys fill a sixteenth of their range or more (the usual
 // 1..n numbering, with gaps), else sorted pairs searched.
 class KeyIndex {
  public:
@@ -59,7 +59,7 @@ class KeyIndex {
       files.fail(at[second], std::string("one ") + what + " with label " + std::to_string(keys[second] & 0xffffffff) +
                                  ", found a second (the first at " + files.name(a.file) + ":" + std::to_string(a.line) + ")");
     };
-    if (range < 4 * keys.size() + 1024) {
+    if (range < 16 * keys.size() + 1024) {  // at most 64 bytes a node, less than a node takes
       dense_.assign(range + 1, -1);
       for (size_t i = 0; i < keys.size(); ++i) {
         int32_t& slot = dense_[static_cast<size_t>(keys[i] - lo_)];
