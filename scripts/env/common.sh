@@ -61,7 +61,8 @@ HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3
   xvfb xauth  # Blender with its window: the add-on's window test (tests/addon/window), panel_screenshot.py
   nodejs  # the web viewer's build and its browser tests (tests/web/; npm comes with it or as Debian's npm)
   python3-matplotlib chromium  # hbc compare's report.html: its plots; the browser test
-  emscripten libfast-float-dev)  # the WebAssembly build (scripts/build_wasm.sh, docs/wasm.md)
+  emscripten libfast-float-dev  # the WebAssembly build (scripts/build_wasm.sh, docs/wasm.md)
+  gmsh hyperfine)  # the decks' twins (tests/data/formats/make_deck_files.py); timing readers against MEDIT
 hbc_missing_packages() {
   local p
   for p in "${HBC_DEBIAN_PACKAGES[@]}"; do
