@@ -138,12 +138,6 @@ bool LineCursor::next(std::string_view& line) {
   return true;
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
 bool parse_int(std::string_view f, int64_t& v) {
   f = trim(f);
   if (!f.empty() && f[0] == '+') f.remove_prefix(1);

@@ -99,7 +99,12 @@ class LineCursor {
   int64_t line_ = 0;
 };
 
-std::string_view trim(std::string_view s);
+// Spaces and tabs off both ends (inline: every field of every line goes through it).
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
 // The whole (trimmed) field as a number; false when it is not one (an empty field is not).
 bool parse_int(std::string_view field, int64_t& v);
 bool parse_real(std::string_view field, double& v);
