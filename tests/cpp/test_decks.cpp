@@ -292,6 +292,17 @@ TEST(DecksNastran, SmallLargeAndFreeFieldsAndNastransReals) {
   EXPECT_NE(m.warnings[0].find("1 line and 1 surface"), std::string::npos) << m.warnings[0];
 }
 
+TEST(DecksNastran, MidEdgeGridsMayBeLeftBlank) {
+  // A 10-node CTETRA with only G5 and G8 of its six mid-edge grids: the four corners are the cell,
+  // grids 5 and 6 (mid-edge only) are dropped.
+  const std::string t = "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,0.,1.,0.\nGRID,4,,0.,0.,1.\nGRID,5,,.5,0.,0.\n"
+                        "GRID,6,,0.,0.,.5\nCTETRA,1,1,1,2,3,4,5,,+\n+,,6\n";
+  const Mesh m = build_mesh(read_nastran(t, "tet10.bdf"));
+  EXPECT_EQ(m.num_vertices(), 4u);
+  ASSERT_EQ(m.num_cells(), 1u);
+  EXPECT_EQ(m.cell_type[0], CellType::Tet);
+}
+
 TEST(DecksNastran, AGridInAnotherCoordinateSystemIsRefused) {
   std::string t = kNastran;
   t.replace(t.find("GRID    2               1."), 26, "GRID    2       3       1.");

@@ -201,13 +201,15 @@ void NastranReader::grid() {
 void NastranReader::element(const EntryKind& k) {
   label(0, "an element id");
   ids_.clear();
-  // G1 .. from the third field; blanks end the list (a first-order element's unused fields).
+  // G1 .. from the third field: the corners, then any of the mid-edge grids (Nastran lets each be
+  // left blank); trailing blanks are a first-order element's unused fields.
   size_t last = data_.size();
   while (last > 2 && data_[last - 1].empty()) --last;
-  for (size_t i = 2; i < last; ++i) ids_.push_back(label(i, "a grid id of the element"));
+  for (size_t i = 2; i < last; ++i)
+    if (i < 2 + static_cast<size_t>(k.corners) || !data_[i].empty()) ids_.push_back(label(i, "a grid id of the element"));
   const int n = static_cast<int>(ids_.size());
-  if (n != k.corners && n != k.nodes)
-    files_.fail(at_, std::string("a ") + k.name + " with " + std::to_string(k.corners) + " or " + std::to_string(k.nodes) +
+  if (n < k.corners || n > k.nodes)
+    files_.fail(at_, std::string("a ") + k.name + " with " + std::to_string(k.corners) + " to " + std::to_string(k.nodes) +
                          " grid ids, found " + std::to_string(n));
   mesh_.element(k.shape, ids_.data(), n, at_);
 }
