@@ -1,6 +1,8 @@
 // hbc export-html FILE -o VIEW.html [--viewer PATH]: one self-contained page showing FILE in the
 // browser: the viewer page built by scripts/build_web.sh with the mesh's bytes embedded in its
 // placeholder element (base64), so the page needs neither a server nor the file beside it.
+#include <algorithm>
+#include <cctype>
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -96,7 +98,16 @@ Embedded embedded_mesh(const InputArgs& in, const Mesh& mesh) {
   const bool page_reads = by_name != Format::Exodus && by_name != Format::Cgns;
   const bool as_read = by_name != Format::Foam && by_name != Format::Auto && page_reads && !in.skip_invalid &&
                        (in.format.empty() || in.parsed_format() == by_name);
-  if (as_read) return {path.filename().string(), read_file_bytes(in.file), {}};
+  if (as_read) {
+    std::string bytes = read_file_bytes(in.file);
+    // A deck that includes other files cannot be read from its own bytes in the page (any
+    // "include" in it counts: the mesh as OVM is right either way).
+    const bool deck = by_name == Format::Abaqus || by_name == Format::Nastran || by_name == Format::LsDyna;
+    const auto ci = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; };
+    const std::string_view word = "include";
+    if (!deck || std::search(bytes.begin(), bytes.end(), word.begin(), word.end(), ci) == bytes.end())
+      return {path.filename().string(), std::move(bytes), {}};
+  }
   std::string stem = fs::is_directory(path) ? fs::absolute(path).lexically_normal().filename().string() : path.stem().string();
   if (stem.empty()) stem = "mesh";
   std::string warnings;

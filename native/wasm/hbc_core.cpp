@@ -386,11 +386,15 @@ val kept_surface_soup(const JsMesh& m, val kept, double shrink) {
 // cell_centroids(mesh): Float64Array (3 nc), the mean of each cell's distinct vertices.
 val cell_centroids(const JsMesh& m) { return copy(hbc::cell_centroids(m.mesh())); }
 
-// FORMATS: formats() as JSON [{name, alias, extension, title, writable}].
+// FORMATS: formats() as JSON [{name, alias, extension, extensions, title, writable}].
 std::string formats_json() {
   Json j = Json::array();
-  for (const FormatInfo& f : formats())
-    j.push_back({{"name", f.name}, {"alias", f.alias}, {"extension", f.extension}, {"title", f.title}, {"writable", f.writable}});
+  for (const FormatInfo& f : formats()) {
+    Json all = Json::array();
+    for (std::string_view e : extensions_of(f)) all.push_back(std::string(e));
+    j.push_back({{"name", f.name}, {"alias", f.alias}, {"extension", f.extension}, {"extensions", all},
+                 {"title", f.title}, {"writable", f.writable}});
+  }
   return j.dump();
 }
 

@@ -64,7 +64,8 @@ HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3
   emscripten libfast-float-dev  # the WebAssembly build (scripts/build_wasm.sh, docs/wasm.md)
   gmsh  # writes the .su2 and .msh test files (tests/data/formats/make_real_files.py)
   libnetcdf-dev libexodusii-dev libcgns-dev libhdf5-dev  # the Exodus II and CGNS readers; libexodus and cgnslib write test inputs
-  netcdf-bin cgns-convert)  # nccopy, aflr3_to_cgns, hdf2adf: tests/data/formats/make_exodus_cgns_files.py
+  netcdf-bin cgns-convert  # nccopy, aflr3_to_cgns, hdf2adf: tests/data/formats/make_exodus_cgns_files.py
+  gmsh hyperfine)  # the decks' twins (tests/data/formats/make_deck_files.py); timing readers against MEDIT
 hbc_missing_packages() {
   local p
   for p in "${HBC_DEBIAN_PACKAGES[@]}"; do

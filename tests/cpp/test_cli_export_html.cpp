@@ -152,6 +152,31 @@ TEST_F(CliExportHtml, EmbedsExodusAndCgnsAsOvm) {
 }
 #endif
 
+// A finite-element deck is embedded as it is, unless it includes other files, which the page
+// could not fetch: then as .ovm, with the deck's counts, and its warnings (a skipped shell).
+TEST_F(CliExportHtml, EmbedsADeckAsItIsOrWithItsIncludesAsOvm) {
+  const std::string nodes = "1, 0,0,0\n2, 1,0,0\n3, 0,1,0\n4, 0,0,1\n";
+  const std::string elements = "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=S3\n2, 1, 2, 3\n";
+  write_file(dir_ / "whole.inp", "*NODE\n" + nodes + elements);
+  ASSERT_EQ(run_cli("export-html " + q(dir_ / "whole.inp") + " -o " + q(dir_ / "w.html") + " --viewer " + q(tpl_)).status, 0);
+  EXPECT_EQ(embedded(dir_ / "w.html").name, "whole.inp");
+  write_file(dir_ / "nodes.inp", nodes);
+  write_file(dir_ / "top.inp", "*NODE\n*INCLUDE, INPUT=nodes.inp\n" + elements);
+  const test::CliRun r = run_cli("export-html " + q(dir_ / "top.inp") + " -o " + q(dir_ / "i.html") + " --viewer " + q(tpl_));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Embedded e = embedded(dir_ / "i.html");  // its name runs on into the data-warnings attribute
+  const std::string name = e.name.substr(0, e.name.find('"'));
+  EXPECT_EQ(name, "top.ovm");
+  EXPECT_NE(e.name.find("data-warnings=\"" + (dir_ / "top.inp").string() + ": read past 0 point, 0 line and 1 surface"),
+            std::string::npos) << e.name;
+  write_file(dir_ / name, e.bytes);
+  nlohmann::json from_page = run_cli("info --json " + q(dir_ / name)).json();
+  nlohmann::json from_deck = run_cli("info --json " + q(dir_ / "top.inp")).json();
+  from_page.erase("file");
+  from_deck.erase("file");
+  EXPECT_EQ(from_page, from_deck);
+}
+
 // With --skip-invalid the page reads the kept cells (as .ovm) and cannot count the dropped ones:
 // the element carries the CLI's warnings about the source in data-warnings, one line each as the
 // CLI prints them on stderr without "hbc: warning: ", for the page to show.

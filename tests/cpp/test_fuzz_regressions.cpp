@@ -33,7 +33,8 @@ fs::path regressions_dir() { return fs::path(HBC_FUZZ_REGRESSIONS_DIR); }
 const std::map<std::string, Format> kReaderHarnesses = {
     {"ovm", Format::Ovm},       {"ovmb", Format::Ovmb}, {"medit", Format::Medit}, {"hybrid", Format::Hybrid},
     {"hedra", Format::Hedra},   {"msh", Format::Msh},   {"vtk", Format::Vtk},     {"vtu", Format::Vtu},
-    {"foam", Format::Foam},     {"su2", Format::Su2},   {"ugrid", Format::Ugrid}, {"fluent", Format::Fluent}};
+    {"foam", Format::Foam},     {"su2", Format::Su2},   {"ugrid", Format::Ugrid}, {"fluent", Format::Fluent},
+    {"abaqus", Format::Abaqus}, {"nastran", Format::Nastran}, {"lsdyna", Format::LsDyna}};
 const std::string kAnalyzeHarness = "analyze";
 const std::string kFoamDecomposedHarness = "foam_decomposed";
 

@@ -122,6 +122,9 @@ MeshInput read_as(Format f, std::string_view bytes, const std::string& name) {
     case Format::Su2: return read_su2(bytes, name);
     case Format::Ugrid: return read_ugrid(bytes, name, ugrid_encoding_of(name));
     case Format::Fluent: return read_fluent(bytes, name);
+    case Format::Abaqus: return read_abaqus(bytes, name);
+    case Format::Nastran: return read_nastran(bytes, name);
+    case Format::LsDyna: return read_lsdyna(bytes, name);
     case Format::Foam:  // four files: see the Foam cases below
     case Format::Auto: break;
   }
@@ -807,4 +810,93 @@ TEST(Malformed, FoamGzipAndCaseFolders) {
 }
 
 }  // namespace
+
+// The finite-element decks: a valid base file each, then each case breaks one thing. Errors at
+// the end of a truncated record name the line the record started on.
+const char* const kAbaqusBase = R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+3, 0., 1., 0.
+4, 0., 0., 1.
+*ELEMENT, TYPE=C3D4
+1, 1, 2, 3, 4
+)";
+
+TEST(Malformed, Abaqus) {
+  const std::string t = kAbaqusBase;
+  ASSERT_NO_THROW(build_mesh(read_abaqus(t, "base.inp")));
+  expect_all_rejected(Format::Abaqus, {
+      {"empty", "", 1, "at least one volume element"},
+      {"no_elements", first_lines(t, 5), 5, "at least one volume element"},
+      {"truncated_record", first_lines(t, 6) + "1, 1, 2,\n", 7, "4 node labels for an element of type C3D4, found 2"},
+      {"too_many_nodes", with_line(t, 7, "1, 1, 2, 3, 4, 4"), 7, "found more"},
+      {"bad_coordinate", with_line(t, 3, "2, 1.x, 0., 0."), 3, "a node coordinate (a number), found '1.x'"},
+      {"bad_label", with_line(t, 3, "-2, 1., 0., 0."), 3, "a node label (an integer label"},
+      {"unknown_node", with_line(t, 7, "1, 1, 2, 3, 9"), 7, "found 9 which no node has"},
+      {"duplicate_node", with_line(t, 4, "2, 0., 1., 0."), 4, "one *NODE with label 2, found a second (the first at bad_duplicate_node.inp:3)"},
+      {"no_type", with_line(t, 6, "*ELEMENT"), 6, "TYPE=<element type>"},
+      {"cylindrical", with_line(t, 1, "*NODE, SYSTEM=C"), 1, "SYSTEM=R"},
+      {"instance_of_nothing", t + "*INSTANCE, NAME=I, PART=NONE\n", 8, "*INSTANCE of a *PART defined before it, found PART=NONE"},
+      {"include_without_files", with_line(t, 1, "*NODE\n*INCLUDE, INPUT=more.inp"), 2, "no include"},
+      {"repeated_corner", with_line(t, 7, "1, 1, 2, 3, 3"), 7, "a cell with at least 2 faces"},
+  });
+}
+
+const char* const kNastranBase = R"(BEGIN BULK
+GRID    1               0.      0.      0.
+GRID    2               1.      0.      0.
+GRID    3               0.      1.      0.
+GRID    4               0.      0.      1.
+CTETRA  1       1       1       2       3       4
+ENDDATA
+)";
+
+TEST(Malformed, Nastran) {
+  const std::string t = kNastranBase;
+  ASSERT_NO_THROW(build_mesh(read_nastran(t, "base.bdf")));
+  expect_all_rejected(Format::Nastran, {
+      {"empty", "", 1, "at least one volume element (CHEXA, CPENTA, CPYRAM or CTETRA)"},
+      {"truncated", first_lines(t, 5), 5, "at least one volume element"},
+      {"bad_real", with_line(t, 3, "GRID    2               1.e     0.      0."), 3, "a coordinate of GRID 2 (a real), found '1.e'"},
+      {"cord", with_line(t, 3, "GRID    2       5       1.      0.      0."), 3, "basic coordinate system"},
+      {"few_grids", with_line(t, 6, "CTETRA  1       1       1       2       3"), 6, "a CTETRA with 4 to 10 grid ids, found 3"},
+      {"unknown_grid", with_line(t, 6, "CTETRA  1       1       1       2       3       7"), 6, "found 7 which no node has"},
+      {"bad_grid_id", with_line(t, 6, "CTETRA  1       1       1       2       3       x"), 6, "a grid id of the element"},
+      {"blank_corner", with_line(t, 6, "CTETRA  1       1       1               3       4"), 6, "a grid id of the element (an integer from 1 to 2^32 - 1), found an empty field"},
+      {"too_many_grids", with_line(t, 6, "CTETRA,1,1,1,2,3,4,5,6,+\n+,7,8,9,10,11"), 6, "a CTETRA with 4 to 10 grid ids, found 11"},
+      {"orphan_continuation", "BEGIN BULK\n+       1       2\n", 2, "a bulk data entry before its continuation line"},
+      {"duplicate_grid", with_line(t, 3, "GRID    1               1.      0.      0."), 3, "one GRID with label 1, found a second"},
+      {"include_without_files", with_line(t, 2, "INCLUDE 'grids.bdf'"), 2, "no include"},
+  });
+}
+
+const char* const kLsDynaBase = R"(*KEYWORD
+*NODE
+       1             0.0             0.0             0.0
+       2             1.0             0.0             0.0
+       3             0.0             1.0             0.0
+       4             0.0             0.0             1.0
+*ELEMENT_SOLID
+       1       1       1       2       3       4       4       4       4       4
+*END
+)";
+
+TEST(Malformed, LsDyna) {
+  const std::string t = kLsDynaBase;
+  ASSERT_NO_THROW(build_mesh(read_lsdyna(t, "base.k")));
+  expect_all_rejected(Format::LsDyna, {
+      {"empty", "", 1, "at least one volume element (*ELEMENT_SOLID)"},
+      {"truncated", first_lines(t, 6), 6, "at least one volume element"},
+      {"pending_card", first_lines(t, 7) + "       1       1\n", 8, "the node card of the *ELEMENT_SOLID element above, found none"},
+      {"pending_keyword", with_line(t, 8, "       1       1"), 8, "the node card of the *ELEMENT_SOLID element above, found '*END'"},
+      {"bad_coordinate", with_line(t, 4, "       2             1.0           abc             0.0"), 4, "a coordinate of node 2 (a number), found 'abc'"},
+      {"bad_node_id", with_line(t, 8, "       1       1       1       2       3       x       4       4       4       4"), 8, "a node id of the element"},
+      {"blank_corner", with_line(t, 8, "       1       1       1       2       3"), 8, "a blank N4"},
+      {"half_blank", with_line(t, 8, "       1       1       1       2       3       4       1       2"), 8, "all set, or all blank"},
+      {"unknown_node", with_line(t, 8, "       1       1       1       2       3       9       9       9       9       9"), 8, "found 9 which no node has"},
+      {"solid_variant", with_line(t, 7, "*ELEMENT_SOLID_H20"), 7, "found *ELEMENT_SOLID_H20"},
+      {"include_without_files", with_line(t, 2, "*INCLUDE\nnodes.k\n*NODE"), 3, "no include"},
+  });
+}
+
 }  // namespace hbc

@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,su2,ugrid,fluent,analyze,exodus,cgns}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,su2,ugrid,fluent,abaqus,nastran,lsdyna,analyze,exodus,cgns}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -43,6 +43,13 @@ done
 for f in "$HERE"/../data/formats/real/*.{exo,e,cgns}; do
   [ -f "$f" ] || continue
   case "$f" in *.cgns) dir=cgns ;; *) dir=exodus ;; esac
+  cp "$f" "$OUT/$dir/src_$(basename "$f")"
+done
+
+# The finite-element decks: the tool-made twins of the slab (tests/data/formats/real).
+for f in "$HERE"/../data/formats/real/*.{inp,bdf,k,key}; do
+  [ -f "$f" ] || continue
+  case "$f" in *.inp) dir=abaqus ;; *.bdf) dir=nastran ;; *) dir=lsdyna ;; esac
   cp "$f" "$OUT/$dir/src_$(basename "$f")"
 done
 

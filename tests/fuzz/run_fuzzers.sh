@@ -8,7 +8,7 @@ set -euo pipefail
 SECONDS_EACH=${1:?usage: run_fuzzers.sh SECONDS [harness...]}
 shift
 HARNESSES=("$@")
-[ ${#HARNESSES[@]} -eq 0 ] && HARNESSES=(ovm ovmb medit hybrid hedra msh vtk vtu foam foam_decomposed su2 ugrid fluent analyze)
+[ ${#HARNESSES[@]} -eq 0 ] && HARNESSES=(ovm ovmb medit hybrid hedra msh vtk vtu foam foam_decomposed su2 ugrid fluent abaqus nastran lsdyna analyze)
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${BUILD:-$ROOT/build-fuzz}
 JOBS=${JOBS:-1}

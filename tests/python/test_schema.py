@@ -89,7 +89,12 @@ def test_name_tables_index_the_arrays(analyzed, shared_data_dir):
     # Formats: every name loads through format=, and each real mesh's extension is listed.
     names = {f["name"] for f in hbc.FORMATS} | {f["alias"] for f in hbc.FORMATS if f["alias"]}
     assert {"ovm", "ovmb", "mesh", "medit", "hybrid", "hedra", "msh", "vtk", "vtu", "foam", "openfoam",
-            "su2", "ugrid", "fluent", "exo", "exodus", "e", "g", "cgns"} == names
+            "su2", "ugrid", "fluent", "exo", "exodus", "e", "g", "cgns",
+            "inp", "abaqus", "bdf", "nas", "k", "key"} == names
+    # Every extension of a format names it (format_from_path), the first being `extension`.
+    for f in hbc.FORMATS:
+        assert f["extensions"][0] == f["extension"]
+    assert [f["extensions"] for f in hbc.FORMATS if f["name"] in ("bdf", "k")] == [[".bdf", ".nas"], [".k", ".key"]]
     extensions = {f["extension"].lower() for f in hbc.FORMATS}
     assert {p.suffix.lower() for p in shared_data_dir.rglob("*") if p.suffix.lower() in extensions}
     assert hbc.load(shared_data_dir / TABLE1 / "teapot.hedra", format="hedra").num_cells == mesh.num_cells

@@ -79,7 +79,7 @@ export class Core {
   extensions() {
     const f = this.M.FORMATS ? copy(get(this.M, 'FORMATS')) : null;
     if (!f) return [];
-    const list = (typeof f === 'string' ? JSON.parse(f) : f).map((x) => x.extension).filter(Boolean);
+    const list = (typeof f === 'string' ? JSON.parse(f) : f).flatMap((x) => x.extensions || [x.extension]).filter(Boolean);
     return list.sort((a, b) => b.length - a.length);
   }
 

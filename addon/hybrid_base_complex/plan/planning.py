@@ -89,7 +89,8 @@ def mesh_extensions():
     .ovm; none when the compiled module is not usable here (the import then says why)."""
     if native.module_problem():
         return []
-    return sorted((f["extension"] for f in native.import_hbc().FORMATS), key=len, reverse=True)
+    formats = native.import_hbc().FORMATS
+    return sorted((e for f in formats for e in f.get("extensions", [f["extension"]])), key=len, reverse=True)
 
 
 # Files without a format extension that name a mesh: OpenFOAM's polyMesh/owner stands for its case.

@@ -2,16 +2,18 @@
 // Readers and writers for the volume mesh formats real hex-dominant meshers write.
 // Every reader parses from memory (so fuzzers and tests need no files) and reports bad input as
 // InputError with the file name and the line (byte offset for binary files).
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hbc/check.hpp"
 #include "hbc/mesh.hpp"
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Su2, Ugrid, Fluent, Exodus, Cgns };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Su2, Ugrid, Fluent, Exodus, Cgns, Abaqus, Nastran, LsDyna };
 
 // Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
 // hbc.FORMATS and the Blender add-on's file filter come from it.
@@ -22,14 +24,17 @@ struct FormatInfo {
   std::string_view extension;  // as files usually spell it, with the dot (".HYBRID")
   std::string_view title;      // what writes it, in words
   bool writable;               // write_mesh writes it too
+  std::string_view more_extensions = {};  // other extensions files of it carry (".nas"), space-separated
 };
+// Every extension of a format: its `extension`, then its `more_extensions`.
+std::vector<std::string_view> extensions_of(const FormatInfo& f);
 std::span<const FormatInfo> formats();
 
 // A name or alias of formats() ("ovm", "mesh", "medit", ...); case-insensitive. Throws
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
 // By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam .su2 .ugrid
-// (also .b8.ugrid ...) .exo .e .g .cgns; a folder
+// (also .b8.ugrid ...) .exo .e .g .cgns .inp .bdf .nas .k .key; a folder
 // and a polyMesh `owner` file (or owner.gz) are OpenFOAM too. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
@@ -65,6 +70,24 @@ MeshInput read_exodus(std::string_view bytes, const std::string& source);
 MeshInput read_cgns(const std::string& path);
 // Builds without netCDF-C (HBC_EXODUS=OFF) or the CGNS library (HBC_CGNS=OFF), and the WebAssembly
 // core, list both formats and refuse their files with an InputError naming the missing library.
+
+// Finite-element decks: nodes by label (any positive integers, in any order), volume elements by
+// their corners (second-order ones too), beams, shells and points skipped and counted. A deck may
+// include other files: `include` fetches one, given the including file's name and the path as
+// written, and names it for messages (`name`); without it an include is an InputError. Cells and
+// vertices from an included file are located at the line of the top file that includes it.
+using IncludeReader = std::function<std::string(const std::string& from, const std::string& path, std::string& name)>;
+// Included files from disk, relative to the including file's folder.
+IncludeReader include_from_disk();
+// Abaqus .inp: *NODE, *ELEMENT (C3D4/5/6/8/10/15/20/27 and their variants), parts flattened
+// through their *INSTANCEs (translated and rotated, one label scope each), *INCLUDE.
+MeshInput read_abaqus(std::string_view text, const std::string& source, const IncludeReader& include = {});
+// Nastran bulk data .bdf/.nas: GRID, CHEXA, CPENTA, CPYRAM, CTETRA in small, large and free field;
+// a GRID in a coordinate system other than the basic one is refused.
+MeshInput read_nastran(std::string_view text, const std::string& source, const IncludeReader& include = {});
+// LS-DYNA keyword .k/.key: *NODE, *ELEMENT_SOLID (fixed-width standard, long `+` and i10 `%`
+// forms, free format; one- and two-card), hexahedra with repeated nodes as prisms, pyramids and tets.
+MeshInput read_lsdyna(std::string_view text, const std::string& source, const IncludeReader& include = {});
 
 // OpenFOAM constant/polyMesh: the bytes of its points, faces, owner and neighbour files (inflated
 // when they were gzip-compressed) and the names messages give them. Each cell's faces are those it

@@ -85,6 +85,9 @@ void bind_schema(py::module_& m) {
     d["name"] = std::string(f.name);
     d["alias"] = std::string(f.alias);
     d["extension"] = std::string(f.extension);
+    py::list all;
+    for (std::string_view e : extensions_of(f)) all.append(std::string(e));
+    d["extensions"] = all;
     d["title"] = std::string(f.title);
     d["writable"] = f.writable;
     fmts[i] = d;

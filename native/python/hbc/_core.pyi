@@ -248,6 +248,7 @@ class FormatInfo(TypedDict):
     name: str  # the format= / --format name, and the extension in lower case
     alias: str  # another accepted name, or ""
     extension: str  # as files usually spell it, with the dot
+    extensions: list[str]  # every extension read as it: `extension` first (".bdf", ".nas")
     title: str  # what writes it
     writable: bool  # write_mesh / `hbc generate` write it too
 

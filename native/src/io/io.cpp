@@ -34,6 +34,9 @@ constexpr FormatInfo kFormats[] = {
     {Format::Exodus, "e", "", ".e", "Exodus II", false},
     {Format::Exodus, "g", "", ".g", "Exodus II (Genesis)", false},
     {Format::Cgns, "cgns", "", ".cgns", "CGNS (ADF or HDF5; unstructured and structured zones)", false},
+    {Format::Abaqus, "inp", "abaqus", ".inp", "Abaqus input deck", false},
+    {Format::Nastran, "bdf", "nas", ".bdf", "Nastran bulk data", false, ".nas"},
+    {Format::LsDyna, "k", "key", ".k", "LS-DYNA keyword file", false, ".key"},
 };
 
 // "a, b, c or d" of each format's `part`, each once (Gmsh and Fluent share .msh).
@@ -50,6 +53,16 @@ std::string listed(Part part) {
 }  // namespace
 
 std::span<const FormatInfo> formats() { return kFormats; }
+
+std::vector<std::string_view> extensions_of(const FormatInfo& f) {
+  std::vector<std::string_view> out{f.extension};
+  for (std::string_view m = f.more_extensions; !m.empty();) {
+    const size_t sp = m.find(' ');
+    if (sp != 0) out.push_back(m.substr(0, sp));
+    m = sp == std::string_view::npos ? std::string_view() : m.substr(sp + 1);
+  }
+  return out;
+}
 
 Format format_from_name(std::string_view name) {
   const std::string n = detail::lower(name);
@@ -110,6 +123,14 @@ std::string read_file_bytes(const std::string& path) {
   return bytes;
 }
 
+IncludeReader include_from_disk() {
+  return [](const std::string& from, const std::string& path, std::string& name) {
+    const std::filesystem::path p(path);
+    name = p.is_absolute() ? path : (std::filesystem::path(from).parent_path() / p).string();
+    return read_file_bytes(name);
+  };
+}
+
 namespace {
 
 // A file's bytes for parsing: a regular file mapped where the platform maps files, anything else
@@ -159,6 +180,9 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Ugrid: return read_ugrid(bytes, path, ugrid_encoding_of(path));
     case Format::Fluent: return read_fluent(bytes, path);
     case Format::Exodus: return read_exodus(bytes, path);
+    case Format::Abaqus: return read_abaqus(bytes, path, include_from_disk());
+    case Format::Nastran: return read_nastran(bytes, path, include_from_disk());
+    case Format::LsDyna: return read_lsdyna(bytes, path, include_from_disk());
     case Format::Foam:
     case Format::Cgns:
     case Format::Auto: break;

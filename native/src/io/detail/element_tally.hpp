@@ -1,5 +1,5 @@
 #pragma once
-// Element-list formats (Gmsh, VTK, VTU) mix points, lines and surface elements with the volume
+// Element-list formats (Gmsh, VTK, VTU, the FE decks) mix points, lines and surface elements with the volume
 // cells; the readers skip those and report how many in one warning.
 #include <array>
 #include <cstdint>
@@ -12,6 +12,9 @@ namespace hbc::detail {
 class ElementTally {
  public:
   void skip(int dim) { ++n_[static_cast<size_t>(dim < 0 ? 0 : dim > 2 ? 2 : dim)]; }
+  void add(const ElementTally& o) {
+    for (size_t d = 0; d < 3; ++d) n_[d] += o.n_[d];
+  }
   int64_t skipped() const { return n_[0] + n_[1] + n_[2]; }
   // Adds "read past N point, line and surface element(s)" to the input's warnings when any.
   void report(MeshInput& in) const {

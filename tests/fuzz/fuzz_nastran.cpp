@@ -1,0 +1,7 @@
+// libFuzzer harness: read_nastran (Nastran bulk data; includes fetched as a fixed small file) + build_mesh on arbitrary bytes (see fuzz_targets.hpp).
+#include "fuzz_targets.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  hbc::fuzz::read_and_build(hbc::Format::Nastran, {reinterpret_cast<const char*>(data), size});
+  return 0;
+}
