@@ -100,7 +100,7 @@ def hbc_cli():
     return value
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def main_thread_share():
     """Runs `work` in a thread, at least three times and until 0.3 s have passed, while the main
     thread spins asking for the GIL; returns (the main thread's CPU time over the elapsed time,
