@@ -19,21 +19,7 @@ constexpr bool kLittle = std::endian::native == std::endian::little;
 
 std::string formats_path(const std::string& rel) { return std::string(HBC_FORMATS_DIR) + "/" + rel; }
 
-// Signed volume of cell c with each loop as the cell sees it (positive: loops face out).
-double signed_volume(const MeshInput& in, size_t c) {
-  double vol = 0;
-  for (int32_t hf : in.cells[c]) {
-    auto loop = in.faces[static_cast<size_t>(hf / 2)];
-    std::vector<int32_t> l(loop.begin(), loop.end());
-    if (hf % 2) std::reverse(l.begin(), l.end());
-    auto p = [&](size_t i, int a) { return in.points[3 * static_cast<size_t>(l[i]) + static_cast<size_t>(a)]; };
-    for (size_t t = 1; t + 1 < l.size(); ++t)
-      vol += p(0, 0) * (p(t, 1) * p(t + 1, 2) - p(t, 2) * p(t + 1, 1)) -
-             p(0, 1) * (p(t, 0) * p(t + 1, 2) - p(t, 2) * p(t + 1, 0)) +
-             p(0, 2) * (p(t, 0) * p(t + 1, 1) - p(t, 1) * p(t + 1, 0));
-  }
-  return vol / 6;
-}
+using test::signed_volume;
 
 const char* const kCfdFiles[] = {"slab_gmsh.su2",  "slab_meshio.su2", "slab.ugrid",     "slab.b8.ugrid",
                                  "slab.lb8.ugrid", "slab.r8.ugrid",   "slab.lr8.ugrid", "slab_fluent.msh"};

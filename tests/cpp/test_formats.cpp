@@ -15,6 +15,7 @@
 #include "io/detail/base64.hpp"
 #include "format_samples.hpp"
 #include "test_support.hpp"
+#include "test_support.hpp"
 
 namespace hbc {
 namespace {
@@ -22,23 +23,7 @@ namespace {
 std::string formats_path(const std::string& rel) { return std::string(HBC_FORMATS_DIR) + "/" + rel; }
 std::string formats_file(const std::string& rel) { return read_file_bytes(formats_path(rel)); }
 
-// Signed volume of cell c of a reader's output, with each face loop as the cell sees it: positive
-// when the loops face out of the cell. `in` holds a face soup (see with_face_soup).
-double signed_volume(const MeshInput& in, size_t c) {
-  EXPECT_TRUE(in.cell_shape.empty()) << "element cells: take with_face_soup of the reader's output";
-  double vol = 0;
-  for (int32_t hf : in.cells[c]) {
-    auto loop = in.faces[static_cast<size_t>(hf / 2)];
-    std::vector<int32_t> l(loop.begin(), loop.end());
-    if (hf % 2) std::reverse(l.begin(), l.end());
-    auto p = [&](size_t i, int a) { return in.points[3 * static_cast<size_t>(l[i]) + static_cast<size_t>(a)]; };
-    for (size_t t = 1; t + 1 < l.size(); ++t)
-      vol += p(0, 0) * (p(t, 1) * p(t + 1, 2) - p(t, 2) * p(t + 1, 1)) -
-             p(0, 1) * (p(t, 0) * p(t + 1, 2) - p(t, 2) * p(t + 1, 0)) +
-             p(0, 2) * (p(t, 0) * p(t + 1, 1) - p(t, 1) * p(t + 1, 0));
-  }
-  return vol / 6;
-}
+using test::signed_volume;
 
 
 // ---------------------------------------------------------------------------------------------

@@ -42,6 +42,24 @@ void expect_same_csr(const Csr<T>& a, const Csr<T>& b, const char* what) {
              << " (tests read ../shared/data; set -DHBC_DATA_DIR=... to point elsewhere)"; \
   } while (0)
 
+// Signed volume of cell c of a reader's output, with each face loop as the cell sees it: positive
+// when the loops face out of the cell. `in` holds a face soup (see with_face_soup).
+inline double signed_volume(const MeshInput& in, size_t c) {
+  EXPECT_TRUE(in.cell_shape.empty()) << "element cells: take with_face_soup of the reader's output";
+  double vol = 0;
+  for (int32_t hf : in.cells[c]) {
+    auto loop = in.faces[static_cast<size_t>(hf / 2)];
+    std::vector<int32_t> l(loop.begin(), loop.end());
+    if (hf % 2) std::reverse(l.begin(), l.end());
+    auto p = [&](size_t i, int a) { return in.points[3 * static_cast<size_t>(l[i]) + static_cast<size_t>(a)]; };
+    for (size_t t = 1; t + 1 < l.size(); ++t)
+      vol += p(0, 0) * (p(t, 1) * p(t + 1, 2) - p(t, 2) * p(t + 1, 1)) -
+             p(0, 1) * (p(t, 0) * p(t + 1, 2) - p(t, 2) * p(t + 1, 0)) +
+             p(0, 2) * (p(t, 0) * p(t + 1, 1) - p(t, 1) * p(t + 1, 0));
+  }
+  return vol / 6;
+}
+
 inline Mesh load_data(const std::string& rel) { return load_mesh(data_path(rel)); }
 
 // `mesh` renumbered by random permutations drawn from rng (vertices first, then cells): vertex v

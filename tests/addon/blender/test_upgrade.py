@@ -16,18 +16,8 @@ import numpy as np
 import pytest
 from mathutils import Euler, Vector
 
-from test_inspect import cell_arrays, evaluated_cells, generate, import_mesh
-
-
-@pytest.fixture
-def reset(clean_scene):
-    ins = bpy.context.scene.hbc_inspect
-    for key in ("slice", "flip", "filter_quality", "direct_cells", "color_by_quality", "sheet_only"):
-        setattr(ins, key, False)
-    ins.peel = 0
-    ins.plane = None
-    ins.enabled = True
-    yield ins
+# reset: the inspection settings as a fresh scene has them (a fixture, used by name).
+from test_inspect import cell_arrays, evaluated_cells, generate, import_mesh, reset  # noqa: F401
 
 
 def components_objects(root):
