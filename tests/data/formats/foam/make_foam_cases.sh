@@ -15,7 +15,9 @@ source /usr/share/openfoam/etc/bashrc >/dev/null 2>&1
 set -eu
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-convert() {  # name format compression
+# case_from_hex2 NAME FORMAT COMPRESSION: $TMP/NAME, a case of hex2_ascii's mesh whose controlDict
+# writes FORMAT with COMPRESSION.
+case_from_hex2() {
   local C=$TMP/$1
   mkdir -p "$C/system" "$C/constant"
   cp -r "$HERE/hex2_ascii/constant/polyMesh" "$C/constant/"
@@ -25,6 +27,10 @@ application none; startFrom startTime; startTime 0; stopAt endTime; endTime 0; d
 writeControl timeStep; writeInterval 1; writeFormat $2; writePrecision 17; writeCompression $3;
 timeFormat general; timePrecision 6;
 DICT
+}
+convert() {  # name format compression
+  local C=$TMP/$1
+  case_from_hex2 "$@"
   (cd "$C" && foamFormatConvert -constant >log.foamFormatConvert 2>&1) || { cat "$C/log.foamFormatConvert"; exit 1; }
   rm -rf "${HERE:?}/$1"
   mkdir -p "$HERE/$1/constant"
@@ -33,14 +39,7 @@ DICT
 }
 decompose() {  # name format compression keep-constant
   local C=$TMP/$1
-  mkdir -p "$C/system" "$C/constant"
-  cp -r "$HERE/hex2_ascii/constant/polyMesh" "$C/constant/"
-  cat >"$C/system/controlDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application none; startFrom startTime; startTime 0; stopAt endTime; endTime 0; deltaT 1;
-writeControl timeStep; writeInterval 1; writeFormat $2; writePrecision 17; writeCompression $3;
-timeFormat general; timePrecision 6;
-DICT
+  case_from_hex2 "$1" "$2" "$3"
   echo 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
 numberOfSubdomains 2; method simple; coeffs { n (2 1 1); }' >"$C/system/decomposeParDict"
   for f in fvSchemes fvSolution; do
