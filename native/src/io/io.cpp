@@ -37,7 +37,7 @@ constexpr FormatInfo kFormats[] = {
     {Format::Abaqus, "inp", "abaqus", ".inp", "Abaqus input deck", false},
     {Format::Nastran, "bdf", "nas", ".bdf", "Nastran bulk data", false, ".nas"},
     {Format::LsDyna, "k", "key", ".k", "LS-DYNA keyword file", false, ".key"},
-    {Format::Med, "med", "salome", ".med", "Salome MED (MED-fichier 3/4, HDF5)", false},
+    {Format::Med, "med", "", ".med", "Salome MED (MED-fichier 3/4, HDF5)", false},
 };
 
 // "a, b, c or d" of each format's `part`, each once (Gmsh and Fluent share .msh).
