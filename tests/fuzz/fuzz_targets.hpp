@@ -90,6 +90,7 @@ inline MeshInput read_as(Format f, std::string_view bytes) {
     case Format::Nastran: return read_nastran(bytes, "fuzz", fuzz_include);
     case Format::LsDyna: return read_lsdyna(bytes, "fuzz", fuzz_include);
     case Format::Med: return read_med(bytes, "fuzz");
+    case Format::Xdmf: return read_xdmf(bytes, "fuzz");
     case Format::Auto: break;
   }
   std::abort();

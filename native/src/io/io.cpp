@@ -38,6 +38,7 @@ constexpr FormatInfo kFormats[] = {
     {Format::Nastran, "bdf", "nas", ".bdf", "Nastran bulk data", false, ".nas"},
     {Format::LsDyna, "k", "key", ".k", "LS-DYNA keyword file", false, ".key"},
     {Format::Med, "med", "", ".med", "Salome MED (MED-fichier 3/4, HDF5)", false},
+    {Format::Xdmf, "xdmf", "xmf", ".xdmf", "XDMF3 (FEniCS/dolfinx, meshio; data inline or in HDF5)", false, ".xmf"},
 };
 
 // "a, b, c or d" of each format's `part`, each once (Gmsh and Fluent share .msh).
@@ -185,6 +186,7 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Nastran: return read_nastran(bytes, path, include_from_disk());
     case Format::LsDyna: return read_lsdyna(bytes, path, include_from_disk());
     case Format::Med: return read_med(bytes, path);
+    case Format::Xdmf: return read_xdmf(bytes, path);
     case Format::Foam:
     case Format::Cgns:
     case Format::Auto: break;
