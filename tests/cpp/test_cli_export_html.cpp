@@ -133,15 +133,15 @@ TEST_F(CliExportHtml, EmbedsAFileReadByFormatAsOvm) {
 }
 
 #if (HBC_TEST_EXODUS && HBC_TEST_CGNS) || HBC_TEST_MED
-// The page's WebAssembly core reads neither Exodus II, CGNS nor MED: their meshes go in as .ovm,
-// with the counts of the file itself.
-TEST_F(CliExportHtml, EmbedsExodusCgnsAndMedAsOvm) {
+// The page's WebAssembly core reads neither Exodus II, CGNS, MED nor XDMF's HDF5 data: their meshes
+// go in as .ovm, with the counts of the file itself.
+TEST_F(CliExportHtml, EmbedsExodusCgnsMedAndXdmfAsOvm) {
   std::vector<std::string> names;
 #if HBC_TEST_EXODUS && HBC_TEST_CGNS
   names = {"slab_hdf5.exo", "mixed4.cgns"};
 #endif
 #if HBC_TEST_MED
-  names.push_back("mixed4_med_order.med");
+  names.insert(names.end(), {"mixed4_med_order.med", "mixed4_meshio.xdmf"});
 #endif
   for (const std::string& name : names) {
     SCOPED_TRACE(name);

@@ -69,6 +69,7 @@ class XdmfReader {
     throw InputError(in_.source, {}, "expected " + expected + " in HDF5 dataset " + dataset);
   }
   pugi::xml_node grid(const pugi::xml_node& domain);
+  pugi::xml_node included(const pugi::xml_node& domain, const pugi::xml_node& g);
   // A DataItem's values: `count` of them when >= 0, else as many as its Dimensions say.
   std::vector<double> numbers(const pugi::xml_node& item, int64_t count, bool integers);
   std::vector<double> inline_numbers(const pugi::xml_node& item, int64_t count) const;
@@ -101,6 +102,28 @@ pugi::xml_node XdmfReader::grid(const pugi::xml_node& domain) {
     g = first;
   }
   return g;
+}
+
+// meshio's time series: each step's Grid includes the mesh's Topology and Geometry from a Grid
+// named in an xi:include's xpointer ("//Grid[@Name="mesh"]/..."); that Grid is read.
+pugi::xml_node XdmfReader::included(const pugi::xml_node& domain, const pugi::xml_node& g) {
+  for (const pugi::xml_node c : g.children()) {
+    const std::string_view name = c.name();
+    if (name != "include" && (name.size() < 8 || name.substr(name.size() - 8) != ":include")) continue;
+    const std::string xp = attr(c, "xpointer");
+    const size_t at = xp.find("@Name=\"");
+    const size_t end = at == std::string::npos ? at : xp.find('"', at + 7);
+    if (end == std::string::npos) fail(c, "an xpointer naming a Grid (//Grid[@Name=\"...\"]), found '" + xp + "'");
+    const std::string target = xp.substr(at + 7, end - at - 7);
+    const pugi::xml_node found = domain.find_node([&](const pugi::xml_node& n) {
+      return std::string_view(n.name()) == "Grid" && target == n.attribute("Name").value() && n.child("Topology") && n.child("Geometry");
+    });
+    if (!found) fail(c, "a Grid named '" + target + "' with a Topology and a Geometry (the xpointer's)");
+    in_.warnings.push_back("the grid's Topology and Geometry are those of grid '" + target + "' (xi:include)");
+    return found;
+  }
+  if (!g.child("Geometry")) fail(g, "a Geometry in the Grid");
+  fail(g, "a Topology in the Grid");
 }
 
 std::vector<double> XdmfReader::numbers(const pugi::xml_node& item, int64_t count, bool integers) {
@@ -194,9 +217,9 @@ std::vector<double> XdmfReader::hdf_numbers(const pugi::xml_node& item, int64_t 
   (void)count;
   (void)integers;
 #ifdef __EMSCRIPTEN__
-  throw InputError(in_.source, SourceLoc::at_line(line_of(item)), "XDMF data in HDF5 files (" + dataset + ") needs the desktop tool (the hbc command, its Python module or the Blender add-on): the web viewer has no HDF5 library to read it");
+  throw InputError(in_.source, SourceLoc::at_line(line_of(item)), "XDMF data in HDF5 files (" + dataset + ") need the desktop tool (the hbc command, its Python module or the Blender add-on): the web viewer has no HDF5 library to read it");
 #else
-  throw InputError(in_.source, SourceLoc::at_line(line_of(item)), "XDMF data in HDF5 files (" + dataset + ") needs HDF5: this hbc was built without it (HBC_MED=OFF; install libhdf5-dev and build again)");
+  throw InputError(in_.source, SourceLoc::at_line(line_of(item)), "XDMF data in HDF5 files (" + dataset + ") need HDF5: this hbc was built without it (HBC_MED=OFF; install libhdf5-dev and build again)");
 #endif
 #endif
 }
@@ -270,9 +293,8 @@ MeshInput XdmfReader::read() {
   if (!root) fail(doc.first_child(), "an Xdmf root element");
   const pugi::xml_node domain = root.child("Domain");
   if (!domain) fail(root, "a Domain in the Xdmf element");
-  const pugi::xml_node g = grid(domain);
-  if (!g.child("Geometry")) fail(g, "a Geometry in the Grid");
-  if (!g.child("Topology")) fail(g, "a Topology in the Grid");
+  pugi::xml_node g = grid(domain);
+  if (!g.child("Geometry") || !g.child("Topology")) g = included(domain, g);
   geometry(g.child("Geometry"));
   topology(g.child("Topology"));
   if (in_.cells.rows() == 0) fail(g.child("Topology"), "at least one volume cell (Hexahedron, Wedge, Pyramid or Tetrahedron)");
