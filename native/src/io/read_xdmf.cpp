@@ -217,7 +217,7 @@ std::vector<double> XdmfReader::hdf_numbers(const pugi::xml_node& item, int64_t 
   (void)count;
   (void)integers;
 #ifdef __EMSCRIPTEN__
-  throw InputError(in_.source, SourceLoc::at_line(line_of(item)), "XDMF data in HDF5 files (" + dataset + ") need the desktop tool (the hbc command, its Python module or the Blender add-on): the web viewer has no HDF5 library to read it");
+  throw InputError(in_.source, SourceLoc::at_line(line_of(item)), "XDMF data in HDF5 files (" + dataset + ") need the desktop tool (the hbc command, its Python module or the Blender add-on): the web viewer has no HDF5 library to read them");
 #else
   throw InputError(in_.source, SourceLoc::at_line(line_of(item)), "XDMF data in HDF5 files (" + dataset + ") need HDF5: this hbc was built without it (HBC_MED=OFF; install libhdf5-dev and build again)");
 #endif
