@@ -83,6 +83,7 @@ class XdmfReader {
   detail::CellAppender cells_;
   detail::ElementTally tally_;
   int64_t nv_ = 0;
+  int64_t topology_line_ = -1;  // the cells' location: their DataItem's line (counted once, not per cell)
 };
 
 std::string attr(const pugi::xml_node& n, const char* a, const char* b = nullptr) {
@@ -234,13 +235,14 @@ void XdmfReader::element(const XdmfType& t, const double* ids, const pugi::xml_n
     if (k < corner_count(t.shape)) v[static_cast<size_t>(k)] = static_cast<int32_t>(id);
     else cells_.midside(static_cast<int32_t>(id));
   }
-  cells_.element(t.shape, v.data(), line_of(where));
+  cells_.element(t.shape, v.data(), topology_line_);
 }
 
 void XdmfReader::topology(const pugi::xml_node& top) {
   const std::string type = detail::lower(attr(top, "TopologyType", "Type"));
   const pugi::xml_node item = top.child("DataItem");
   const std::vector<double> ids = numbers(item, -1, true);
+  topology_line_ = line_of(item);
   const int64_t n = ids.size();
   if (type == "mixed") {
     for (int64_t at = 0; at < n;) {
