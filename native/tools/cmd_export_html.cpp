@@ -76,7 +76,7 @@ std::string read_text(const fs::path& p) {
 }
 
 // What the page reads: the file's own bytes under its own name when it is one file whose extension
-// names its format and the page's core reads it; else (an OpenFOAM case, Exodus II or CGNS, a
+// names its format and the page's core reads it; else (an OpenFOAM case, Exodus II, CGNS, MED or XDMF, a
 // format given by --format, cells dropped by --skip-invalid) the loaded mesh written as
 // OpenVolumeMesh ASCII, which keeps every cell as read.
 // Then the page cannot tell what reading the source said (how many cells --skip-invalid dropped,
@@ -94,8 +94,9 @@ Embedded embedded_mesh(const InputArgs& in, const Mesh& mesh) {
       by_name = Format::Auto;  // read by --format; its name would not tell the page the format
     }
   }
-  // The page's WebAssembly core has neither netCDF-C nor the CGNS library: those go in as .ovm.
-  const bool page_reads = by_name != Format::Exodus && by_name != Format::Cgns;
+  // The page's WebAssembly core has neither netCDF-C, the CGNS library nor HDF5: those go in as .ovm.
+  const bool page_reads = by_name != Format::Exodus && by_name != Format::Cgns && by_name != Format::Med &&
+                          by_name != Format::Xdmf;  // its data lies in another file
   const bool as_read = by_name != Format::Foam && by_name != Format::Auto && page_reads && !in.skip_invalid &&
                        (in.format.empty() || in.parsed_format() == by_name);
   if (as_read) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "hbc/generate.hpp"
@@ -131,11 +132,18 @@ TEST_F(CliExportHtml, EmbedsAFileReadByFormatAsOvm) {
   EXPECT_EQ(from_page, from_file);
 }
 
+#if (HBC_TEST_EXODUS && HBC_TEST_CGNS) || HBC_TEST_MED
+// The page's WebAssembly core reads neither Exodus II, CGNS, MED nor XDMF's HDF5 data: their meshes
+// go in as .ovm, with the counts of the file itself.
+TEST_F(CliExportHtml, EmbedsExodusCgnsMedAndXdmfAsOvm) {
+  std::vector<std::string> names;
 #if HBC_TEST_EXODUS && HBC_TEST_CGNS
-// The page's WebAssembly core reads neither Exodus II nor CGNS: their meshes go in as .ovm, with
-// the counts of the file itself.
-TEST_F(CliExportHtml, EmbedsExodusAndCgnsAsOvm) {
-  for (const char* name : {"slab_hdf5.exo", "mixed4.cgns"}) {
+  names = {"slab_hdf5.exo", "mixed4.cgns"};
+#endif
+#if HBC_TEST_MED
+  names.insert(names.end(), {"mixed4_med_order.med", "mixed4_meshio.xdmf"});
+#endif
+  for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const std::string file = std::string(HBC_FORMATS_DIR) + "/real/" + name;
     const test::CliRun r = run_cli("export-html " + q(file) + " -o " + q(dir_ / "x.html") + " --viewer " + q(tpl_));

@@ -89,6 +89,8 @@ inline MeshInput read_as(Format f, std::string_view bytes) {
     case Format::Abaqus: return read_abaqus(bytes, "fuzz", fuzz_include);
     case Format::Nastran: return read_nastran(bytes, "fuzz", fuzz_include);
     case Format::LsDyna: return read_lsdyna(bytes, "fuzz", fuzz_include);
+    case Format::Med: return read_med(bytes, "fuzz");
+    case Format::Xdmf: return read_xdmf(bytes, "fuzz");
     case Format::Auto: break;
   }
   std::abort();

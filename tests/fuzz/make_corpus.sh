@@ -7,7 +7,7 @@ HBC=$1
 OUT=$2
 DATA=${3:-"$(cd "$(dirname "$0")/../.." && pwd)/../shared/data"}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,su2,ugrid,fluent,abaqus,nastran,lsdyna,analyze,exodus,cgns}
+mkdir -p "$OUT"/{ovm,ovmb,medit,hybrid,hedra,msh,vtk,vtu,foam,foam_decomposed,su2,ugrid,fluent,abaqus,nastran,lsdyna,analyze,exodus,cgns,med,xdmf}
 GEN=$(mktemp -d)
 trap 'rm -rf "$GEN"' EXIT
 
@@ -43,6 +43,13 @@ done
 for f in "$HERE"/../data/formats/real/*.{exo,e,cgns}; do
   [ -f "$f" ] || continue
   case "$f" in *.cgns) dir=cgns ;; *) dir=exodus ;; esac
+  cp "$f" "$OUT/$dir/src_$(basename "$f")"
+done
+
+# MED and XDMF: meshio's twins (the XDMF harness reads the XML; its inline-data twin holds the mesh).
+for f in "$HERE"/../data/formats/real/*.{med,xdmf}; do
+  [ -f "$f" ] || continue
+  case "$f" in *.med) dir=med ;; *) dir=xdmf ;; esac
   cp "$f" "$OUT/$dir/src_$(basename "$f")"
 done
 

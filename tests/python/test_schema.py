@@ -89,7 +89,7 @@ def test_name_tables_index_the_arrays(analyzed, shared_data_dir):
     # Formats: every name loads through format=, and each real mesh's extension is listed.
     names = {f["name"] for f in hbc.FORMATS} | {f["alias"] for f in hbc.FORMATS if f["alias"]}
     assert {"ovm", "ovmb", "mesh", "medit", "hybrid", "hedra", "msh", "vtk", "vtu", "foam", "openfoam",
-            "su2", "ugrid", "fluent", "exo", "exodus", "e", "g", "cgns",
+            "su2", "ugrid", "fluent", "exo", "exodus", "e", "g", "cgns", "med", "xdmf", "xmf",
             "inp", "abaqus", "bdf", "nas", "k", "key"} == names
     # Every extension of a format names it (format_from_path), the first being `extension`.
     for f in hbc.FORMATS:

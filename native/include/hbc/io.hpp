@@ -13,7 +13,7 @@
 
 namespace hbc {
 
-enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Su2, Ugrid, Fluent, Exodus, Cgns, Abaqus, Nastran, LsDyna };
+enum class Format { Auto, Ovm, Ovmb, Medit, Hybrid, Hedra, Msh, Vtk, Vtu, Foam, Su2, Ugrid, Fluent, Exodus, Cgns, Abaqus, Nastran, LsDyna, Med, Xdmf };
 
 // Every format hbc reads, in one list: the CLI's --format names and messages, the Python package's
 // hbc.FORMATS and the Blender add-on's file filter come from it.
@@ -34,7 +34,7 @@ std::span<const FormatInfo> formats();
 // std::invalid_argument for anything else.
 Format format_from_name(std::string_view name);
 // By extension (case-insensitive): .ovm .ovmb .mesh .HYBRID .hedra .msh .vtk .vtu .foam .su2 .ugrid
-// (also .b8.ugrid ...) .exo .e .g .cgns .inp .bdf .nas .k .key; a folder
+// (also .b8.ugrid ...) .exo .e .g .cgns .inp .bdf .nas .k .key .med .xdmf .xmf; a folder
 // and a polyMesh `owner` file (or owner.gz) are OpenFOAM too. Throws InputError otherwise.
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
@@ -68,8 +68,18 @@ MeshInput read_exodus(std::string_view bytes, const std::string& source);
 // CGNS through the CGNS library, which opens files only: this reader takes the path. Every zone of
 // the first base, joined without merging shared vertices; structured zones as hexahedra.
 MeshInput read_cgns(const std::string& path);
-// Builds without netCDF-C (HBC_EXODUS=OFF) or the CGNS library (HBC_CGNS=OFF), and the WebAssembly
-// core, list both formats and refuse their files with an InputError naming the missing library.
+// Salome MED (MED-fichier 3.x/4.x) through HDF5's C library, from memory: the first mesh of
+// /ENS_MAA at its first time step; volume elements by their corners (second-order ones too),
+// converted from MED's corner order (or read as VTK's when the file was written so, as meshio
+// writes it: decided per file, with a warning); messages name the HDF5 group or dataset (no lines).
+MeshInput read_med(std::string_view bytes, const std::string& source);
+// XDMF3 (.xdmf/.xmf): the first Grid's Topology and Geometry (XYZ), data inline or in HDF5 files
+// named relative to `source`'s folder (read from disk). Lines for XML problems, the HDF5 dataset
+// for data problems; without HDF5 only inline data is read.
+MeshInput read_xdmf(std::string_view xml, const std::string& source);
+// Builds without netCDF-C (HBC_EXODUS=OFF), the CGNS library (HBC_CGNS=OFF) or HDF5 (HBC_MED=OFF),
+// and the WebAssembly core, list these formats and refuse their files with an InputError naming
+// the missing library.
 
 // Finite-element decks: nodes by label (any positive integers, in any order), volume elements by
 // their corners (second-order ones too), beams, shells and points skipped and counted. A deck may

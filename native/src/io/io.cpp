@@ -37,6 +37,8 @@ constexpr FormatInfo kFormats[] = {
     {Format::Abaqus, "inp", "abaqus", ".inp", "Abaqus input deck", false},
     {Format::Nastran, "bdf", "nas", ".bdf", "Nastran bulk data", false, ".nas"},
     {Format::LsDyna, "k", "key", ".k", "LS-DYNA keyword file", false, ".key"},
+    {Format::Med, "med", "", ".med", "Salome MED (MED-fichier 3/4, HDF5)", false},
+    {Format::Xdmf, "xdmf", "xmf", ".xdmf", "XDMF3 (FEniCS/dolfinx, meshio; data inline or in HDF5)", false, ".xmf"},
 };
 
 // "a, b, c or d" of each format's `part`, each once (Gmsh and Fluent share .msh).
@@ -183,6 +185,8 @@ MeshInput read_input(const std::string& path, Format format, const Threads& thre
     case Format::Abaqus: return read_abaqus(bytes, path, include_from_disk());
     case Format::Nastran: return read_nastran(bytes, path, include_from_disk());
     case Format::LsDyna: return read_lsdyna(bytes, path, include_from_disk());
+    case Format::Med: return read_med(bytes, path);
+    case Format::Xdmf: return read_xdmf(bytes, path);
     case Format::Foam:
     case Format::Cgns:
     case Format::Auto: break;

@@ -21,6 +21,7 @@
 #include <cgnslib.h>
 
 #include "io/detail/element_tally.hpp"
+#include "io/detail/hdf5_lock.hpp"
 #include "mesh/cell_templates.hpp"
 #endif
 
@@ -265,8 +266,8 @@ MeshInput CgnsReader::read() {
 MeshInput read_cgns(const std::string& path) {
   // The CGNS library keeps its open files in a table of its own and is not thread-safe: one reader
   // at a time in this process.
-  static std::mutex cgns;
-  const std::lock_guard<std::mutex> lock(cgns);
+  // Both sit on HDF5, as the MED reader does: one lock for all three.
+  const std::lock_guard<std::mutex> lock(detail::hdf5_library_lock());
   return CgnsReader(path).read();
 }
 #else

@@ -20,6 +20,7 @@
 #include <netcdf_mem.h>
 
 #include "io/detail/element_tally.hpp"
+#include "io/detail/hdf5_lock.hpp"
 #include "mesh/cell_templates.hpp"
 #endif
 
@@ -265,8 +266,8 @@ MeshInput ExodusReader::read() {
 MeshInput read_exodus(std::string_view bytes, const std::string& source) {
   // netCDF-C (as Debian builds it) keeps its open files in a table of its own without a lock: one
   // reader at a time in this process (the Python module reads without the GIL).
-  static std::mutex netcdf;
-  const std::lock_guard<std::mutex> lock(netcdf);
+  // Both sit on HDF5, as the CGNS and MED readers do: one lock for all three.
+  const std::lock_guard<std::mutex> lock(detail::hdf5_library_lock());
   return ExodusReader(bytes, source).read();
 }
 #else
