@@ -76,7 +76,13 @@ TEST(XdmfRealTools, MeshioTwinsReadCellForCellAsTheirMedit) {
 // Without HDF5 the inline twin reads as its MEDIT original and HDF data is refused saying why.
 TEST(XdmfRealTools, WithoutHdf5InlineDataReadsAndHdfDataIsRefused) {
   test::expect_same_cells(read_input(kDir + "/real/slab_inline.xdmf"), read_input(kDir + "/real/slab.mesh"));
-  EXPECT_NE(read_error(kDir + "/real/slab_meshio.xdmf").find("need HDF5: this hbc was built without it"), std::string::npos);
+  // The WebAssembly core has none of these libraries: it sends the user to the desktop tool.
+#ifdef __EMSCRIPTEN__
+  const char* const kWhy = "need the desktop tool";
+#else
+  const char* const kWhy = "need HDF5: this hbc was built without it";
+#endif
+  EXPECT_NE(read_error(kDir + "/real/slab_meshio.xdmf").find(kWhy), std::string::npos);
 }
 #endif
 
