@@ -27,20 +27,8 @@ namespace fs = std::filesystem;
 
 fs::path temp_file(const std::string& name) { return fs::temp_directory_path() / ("hbc_med_" + std::to_string(::getpid()) + "_" + name); }
 
-void write_bytes(const fs::path& p, std::string_view bytes) {
-  std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-// The message of the InputError that reading `path` raises, or "" when it reads.
-std::string read_error(const fs::path& path) {
-  try {
-    read_input(path.string());
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), path.string());
-    return e.what();
-  }
-  return "";
-}
+using test::read_error;
+using test::write_bytes;
 
 #if HBC_TEST_MED
 const std::string kDir = HBC_FORMATS_DIR;

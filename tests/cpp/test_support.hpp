@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <numeric>
 #include <random>
 #include <vector>
 #include <string>
+#include <string_view>
 #include <tuple>
 
 #include "hbc/analysis.hpp"
@@ -58,6 +60,22 @@ inline double signed_volume(const MeshInput& in, size_t c) {
              p(0, 2) * (p(t, 0) * p(t + 1, 1) - p(t, 1) * p(t + 1, 0));
   }
   return vol / 6;
+}
+
+// Writes `bytes` to `p` as they are (the readers' tests make their files).
+inline void write_bytes(const std::filesystem::path& p, std::string_view bytes) {
+  std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+// The message of the InputError that reading `path` raises (naming that file), or "" when it reads.
+inline std::string read_error(const std::filesystem::path& path) {
+  try {
+    read_input(path.string());
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path.string());
+    return e.what();
+  }
+  return "";
 }
 
 inline Mesh load_data(const std::string& rel) { return load_mesh(data_path(rel)); }

@@ -23,20 +23,8 @@ const std::string kDir = HBC_FORMATS_DIR;
 
 fs::path temp_file(const std::string& name) { return fs::temp_directory_path() / ("hbc_xdmf_" + std::to_string(::getpid()) + "_" + name); }
 
-void write_bytes(const fs::path& p, std::string_view bytes) {
-  std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-// The message of the InputError that reading `path` raises, or "" when it reads.
-std::string read_error(const fs::path& path) {
-  try {
-    read_input(path.string());
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), path.string());
-    return e.what();
-  }
-  return "";
-}
+using test::read_error;
+using test::write_bytes;
 
 // An XDMF file of one Grid with inline data: the points (x y z each) and the topology's type and ids.
 std::string xdmf(const std::string& points, int npoints, const std::string& type, const std::string& ids, int nids,
