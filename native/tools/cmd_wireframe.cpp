@@ -97,6 +97,7 @@ std::string json_text(const Mesh& m, const WireframeArgs& args, const WireframeS
             {"palette_size", opt.palette_size}};
   const auto counts = wireframe_count_fields();
   for (size_t i = 0; i < counts.size(); ++i) j[std::string(counts[i].key)] = wireframe_count(w, i);
+  for (const FieldAlias& a : wireframe_count_aliases()) j[std::string(a.old_key)] = Json(j[std::string(a.key)]);
   j["seconds_vsg_wireframe"] = seconds;
   j["edges"] = std::move(edges);
   j["simplified_polylines"] = simplified_json(w);

@@ -197,17 +197,8 @@ TEST(Exodus, MalformedFilesNameTheFileAndWhatWasWrong) {
 }
 #else
 TEST(Exodus, ABuildWithoutNetcdfListsTheFormatAndRefusesItsFiles) {
-  const fs::path p = temp_file("any.exo");
-  write_bytes(p, "CDF\x01");
-  // The WebAssembly core has none of these libraries: it sends the user to the desktop tool.
-#ifdef __EMSCRIPTEN__
-  const char* const kWhy = "Exodus II files need the desktop tool";
-#else
-  const char* const kWhy = "Exodus II files need netCDF-C";
-#endif
-  EXPECT_NE(read_error(p).find(kWhy), std::string::npos);
+  expect_refused_without_library(temp_file("any.exo"), "CDF\x01", "Exodus II", "netCDF-C");
   EXPECT_EQ(format_from_name("exo"), Format::Exodus);
-  fs::remove(p);
 }
 #endif
 
@@ -362,17 +353,8 @@ TEST(Cgns, MalformedFilesNameTheFileAndWhatWasWrong) {
 }
 #else
 TEST(Cgns, ABuildWithoutTheLibraryListsTheFormatAndRefusesItsFiles) {
-  const fs::path p = temp_file("any.cgns");
-  write_bytes(p, "\x89HDF");
-  // The WebAssembly core has none of these libraries: it sends the user to the desktop tool.
-#ifdef __EMSCRIPTEN__
-  const char* const kWhy = "CGNS files need the desktop tool";
-#else
-  const char* const kWhy = "CGNS files need the CGNS library";
-#endif
-  EXPECT_NE(read_error(p).find(kWhy), std::string::npos);
+  expect_refused_without_library(temp_file("any.cgns"), "\x89HDF", "CGNS", "the CGNS library");
   EXPECT_EQ(format_from_name("cgns"), Format::Cgns);
-  fs::remove(p);
 }
 #endif
 

@@ -152,17 +152,8 @@ TEST(Med, MalformedFilesNameTheFileTheDatasetAndWhatWasWrong) {
 }
 #else
 TEST(Med, ABuildWithoutHdf5ListsTheFormatAndRefusesItsFiles) {
-  const fs::path p = temp_file("any.med");
-  write_bytes(p, "\x89HDF\r\n\x1a\n");
-  // The WebAssembly core has none of these libraries: it sends the user to the desktop tool.
-#ifdef __EMSCRIPTEN__
-  const char* const kWhy = "MED files need the desktop tool";
-#else
-  const char* const kWhy = "MED files need HDF5";
-#endif
-  EXPECT_NE(read_error(p).find(kWhy), std::string::npos);
+  expect_refused_without_library(temp_file("any.med"), "\x89HDF\r\n\x1a\n", "MED", "HDF5");
   EXPECT_EQ(format_from_name("med"), Format::Med);
-  fs::remove(p);
 }
 #endif
 

@@ -78,6 +78,22 @@ inline std::string read_error(const std::filesystem::path& path) {
   return "";
 }
 
+// A build without the library a format needs still lists the format and refuses its files (`bytes`
+// written to `p`), saying which library it lacks; the WebAssembly core, which has none of them,
+// sends the user to the desktop tool instead.
+inline void expect_refused_without_library(const std::filesystem::path& p, std::string_view bytes, std::string_view what,
+                                           [[maybe_unused]] std::string_view library) {
+  write_bytes(p, bytes);
+#ifdef __EMSCRIPTEN__
+  const std::string why = std::string(what) + " files need the desktop tool";
+#else
+  const std::string why = std::string(what) + " files need " + std::string(library);
+#endif
+  const std::string got = read_error(p);
+  EXPECT_NE(got.find(why), std::string::npos) << got;
+  std::filesystem::remove(p);
+}
+
 inline Mesh load_data(const std::string& rel) { return load_mesh(data_path(rel)); }
 
 // `mesh` renumbered by random permutations drawn from rng (vertices first, then cells): vertex v

@@ -135,8 +135,8 @@ TEST(VsgWireframe, PlainGridHidesTheBoxEdgesAtTheCorners) {
       EXPECT_EQ(w.polylines.count(i), 5);
     }
     EXPECT_EQ(w.wireframe_edges_simplified(), 0);
-    EXPECT_EQ(w.reference_components, 1);
-    EXPECT_EQ(w.shown_components, 0);
+    EXPECT_EQ(w.components, 1);
+    EXPECT_EQ(w.simplified_components, 0);
   }
 }
 
@@ -211,7 +211,7 @@ TEST(VsgWireframe, DeterministicUnderRenumbering) {
     EXPECT_EQ(sa.hidden, sb.hidden);
     EXPECT_EQ(sa.shown_important, sb.shown_important);
     EXPECT_EQ(sa.reactivated, sb.reactivated);  // which box chain is a lowest-index tie-break
-    EXPECT_EQ(wa.shown_components, wb.shown_components);
+    EXPECT_EQ(wa.simplified_components, wb.simplified_components);
   }
 }
 
@@ -302,7 +302,7 @@ void check_invariants(const Mesh& m, const CellComplex& cx, const VsgWireframe& 
   // The authors' cleaning does not promise to keep the wireframe connected (a removable chain may
   // be the only link between two kept ones: on some teapot sheets the simplified wireframe has 2
   // components where the complete one has 1), so only the trivial bound holds.
-  EXPECT_LE(w.shown_components, w.wireframe_edges_simplified());
+  EXPECT_LE(w.simplified_components, w.wireframe_edges_simplified());
 }
 
 TEST(VsgWireframe, InvariantsOnRealMeshes) {

@@ -35,6 +35,23 @@ def test_python_matches_cli(name, analyzed, hbc_cli, shared_data_dir):
         assert f.key in from_cli[f.group]
 
 
+@pytest.mark.parametrize("name", MESHES)
+def test_a_metric_is_a_field_whose_kind_fits_its_values(name, analyzed):
+    """A metric is described as the statistics are (hbc.MetricField is an hbc.Field, with notation
+    and kind), and its kind holds: a count or an id is a whole number wherever it is defined."""
+    import hbc
+
+    _, analysis = analyzed[name]
+    metrics = analysis.metrics()
+    for f in hbc.METRIC_FIELDS:
+        assert isinstance(f, hbc.Field)
+        assert f.kind in ("count", "ratio", "value")
+        assert (f.kind == "ratio") == (f.unit == "ratio"), f.key
+        v = metrics[f.group][f.key]
+        if f.kind == "count" and v is not None and not math.isnan(v):
+            assert v == int(v), f"{f.group}.{f.key} = {v}"
+
+
 def test_every_metric_is_defined_in_the_doc():
     import hbc
 

@@ -11,6 +11,10 @@ import hbc
 
 from conftest import TABLE1
 
+# The wireframe counts' deprecated keys (docs/concepts.md, retired words), written after the others.
+WIREFRAME_COUNT_ALIASES = {"reference_components": "wireframe_components",
+                           "shown_components": "wireframe_components_simplified"}
+
 
 def stub_typed_dict(name):
     """The (key, annotation) pairs of TypedDict `name` in the stub, in order."""
@@ -22,7 +26,7 @@ def stub_typed_dict(name):
 
 
 def python_type(field):
-    return {"count": "int", "ratio": "float", "seconds": "float"}[field.kind]
+    return {"count": "int", "ratio": "float", "seconds": "float", "value": "float"}[field.kind]
 
 
 def test_stub_lists_every_field_in_order_with_its_type():
@@ -30,7 +34,8 @@ def test_stub_lists_every_field_in_order_with_its_type():
     assert stats[-1] == ("timings", "Timings")
     assert stats[:-1] == [(f.key, python_type(f)) for f in hbc.STAT_FIELDS]
     assert stub_typed_dict("Timings") == [(f.key, "float") for f in hbc.TIMING_FIELDS]
-    assert stub_typed_dict("WireframeCounts") == [(f.key, python_type(f)) for f in hbc.WIREFRAME_COUNT_FIELDS]
+    assert stub_typed_dict("WireframeCounts") == [(f.key, python_type(f)) for f in hbc.WIREFRAME_COUNT_FIELDS] + [
+        (old, "int") for old in WIREFRAME_COUNT_ALIASES]
 
 
 def test_fields_are_described():
@@ -57,7 +62,10 @@ def test_results_follow_the_schema(analyzed):
     for f in hbc.STAT_FIELDS:
         assert type(stats[f.key]).__name__ == python_type(f), f.key
     assert list(stats["timings"]) == [f.key for f in hbc.TIMING_FIELDS]
-    assert list(a.wireframe().counts) == [f.key for f in hbc.WIREFRAME_COUNT_FIELDS]
+    counts = a.wireframe().counts
+    assert list(counts) == [f.key for f in hbc.WIREFRAME_COUNT_FIELDS] + list(WIREFRAME_COUNT_ALIASES)
+    for old, key in WIREFRAME_COUNT_ALIASES.items():  # a deprecated key holds its new key's value
+        assert counts[old] == counts[key]
 
 
 def test_cli_json_uses_the_same_keys(hbc_cli, shared_data_dir):
@@ -70,6 +78,8 @@ def test_cli_json_uses_the_same_keys(hbc_cli, shared_data_dir):
     keys = list(wire)
     start = keys.index(hbc.WIREFRAME_COUNT_FIELDS[0].key)
     assert keys[start:start + len(hbc.WIREFRAME_COUNT_FIELDS)] == [f.key for f in hbc.WIREFRAME_COUNT_FIELDS]
+    for old, key in WIREFRAME_COUNT_ALIASES.items():
+        assert wire[old] == wire[key]
     csv_head = subprocess.run([hbc_cli, "analyze", str(path), "--csv"], capture_output=True, text=True,
                               check=True).stdout.splitlines()[0].split(",")
     assert csv_head == ["mesh"] + [f.key for f in hbc.STAT_FIELDS] + ["t_" + f.key for f in hbc.TIMING_FIELDS]

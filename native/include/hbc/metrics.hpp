@@ -14,6 +14,7 @@
 
 #include "hbc/analysis.hpp"
 #include "hbc/mesh.hpp"
+#include "hbc/schema.hpp"
 #include "hbc/threads.hpp"
 
 namespace hbc {
@@ -24,12 +25,11 @@ namespace hbc {
 enum class Refinement : uint8_t { Invariant, Cells, Edges, Faces, None };
 const char* refinement_name(Refinement r);  // "invariant", "x8", "x2", "x4", "none"
 
-struct MetricField {
-  std::string_view key;      // JSON key (under its group), CSV column "group.key"
-  std::string_view group;    // census, singular, complex, sheets, non_hex, quality, summary
-  std::string_view label;    // in words
-  std::string_view unit;     // "cells", "edges", ..., "ratio", "id"
-  std::string_view meaning;  // one line
+// A metric is a reported number like the statistics (a Field of schema.hpp: key, label, notation,
+// meaning, unit, kind) that also has a group and a rule under refinement.
+struct MetricField : Field {
+  std::string_view group;    // census, singular, complex, sheets, non_hex, quality, summary; the JSON
+                             // key is group.key, the CSV column "group.key"
   Refinement refinement;
 };
 

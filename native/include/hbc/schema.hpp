@@ -15,7 +15,9 @@
 
 namespace hbc {
 
-enum class FieldKind : uint8_t { Count, Ratio, Seconds };
+// Count: a whole number of its unit; Ratio: a share or a ratio; Seconds: a time; Value: another real
+// number in its unit (a mean).
+enum class FieldKind : uint8_t { Count, Ratio, Seconds, Value };
 
 struct Field {
   std::string_view key;       // JSON key, CSV column
@@ -46,6 +48,14 @@ std::span<const Table1Column> table1_columns();
 // The counts of a VSG wireframe (`hbc wireframe --json`, Wireframe.counts in Python).
 std::span<const Field> wireframe_count_fields();
 int64_t wireframe_count(const VsgWireframe& w, size_t i);
+
+// A key renamed to the word of docs/concepts.md; its old key stays, deprecated, written beside the
+// new one with the same value.
+struct FieldAlias {
+  std::string_view old_key;  // deprecated
+  std::string_view key;      // the glossary's word
+};
+std::span<const FieldAlias> wireframe_count_aliases();
 
 // The field of `fields` with this key; nullptr when there is none.
 const Field* find_field(std::span<const Field> fields, std::string_view key);

@@ -87,10 +87,10 @@ struct VsgWireframe {
   // Distinct mesh edges covered by the VSG chains, the complete and the simplified wireframe
   // (JSON/Python vsg_mesh_edges, wireframe_mesh_edges, wireframe_mesh_edges_simplified).
   int64_t vsg_mesh_edges = 0, wireframe_mesh_edges = 0, simplified_mesh_edges = 0;
-  // Connected pieces of the complete and of the simplified wireframe. The names are the JSON and
-  // Python keys, which scripts read: "reference" is the complete wireframe, "shown" the simplified.
-  int64_t reference_components = 0;
-  int64_t shown_components = 0;
+  // Connected pieces of the complete and of the simplified wireframe (JSON/Python
+  // wireframe_components, wireframe_components_simplified).
+  int64_t components = 0;
+  int64_t simplified_components = 0;
 
   size_t size() const { return kind.size(); }
   int64_t wireframe_edges() const { return static_cast<int64_t>(kind.size()); }

@@ -80,8 +80,9 @@ void bind_wireframe(py::module_& m) {
       [](const PyWireframe& p) { return wireframe_counts(*p.w); },
       "dict: vsg_edges, wireframe_edges (complete wireframe polylines), wireframe_edges_simplified, vsg_chains, "
       "singular_vertices (of the wireframe, not the graph's), vsg_mesh_edges, wireframe_mesh_edges, "
-      "wireframe_mesh_edges_simplified (distinct mesh edges covered), reference_components and "
-      "shown_components (connected pieces of the complete and of the simplified wireframe).");
+      "wireframe_mesh_edges_simplified (distinct mesh edges covered), wireframe_components and "
+      "wireframe_components_simplified (connected pieces of the complete and of the simplified wireframe; "
+      "reference_components and shown_components, their deprecated keys, beside them).");
 }
 
 // block_soup's dict; each key is the table's (a BlockSoup entry of hbc/exports.hpp).

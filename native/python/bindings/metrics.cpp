@@ -76,15 +76,13 @@ py::dict analysis_metrics(const PyAnalysisPtr& p, const py::object& threads, boo
 }  // namespace
 
 void bind_metrics(py::module_& m) {
-  py::class_<MetricField>(m, "MetricField",
-                          "One structural metric (docs/metrics.md): key, group, label, unit, meaning, and how it "
-                          "changes when every cell is split into 8.")
-      .def_property_readonly("key", [](const MetricField& f) { return std::string(f.key); }, "JSON key in its group.")
+  // A Field with a group and a refinement rule (hbc/metrics.hpp): key, label, notation, meaning,
+  // unit and kind come from Field's binding (bind_schema, registered before this).
+  py::class_<MetricField, Field>(m, "MetricField",
+                                 "One structural metric (docs/metrics.md): a Field with its group and how it "
+                                 "changes when every cell is split into 8.")
       .def_property_readonly("group", [](const MetricField& f) { return std::string(f.group); },
                              "census, singular, complex, sheets, non_hex, quality or summary.")
-      .def_property_readonly("label", [](const MetricField& f) { return std::string(f.label); }, "In words.")
-      .def_property_readonly("unit", [](const MetricField& f) { return std::string(f.unit); }, "What is counted.")
-      .def_property_readonly("meaning", [](const MetricField& f) { return std::string(f.meaning); }, "One line.")
       .def_property_readonly("refinement", [](const MetricField& f) { return refinement_name(f.refinement); },
                              "'invariant', 'x8', 'x2', 'x4' or 'none' under uniform refinement.")
       .def("__repr__", [](const MetricField& f) {

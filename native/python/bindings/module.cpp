@@ -21,7 +21,7 @@ PYBIND11_MODULE(_core, m) {
   hp::bind_quality(m);
   hp::bind_schema(m);
   hp::bind_layer_plan(m);
-  hp::bind_metrics(m);  // adds Analysis.metrics, so after bind_analysis
+  hp::bind_metrics(m);  // adds Analysis.metrics, so after bind_analysis; MetricField is a Field, so after bind_schema
   hp::bind_comparison(m);
   hp::bind_exports(m);
 }

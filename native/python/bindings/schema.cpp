@@ -48,6 +48,9 @@ py::dict wireframe_counts(const VsgWireframe& w) {
   py::dict d;
   const auto fields = wireframe_count_fields();
   for (size_t i = 0; i < fields.size(); ++i) d[py::str(std::string(fields[i].key))] = wireframe_count(w, i);
+  // The deprecated keys beside the new ones, as `hbc wireframe --json` writes them.
+  for (const FieldAlias& a : wireframe_count_aliases())
+    d[py::str(std::string(a.old_key))] = d[py::str(std::string(a.key))];
   return d;
 }
 

@@ -210,7 +210,7 @@ class Field:
     @property
     def unit(self) -> str: ...
     @property
-    def kind(self) -> Literal["count", "ratio", "seconds"]: ...
+    def kind(self) -> Literal["count", "ratio", "seconds", "value"]: ...
 
 # The statistics of Analysis.stats (and `hbc analyze --json`) in output order; its "timings";
 # Wireframe.counts; the paper's Table 1 columns in its order, each (field, is a timing).
@@ -219,19 +219,11 @@ TIMING_FIELDS: tuple[Field, ...]
 WIREFRAME_COUNT_FIELDS: tuple[Field, ...]
 TABLE1_COLUMNS: tuple[tuple[Field, bool], ...]
 
-class MetricField:
-    """One structural metric (docs/metrics.md), described once in the library (hbc/metrics.hpp)."""
+class MetricField(Field):
+    """One structural metric (docs/metrics.md): a Field with its group and refinement rule (hbc/metrics.hpp)."""
 
     @property
-    def key(self) -> str: ...
-    @property
     def group(self) -> Literal["census", "singular", "complex", "sheets", "non_hex", "quality", "summary"]: ...
-    @property
-    def label(self) -> str: ...
-    @property
-    def unit(self) -> str: ...
-    @property
-    def meaning(self) -> str: ...
     @property
     def refinement(self) -> Literal["invariant", "x8", "x2", "x4", "none"]: ...
 
@@ -299,8 +291,10 @@ class WireframeCounts(TypedDict):
     vsg_mesh_edges: int
     wireframe_mesh_edges: int
     wireframe_mesh_edges_simplified: int
-    reference_components: int  # connected pieces of the complete wireframe
-    shown_components: int  # connected pieces of the simplified wireframe
+    wireframe_components: int  # connected pieces of the complete wireframe
+    wireframe_components_simplified: int  # connected pieces of the simplified wireframe
+    reference_components: int  # deprecated key of wireframe_components
+    shown_components: int  # deprecated key of wireframe_components_simplified
 
 class BlockSoup(TypedDict):
     """block_soup's polygon soup, faces grouped by owner (cell, component, sheet, ...)."""

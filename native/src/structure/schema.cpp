@@ -117,12 +117,12 @@ const std::array<WireEntry, 10> kWireCounts = {{
     {{"wireframe_mesh_edges_simplified", "Simplified wireframe mesh edges", "", "",
       "distinct mesh edges the simplified wireframe covers", "edges", K::Count},
      [](const VsgWireframe& w) { return w.simplified_mesh_edges; }},
-    {{"reference_components", "Complete wireframe pieces", "", "",
+    {{"wireframe_components", "Wireframe pieces", "", "",
       "connected components of the complete wireframe", "components", K::Count},
-     [](const VsgWireframe& w) { return w.reference_components; }},
-    {{"shown_components", "Simplified wireframe pieces", "", "",
+     [](const VsgWireframe& w) { return w.components; }},
+    {{"wireframe_components_simplified", "Simplified wireframe pieces", "", "",
       "connected components of the simplified wireframe", "components", K::Count},
-     [](const VsgWireframe& w) { return w.shown_components; }},
+     [](const VsgWireframe& w) { return w.simplified_components; }},
 }};
 
 template <class Entry, size_t N>
@@ -159,6 +159,15 @@ std::span<const Table1Column> table1_columns() {
 std::span<const Field> wireframe_count_fields() { return fields_of(kWireCounts); }
 int64_t wireframe_count(const VsgWireframe& w, size_t i) { return kWireCounts.at(i).get(w); }
 
+// The keys' older words ("reference" for complete, "shown" for simplified), written beside the new
+// keys for the scripts that read them.
+constexpr FieldAlias kWireCountAliases[] = {
+    {"reference_components", "wireframe_components"},
+    {"shown_components", "wireframe_components_simplified"},
+};
+
+std::span<const FieldAlias> wireframe_count_aliases() { return kWireCountAliases; }
+
 const Field* find_field(std::span<const Field> fields, std::string_view key) {
   for (const Field& f : fields)
     if (f.key == key) return &f;
@@ -170,6 +179,7 @@ const char* field_kind_name(FieldKind k) {
     case FieldKind::Count: return "count";
     case FieldKind::Ratio: return "ratio";
     case FieldKind::Seconds: return "seconds";
+    case FieldKind::Value: return "value";
   }
   return "?";
 }

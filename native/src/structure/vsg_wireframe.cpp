@@ -122,8 +122,8 @@ VsgWireframe vsg_wireframe(const CellComplex& cx, const WireframeOptions& opt, c
   w.vsg_mesh_edges = covered_mesh_edges(cx, w.vsg_chain_edges);
   w.wireframe_mesh_edges = covered_mesh_edges(cx, w.edges);
   w.simplified_mesh_edges = covered_mesh_edges(cx, w.simplified_edges);
-  w.reference_components = components(cx, w.edges, par);
-  w.shown_components = components(cx, w.simplified_edges, par);
+  w.components = components(cx, w.edges, par);
+  w.simplified_components = components(cx, w.simplified_edges, par);
   return w;
 }
 
