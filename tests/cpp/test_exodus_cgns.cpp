@@ -55,6 +55,7 @@ fs::path temp_file(const std::string& name) {
 
 using test::read_error;
 using test::write_bytes;
+using test::expect_refused_without_library;
 
 #if HBC_TEST_EXODUS
 struct ExoBlock {

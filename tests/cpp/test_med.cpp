@@ -29,6 +29,7 @@ fs::path temp_file(const std::string& name) { return fs::temp_directory_path() /
 
 using test::read_error;
 using test::write_bytes;
+using test::expect_refused_without_library;
 
 #if HBC_TEST_MED
 const std::string kDir = HBC_FORMATS_DIR;
