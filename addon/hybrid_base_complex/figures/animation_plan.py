@@ -51,6 +51,8 @@ def add_arguments(ap):
                     help="slice: the axis the plane sweeps along (default: the one closest to the view direction)")
     ap.add_argument("--caption", choices=("auto", "on", "off"), default="auto",
                     help="a caption on the frames: auto (sheets and subsheets say which), on (every kind), off")
+    ap.add_argument("--strip", type=int, default=0, metavar="N",
+                    help="also write <name>_<kind>_strip.png: N frames, evenly spaced, side by side")
 
 
 def check(ap, args):
@@ -70,6 +72,8 @@ def check(ap, args):
         ap.error("--fps: between 1 and 240")
     if args.format in ("mp4", "webm") and (args.resolution[0] % 2 or args.resolution[1] % 2):
         ap.error("--resolution: H.264 and VP9 need even sides")
+    if args.strip < 0 or args.strip > args.frames:
+        ap.error("--strip: between 0 and --frames")
     if args.layers is not None:
         layers = [k.strip() for k in args.layers.split(",") if k.strip()]
         if not layers or any(k not in TURNTABLE_LAYERS for k in layers):
@@ -233,6 +237,11 @@ def slice_points(points, normal, frames, keep=0.1):
 
 # ---------------------------------------------------------------------------------------------
 # Output
+
+def strip_frames(frames, count):
+    """0-based indices of `count` frames evenly spaced over `frames`, the first and last included."""
+    return sorted({int(round(v)) for v in np.linspace(0, frames - 1, count)})
+
 
 def gif_command(ffmpeg, pattern, fps, out):
     """ffmpeg's command for a looping GIF of a PNG sequence with one palette made from its frames."""
