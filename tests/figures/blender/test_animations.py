@@ -107,3 +107,20 @@ def test_webm_gif_looks_and_legend(tmp_path):
     # Two sheets, two frames each, captioned: the caption's rows differ between the halves.
     assert np.abs(frames[0][:10] - frames[3][:10]).max() > 0.2
     assert np.abs(frames[0][H:] - frames[3][H:]).mean() < 0.02  # one legend for the whole animation
+
+
+@pytest.mark.parametrize("look", ["slide", "clay"])
+def test_looks_of_stills(tmp_path, look):
+    """--look dresses the still panels too: slide's background dark, clay's blocks without colour."""
+    from test_render_figures import load
+
+    p = run([data("twistcube_s.mesh"), "--out", tmp_path, "--engine", "workbench", "--resolution", W, H,
+             "--panels", "complex", "--look", look])
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    img = load(tmp_path / "twistcube_s_c_complex.png")[..., :3]
+    corners = img[[0, 0, -1, -1], [0, -1, 0, -1]]
+    chroma = img.max(axis=2) - img.min(axis=2)
+    if look == "slide":
+        assert corners.max() < 0.2
+    else:
+        assert corners.min() > 0.8 and np.percentile(chroma, 95) < 0.12  # grey clay on paper's background
