@@ -364,7 +364,9 @@ def video_output(scene, container: str):
     im.file_format = "FFMPEG"
     im.color_mode = "RGB"
     ff = scene.render.ffmpeg
-    ff.format, ff.codec = ("MPEG4", "H264") if container == "mp4" else ("WEBM", "WEBM")
+    mp4 = container == "mp4"
+    ff.format = "MPEG4" if mp4 else "WEBM"
+    ff.codec = "H264" if mp4 else "WEBM"  # WEBM: VP9
     ff.constant_rate_factor = "MEDIUM"
     ff.ffmpeg_preset = "GOOD"
     ff.gopsize = max(1, int(scene.render.fps))
