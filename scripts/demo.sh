@@ -7,7 +7,8 @@
 # and g) through the pyramids, where their VSG chains end (panels e, f); its inner ring turns a
 # half turn, so one sheet comes back beside itself (self-parallel). The second, a hex-dominant
 # cylinder with prism columns like the paper's teaser, has only perfect sheets: no subsheets (g).
-# When the shared data is there, teapot.hedra (LoopyCuts) is a third subject.
+# When the shared data is there, teapot.hedra (LoopyCuts) is a third subject. Each also gets a short
+# animation (render_figures.py --animate explode) with a strip of its frames.
 #
 # The figures are rendered by the newest Blender here that loads this build's hbc module: a `bpy`
 # wheel of the test matrix (scripts/env/blender_envs.sh, made by scripts/test.sh; not made here)
@@ -81,7 +82,25 @@ for mesh in "${meshes[@]}"; do
   sed -n -e 's/^render_figures: //p' -e 's/^wrote /  wrote /p' "$log"
 done
 
+# One short animation per mesh beside its figures: the base complex exploded and back (Workbench,
+# 2 s), with a strip of six of its frames (the README's picture is teapot's).
+for mesh in "${meshes[@]}"; do
+  name=$(basename "$mesh"); name=${name%.*}
+  log=$FIG/${name}_animation.log
+  echo
+  echo "== Animation of $mesh (explode, Workbench 480x270, 48 frames; full log: $log)"
+  if ! "${RENDER[@]}" "$mesh" --out "$FIG" --animate explode --engine workbench --resolution 480 270 \
+      --frames 48 --fps 24 --strip 6 >"$log" 2>&1; then
+    tail -n 30 "$log"
+    echo "demo: rendering the animation of $mesh failed (see $log)" >&2
+    exit 1
+  fi
+  sed -n -e 's/^render_figures: //p' -e 's/^wrote /  wrote /p' "$log"
+done
+
 echo
 echo "demo: done in $((SECONDS - start)) s after the build, rendered by $RENDERER. Figures (one PNG per panel, *_contact.png all of them):"
 ls -1 "$FIG"/*_contact.png | sed 's/^/  /'
+echo "Animations (MP4, and a strip of frames each):"
+ls -1 "$FIG"/*_explode.mp4 "$FIG"/*_explode_strip.png | sed 's/^/  /'
 echo "  all panels: $FIG/"

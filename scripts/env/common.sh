@@ -62,6 +62,7 @@ HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3
   nodejs  # the web viewer's build and its browser tests (tests/web/; npm comes with it or as Debian's npm)
   python3-matplotlib chromium  # hbc compare's report.html: its plots; the browser test
   emscripten libfast-float-dev  # the WebAssembly build (scripts/build_wasm.sh, docs/wasm.md)
+  ffmpeg  # ffprobe checks the animations' videos (tests/figures); ffmpeg makes their GIFs
   gmsh  # writes the .su2 and .msh test files (tests/data/formats/make_real_files.py)
   libnetcdf-dev libexodusii-dev libcgns-dev libhdf5-dev  # the Exodus II and CGNS readers; libexodus and cgnslib write test inputs
   netcdf-bin cgns-convert  # nccopy, aflr3_to_cgns, hdf2adf: tests/data/formats/make_exodus_cgns_files.py

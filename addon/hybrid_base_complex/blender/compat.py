@@ -24,6 +24,9 @@ is unambiguous, and on `bpy.app.version` otherwise; each branch names the releas
   takes int32 at full speed and uint32 slowly, while loop starts and edges still take uint32 fast
   (measured in 3.4, 4.2, 5.0 and 5.2): `set_corner_verts`, `set_corner_edges`, `set_polygons`,
   `set_edge_verts`.
+- 5.0: an output's `image_settings.media_type` (IMAGE, VIDEO, ...) chooses which file formats
+  exist: FFMPEG only after VIDEO (`video_output`, `image_output`); the sequencer's strips are
+  `sequence_editor.strips` (4.4+; `sequences` removed in 5.0: `sequencer_strips`).
 - 5.2: geometry-nodes modifier inputs are no longer ID properties (`mod["Socket_1"]` raises
   "id properties not supported"); they are `mod.properties.inputs.Socket_1.value`, used wherever
   the running Blender has it.
@@ -337,3 +340,40 @@ def layer_exporter(fmt: str):
         return bpy.ops.wm.ply_export, dict(export_selected_objects=True, ascii_format=False, **axes)
     # Blender 3.4/3.5: the io_mesh_ply add-on (enabled in the factory settings).
     return bpy.ops.export_mesh.ply, dict(use_selection=True, axis_forward="Y", axis_up="Z")
+
+
+# ---------------------------------------------------------------------------------------------
+# Render output
+
+def image_output(scene):
+    """Renders of `scene` go to 8-bit RGB PNG files."""
+    im = scene.render.image_settings
+    if hasattr(im, "media_type"):  # 5.0
+        im.media_type = "IMAGE"
+    im.file_format = "PNG"
+    im.color_mode = "RGB"
+    im.color_depth = "8"
+
+
+def video_output(scene, container: str):
+    """Renders of `scene` go to one video through Blender's own FFmpeg: `mp4` (H.264) or `webm`
+    (VP9), no audio, constant quality."""
+    im = scene.render.image_settings
+    if hasattr(im, "media_type"):  # 5.0: FFMPEG is only offered for VIDEO
+        im.media_type = "VIDEO"
+    im.file_format = "FFMPEG"
+    im.color_mode = "RGB"
+    ff = scene.render.ffmpeg
+    mp4 = container == "mp4"
+    ff.format = "MPEG4" if mp4 else "WEBM"
+    ff.codec = "H264" if mp4 else "WEBM"  # WEBM: VP9
+    ff.constant_rate_factor = "MEDIUM"
+    ff.ffmpeg_preset = "GOOD"
+    ff.gopsize = max(1, int(scene.render.fps))
+    ff.audio_codec = "NONE"
+
+
+def sequencer_strips(scene):
+    """The strips collection of the scene's sequencer (made if missing)."""
+    ed = scene.sequence_editor or scene.sequence_editor_create()
+    return ed.strips if hasattr(ed, "strips") else ed.sequences

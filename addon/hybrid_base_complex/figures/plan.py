@@ -46,6 +46,27 @@ COMPARE_ROWS = (
 ENGINES = ("cycles", "eevee", "workbench")
 
 
+@dataclass(frozen=True)
+class Look:
+    """How stills and animations are dressed (--look); the legend's colours are never changed."""
+
+    background: float  # grey of the background as shown (display value)
+    outline: tuple  # linear RGBA of the components' and sheets' outlines
+    mesh_edge: tuple  # linear RGBA of the mesh's cell edges
+    ink: tuple  # linear RGBA of captions drawn on frames
+    clay: bool  # one neutral material: blocks told apart by ambient occlusion and edges only
+
+
+#: paper: today's white figures; slide: a dark background, outlines and text light so the colours
+#: stay legible on a projector; clay: paper's background and edges over one neutral grey material.
+LOOKS = {
+    "paper": Look(0.94, (0.03, 0.03, 0.035, 1.0), (0.18, 0.18, 0.2, 0.55), (0.02, 0.02, 0.025, 1.0), False),
+    "slide": Look(0.09, (0.80, 0.80, 0.82, 1.0), (0.55, 0.55, 0.6, 0.55), (0.92, 0.92, 0.92, 1.0), False),
+    "clay": Look(0.94, (0.03, 0.03, 0.035, 1.0), (0.18, 0.18, 0.2, 0.55), (0.02, 0.02, 0.025, 1.0), True),
+}
+CLAY_COLOR = (0.62, 0.60, 0.57, 1.0)  # linear RGBA of the clay material
+
+
 def script_args(argv):
     """The script's own arguments: those after Blender's '--' separator when Blender runs the
     script (`blender -b --python render_figures.py -- ARGS`), else, when a Python with the `bpy`
@@ -98,6 +119,12 @@ def parser():
     ap.add_argument("--legend", action="store_true",
                     help="add under every panel a strip of colour swatches with words for what it shows (the "
                          "add-on's legend), and write <name>_legend.json")
+    ap.add_argument("--look", choices=tuple(LOOKS), default="paper",
+                    help="paper (white background), slide (dark background), clay (one neutral material, "
+                         "blocks told apart by ambient occlusion and edges); stills and animations alike")
+    from . import animation_plan
+
+    animation_plan.add_arguments(ap)
     return ap
 
 
@@ -123,6 +150,9 @@ def parse(argv):
         ap.error("--max-subsheets must be at least 1")
     if args.samples is None:
         args.samples = 16
+    from . import animation_plan
+
+    animation_plan.check(ap, args)
     return args
 
 

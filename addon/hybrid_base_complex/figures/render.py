@@ -23,9 +23,6 @@ from ..ui import properties
 from . import compose as C
 from . import plan
 
-BG_DISPLAY = 0.94  # background grey as shown in the PNG (display value)
-OUTLINE_COLOR = (0.03, 0.03, 0.035, 1.0)
-MESH_EDGE_COLOR = (0.18, 0.18, 0.2, 0.55)
 BOUNDARY_COLOR = (0.80, 0.80, 0.80, 1.0)
 
 
@@ -76,8 +73,10 @@ def reset_file():
     return bpy.context.scene
 
 
-def setup_render(scene, engine, samples, width, height, compat, denoise="auto"):
-    """`compat`: the add-on's Blender-version module; `denoise`: auto, on or off (Cycles)."""
+def setup_render(scene, engine, samples, width, height, compat, denoise="auto", look=None):
+    """`compat`: the add-on's Blender-version module; `denoise`: auto, on or off (Cycles); `look`:
+    a plan.Look (default paper)."""
+    look = look or plan.LOOKS["paper"]
     r = scene.render
     r.resolution_x, r.resolution_y, r.resolution_percentage = int(width), int(height), 100
     r.film_transparent = False
@@ -142,16 +141,31 @@ def setup_render(scene, engine, samples, width, height, compat, denoise="auto"):
         sh.show_cavity = True
         sh.cavity_type = "BOTH"
         sh.show_object_outline = True
-        sh.object_outline_color = OUTLINE_COLOR[:3]
+        sh.object_outline_color = look.outline[:3]
         sh.show_specular_highlight = False
         scene.display.render_aa = "8"
+        if look.clay:
+            sh.color_type = "SINGLE"
+            sh.single_color = plan.CLAY_COLOR[:3]
+    if look.clay and engine != "workbench":
+        clay_override(scene, compat)
 
 
-def setup_world(scene, engine, compat):
-    """Soft ambient light from a uniform world; the camera sees a flat light grey."""
+def clay_override(scene, compat):
+    """The clay look in Cycles and EEVEE: one matte grey material over every object of the view layer
+    (the see-through shell included), so only shading, ambient occlusion and the edges tell the blocks apart."""
+    mat, _, bsdf = compat.new_node_material("Figures Clay")
+    bsdf.inputs["Base Color"].default_value = plan.CLAY_COLOR
+    bsdf.inputs["Roughness"].default_value = 0.9
+    compat.principled_input(bsdf, "Specular IOR Level").default_value = 0.1
+    scene.view_layers[0].material_override = mat
+
+
+def setup_world(scene, engine, compat, look=None):
+    """Soft ambient light from a uniform world; the camera sees a flat grey (the look's background)."""
     world = bpy.data.worlds.new("Figures World")
     scene.world = world
-    bg_lin = srgb_to_linear(BG_DISPLAY)
+    bg_lin = srgb_to_linear((look or plan.LOOKS["paper"]).background)
     world.color = (bg_lin, bg_lin, bg_lin)
     nt = compat.world_use_nodes(world)
     nt.nodes.clear()
@@ -253,6 +267,7 @@ class Subject:
     def __init__(self, addon: Addon, path, args, scene):
         self.addon, self.args, self.scene = addon, args, scene
         self.path = path
+        self.look = plan.LOOKS[getattr(args, "look", "paper")]
         self.name = addon.P.mesh_name_from_path(path)
         t = time.perf_counter()
         s = addon.session.load(path, 1.0, log)
@@ -302,10 +317,12 @@ class Subject:
         built.hide_render = True
         return built
 
-    def outline(self, tx, coll, name, soup, angle=35.0, color=OUTLINE_COLOR, every_edge=False, scale=0.55):
-        """Dark tubes along a soup's feature edges (or every edge): components and sheets read
-        clearly in any engine, and the line builder of the add-on makes them."""
+    def outline(self, tx, coll, name, soup, angle=35.0, color=None, every_edge=False, scale=0.55):
+        """Tubes along a soup's feature edges (or every edge), the look's outline colour unless
+        given: components and sheets read clearly in any engine, and the line builder of the add-on
+        makes them."""
         P, S = self.addon.P, self.addon.S
+        color = self.look.outline if color is None else color
         if soup.num_faces == 0:
             return None
         if every_edge:
@@ -349,7 +366,7 @@ class Subject:
         coll = self.build("mesh", "direct", direct_boundary=True, direct_transparent=see_through, boundary_opacity=0.22,
                           direct_hex_cells=False, direct_shrink=0.0)
         with S.Transaction() as tx:
-            self.outline(tx, coll, f"{self.name} mesh edges", s.direct_boundary(), color=MESH_EDGE_COLOR,
+            self.outline(tx, coll, f"{self.name} mesh edges", s.direct_boundary(), color=self.look.mesh_edge,
                          every_edge=True, scale=0.45)
             if np.any(np.asarray(s.mesh.cell_types) != 0):
                 self.outline(tx, coll, f"{self.name} non-hex outlines", s.non_hex_cells(0.0), angle=20.0)
@@ -369,17 +386,21 @@ class Subject:
     def panel_sheet(self):
         if self.sheet is None:
             return None
+        return [self.sheet_layer(self.sheet, "sheet")] + self.shell()
+
+    def sheet_layer(self, sheet, key):
+        """Sheet `sheet` with its highlights and outlines, as the collection `key`."""
         # Thinner highlight edges than the line panels': they sit on the blocks and would hide them.
-        coll = self.build("sheet", "sheet", line_radius=0.6 * self.st().line_radius)
+        coll = self.build(key, "sheet", line_radius=0.6 * self.st().line_radius, sheet_index=sheet)
         S = self.addon.S
         with S.Transaction() as tx:
-            self.outline(tx, coll, f"{self.name} sheet outlines", self.s.sheet_blocks(self.sheet, self.st().shrink))
+            self.outline(tx, coll, f"{self.name} sheet {sheet} outlines", self.s.sheet_blocks(sheet, self.st().shrink))
             # Self-intersecting cells: see-through, so the sheet inside stays visible.
             mat = S.material(tx, "flat", self.addon.P.SELF_INTERSECTING_COLOR, 0.35)
             for ob in coll.objects:
                 if ob.get("hbc_highlight") == "self_intersecting":
                     S.set_materials(ob.data, [mat])
-        return [coll] + self.shell()
+        return coll
 
     def sheet_wireframe(self, sheet):
         """The VSG wireframe of a sheet's region, computed once."""
@@ -496,7 +517,7 @@ class Subject:
             ob = S.soup_object(tx, coll, f"{self.name} cells by quality", soup, IP.cell_colors(self.s, soup, True),
                                None, {"hbc_mesh": self.name, "hbc_layer": "direct", "hbc_part": "cells"})
             I.equip_object(tx, ob, IP.cell_data(self.s), IP.sheet_mask(self.s, -1))
-            self.outline(tx, coll, f"{self.name} cut cell edges", self.kept_by_cut(soup), color=MESH_EDGE_COLOR,
+            self.outline(tx, coll, f"{self.name} cut cell edges", self.kept_by_cut(soup), color=self.look.mesh_edge,
                          every_edge=True, scale=0.35)
         self.cut(coll)
         return [coll]

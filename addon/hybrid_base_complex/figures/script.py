@@ -62,8 +62,9 @@ def start(args, path):
     addon = R.Addon()
     scene = R.reset_file()
     w, h = args.resolution
-    R.setup_render(scene, args.engine, args.samples, w, h, addon.compat, args.denoise)
-    R.setup_world(scene, args.engine, addon.compat)
+    look = plan.LOOKS[args.look]
+    R.setup_render(scene, args.engine, args.samples, w, h, addon.compat, args.denoise, look)
+    R.setup_world(scene, args.engine, addon.compat, look)
     subject = R.Subject(addon, path, args, scene)
     R.add_camera(scene, subject.camera, subject.points)
     R.add_lights(scene, subject.camera, subject.points)
@@ -180,7 +181,8 @@ def render_subsheets(scene, subject, args, path, written):
         os.rmdir(tmp) if os.path.isdir(tmp) and not os.listdir(tmp) else None
         R.place_camera(scene.camera, subject.camera)
         scene.render.resolution_x, scene.render.resolution_y = w, h
-    bg = (R.BG_DISPLAY, R.BG_DISPLAY, R.BG_DISPLAY, 1.0)
+    g = subject.look.background
+    bg = (g, g, g, 1.0)
     img = C.tiles_panel(tiles, where, gw, h, bg)
     R.save_png(img, path)
     wrote(path, written)
@@ -299,7 +301,12 @@ def compare(args):
 def main(argv):
     args = plan.parse(plan.script_args(argv))
     t = time.perf_counter()
-    written = compare(args) if args.compare else single(args)
+    if args.animate:
+        from . import animation
+
+        written = animation.animate(args, start, wrote)
+    else:
+        written = compare(args) if args.compare else single(args)
     R.log(f"render_figures: {len(written)} files in {time.perf_counter() - t:.1f} s")
 
 
