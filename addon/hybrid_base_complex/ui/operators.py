@@ -72,7 +72,6 @@ def progress_line(fraction, message):
 
 
 def model_boxes():
-
     """(lo, hi) world boxes of every imported mesh's objects (where new imports must not land)."""
     boxes = []
     for root in (c for c in bpy.data.collections if c.get("hbc_source") is not None):
