@@ -164,16 +164,16 @@ def main():
     from hybrid_base_complex.blender import layers as L
 
     builder = {"last": 0.0}
-    build_layer = L.build_layer
+    build_layer_steps = L.build_layer_steps
 
-    def timed_build_layer(*a, **k):  # the builder alone, without the operator's scene evaluation
+    def timed_build_layer_steps(*a, **k):  # the builder alone, without the operator's scene evaluation
         t = time.perf_counter()
         try:
-            return build_layer(*a, **k)
+            return (yield from build_layer_steps(*a, **k))
         finally:
             builder["last"] = time.perf_counter() - t
 
-    L.build_layer = timed_build_layer
+    L.build_layer_steps = timed_build_layer_steps
     splits = []
     analyzed = not args.no_analysis
     rows = []
