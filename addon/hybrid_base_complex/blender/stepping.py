@@ -4,12 +4,25 @@ build was started from)."""
 
 from __future__ import annotations
 
+import time
+
 import bpy
 
 #: Seconds between the timer's events, and the main-thread work one event may do before the window
 #: redraws (the Blender-side writing comes in chunks of about this much).
 TICK = 0.02
 BUDGET = 0.1
+
+
+#: The most main-thread work one event may do, however slow the window draws (Esc answers within it).
+MAX_BUDGET = 1.0
+
+
+def budget(last_step_end: float) -> float:
+    """The main-thread work for this event: BUDGET, or as long as the window took to draw and wait
+    since the last step (up to MAX_BUDGET), so that a window slow to draw (software GL on a busy
+    machine) does not take most of the build's time."""
+    return min(max(BUDGET, time.perf_counter() - last_step_end), MAX_BUDGET)
 
 
 def in_window(context) -> bool:

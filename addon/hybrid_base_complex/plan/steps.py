@@ -134,7 +134,7 @@ class Stepper:
             return
 
         # A daemon: a cancelled build does not wait for its C++ work, whose result nobody takes.
-        thread = threading.Thread(target=run, name="hbc-work", daemon=True)
+        thread = threading.Thread(target=run, name="hbc-step", daemon=True)
         self._worker = (thread, box)
         thread.start()
 

@@ -169,6 +169,7 @@ class _Stepped(_Reporting):
         self._window = stepping.WindowProgress(context, self.bl_label)
         self._stepper = steps.Stepper(job, plan, threads=True, report=self._report)
         self._finish, self._t0 = finish, time.perf_counter()
+        self._since = self._t0  # the end of the last step: what the window took since then
         context.window_manager.modal_handler_add(self)
         return {"RUNNING_MODAL"}
 
@@ -179,7 +180,8 @@ class _Stepped(_Reporting):
     def step(self, context):
         """One timer event's share of the job; the operator's result once it has ended."""
         try:
-            done = self._stepper.advance(stepping.BUDGET)
+            done = self._stepper.advance(stepping.budget(self._since))
+            self._since = time.perf_counter()
         except Exception as e:  # noqa: BLE001
             self._window.end()
             return self.cancel_with(context, e, wrap=True)
