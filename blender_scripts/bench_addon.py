@@ -36,6 +36,13 @@ down, so with several meshes each row is the peak so far); the import's own repo
 splits its time into load, analysis and scene. --layers names the layers timed (default all; e.g.
 `blocks,sheets` for a 10^6-cell mesh, whose wireframe and subsheets take long);
 --rebuilds 0 skips the rebuild timing.
+
+--stepped N times Build All in steps against Build All at once (both rebuilding every layer in
+place), N pairs alternating, medians: the stepped one is the job the window's modal operator runs
+(plan/steps.Stepper: the C++ work in worker threads, the main thread's share in chunks of
+stepping.BUDGET seconds), driven here without redraws in between, so the difference is what the
+stepping itself costs (threads, chunks, polling at the window's timer interval: the driver sleeps
+stepping.TICK while it waits for a worker, as the window's timer does).
 """
 
 import argparse
@@ -63,6 +70,8 @@ def parse():
                          "the geometry-nodes filter on every cell instead")
     ap.add_argument("--layers", default=None,
                     help="comma-separated layers to time after the import (default: every one that applies)")
+    ap.add_argument("--stepped", type=int, default=0,
+                    help="pairs of Build All at once and in steps timed for the stepping table (medians)")
     ap.add_argument("meshes", nargs="+")
     return ap.parse_args(argv)
 
@@ -116,6 +125,33 @@ def time_rebuilds(st, n):
     return statistics.median(first), statistics.median(again)
 
 
+def time_stepped(root, n):
+    """(median Build All at once, median Build All in steps, median steps) over n pairs."""
+    import statistics
+
+    from hybrid_base_complex.blender import stepping
+    from hybrid_base_complex.plan import steps
+    from hybrid_base_complex.ui import operators as O
+
+    direct, stepped, counts = [], [], []
+    for _ in range(n):
+        t = time.perf_counter()
+        assert bpy.ops.hbc.build_all() == {"FINISHED"}
+        direct.append(time.perf_counter() - t)
+        t = time.perf_counter()
+        st = steps.Stepper(O.build_all_steps(bpy.context.scene, root, lambda _m: None),
+                           steps.build_phases(O.BUILD_ALL, False))
+        count = 0
+        while not st.advance(stepping.BUDGET):
+            count += 1
+            if st.waiting():
+                time.sleep(stepping.TICK)
+        bpy.context.view_layer.update()  # the operator's evaluation after it, as bpy.ops runs it
+        stepped.append(time.perf_counter() - t)
+        counts.append(count)
+    return statistics.median(direct), statistics.median(stepped), statistics.median(counts)
+
+
 def main():
     args = parse()
     sys.path.insert(0, os.path.dirname(os.path.abspath(args.addon)))
@@ -128,20 +164,21 @@ def main():
     from hybrid_base_complex.blender import layers as L
 
     builder = {"last": 0.0}
-    build_layer = L.build_layer
+    build_layer_steps = L.build_layer_steps
 
-    def timed_build_layer(*a, **k):  # the builder alone, without the operator's scene evaluation
+    def timed_build_layer_steps(*a, **k):  # the builder alone, without the operator's scene evaluation
         t = time.perf_counter()
         try:
-            return build_layer(*a, **k)
+            return (yield from build_layer_steps(*a, **k))
         finally:
             builder["last"] = time.perf_counter() - t
 
-    L.build_layer = timed_build_layer
+    L.build_layer_steps = timed_build_layer_steps
     splits = []
     analyzed = not args.no_analysis
     rows = []
     rebuilds = []
+    stepping_rows = []
     failed = False
     for path in args.meshes:
         bpy.ops.wm.read_homefile(use_empty=True)
@@ -176,6 +213,8 @@ def main():
             assert bpy.ops.hbc.build_layer(layer=layer) == {"FINISHED"}, layer
             times[layer] = time.perf_counter() - t
             splits.append((os.path.basename(path), layer, times[layer], builder["last"]))
+        if analyzed and args.stepped > 0:
+            stepping_rows.append((os.path.basename(path), *time_stepped(root, args.stepped)))
         if "components" in layers and args.rebuilds > 0:
             first, again = time_rebuilds(st, max(args.rebuilds, 1))
             times["rebuild blocks"] = again
@@ -222,6 +261,12 @@ def main():
         print("|---|---:|---:|---:|---:|")
         for name, objects, first, again in rebuilds:
             print(f"| {name} | {objects} | {first:.2f} | {again:.2f} | {again / first:.2f} |")
+    if stepping_rows:
+        n = args.stepped
+        print(f"\n| mesh | Build All at once (s, median of {n}) | in steps (s, median of {n}) | steps | in steps / at once |")
+        print("|---|---:|---:|---:|---:|")
+        for name, direct, stepped, count in stepping_rows:
+            print(f"| {name} | {direct:.2f} | {stepped:.2f} | {count:.0f} | {stepped / direct:.2f} |")
     sys.stdout.flush()
     addon.unregister()
     if failed:

@@ -46,15 +46,38 @@ def structure_of(root, analyzed, log, rho=0.8):
     """The mesh's Structure, read again from its source (sources.resolve) when not in memory, and
     with `analyzed` analyzed by the panel's subsheet rule (again when it was by the other); a source
     found beside a moved .blend is stored as found."""
-    path = sources.resolve(root)
-    if os.path.normpath(bpy.path.abspath(root["hbc_source"])) != path:
-        root["hbc_source"] = sources.stored(path)
-    s = session.ensure(root.name, path, float(root.get("hbc_scale", 1.0)),
-                       float(root.get("hbc_rho", rho)), analyzed, log, tuple(root.get("hbc_offset", (0, 0, 0))),
-                       bool(root.get("hbc_skip_invalid", False)), subsheet_rule())
-    if analyzed:
-        refresh_subsheets_stale(root, picked_sheet())
+    path, ensure = structure_request(root, analyzed, log, rho)
+    s = ensure()
+    structure_found(root, path, analyzed)
     return s
+
+
+def structure_request(root, analyzed, log, rho=0.8):
+    """(the source's path, a function giving the mesh's Structure as structure_of does): the
+    function touches no Blender data (a build runs it in a worker thread); `structure_found`
+    stores what it found on the mesh afterwards."""
+    path = sources.resolve(root)
+    args = (root.name, path, float(root.get("hbc_scale", 1.0)), float(root.get("hbc_rho", rho)), analyzed, log,
+            tuple(root.get("hbc_offset", (0, 0, 0))), bool(root.get("hbc_skip_invalid", False)), subsheet_rule())
+    return path, lambda: session.ensure(*args)
+
+
+def structure_ready(root, analyzed) -> bool:
+    """Whether structure_of would find the mesh in memory as wanted (no reading, no analysis)."""
+    s = session.get(root.name)
+    return s is not None and (not analyzed or (s.analysis is not None and s.subsheet_rule == subsheet_rule()))
+
+
+def structure_found(root, path, analyzed, tx=None):
+    """After structure_request's function: the source stored as found, stale subsheets marked
+    (through the transaction `tx` when given: a cancelled build puts them back)."""
+    if os.path.normpath(bpy.path.abspath(root["hbc_source"])) != path:
+        if tx is not None:
+            tx.set_prop(root, "hbc_source", sources.stored(path))
+        else:
+            root["hbc_source"] = sources.stored(path)
+    if analyzed:
+        refresh_subsheets_stale(root, picked_sheet(), tx)
 
 
 def drawn_sheet(root):
@@ -73,16 +96,22 @@ def rule_of(root):
     return s.subsheet_rule if s is not None and s.analysis is not None else None
 
 
-def refresh_subsheets_stale(root, sheet_index):
+def refresh_subsheets_stale(root, sheet_index, tx=None):
     """Marks the subsheets layer stale (the panel says: rebuild) and hides it while it shows
     another sheet than the picked one, or subsheets by another rule than the analysis in memory;
-    shows it again when it is current."""
+    shows it again when it is current (through the transaction `tx` when given)."""
     coll = S.find_layer(root, "subsheets")
     if coll is None:
         return
     rule = rule_of(root)
     stale = (any(ob.get("hbc_sheet") != sheet_index for ob in S.objects_in(coll))
              or (rule is not None and coll.get(SUBSHEET_RULE_PROP, rule) != rule))
+    if tx is not None:
+        if stale != bool(coll.get("hbc_stale")):
+            tx.set_attr(coll, "hide_viewport", stale)
+        if coll.get("hbc_stale") is not stale:
+            tx.set_prop(coll, "hbc_stale", stale)
+        return
     if stale != bool(coll.get("hbc_stale")):  # hidden while stale, shown again when current
         coll.hide_viewport = stale
     coll["hbc_stale"] = stale

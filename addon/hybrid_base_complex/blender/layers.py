@@ -2,8 +2,10 @@
 
 Each builder takes (tx, coll, structure, settings, name) where settings is the scene's
 HBCSettings (or any object with the same attributes) and name the mesh's root collection name,
-and returns the number of objects it made. `build_layer` wraps a builder in a transaction and
-swaps the result in.
+and returns the number of objects it made. A builder is a build step (plan/steps.py): a generator
+that asks for its C++ geometry through `Work` (a worker thread in a window) and yields between the
+objects it writes; a plain function returning the count is taken as one step. `build_layer` wraps
+a builder in a transaction and swaps the result in; `build_layer_steps` is the same as a step.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ import time
 import numpy as np
 
 from ..plan import planning as P
+from ..plan.steps import Work, run_direct
 from . import inspect
 from . import scene as S
 from .context import SUBSHEET_RULE_PROP
@@ -28,10 +31,11 @@ def _props(name, layer, **extra):
 def build_direct(tx, coll, s, st, name):
     made = 0
     if st.direct_boundary:
-        soup = s.direct_boundary()
+        soup, edges = yield Work(S.with_edges, s.direct_boundary)
         alpha = st.boundary_opacity if st.direct_transparent else 1.0
         mat = S.material(tx, "flat", P.HEX_COLOR, alpha)
-        ob = S.soup_object(tx, coll, f"{name} boundary", soup, None, mat, _props(name, "direct", hbc_part="boundary"))
+        ob = S.soup_object(tx, coll, f"{name} boundary", soup, None, mat, _props(name, "direct", hbc_part="boundary"),
+                           edges=edges)
         # No colour attribute: Solid > Attribute (the add-on's setting) draws such an object in its
         # object colour, transparent when that colour's alpha is below 1 (the material's alpha
         # counts in Solid > Material only).
@@ -40,42 +44,48 @@ def build_direct(tx, coll, s, st, name):
         # boundary in front of everything would take every click meant for what it lets show.
         ob.hide_select = S.see_through(ob)
         made += 1
+        yield None
     types = np.asarray(s.mesh.cell_types)
     if np.any(types != 0):
-        soup = s.non_hex_cells(st.direct_shrink)
+        soup, edges = yield Work(S.with_edges, s.non_hex_cells, st.direct_shrink)
         S.soup_object(tx, coll, f"{name} non-hex cells", soup, s.cell_type_colors(soup.face_owner), None,
-                      _props(name, "direct", hbc_part="non_hex"))
+                      _props(name, "direct", hbc_part="non_hex"), edges=edges)
         made += 1
+        yield None
     if st.direct_hex_cells and np.any(types == 0):
-        soup = s.hex_region()
+        soup, edges = yield Work(S.with_edges, s.hex_region)
         mat = S.material(tx, "flat", P.HEX_COLOR, 1.0)
-        S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"))
+        S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"),
+                      edges=edges)
         made += 1
+        yield None
     return made + inspect.build_direct_cells(tx, coll, s, st, name)
 
 
 def build_graph(tx, coll, s, st, name):
     radius = st.line_radius * s.length
     made = 0
-    for group, _color, lines in s.singularity_lines():
+    for group, _color, lines in (yield Work(s.singularity_lines)):
         if lines.positions.size:
             S.lines_object(tx, coll, f"{name} {group}", lines, radius, _props(name, "graph", hbc_group=group))
             made += 1
+            yield None
     return made
 
 
 def build_blocks(tx, coll, s, st, name):
-    soup = s.blocks(st.shrink)
+    big = s.num_components > st.split_max  # one object: its edges made off the main thread too
+    soup, edges = yield Work(S.with_edges if big else S.without_edges, s.blocks, st.shrink)
     colors = s.component_colors()
     kinds = s.component_kinds()
 
     def props_of(c):
         return _props(name, "components", hbc_component=c, hbc_kind=P.COMPONENT_KINDS[int(kinds[c])])
 
-    if s.num_components <= st.split_max:
-        return len(S.split_soup_objects(tx, coll, f"{name} component", soup, colors, props_of))
+    if not big:
+        return len((yield from S.split_soup_objects(tx, coll, f"{name} component", soup, colors, props_of)))
     S.soup_object(tx, coll, f"{name} components", soup, None, None, _props(name, "components", hbc_owner="component"),
-                  owner_colors=colors)
+                  owner_colors=colors, edges=edges)
     return 1
 
 
@@ -86,17 +96,18 @@ def build_sheets(tx, coll, s, st, name):
         return 0
     colors = P.sheet_colors(n)
     types = s.sheet_types()
-    soup = s.all_sheets(st.shrink)
+    big = n > st.split_max
+    soup, edges = yield Work(S.with_edges if big else S.without_edges, s.all_sheets, st.shrink)
 
     def props_of(i):
         return _props(name, "sheets", hbc_sheet=i, hbc_sheet_type=P.SHEET_TYPES[int(types[i])])
 
-    if n <= st.split_max:
-        objects = S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of)
+    if not big:
+        objects = yield from S.split_soup_objects(tx, coll, f"{name} sheet", soup, colors, props_of)
         show_sheets(objects, st)
         return len(objects)
     S.soup_object(tx, coll, f"{name} sheets", soup, None, None, _props(name, "sheets", hbc_owner="sheet"),
-                  owner_colors=colors)
+                  owner_colors=colors, edges=edges)
     return 1
 
 
@@ -118,7 +129,7 @@ def build_sheet(tx, coll, s, st, name):
         raise ValueError(f"no sheet {i} (the mesh has {s.num_sheets})")
     color = P.sheet_color(i)
     t = P.SHEET_TYPES[int(s.sheet_types()[i])]
-    soup = s.sheet_blocks(i, st.shrink)
+    soup = yield Work(s.sheet_blocks, i, st.shrink)
     # The sheet's colour, each block (owner) a little lighter or darker so blocks stay visible.
     owners = np.arange(int(soup.face_owner.max()) + 1 if soup.num_faces else 0)
     shade = 0.8 + 0.2 * ((owners * 7) % 3) / 2.0
@@ -127,7 +138,8 @@ def build_sheet(tx, coll, s, st, name):
     S.soup_object(tx, coll, f"{name} picked sheet {i}", soup, None, None,
                   _props(name, "sheet", hbc_sheet=i, hbc_sheet_type=t, hbc_owner="component"), owner_colors=oc)
     made = 1
-    unmatched, shared, edges, cells = s.sheet_highlights(i, _dot_radius(s, st))
+    yield None
+    unmatched, shared, edges, cells = yield Work(s.sheet_highlights, i, _dot_radius(s, st))
     if unmatched.num_faces:
         S.soup_object(tx, coll, f"{name} picked sheet {i} unmatched vertices", unmatched,
                       np.tile(P.UNMATCHED_COLOR, (unmatched.num_faces, 1)), None,
@@ -162,7 +174,7 @@ def build_subsheets(tx, coll, s, st, name):
     count = int(sub.count)
     colors = P.subsheet_colors(count)
     made = 0
-    all_soup = s.subsheet_soup(i, st.shrink)
+    all_soup = yield Work(s.subsheet_soup, i, st.shrink)
     radius = _dot_radius(s, st)
     for k in range(count):
         soup = all_soup.select(all_soup.face_owner == k)
@@ -179,13 +191,14 @@ def build_subsheets(tx, coll, s, st, name):
                           np.tile(P.UNMATCHED_COLOR, (d.num_faces, 1)), None,
                           _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_highlight="unmatched"))
             made += 1
-        lines = s.wireframe(i, k, st.opacity_floor, st.simplified, _by_kind(st), _rho(st))
+        lines = yield Work(s.wireframe, i, k, st.opacity_floor, st.simplified, _by_kind(st), _rho(st))
         below = np.array(P.spread_translation(k, s.points, below=True), np.float32) if st.spread else offset
         lines.positions = lines.positions + below
         if lines.positions.size:
             S.lines_object(tx, coll, f"{name} sheet {i} subsheet {k} wireframe", lines, st.line_radius * s.length,
                            _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_wireframe=True))
             made += 1
+        yield (k + 1) / count
     coll[SUBSHEET_RULE_PROP] = s.subsheet_rule  # stale once the mesh is analyzed by the other rule
     return made
 
@@ -208,7 +221,7 @@ STYLED_LAYERS = ("wireframe", "subsheets")
 
 def build_wireframe(tx, coll, s, st, name):
     sheet = st.sheet_index if st.wireframe_scope == "SHEET" else None
-    lines = s.wireframe(sheet, None, st.opacity_floor, st.simplified, _by_kind(st), _rho(st))
+    lines = yield Work(s.wireframe, sheet, None, st.opacity_floor, st.simplified, _by_kind(st), _rho(st))
     if not lines.positions.size:
         return 0
     S.lines_object(tx, coll, f"{name} wireframe" + (f" sheet {sheet}" if sheet is not None else ""), lines,
@@ -228,33 +241,49 @@ BUILDERS = {
 NEEDS_ANALYSIS = {k for k in BUILDERS if k != "direct"}
 
 
-def build_into(tx, root, layer, s, st):
+def build_into_steps(tx, root, layer, s, st):
     """Builds a layer and returns its collection: the existing layer, rebuilt in place (its
     objects refilled, see scene.Transaction), else a new unlinked collection (registered in tx).
     `root` is the mesh's collection, or (figures/render.py, which links the result
-    itself) a name: then the layer is always new."""
+    itself) a name: then the layer is always new. A build step (plan/steps.py)."""
     name = root if isinstance(root, str) else root.name
     coll = None if isinstance(root, str) else S.find_layer(root, layer)
     if coll is not None:
         tx.reuse(coll)
     else:
         coll = tx.collection(P.layer_collection_name(name, layer) + " (building)")
-    BUILDERS[layer](tx, coll, s, st, name)
+    made = BUILDERS[layer](tx, coll, s, st, name)
+    if _is_step(made):
+        yield from made
     inspect.equip_layer(tx, coll, layer, s, st)
     if not isinstance(root, str):
-        store_legend_facts(root, s)
+        store_legend_facts(root, s, tx)
     return coll
+
+
+def _is_step(value) -> bool:
+    """Whether a builder's result is a build step to run (a generator), not its count."""
+    return hasattr(value, "send") and hasattr(value, "throw")
+
+
+def build_into(tx, root, layer, s, st):
+    """build_into_steps run to its end at once."""
+    return run_direct(build_into_steps(tx, root, layer, s, st))
 
 
 LEGEND_FACTS = "hbc_legend_facts"
 
 
-def store_legend_facts(root, s):
+def store_legend_facts(root, s, tx=None):
     """Keeps the mesh's legend facts (Structure.legend_facts, JSON) on its collection, so that the
-    legend of a reopened file is whole before the mesh is read and analyzed again."""
+    legend of a reopened file is whole before the mesh is read and analyzed again (set through
+    the transaction `tx` when given: a rollback puts the old facts back)."""
     text = json.dumps(s.legend_facts(), sort_keys=True)
     if root.get(LEGEND_FACTS) != text:
-        root[LEGEND_FACTS] = text
+        if tx is not None:
+            tx.set_prop(root, LEGEND_FACTS, text)
+        else:
+            root[LEGEND_FACTS] = text
 
 
 def stored_legend_facts(root) -> dict:
@@ -267,9 +296,15 @@ def stored_legend_facts(root) -> dict:
 def build_layer(root, layer, s, st, log=print):
     """Builds one layer of the mesh under `root`, replacing the old one; all or nothing. Returns
     (collection, a sentence saying what was built and how long it took)."""
+    return run_direct(build_layer_steps(root, layer, s, st, log))
+
+
+def build_layer_steps(root, layer, s, st, log=print):
+    """build_layer as a build step (plan/steps.py): a cancel (the step closed) leaves the file as it
+    was. The time it reports is the whole build's, waits between steps included."""
     t = time.perf_counter()
     with S.Transaction() as tx:
-        coll = build_into(tx, root, layer, s, st)
+        coll = yield from build_into_steps(tx, root, layer, s, st)
         S.swap_layer(root, layer, coll, tx)
     done = (f"{root.name}: built {P.LAYER_TITLES[layer]} ({len(S.objects_in(coll))} objects) "
             f"in {time.perf_counter() - t:.2f} s")

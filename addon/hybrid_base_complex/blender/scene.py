@@ -152,6 +152,9 @@ class _ObjectState:
             ob.modifiers.remove(mod)
 
 
+_MISSING = object()
+
+
 class Transaction:
     """Records what a build creates and changes; `with Transaction() as tx:` undoes it on error.
 
@@ -170,6 +173,7 @@ class Transaction:
         self.used_modifiers = set()  # (object, modifier name) the build asked for
         self.inputs = []  # (modifier, input name, value before) set on kept objects
         self.layers = []  # (layer collection, name, hide_viewport, hide_render, stale) rebuilt in place
+        self.props = []  # (is an attribute, datablock, key, value before or _MISSING): set_prop, set_attr
 
     def __enter__(self):
         return self
@@ -183,7 +187,25 @@ class Transaction:
         self.created.append((kind, block))
         return block
 
+    def set_prop(self, block, key, value):
+        """Sets an ID property of a datablock the build did not make; a rollback puts it back."""
+        self.props.append((False, block, key, _plain(block[key]) if key in block else _MISSING))
+        block[key] = value
+
+    def set_attr(self, block, attr, value):
+        """Sets an attribute (hide_viewport, ...) of a datablock the build did not make; a rollback
+        puts it back."""
+        self.props.append((True, block, attr, getattr(block, attr)))
+        setattr(block, attr, value)
+
     def rollback(self):
+        for is_attr, block, key, value in reversed(self.props):
+            if is_attr:
+                setattr(block, key, value)
+            elif value is _MISSING:
+                block.pop(key, None)
+            else:
+                block[key] = value
         for mod, name, value in reversed(self.inputs):
             compat.set_modifier_input(mod, name, value)
         for state in reversed(list(self.kept.values())):
@@ -382,11 +404,12 @@ def tube_group(tx: Transaction):
 # ---------------------------------------------------------------------------------------------
 # Geometry
 
-def fill_soup(me, soup: P.Soup, face_colors=None, owner_colors=None):
+def fill_soup(me, soup: P.Soup, face_colors=None, owner_colors=None, edges=None):
     """Writes a soup into an empty mesh: points, corners, faces, the `owner` (and `hbc_cell`) face
     attributes and the colour attribute: with face_colors one per face (CORNER domain) or one for
     all (POINT), or with owner_colors one per owner id (POINT: the soup's points must each belong
-    to one owner, as hbc.block_soup's do)."""
+    to one owner, as hbc.block_soup's do). edges: the soup's `_soup_edges` when made already
+    (`with_edges`, off the main thread)."""
     nv, nf = len(soup.positions), soup.num_faces
     me.vertices.add(nv)
     me.vertices.foreach_set("co", np.ascontiguousarray(soup.positions, np.float32).ravel())
@@ -394,7 +417,8 @@ def fill_soup(me, soup: P.Soup, face_colors=None, owner_colors=None):
     compat.set_corner_verts(me, soup.face_vertices)
     me.polygons.add(nf)
     compat.set_polygons(me, soup.loop_starts(), soup.face_sizes)
-    edges = _soup_edges(soup, nv)
+    if edges is None:
+        edges = _soup_edges(soup, nv)
     if edges is not None:
         me.edges.add(len(edges["edges"]))
         compat.set_edge_verts(me, edges["edges"])
@@ -437,6 +461,18 @@ def _soup_edges(soup: P.Soup, num_points: int):
     return polygon_edges(offsets, np.ascontiguousarray(soup.face_vertices, np.int32), num_points)
 
 
+def with_edges(make, *args):
+    """(soup, its edges) of the soup `make(*args)` gives: a build's `steps.Work`, so that the soup
+    and its edges (C++ both) are made off the main thread; no Blender data is touched."""
+    soup = make(*args)
+    return soup, _soup_edges(soup, len(soup.positions))
+
+
+def without_edges(make, *args):
+    """(soup, None): `with_edges` for soups split into objects (each finds its own edges)."""
+    return make(*args), None
+
+
 def set_materials(me, materials):
     """Gives a mesh these material slots and records a single one as the mesh's `hbc_material`.
     A refilled mesh usually has them already: changing a mesh's materials rebuilds the whole
@@ -456,9 +492,9 @@ def mesh_from_soup(tx: Transaction, name: str, soup: P.Soup, face_colors=None, o
     return fill_soup(tx.mesh(name), soup, face_colors, owner_colors)
 
 
-def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None, owner_colors=None):
+def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=None, owner_colors=None, edges=None):
     ob, me = tx.mesh_object(name, coll)
-    fill_soup(me, soup, face_colors, owner_colors)
+    fill_soup(me, soup, face_colors, owner_colors, edges)
     if mat is None:
         mat = material(tx, "attr")
     set_materials(me, [mat])
@@ -470,7 +506,8 @@ def soup_object(tx, coll, name, soup: P.Soup, face_colors=None, mat=None, props=
 def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of=None):
     """One object per owner (faces with equal owner), all sharing the Object Info material with
     ob.color set: for layers with few owners, so that clicking one selects it. Relies on
-    hbc.block_soup giving each owner its own points (usually one contiguous range)."""
+    hbc.block_soup giving each owner its own points (usually one contiguous range). A build step
+    (plan/steps.py): yields the share written after each object, returns the objects."""
     mat = material(tx, "object")
     order = np.argsort(soup.face_owner, kind="stable")
     offsets = np.append(soup.loop_starts(), len(soup.face_vertices))  # once: a copy per owner cost 4 s for 352 sheets
@@ -496,6 +533,7 @@ def split_soup_objects(tx, coll, prefix, soup: P.Soup, colors, props_of, name_of
         ob = soup_object(tx, coll, name, part, [rgba], mat, props_of(int(owner)))
         ob.color = rgba
         objects.append(ob)
+        yield (i + 1) / len(uniq)
     return objects
 
 

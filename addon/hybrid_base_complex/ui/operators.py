@@ -1,7 +1,12 @@
 """Operators: import, analyze, build / clear layers, copy the Table 1 row, select a merged owner
 (component or sheet), add a cut plane. All undoable; a failure reports what went wrong (the message, not a Python
 class), cancels (so Blender records no undo step) and leaves the scene as it was; a success
-reports what was built and how long it took."""
+reports what was built and how long it took.
+
+The builds that can take long (import, Build Layer, Build All) are jobs (plan/steps.py): run from a
+script or in background mode at once, and started from the window's buttons or file browser as
+modal operators in steps, the C++ work in a worker thread and the scene written between redraws,
+with progress in the status bar; Esc cancels, leaving the scene and the undo history as they were."""
 
 from __future__ import annotations
 
@@ -20,11 +25,15 @@ from ..blender import inspect
 from ..blender import layers as L
 from ..blender import scene as S
 from ..blender import sources
+from ..blender import stepping
 from ..blender.context import (active_root, fill_sheet_list, find_root, merged_owner_faces,
-                               refresh_subsheets_stale, select_owner, structure_of, subsheet_rule, unavailable)
+                               refresh_subsheets_stale, select_owner, structure_found, structure_of,
+                               structure_ready, structure_request, subsheet_rule, unavailable)
 from ..plan import metrics_box as MB
 from ..plan import planning as P
 from ..plan import session
+from ..plan import steps
+from ..plan.steps import Phase, Work
 
 # The file browser's filter: every extension the readers take, as files spell it and in lower case,
 # and OpenFOAM's owner file.
@@ -57,44 +66,9 @@ def active_job(context):
     return active_root(context), context.scene.hbc, make_log(context), time.perf_counter()
 
 
-class _Progress:
-    """Long work in steps: the window manager's progress (the cursor's counter), the step in the
-    status bar (printed in background mode), and how long each step took. `begin` names the step
-    about to run (what the user waits for), `step` ends it."""
-
-    def __init__(self, context, total):
-        self.context = context
-        self.wm = context.window_manager
-        self.log = make_log(context)
-        self.p = P.Progress(total, self._report)
-        self.times: dict[str, float] = {}  # seconds per step, by the name its begin gave
-        self._running = None
-        self.wm.progress_begin(0, 100)
-
-    def _report(self, fraction, message):
-        self.wm.progress_update(int(100 * fraction))
-        self.log(f"hbc: [{int(100 * fraction):3d}%] {message}")
-        compat.redraw_status(self.context)
-
-    def begin(self, name, message):
-        """Starts the step `name`: says `message` (at the share done so far) and starts its clock."""
-        self._running = (name, time.perf_counter())
-        self._report(min(self.p.done / self.p.total, 1.0), message)
-
-    def step(self, message):
-        if self._running is not None:
-            name, t = self._running
-            self.times[name] = self.times.get(name, 0.0) + time.perf_counter() - t
-            self._running = None
-        self.p.step(message)
-
-    def end(self, context):
-        self.wm.progress_end()
-        if not bpy.app.background:
-            try:
-                context.workspace.status_text_set(None)
-            except (AttributeError, RuntimeError):
-                pass
+def progress_line(fraction, message):
+    """A step of a build as printed on the terminal (the user guide's `hbc:` lines)."""
+    return f"hbc: [{int(100 * fraction):3d}%] {message}"
 
 
 def model_boxes():
@@ -118,13 +92,11 @@ def push_undo_step(message):
 class _Reporting:
     """How the operators end: one report, also written to the log when given."""
 
-    def cancel_with(self, context, error, prog=None, wrap=False):
+    def cancel_with(self, context, error, wrap=False):
         """Reports a failure and cancels; the scene was not touched (builds are all or nothing).
         wrap: the report in lines (planning.wrap_message) in a window: run from the file browser,
         Blender shows an operator's reports in a popup, one line per line of the report, each cut
         at the popup's width."""
-        if prog is not None:
-            prog.end(context)
         text = P.describe_error(error)
         print(f"hbc: failed: {text}", flush=True)  # on the terminal with the steps before it
         self.report({"ERROR"}, "\n".join(P.wrap_message(text)) if wrap and not bpy.app.background else text)
@@ -148,7 +120,105 @@ class _OnActiveMesh(_Reporting):
         return active_root(context) is not None
 
 
-class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
+class _Stepped(_Reporting):
+    """A build that can take long, as a job (plan/steps.py): `job(context, log)` gives (the job, its
+    phases, what to do with its result on success). At once (execute) from a script or in
+    background mode; started from the window (invoke, or the file browser's execute), a modal
+    operator: a timer steps the job between redraws, the window shows the progress, Esc cancels
+    (the job's transactions roll back; Blender records no undo step for a cancelled operator)."""
+
+    _stepper = None
+    _window = None
+
+    def job(self, context, log):
+        raise NotImplementedError
+
+    def run_now(self, context):
+        """The whole job at once, its C++ work inline; the window manager's counter and the status
+        text still follow it (drawn when there is a window: compat.redraw_status)."""
+        wm, log = context.window_manager, make_log(context)
+
+        def report(fraction, message):
+            wm.progress_update(int(100 * fraction))
+            log(progress_line(fraction, message))
+            compat.redraw_status(context)
+
+        t0 = time.perf_counter()
+        wm.progress_begin(0, 100)
+        try:
+            job, plan, finish = self.job(context, log)
+            stepper = steps.Stepper(job, plan, threads=False, report=report)
+            result = stepper.run()
+        except Exception as e:  # noqa: BLE001 - any failure must cancel cleanly
+            return self.cancel_with(context, e, wrap=True)
+        finally:
+            wm.progress_end()
+            if not bpy.app.background:
+                try:
+                    context.workspace.status_text_set(None)
+                except (AttributeError, RuntimeError):
+                    pass
+        return finish(context, result, stepper.times, time.perf_counter() - t0, log)
+
+    def start_steps(self, context):
+        """Starts the job as a modal operator in the window."""
+        try:
+            job, plan, finish = self.job(context, print)
+        except Exception as e:  # noqa: BLE001
+            return self.cancel_with(context, e, wrap=True)
+        self._window = stepping.WindowProgress(context, self.bl_label)
+        self._stepper = steps.Stepper(job, plan, threads=True, report=self._report)
+        self._finish, self._t0 = finish, time.perf_counter()
+        self._since = self._t0  # the end of the last step: what the window took since then
+        context.window_manager.modal_handler_add(self)
+        return {"RUNNING_MODAL"}
+
+    def _report(self, fraction, message):
+        print(progress_line(fraction, message), flush=True)
+        self._window.show(fraction, message)
+
+    def step(self, context):
+        """One timer event's share of the job; the operator's result once it has ended."""
+        try:
+            done = self._stepper.advance(stepping.budget(self._since))
+            self._since = time.perf_counter()
+        except Exception as e:  # noqa: BLE001
+            self._window.end()
+            return self.cancel_with(context, e, wrap=True)
+        if not done:
+            self._window.show(self._stepper.fraction, self._stepper.message)
+            return {"RUNNING_MODAL"}
+        self._window.end()
+        return self._finish(context, self._stepper.result, self._stepper.times, time.perf_counter() - self._t0,
+                            make_log(context))
+
+    def cancel_steps(self, context):
+        """Esc: the job ends where it stands and rolls back."""
+        self._stepper.cancel()
+        self._window.end()
+        text = f"{self.bl_label} cancelled: the scene is as it was"
+        print(f"hbc: {text}", flush=True)
+        self.report({"WARNING"}, text)
+        return {"CANCELLED"}
+
+    def modal(self, context, event):
+        if event.type == "ESC" and event.value == "PRESS":
+            return self.cancel_steps(context)
+        if event.type == "TIMER":  # ours (the event does not say which timer): one more step
+            return self.step(context)
+        return {"RUNNING_MODAL"}  # nothing else while the scene is half written
+
+    def cancel(self, context):
+        """Blender ends the operator (the window closes, the file is reloaded)."""
+        if self._stepper is not None and not self._stepper.done:
+            try:
+                self._stepper.cancel()
+                self._window.end()
+            except (ReferenceError, RuntimeError) as e:  # the file already went: nothing to put back
+                print(f"hbc: {self.bl_label} ended: {e}", flush=True)
+
+
+class HBC_OT_import(_Stepped, bpy.types.Operator, ImportHelper):
     """Import a hex-dominant volume mesh and show it (optionally analyzed)"""
 
     @classmethod
@@ -176,21 +246,29 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
                                description="Drop the cells that cannot be volumes (one face, open, a face in three "
                                            "cells; docs/check.md) instead of refusing the file; the report says which")
 
+    stepped: BoolProperty(name="In steps", default=False, options={"HIDDEN", "SKIP_SAVE"},
+                          description="Import in steps between the window's redraws (set when started from the window)")
+
+    def invoke(self, context, event):
+        self.stepped = stepping.in_window(context)  # the file browser then calls execute
+        return ImportHelper.invoke(self, context, event)
+
     def execute(self, context):
+        if self.stepped and stepping.in_window(context):
+            return self.start_steps(context)
+        return self.run_now(context)
+
+    def job(self, context, log):
         path = os.path.abspath(self.filepath)
-        log = make_log(context)
         if not os.path.isfile(path):
-            self.report({"ERROR"}, f"No such file: {path}")
-            return {"CANCELLED"}
+            raise FileNotFoundError(f"No such file: {path}")
         layers = ["direct"] + (["graph", "components", "wireframe"] if self.build_layers and self.analyze else [])
-        prog = _Progress(context, 1 + (1 if self.analyze else 0) + len(layers))
-        t0 = time.perf_counter()
-        try:
-            s = self._load_and_analyze(context, path, prog, log)
-            root = self._build_scene(context, path, s, layers, prog)
-        except Exception as e:  # noqa: BLE001 - any failure must cancel cleanly
-            return self.cancel_with(context, e, prog, wrap=True)
-        prog.end(context)
+        options = dict(scale=self.scale, analyze=self.analyze, beside=self.beside, skip_invalid=self.skip_invalid)
+        return (import_steps(context.scene, path, layers, log, **options), steps.import_phases(self.analyze, layers),
+                self._finish_import)
+
+    def _finish_import(self, context, result, times, seconds, log):
+        root, s = result
         st = context.scene.hbc
         session.put(root.name, s)
         st.active_mesh = root.name
@@ -199,43 +277,60 @@ class HBC_OT_import(_Reporting, bpy.types.Operator, ImportHelper):
             with S.selectable(S.objects_in(root)):
                 compat.frame_objects(context, S.objects_in(root))
         push_undo_step(self.bl_label)
+        report_times = {k: v for k, v in times.items() if k in ("load", "analysis")}
+        report_times["scene"] = sum(v for k, v in times.items() if k not in ("load", "analysis"))
         return self.finish_with(P.import_report(root.name, s.num_cells, s.num_components if s.has_analysis else None,
                                                 s.num_sheets if s.has_analysis else None,
-                                                len(S.objects_in(root)), prog.times, time.perf_counter() - t0,
+                                                len(S.objects_in(root)), report_times, seconds,
                                                 session.dropped_text(s.mesh.dropped)), log)
 
-    def _load_and_analyze(self, context, path, prog, log):
-        """Reads the mesh (placed beside the others) and analyzes it, each a step of `prog`."""
-        prog.begin("load", f"loading {os.path.basename(path)}")
-        s = session.load(path, self.scale, log, skip_invalid=self.skip_invalid)
-        if self.beside:
-            s.set_offset(P.beside(model_boxes(), *s.bbox()))
-        prog.step(f"loaded {s.num_cells} cells")
-        if self.analyze:
-            prog.begin("analysis", f"analyzing {s.num_cells} cells")
-            session.analyze(s, context.scene.hbc.rho, log, subsheet_rule(context.scene))
-            prog.step(f"analyzed: {s.num_components} components, {s.num_sheets} sheets")
-        return s
 
-    def _build_scene(self, context, path, s, layers, prog):
-        """The mesh's collection with its layers, linked at the end: all or nothing (the
-        transaction removes what was made when a step fails)."""
-        st = context.scene.hbc
-        with S.Transaction() as tx:
-            root = tx.collection(P.mesh_name_from_path(path))
-            root["hbc_source"] = sources.stored(path)
-            root["hbc_scale"] = float(self.scale)
-            root["hbc_offset"] = [float(x) for x in s.offset]
-            root["hbc_rho"] = float(st.rho)
-            root["hbc_cells"] = int(s.num_cells)
-            if self.skip_invalid:
-                root["hbc_skip_invalid"] = True  # read again the same way (blender/context.py)
-            for layer in layers:
-                prog.begin("scene", f"building {P.LAYER_TITLES[layer]}")
-                S.swap_layer(root, layer, L.build_into(tx, root, layer, s, st), tx)
-                prog.step(f"built {P.LAYER_TITLES[layer]}")
-            context.scene.collection.children.link(root)
-        return root
+def import_steps(scene, path, layers, log, scale=1.0, analyze=True, beside=True, skip_invalid=False):
+    """The import as a job: the file read and analysed (worker thread), placed beside the meshes
+    already there, then its collection with `layers` built and linked at the end: all or nothing
+    (the transaction removes what was made when a step fails or the job is cancelled). Returns
+    (root collection, Structure)."""
+    yield Phase("load", f"loading {os.path.basename(path)}")
+    s = yield Work(session.load, path, scale, log, (0.0, 0.0, 0.0), skip_invalid)
+    if beside:
+        s.set_offset(P.beside(model_boxes(), *s.bbox()))
+    yield f"loaded {s.num_cells} cells"
+    if analyze:
+        yield Phase("analysis", f"analyzing {s.num_cells} cells")
+        yield Work(session.analyze, s, scene.hbc.rho, log, subsheet_rule(scene))
+        yield f"analyzed: {s.num_components} components, {s.num_sheets} sheets"
+    st = scene.hbc
+    with S.Transaction() as tx:
+        root = tx.collection(P.mesh_name_from_path(path))
+        root["hbc_source"] = sources.stored(path)
+        root["hbc_scale"] = float(scale)
+        root["hbc_offset"] = [float(x) for x in s.offset]
+        root["hbc_rho"] = float(st.rho)
+        root["hbc_cells"] = int(s.num_cells)
+        if skip_invalid:
+            root["hbc_skip_invalid"] = True  # read again the same way (blender/context.py)
+        for layer in layers:
+            yield Phase(layer, f"building {P.LAYER_TITLES[layer]}")
+            coll = yield from L.build_into_steps(tx, root, layer, s, st)
+            S.swap_layer(root, layer, coll, tx)
+            yield f"built {P.LAYER_TITLES[layer]}"
+        scene.collection.children.link(root)
+    return root, s
+
+
+def structure_steps(tx, root, analyzed, log, rho):
+    """The mesh's Structure as structure_of gives it, read and analysed in a worker thread when not
+    in memory (the phase "analysis"), what it found stored through `tx`."""
+    path, ensure = structure_request(root, analyzed, log, rho)
+    if structure_ready(root, analyzed):
+        s = ensure()
+    else:
+        yield Phase("analysis", f"reading and analyzing {root.name}" if session.get(root.name) is None
+                    else f"analyzing {root.name}")
+        s = yield Work(ensure)
+        yield "analysis ready"
+    structure_found(root, path, analyzed, tx)
+    return s
 
 
 class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
@@ -259,7 +354,7 @@ class HBC_OT_analyze(_OnActiveMesh, bpy.types.Operator):
                                 f"in {time.perf_counter() - t0:.2f} s")
 
 
-class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
+class HBC_OT_build_layer(_Stepped, _OnActiveMesh, bpy.types.Operator):
     """Build (or rebuild) one structure layer of the active mesh"""
 
     bl_idname = "hbc.build_layer"
@@ -273,29 +368,43 @@ class HBC_OT_build_layer(_OnActiveMesh, bpy.types.Operator):
         title = P.LAYER_TITLES[properties.layer].lower()
         return f"Cannot build the {title} layer: {why}" if why else f"Build (or rebuild) the {title} layer"
 
+    def invoke(self, context, event):
+        return self.start_steps(context) if stepping.in_window(context) else self.execute(context)
+
     def execute(self, context):
-        root = active_root(context)
-        st = context.scene.hbc
+        return self.run_now(context)
+
+    def job(self, context, log):
         why = unavailable(context, self.layer)
         if why:
-            self.report({"ERROR"}, why)
-            return {"CANCELLED"}
-        log = make_log(context)
-        prog = _Progress(context, 2)
-        try:
-            s = structure_of(root, self.layer in L.NEEDS_ANALYSIS, log, st.rho)
-            prog.step("analysis ready")
-            if not len(st.sheets) and s.analysis is not None:
-                fill_sheet_list(st, s)
-            coll, done = L.build_layer(root, self.layer, s, st, log)
-            prog.step(f"built {P.LAYER_TITLES[self.layer]}")
-        except Exception as e:  # noqa: BLE001
-            return self.cancel_with(context, e, prog)
-        prog.end(context)
-        st.active_mesh = root.name
+            raise ValueError(why)
+        root = active_root(context)
+        analysis = not structure_ready(root, self.layer in L.NEEDS_ANALYSIS)
+        return (build_layer_steps(context.scene, root, self.layer, log), steps.build_phases([self.layer], analysis),
+                self._finish_layer)
+
+    def _finish_layer(self, context, result, times, seconds, log):
+        s, coll, done = result
+        st = context.scene.hbc
+        if not len(st.sheets) and s.analysis is not None:
+            fill_sheet_list(st, s)
+        st.active_mesh = coll["hbc_mesh"]
         if self.layer == "subsheets" and st.spread:  # laid out beside the mesh, out of view
             compat.frame_objects(context, S.objects_in(coll))
         return self.finish_with(done)
+
+
+def build_layer_steps(scene, root, layer, log):
+    """Build Layer as a job: the structure (read and analysed in a worker thread when not in memory),
+    then the layer (blender/layers.build_layer_steps). Returns (Structure, the layer's collection,
+    the sentence saying what was built)."""
+    st = scene.hbc
+    with S.Transaction() as tx:
+        s = yield from structure_steps(tx, root, layer in L.NEEDS_ANALYSIS, log, st.rho)
+        yield Phase(layer, f"building {P.LAYER_TITLES[layer]}")
+        coll, done = yield from L.build_layer_steps(root, layer, s, st, log)
+        yield f"built {P.LAYER_TITLES[layer]}"
+    return s, coll, done
 
 
 #: Build All's layers, and the one left visible (the others are a click away: their eye icons).
@@ -303,34 +412,47 @@ BUILD_ALL = ("direct", "graph", "components", "sheets", "wireframe")
 BUILD_ALL_SHOWN = "components"
 
 
-class HBC_OT_build_all(_OnActiveMesh, bpy.types.Operator):
+def build_all_steps(scene, root, log):
+    """Build All as a job, one overall progress: the analysis when not in memory, then every layer
+    of BUILD_ALL built first and swapped in at the end (all or nothing). Returns the Structure."""
+    st = scene.hbc
+    with S.Transaction() as tx:
+        s = yield from structure_steps(tx, root, True, log, st.rho)
+        built = []
+        for layer in BUILD_ALL:
+            yield Phase(layer, f"building {P.LAYER_TITLES[layer]}")
+            built.append((layer, (yield from L.build_into_steps(tx, root, layer, s, st))))
+            yield f"built {P.LAYER_TITLES[layer]}"
+        for layer, coll in built:
+            S.swap_layer(root, layer, coll, tx).hide_viewport = layer != BUILD_ALL_SHOWN
+    return s
+
+
+class HBC_OT_build_all(_Stepped, _OnActiveMesh, bpy.types.Operator):
     """Build the overview layers (direct view, singularity graph, components, sheets, wireframe); only the components stay visible"""
 
     bl_idname = "hbc.build_all"
     bl_label = "Build All"
 
+    def invoke(self, context, event):
+        return self.start_steps(context) if stepping.in_window(context) else self.execute(context)
+
     def execute(self, context):
-        root, st, log, t0 = active_job(context)
-        prog = _Progress(context, len(BUILD_ALL) + 1)
-        try:
-            s = structure_of(root, True, log, st.rho)
-            if not len(st.sheets):
-                fill_sheet_list(st, s)
-            prog.step("analysis ready")
-            # All or nothing: build every layer first, swap them in at the end.
-            with S.Transaction() as tx:
-                built = []
-                for layer in BUILD_ALL:
-                    built.append((layer, L.build_into(tx, root, layer, s, st)))
-                    prog.step(f"built {P.LAYER_TITLES[layer]}")
-                for layer, coll in built:
-                    S.swap_layer(root, layer, coll, tx).hide_viewport = layer != BUILD_ALL_SHOWN
-        except Exception as e:  # noqa: BLE001
-            return self.cancel_with(context, e, prog)
-        prog.end(context)
+        return self.run_now(context)
+
+    def job(self, context, log):
+        root = active_root(context)
+        analysis = not structure_ready(root, True)
+        return build_all_steps(context.scene, root, log), steps.build_phases(BUILD_ALL, analysis), self._finish_all
+
+    def _finish_all(self, context, s, times, seconds, log):
+        root = active_root(context)
+        st = context.scene.hbc
+        if not len(st.sheets):
+            fill_sheet_list(st, s)
         n = sum(len(S.objects_in(S.find_layer(root, layer))) for layer in BUILD_ALL)
         return self.finish_with(f"{root.name}: built {len(BUILD_ALL)} layers ({n} objects) in "
-                                f"{time.perf_counter() - t0:.2f} s; showing {P.LAYER_TITLES[BUILD_ALL_SHOWN]}", log)
+                                f"{seconds:.2f} s; showing {P.LAYER_TITLES[BUILD_ALL_SHOWN]}", log)
 
 
 class HBC_OT_clear_layer(_OnActiveMesh, bpy.types.Operator):

@@ -111,7 +111,7 @@ def test_failed_layer_build_leaves_scene_unchanged(clean_scene, monkeypatch, dat
     root = roots()[0]
 
     def explode(tx, coll, s, st, name):
-        L.build_direct(tx, coll, s, st, name)  # makes objects, materials ... then fails
+        yield from L.build_direct(tx, coll, s, st, name)  # makes objects, materials ... then fails
         raise RuntimeError("stage failed")
 
     bpy.data.materials.remove(bpy.data.materials[next(m.name for m in bpy.data.materials if "HBC" in m.name)])

@@ -189,7 +189,7 @@ def test_failed_rebuild_puts_the_layer_back(clean_scene, data_dir, monkeypatch, 
     builder = L.BUILDERS[key]
 
     def fails(tx, coll, s, st_, name):
-        made = builder(tx, coll, s, st_, name)
+        made = yield from builder(tx, coll, s, st_, name)
         assert made and tx.kept  # it did refill the old objects
         raise RuntimeError("stage failed")
 
