@@ -74,7 +74,7 @@ function expected(S, layer, sheet) {
       for (let k = 0; k < Number(sub.count); k++) {
         out.push(`subsheet ${k}`, ...(rowOf(un, k) ? [`subsheet ${k} unmatched`] : []), `wireframe ${k}`);
       }
-      sub.delete();
+      core.free(sub);
       return out;
     }
     default: return ['wireframe'];
