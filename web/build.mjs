@@ -22,13 +22,15 @@ const coreJs = wasmDir ? read(path.join(wasmDir, 'hbc_core.js')) : null;
 const coreWasm = wasmDir ? read(path.join(wasmDir, 'hbc_core.wasm')) : null;
 if (!coreJs) throw new Error(`build.mjs: no hbc_core.js in ${wasmDir}: the page's colours and words come from the core`);
 
-/** The core's layer plan (web/src/colors.js' L): the colours and words the add-on draws with. */
+/** The core's layer plan (web/src/colors.js' L): the colours and words the add-on draws with; and
+ *  the parts of every layer it requests. */
 async function layerPlan() {
   const createHbcModule = createRequire(import.meta.url)(path.join(wasmDir, 'hbc_core.js'));
   const M = await createHbcModule();
-  return JSON.stringify(JSON.parse(M.layer_plan_json()));
+  return { legend: JSON.stringify(JSON.parse(M.layer_plan_json())), requests: JSON.stringify(JSON.parse(M.layer_requests_json())) };
 }
-const legend = await layerPlan();
+// What each layer draws (hbc::layer_requests: web/src/parts.js' REQUESTS), from the same core.
+const { legend, requests } = await layerPlan();
 
 async function bundle(entry, define) {
   const r = await esbuild.build({
@@ -39,7 +41,7 @@ async function bundle(entry, define) {
     target: ['es2020'],
     write: false,
     legalComments: 'none',
-    define: { __HBC_LEGEND__: legend, ...define },
+    define: { __HBC_LEGEND__: legend, __HBC_LAYER_REQUESTS__: requests, ...define },
     logLevel: 'warning',
   });
   return r.outputFiles[0].text;

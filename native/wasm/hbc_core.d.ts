@@ -181,6 +181,10 @@ export interface HbcModule {
   // A mesh's legend: JSON {facts: {non_hex_types, valences, has_pseudo, has_non_manifold,
   // has_non_hex_blocks}, legends: {"<shown layer keys in order, comma-joined>|<1: wireframes by
   // non-hex kind, else 0>": [[colour key, words]]}} for every non-empty set of layers.
+  // Every layer's parts as the front ends request them (hbc::layer_requests): JSON [{layer, part,
+  // geometry, source, select, edge_class, sheet, shrink, color, role, split, when, default_on,
+  // optional}], the fields of _core.pyi's PartRequest; web/build.mjs inlines it for the worker.
+  layer_requests_json(): string;
   legends_json(cell_types: Uint8Array, edge_class: Uint8Array, chain_valence: Int32Array,
                component_kind: Uint8Array): string;
   FS: any;                                    // emscripten's in-memory file system (for load_path)

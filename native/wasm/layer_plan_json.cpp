@@ -92,6 +92,18 @@ std::string layer_plan_json() {
   return json_text(j);
 }
 
+// Every layer's parts (hbc::layer_requests) as a JSON array of objects with PartRequest's field
+// names, which web/build.mjs inlines beside the layer plan for the worker to draw from.
+std::string layer_requests_json() {
+  Json j = Json::array();
+  for (const auto& r : layer_requests())
+    j.push_back({{"layer", r.layer}, {"part", r.part}, {"geometry", r.geometry}, {"source", r.source},
+                 {"select", r.select}, {"edge_class", r.edge_class}, {"sheet", r.sheet}, {"shrink", r.shrink},
+                 {"color", r.color}, {"role", r.role}, {"split", r.split}, {"when", r.when},
+                 {"default_on", r.default_on}, {"optional", r.optional}});
+  return json_text(j);
+}
+
 template <class T>
 std::vector<T> as(const emscripten::val& a) {
   const auto bytes = emscripten::convertJSArrayToNumberVector<uint8_t>(a);
@@ -138,4 +150,5 @@ std::string legends_json(const emscripten::val& cell_type, const emscripten::val
 EMSCRIPTEN_BINDINGS(hbc_layer_plan) {
   emscripten::function("layer_plan_json", &layer_plan_json);
   emscripten::function("legends_json", &legends_json);
+  emscripten::function("layer_requests_json", &layer_requests_json);
 }

@@ -4,6 +4,7 @@
 // tests/addon/unit/test_layer_plan_unchanged.py's and tests/wasm/layer_plan_test.mjs' part.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <set>
 #include <string>
@@ -12,6 +13,8 @@
 #include "hbc/analysis.hpp"
 #include "hbc/generate.hpp"
 #include "hbc/layer_plan.hpp"
+#include "hbc/mesh.hpp"
+#include "hbc/render_geometry.hpp"
 
 namespace hbc {
 namespace {
@@ -121,6 +124,53 @@ TEST(LayerPlan, SubsheetsOnlyOfTypeThreeSheets) {
   EXPECT_EQ(subsheets_unavailable(std::nullopt), "Pick a sheet in the list first");
   EXPECT_EQ(subsheets_unavailable(1), "Sheet is type 1 (non-hex): only self-intersecting (type 3) sheets have subsheets");
   EXPECT_EQ(subsheets_unavailable(3), std::nullopt);
+}
+
+TEST(LayerPlan, EveryRequestNamesALayerAKindAndAColourTheLibraryHas) {
+  // The front ends dispatch on these words: a word the library does not define would reach a
+  // front end as a layer it cannot draw.
+  const auto titles = layer_titles();
+  const auto colors = legend_colors(layer_palette());
+  const std::set<std::string> geometries{"soup", "lines", "dots"};
+  const std::set<std::string> line_sources{"chains", "edges", "curves", "wireframe"};
+  const std::set<std::string> rules{"role", "cell_type", "valence", "component", "spread", "sheet_shaded", "subsheet",
+                                    "wire"};
+  size_t layer = 0;
+  std::set<std::string> drawn;
+  std::set<std::pair<std::string, std::string>> parts;
+  std::vector<std::string> highlights;
+  for (const auto& r : layer_requests()) {
+    while (layer < titles.size() && titles[layer].key != r.layer) ++layer;
+    ASSERT_LT(layer, titles.size()) << r.layer << " is no layer, or out of layer_titles' order";
+    drawn.insert(r.layer);
+    EXPECT_TRUE(parts.insert({r.layer, r.part}).second) << r.layer << "/" << r.part;
+    EXPECT_TRUE(geometries.count(r.geometry)) << r.part;
+    if (r.geometry == "soup") EXPECT_NO_THROW(soup_kind_from_name(r.source)) << r.part;
+    if (r.geometry == "lines") EXPECT_TRUE(line_sources.count(r.source)) << r.part;
+    EXPECT_EQ(r.edge_class >= 0, r.source == "edges") << r.part;
+    EXPECT_TRUE(rules.count(r.color)) << r.part;
+    EXPECT_EQ(r.color == "role", std::any_of(colors.begin(), colors.end(), [&](const auto& c) { return c.first == r.role; }))
+        << r.part << " " << r.role;
+    if (r.layer == "sheet" && r.part != "sheet") highlights.push_back(r.part);
+  }
+  EXPECT_EQ(drawn.size(), titles.size()) << "a layer without parts";
+  EXPECT_EQ(highlights, keys(sheet_highlights()));
+}
+
+TEST(LayerPlan, EverySoupRequestIsOneTheCoreMakes) {
+  // The twisted pair has a self-intersecting sheet: every soup request, with its sheet where it
+  // takes one, gives faces.
+  const Mesh mesh = build_mesh(generate_twisted_pair(2, 8));
+  const Analysis a = analyze(mesh);
+  ASSERT_TRUE(a.sheet_stage && a.sheet_stage->largest_self_intersecting);
+  const int32_t picked = *a.sheet_stage->largest_self_intersecting;
+  for (const auto& r : layer_requests()) {
+    if (r.geometry != "soup" || !r.select.empty() || r.source == "non_hex") continue;
+    const SoupKind kind = soup_kind_from_name(r.source);
+    EXPECT_EQ(r.sheet, soup_kind_needs_sheet(kind)) << r.part;
+    EXPECT_GT(block_soup(mesh, a, kind, r.sheet ? std::optional<int32_t>(picked) : std::nullopt).num_faces(), 0u)
+        << r.layer << "/" << r.part;
+  }
 }
 
 }  // namespace

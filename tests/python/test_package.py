@@ -55,7 +55,7 @@ def test_stub_matches_module():
     typing_only = {"Format", "CellTypeCounts", "MeshInfo", "Level", "SoupWhat", "I32", "U8", "Bool",
                    "Timings", "AnalysisStats", "WireframeCounts", "BlockSoup", "CellQuality", "FormatInfo",
                    "CheckReport", "DefectClass", "DefectItem", "Dropped", "DroppedCell",
-                   "F32", "Rgba", "LegendEntry", "LayerPalette", "LegendFacts"}
+                   "F32", "Rgba", "LegendEntry", "LayerPalette", "LegendFacts", "PartRequest"}
     assert public(stub_top) - typing_only == public(dir(_core))
     assert "__version__" in stub_top
 

@@ -33,20 +33,21 @@ def build_direct(tx, coll, s, st, name):
     if st.direct_boundary:
         soup, edges = yield Work(S.with_edges, s.direct_boundary)
         alpha = st.boundary_opacity if st.direct_transparent else 1.0
-        mat = S.material(tx, "flat", P.HEX_COLOR, alpha)
+        color = P.role_color(P.part_request("direct", "boundary"))
+        mat = S.material(tx, "flat", color, alpha)
         ob = S.soup_object(tx, coll, f"{name} boundary", soup, None, mat, _props(name, "direct", hbc_part="boundary"),
                            edges=edges)
         # No colour attribute: Solid > Attribute (the add-on's setting) draws such an object in its
         # object colour, transparent when that colour's alpha is below 1 (the material's alpha
         # counts in Solid > Material only).
-        ob.color = tuple(P.HEX_COLOR[:3]) + (float(alpha),)
+        ob.color = tuple(color[:3]) + (float(alpha),)
         # A click selects the front-most selectable object under the cursor: a see-through
         # boundary in front of everything would take every click meant for what it lets show.
         ob.hide_select = S.see_through(ob)
         made += 1
         yield None
     types = np.asarray(s.mesh.cell_types)
-    if np.any(types != 0):
+    if s.wants(P.part_request("direct", "non_hex")):
         soup, edges = yield Work(S.with_edges, s.non_hex_cells, st.direct_shrink)
         S.soup_object(tx, coll, f"{name} non-hex cells", soup, s.cell_type_colors(soup.face_owner), None,
                       _props(name, "direct", hbc_part="non_hex"), edges=edges)
@@ -54,7 +55,7 @@ def build_direct(tx, coll, s, st, name):
         yield None
     if st.direct_hex_cells and np.any(types == 0):
         soup, edges = yield Work(S.with_edges, s.hex_region)
-        mat = S.material(tx, "flat", P.HEX_COLOR, 1.0)
+        mat = S.material(tx, "flat", P.role_color(P.part_request("direct", "hex")), 1.0)
         S.soup_object(tx, coll, f"{name} hex cells", soup, None, mat, _props(name, "direct", hbc_part="hex"),
                       edges=edges)
         made += 1
@@ -94,7 +95,7 @@ def build_sheets(tx, coll, s, st, name):
     n = s.num_sheets
     if n == 0:
         return 0
-    colors = P.sheet_colors(n)
+    colors = P.part_colors(P.part_request("sheets", "sheets"), np.arange(n))
     types = s.sheet_types()
     big = n > st.split_max
     soup, edges = yield Work(S.with_edges if big else S.without_edges, s.all_sheets, st.shrink)
@@ -127,14 +128,10 @@ def build_sheet(tx, coll, s, st, name):
     i = st.sheet_index
     if not (0 <= i < s.num_sheets):
         raise ValueError(f"no sheet {i} (the mesh has {s.num_sheets})")
-    color = P.sheet_color(i)
     t = P.SHEET_TYPES[int(s.sheet_types()[i])]
     soup = yield Work(s.sheet_blocks, i, st.shrink)
-    # The sheet's colour, each block (owner) a little lighter or darker so blocks stay visible.
     owners = np.arange(int(soup.face_owner.max()) + 1 if soup.num_faces else 0)
-    shade = 0.8 + 0.2 * ((owners * 7) % 3) / 2.0
-    oc = np.tile(np.asarray(color, np.float32), (len(owners), 1))
-    oc[:, :3] *= shade[:, None]
+    oc = P.part_colors(P.part_request("sheet", "sheet"), owners, sheet=i)
     S.soup_object(tx, coll, f"{name} picked sheet {i}", soup, None, None,
                   _props(name, "sheet", hbc_sheet=i, hbc_sheet_type=t, hbc_owner="component"), owner_colors=oc)
     made = 1
@@ -142,12 +139,12 @@ def build_sheet(tx, coll, s, st, name):
     unmatched, shared, edges, cells = yield Work(s.sheet_highlights, i, _dot_radius(s, st))
     if unmatched.num_faces:
         S.soup_object(tx, coll, f"{name} picked sheet {i} unmatched vertices", unmatched,
-                      np.tile(P.UNMATCHED_COLOR, (unmatched.num_faces, 1)), None,
+                      P.part_colors(P.part_request("sheet", "unmatched"), unmatched.face_owner), None,
                       _props(name, "sheet", hbc_sheet=i, hbc_highlight="unmatched", hbc_count=unmatched.num_faces // 8))
         made += 1
     if shared.num_faces:
         S.soup_object(tx, coll, f"{name} picked sheet {i} shared vertices", shared,
-                      np.tile(P.SHARED_COLOR, (shared.num_faces, 1)), None,
+                      P.part_colors(P.part_request("sheet", "shared"), shared.face_owner), None,
                       _props(name, "sheet", hbc_sheet=i, hbc_highlight="shared", hbc_count=shared.num_faces // 8))
         made += 1
     if edges.positions.size:
@@ -156,7 +153,7 @@ def build_sheet(tx, coll, s, st, name):
         made += 1
     if cells.num_faces:
         S.soup_object(tx, coll, f"{name} picked sheet {i} self-intersecting cells", cells,
-                      np.tile(P.SELF_INTERSECTING_COLOR, (cells.num_faces, 1)), None,
+                      P.part_colors(P.part_request("sheet", "self_intersecting"), cells.face_owner), None,
                       _props(name, "sheet", hbc_sheet=i, hbc_highlight="self_intersecting"))
         made += 1
     return made
@@ -172,7 +169,7 @@ def build_subsheets(tx, coll, s, st, name):
         raise ValueError(f"sheet {i} is not self-intersecting: it has no subsheets")
     sub = s.subsheets(i)
     count = int(sub.count)
-    colors = P.subsheet_colors(count)
+    colors = P.part_colors(P.part_request("subsheets", "subsheets"), np.arange(count))
     made = 0
     all_soup = yield Work(s.subsheet_soup, i, st.shrink)
     radius = _dot_radius(s, st)
@@ -188,7 +185,7 @@ def build_subsheets(tx, coll, s, st, name):
         if len(unmatched):
             d = P.dots(s.points[unmatched] + offset, radius, unmatched)
             S.soup_object(tx, coll, f"{name} sheet {i} subsheet {k} unmatched vertices", d,
-                          np.tile(P.UNMATCHED_COLOR, (d.num_faces, 1)), None,
+                          P.part_colors(P.part_request("subsheets", "unmatched"), d.face_owner), None,
                           _props(name, "subsheets", hbc_sheet=i, hbc_subsheet=k, hbc_highlight="unmatched"))
             made += 1
         lines = yield Work(s.wireframe, i, k, st.opacity_floor, st.simplified, _by_kind(st), _rho(st))

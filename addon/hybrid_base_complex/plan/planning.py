@@ -30,7 +30,7 @@ _PLAN_NAMES = frozenset({
     "CELL_TYPE_COLORS", "VALENCE_COLORS", "OTHER_VALENCE_COLOR", "PSEUDO_COLOR",
     "NON_MANIFOLD_COLOR", "UNMATCHED_COLOR", "SHARED_COLOR", "SELF_PARALLEL_EDGE_COLOR",
     "SELF_INTERSECTING_COLOR", "WIRE_SEVERAL_COLOR", "WIRE_HEX_COLOR", "SHEET_TYPE_SHORT", "LEGEND_COLORS",
-    "LEGEND_MAX", "SHEET_HIGHLIGHTS", "WIRE_OPACITY_FLOOR", "SPREAD_GAP"})
+    "LEGEND_MAX", "SHEET_HIGHLIGHTS", "WIRE_OPACITY_FLOOR", "SPREAD_GAP", "LAYER_REQUESTS"})
 
 
 @functools.lru_cache(maxsize=1)
@@ -54,6 +54,7 @@ def _plan() -> dict:
         "LEGEND_COLORS": legend_colors, "LEGEND_MAX": int(hbc.LEGEND_MAX_WORDS),
         "SHEET_HIGHLIGHTS": tuple(hbc.SHEET_HIGHLIGHTS), "WIRE_OPACITY_FLOOR": float(hbc.WIRE_OPACITY_FLOOR),
         "SPREAD_GAP": float(hbc.SPREAD_GAP),
+        "LAYER_REQUESTS": tuple(dict(r) for r in hbc.LAYER_REQUESTS),
     }
 
 
@@ -220,6 +221,49 @@ def sheet_color(sheet: int) -> tuple:
 def valence_color(valence: int):
     plan = _plan()
     return plan["VALENCE_COLORS"].get(int(valence), plan["OTHER_VALENCE_COLOR"])
+
+
+def layer_requests(layer: str) -> list:
+    """The parts of `layer` in drawing order, as the library requests them (hbc.LAYER_REQUESTS,
+    hbc/layer_plan.hpp): each part's geometry, its source and options, its colour rule. The web
+    viewer draws from the same table; Structure asks hbc for what a request names."""
+    return [r for r in _plan()["LAYER_REQUESTS"] if r["layer"] == layer]
+
+
+def part_request(layer: str, part: str) -> dict:
+    return next(r for r in layer_requests(layer) if r["part"] == part)
+
+
+def role_color(request) -> tuple:
+    """The one colour of a request coloured by role (LEGEND_COLORS[role])."""
+    return _plan()["LEGEND_COLORS"][request["role"]]
+
+
+def part_colors(request, owners, *, cell_types=None, kinds=None, sheet=None) -> np.ndarray:
+    """(n, 4) colours of n owners of a part (a soup's owners, dots) by the request's colour rule:
+    cell_types per cell (rule cell_type), kinds per component (component), the picked sheet
+    (sheet_shaded). The lines' rules come with their arrays: the singularities one group per
+    valence (Structure.singularity_lines, valence_color), the wireframe's classes or kinds
+    (Structure.wireframe)."""
+    rule = request["color"]
+    owners = np.asarray(owners, np.int64).reshape(-1)
+    if rule == "role":
+        return np.tile(role_color(request), (len(owners), 1))
+    if rule == "cell_type":
+        return _plan()["CELL_TYPE_COLORS"][np.asarray(cell_types, np.int64)[owners]]
+    if rule == "component":
+        return component_colors(kinds)[owners]
+    if rule == "spread":
+        return native.import_hbc().spread_colors(owners)
+    if rule == "subsheet":
+        return native.import_hbc().spread_colors(-1 - owners)
+    if rule == "sheet_shaded":
+        # The sheet's colour, each owner (component) a little lighter or darker so blocks stay visible.
+        shade = 0.8 + 0.2 * ((owners * 7) % 3) / 2.0
+        oc = np.tile(np.asarray(sheet_color(sheet), np.float32), (len(owners), 1))
+        oc[:, :3] *= shade[:, None]
+        return oc
+    raise ValueError(f"no colours of rule {rule!r} by owner")
 
 
 def opacity_alpha(opacity, floor: float) -> np.ndarray:

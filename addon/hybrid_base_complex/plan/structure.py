@@ -66,6 +66,28 @@ class Structure:
         edges = np.asarray(edges, np.int32).reshape(-1, 2)
         return self._lines(np.arange(0, 2 * len(edges) + 1, 2), edges.ravel(), color)
 
+    # -- a layer's parts, as the library requests them (planning.layer_requests) -------------
+    def wants(self, request) -> bool:
+        """Whether a part is drawn for this mesh: the mesh holds what it needs (its settings
+        switches, when="setting", are the scene's)."""
+        return request["when"] != "non_hex_cells" or bool(np.any(np.asarray(self.mesh.cell_types) != 0))
+
+    def part_soup(self, layer: str, part: str, sheet=None, shrink: float = 0.0) -> P.Soup:
+        """The soup a soup request names: its block_soup kind, the picked sheet where it takes one,
+        `shrink` where the layer's shrink applies, only the owners its `select` row lists."""
+        r = P.part_request(layer, part)
+        owners = P.csr_row(*_csr(self.analysis, r["select"]), sheet) if r["select"] else None
+        if owners is not None and not len(owners):
+            return P.Soup.empty()  # nothing selected: no soup asked for
+        soup = self._soup(r["source"], sheet if r["sheet"] else None, shrink if r["shrink"] else 0.0)
+        return soup if owners is None else soup.select(np.isin(soup.face_owner, owners))
+
+    def part_vertices(self, layer: str, part: str, row: int, holder=None) -> np.ndarray:
+        """The mesh vertices a dots request names: row `row` of its CSR, on the analysis or (a
+        subsheet's) on `holder`, the sheet's subsheets."""
+        r = P.part_request(layer, part)
+        return P.csr_row(*_csr(self.analysis if holder is None else holder, r["source"]), row)
+
     # -- basic facts -----------------------------------------------------------------------
     @property
     def num_cells(self) -> int:
@@ -103,39 +125,44 @@ class Structure:
     # -- direct view ----------------------------------------------------------------------
     def direct_boundary(self) -> P.Soup:
         """The mesh's boundary surface (outward loops), owner = cell type of each face's cell."""
-        return self._soup("boundary")
+        return self.part_soup("direct", "boundary")
 
     def hex_region(self) -> P.Soup:
         """Surface of the hex region, owner 0."""
-        return self._soup("hex")
+        return self.part_soup("direct", "hex")
 
     def non_hex_cells(self, shrink=0.0) -> P.Soup:
         """Every non-hex cell as its own piece, owner = cell id (colour by its type)."""
-        return self._soup("non_hex", shrink=shrink)
+        return self.part_soup("direct", "non_hex", shrink=shrink)
 
     def cell_type_colors(self, owners) -> np.ndarray:
-        types = np.asarray(self.mesh.cell_types, np.int64)
-        return P.CELL_TYPE_COLORS[types[np.asarray(owners, np.int64)]]
+        return P.part_colors(P.part_request("direct", "non_hex"), owners, cell_types=self.mesh.cell_types)
 
     # -- singularity graph ------------------------------------------------------------------
+    #: The graph's groups by part (the objects' names).
+    GRAPH_GROUPS = {"pseudo": "Pseudo-singular", "non_manifold": "Non-manifold"}
+
     def singularity_lines(self):
-        """[(name, colour, Lines)]: one group per singularity valence, then pseudo-singular and
-        non-manifold edges."""
+        """[(name, colour, Lines)]: one group per singularity valence, then the edge classes the
+        graph layer requests (pseudo-singular and non-manifold edges), those present."""
         g = self.analysis.graph
-        offsets, verts = _csr(g, "chain_vertices")
-        valence = np.asarray(g.chain_valence)
-        closed = np.asarray(g.chain_closed, bool)
         groups = []
-        for v in np.unique(valence):
-            keep = valence == v
-            color = P.valence_color(v)
-            groups.append((f"Valence {int(v)}", color, self._lines(offsets, verts, color, keep=keep, closed=closed)))
-        cls = np.asarray(g.edge_class)
-        edges = np.asarray(self.mesh.edges).reshape(-1, 2)
-        for value, name, color in ((2, "Pseudo-singular", P.PSEUDO_COLOR), (3, "Non-manifold", P.NON_MANIFOLD_COLOR)):
-            sel = edges[cls == value]
-            if len(sel):
-                groups.append((name, color, self._edges(sel, color)))
+        for r in P.layer_requests("graph"):
+            if r["source"] == "chains":
+                offsets, verts = _csr(g, "chain_vertices")
+                valence = np.asarray(g.chain_valence)
+                closed = np.asarray(g.chain_closed, bool)
+                for v in np.unique(valence):
+                    keep = valence == v
+                    color = P.valence_color(v)
+                    groups.append((f"Valence {int(v)}", color,
+                                   self._lines(offsets, verts, color, keep=keep, closed=closed)))
+            elif r["source"] == "edges":
+                edges = np.asarray(self.mesh.edges).reshape(-1, 2)
+                sel = edges[np.asarray(g.edge_class) == r["edge_class"]]
+                if len(sel) or not r["optional"]:
+                    color = P.role_color(r)
+                    groups.append((self.GRAPH_GROUPS[r["part"]], color, self._edges(sel, color)))
         return groups
 
     # -- legend -------------------------------------------------------------------------------
@@ -159,10 +186,11 @@ class Structure:
 
     def blocks(self, shrink: float) -> P.Soup:
         """Every component as its own piece, owner = component id."""
-        return self._soup("components", shrink=shrink)
+        return self.part_soup("components", "components", shrink=shrink)
 
     def component_colors(self) -> np.ndarray:
-        return P.component_colors(self.component_kinds())
+        return P.part_colors(P.part_request("components", "components"), np.arange(self.num_components),
+                             kinds=self.component_kinds())
 
     def component_cell_types(self, component: int) -> list:
         """[(cell type name, cells)] of the cells in `component`, in CellType order, types it has only."""
@@ -199,36 +227,27 @@ class Structure:
     def all_sheets(self, shrink: float) -> P.Soup:
         """Every sheet as one large piece (the boundary of its cell set), owner = sheet id; a cell
         in two sheets is in both pieces."""
-        return self._soup("sheets", shrink=shrink)
+        return self.part_soup("sheets", "sheets", shrink=shrink)
 
     def sheet_blocks(self, sheet: int, shrink: float) -> P.Soup:
         """One sheet's cells with the component partition kept (its blocks), owner = component."""
-        return self._soup("sheet", sheet, shrink)
+        return self.part_soup("sheet", "sheet", sheet, shrink)
 
     def sheet_highlights(self, sheet: int, radius: float):
         """The picked sheet's highlights: (unmatched dots, shared dots, self-parallel edge lines,
         self-intersecting cells soup)."""
-        a = self.analysis
-        off, items = _csr(a, "sheet_unmatched_vertices")
-        unmatched = P.csr_row(off, items, sheet)
-        off, items = _csr(a, "sheet_shared_vertices")
-        shared = P.csr_row(off, items, sheet)
-        off, items = _csr(a, "sheet_self_parallel_curves")
-        curves = P.csr_row(off, items, sheet)
-        cx = a.complex
+        unmatched = self.part_vertices("sheet", "unmatched", sheet)
+        shared = self.part_vertices("sheet", "shared", sheet)
+        r = P.part_request("sheet", "self_parallel")
+        curves = P.csr_row(*_csr(self.analysis, r["select"]), sheet)
+        cx = self.analysis.complex
         if len(curves):
             closed = np.asarray(cx.curve_closed, bool)[np.asarray(curves, np.int64)]
-            lines = self._lines(*self._curve_subset(cx, curves), P.SELF_PARALLEL_EDGE_COLOR, closed=closed)
+            lines = self._lines(*self._curve_subset(cx, curves), P.role_color(r), closed=closed)
         else:
             lines = P.Lines.concat([])
-        off, items = _csr(a, "sheet_self_intersecting_components")
-        comps = P.csr_row(off, items, sheet)
-        if len(comps):
-            # The blocks (components) holding a type 3 pair, each its own piece.
-            blocks = self._soup("components")
-            cells = blocks.select(np.isin(blocks.face_owner, comps))
-        else:
-            cells = P.Soup.empty()
+        # The blocks (components) holding a type 3 pair, each its own piece.
+        cells = self.part_soup("sheet", "self_intersecting", sheet)
         return (P.dots(self.points[unmatched], radius, unmatched), P.dots(self.points[shared], radius * 0.8, shared),
                 lines, cells)
 
@@ -247,11 +266,10 @@ class Structure:
     def subsheet_soup(self, sheet: int, shrink: float) -> P.Soup:
         """Every subsheet of `sheet` as its own piece, owner = subsheet (the ids of self.subsheets(sheet):
         hbc.block_soup takes the decomposition from the analysis)."""
-        return self._soup("subsheets", sheet, shrink)
+        return self.part_soup("subsheets", "subsheets", sheet, shrink)
 
     def subsheet_unmatched(self, sub, index: int) -> np.ndarray:
-        off, items = _csr(sub, "subsheet_unmatched_vertices")
-        return P.csr_row(off, items, index)
+        return self.part_vertices("subsheets", "unmatched", index, sub)
 
     # -- VSG wireframe ------------------------------------------------------------------------
     def wireframe(self, sheet=None, subsheet=None, floor=None, simplified=True, by_kind=False, rho=None) -> P.Lines:

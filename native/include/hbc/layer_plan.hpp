@@ -30,6 +30,51 @@ struct LayerTitle {
 };
 std::vector<LayerTitle> layer_titles();
 
+// One part of a layer, as both front ends request it from the core: which geometry, from which of
+// the analysis' arrays and with which options, and how it is coloured. What a layer draws is
+// decided here once; a front end only turns the arrays into its scene (the add-on's objects and
+// their properties, the web page's buffers) and takes the values of the user's settings.
+struct PartRequest {
+  std::string layer;     // a key of layer_titles
+  std::string part;      // unique in the layer; a sheet highlight's part is the highlight's key
+  std::string geometry;  // "soup": block_soup faces; "lines": polylines of mesh vertices; "dots":
+                         // mesh vertices
+  // soup: block_soup's kind ("boundary", "non_hex", "hex", "components", "sheets", "sheet",
+  // "subsheets"). lines: "chains" (the graph's chain_vertices, chain_closed), "edges" (the mesh
+  // edges of class edge_class), "curves" (the base complex's curve_vertices, curve_closed),
+  // "wireframe" (the VSG wireframe of the mesh, the picked sheet or each subsheet: its polylines;
+  // `shown` keeps the simplified one). dots: the name of a CSR of mesh vertices
+  // ("sheet_unmatched_vertices" of the analysis, "subsheet_unmatched_vertices" of its subsheets).
+  std::string source;
+  // The CSR (by its Python name, on the analysis) whose row of the picked sheet lists what is
+  // drawn: the owners of a soup, the curves of "curves"; empty: all of them.
+  std::string select;
+  int edge_class = -1;   // "edges": the EdgeClass drawn
+  bool sheet = false;    // asks for the picked sheet (a soup's or the wireframe's sheet argument)
+  bool shrink = false;   // the layer's shrink setting applies (else 0)
+  // "role": one colour, legend_colors()[role]; "cell_type": the cell type of the owner (a cell);
+  // "valence": a chain's valence_color; "component": component_color of the owner and its kind;
+  // "spread": the owner's spread palette entry; "sheet_shaded": the picked sheet's spread entry,
+  // each owner (component) times 0.8, 0.9 or 1.0 by (7 owner mod 3); "subsheet": subsheet_color
+  // of the owner; "wire": the wireframe's class colours (palette_color) or, coloured by kind, its
+  // chains' non-hex kinds; alpha the wireframe's point opacity above the opacity floor.
+  std::string color;
+  std::string role;      // "role": a key of legend_colors
+  // "merged": one piece; "owner": one piece per owner (subsheet), side by side when spread. The
+  // scene's own splitting (the add-on's clickable object per component or sheet up to its
+  // maximum, per valence) is the front end's.
+  std::string split = "merged";
+  // "": always; "non_hex_cells": the mesh has non-hex cells; "setting": a front end's switch
+  // for this part (the add-on's Direct settings), on unless default_on is false (a front end
+  // without the switch takes default_on).
+  std::string when;
+  bool default_on = true;
+  bool optional = false;  // left out when it has nothing to draw (a highlight, an edge class)
+  bool operator==(const PartRequest&) const = default;
+};
+// Every layer's parts, layers in layer_titles' order, parts in drawing order.
+std::vector<PartRequest> layer_requests();
+
 // Every colour by its role.
 struct LayerPalette {
   // One colour per owner (component, sheet, subsheet, wireframe class): well-separated hues.

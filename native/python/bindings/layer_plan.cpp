@@ -60,6 +60,26 @@ py::dict facts_dict(const LegendFacts& f, bool analysed) {
   return d;
 }
 
+// The fields of a PartRequest by their C++ names.
+py::dict request_dict(const PartRequest& r) {
+  py::dict d;
+  d["layer"] = r.layer;
+  d["part"] = r.part;
+  d["geometry"] = r.geometry;
+  d["source"] = r.source;
+  d["select"] = r.select;
+  d["edge_class"] = r.edge_class;
+  d["sheet"] = r.sheet;
+  d["shrink"] = r.shrink;
+  d["color"] = r.color;
+  d["role"] = r.role;
+  d["split"] = r.split;
+  d["when"] = r.when;
+  d["default_on"] = r.default_on;
+  d["optional"] = r.optional;
+  return d;
+}
+
 }  // namespace
 
 void bind_layer_plan(py::module_& m) {
@@ -72,6 +92,9 @@ void bind_layer_plan(py::module_& m) {
   m.attr("SPREAD_GAP") = kSpreadGap;
   m.attr("SHEET_TYPE_SHORT") = py::tuple(py::cast(sheet_type_short()));
   m.attr("SHEET_HIGHLIGHTS") = py::tuple(entries(sheet_highlights()));
+  py::list requests;
+  for (const auto& r : layer_requests()) requests.append(request_dict(r));
+  m.attr("LAYER_REQUESTS") = py::tuple(requests);
 
   m.def("layer_palette", [] { return palette_dict(layer_palette()); },
         "Every colour of the layers by its role (linear RGBA): cycle (24, 4) float32, the colours a "

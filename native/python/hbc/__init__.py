@@ -45,9 +45,11 @@ from ._core import (
     polylines,
 )
 # The layer plan (hbc/layer_plan.hpp): the layers, colours by role and legend words the add-on, its
-# figures and the web viewer draw with; viewers' helpers, not in __all__.
+# figures and the web viewer draw with, and what each layer draws (LAYER_REQUESTS); viewers' helpers,
+# not in __all__.
 from ._core import (  # noqa: F401
     LAYERS,
+    LAYER_REQUESTS,
     LEGEND_MAX_WORDS,
     PALETTE_SIZE,
     SHEET_HIGHLIGHTS,

@@ -694,6 +694,25 @@ SPREAD_GAP: float  # the gap between copies laid side by side, a fraction of the
 SHEET_TYPE_SHORT: tuple[str, ...]  # by sheet type, for narrow list rows: "perfect", "type 1", ...
 SHEET_HIGHLIGHTS: tuple[LegendEntry, ...]  # a picked sheet's highlights in legend order
 
+class PartRequest(TypedDict):
+    """One part of a layer as the front ends request it (hbc/layer_plan.hpp, PartRequest)."""
+    layer: str  # a key of LAYERS
+    part: str  # unique in the layer; a sheet highlight's part is its key
+    geometry: str  # "soup", "lines" or "dots"
+    source: str  # soup: block_soup's what; lines: chains, edges, curves, wireframe; dots: a CSR's name
+    select: str  # the CSR whose picked sheet's row lists the owners or curves drawn; "" all
+    edge_class: int  # edges: the EdgeClass drawn; else -1
+    sheet: bool  # takes the picked sheet
+    shrink: bool  # the layer's shrink applies
+    color: str  # role, cell_type, valence, component, spread, sheet_shaded, subsheet, wire
+    role: str  # color "role": a key of legend_colors()
+    split: str  # "merged", or "owner": a piece per owner
+    when: str  # "", "non_hex_cells", or "setting" (a front end's switch, default default_on)
+    default_on: bool
+    optional: bool  # left out when it has nothing to draw
+
+LAYER_REQUESTS: tuple[PartRequest, ...]  # every layer's parts, layers in LAYERS' order
+
 class LayerPalette(TypedDict):
     cycle: F32  # (PALETTE_SIZE, 4)
     cell_type: F32  # (5, 4) by CELL_TYPES; [0] the hex boundary's grey

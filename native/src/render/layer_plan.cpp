@@ -66,6 +66,72 @@ std::vector<LayerTitle> layer_titles() {
           {"sheet", "Picked sheet"}, {"subsheets", "Subsheets"}, {"wireframe", "Wireframe"}};
 }
 
+namespace {
+
+PartRequest soup(std::string layer, std::string part, std::string kind, std::string color, std::string role = "") {
+  PartRequest r;
+  r.layer = std::move(layer);
+  r.part = std::move(part);
+  r.geometry = "soup";
+  r.source = std::move(kind);
+  r.color = std::move(color);
+  r.role = std::move(role);
+  return r;
+}
+
+PartRequest with(PartRequest r, std::string geometry, std::string source) {
+  r.geometry = std::move(geometry);
+  r.source = std::move(source);
+  return r;
+}
+
+}  // namespace
+
+std::vector<PartRequest> layer_requests() {
+  std::vector<PartRequest> out;
+  auto add = [&out](PartRequest r, auto&&... set) {
+    (set(r), ...);
+    out.push_back(std::move(r));
+  };
+  auto shrunk = [](PartRequest& r) { r.shrink = true; };
+  auto picked = [](PartRequest& r) { r.sheet = true; };
+  auto per_owner = [](PartRequest& r) { r.split = "owner"; };
+  auto optional = [](PartRequest& r) { r.optional = true; };
+  auto setting = [](bool on) { return [on](PartRequest& r) {
+      r.when = "setting";
+      r.default_on = on;
+    }; };
+  // The direct view: the boundary in the hex grey (its owners are cell types, not cells), each
+  // non-hex cell by its type, the hex region's surface on request.
+  add(soup("direct", "boundary", "boundary", "role", "hex"), setting(true));
+  add(soup("direct", "non_hex", "non_hex", "cell_type"), shrunk, [](PartRequest& r) { r.when = "non_hex_cells"; });
+  add(soup("direct", "hex", "hex", "role", "hex"), setting(false));
+  // The hybrid singularity graph: singularities by valence, then pseudo-singular and non-manifold edges.
+  add(with(soup("graph", "singularities", "", "valence"), "lines", "chains"));
+  add(with(soup("graph", "pseudo", "", "role", "pseudo"), "lines", "edges"), optional,
+      [](PartRequest& r) { r.edge_class = static_cast<int>(EdgeClass::PseudoSingular); });
+  add(with(soup("graph", "non_manifold", "", "role", "non_manifold"), "lines", "edges"), optional,
+      [](PartRequest& r) { r.edge_class = static_cast<int>(EdgeClass::NonManifold); });
+  add(soup("components", "components", "components", "component"), shrunk);
+  add(soup("sheets", "sheets", "sheets", "spread"), shrunk);
+  // The picked sheet by component, then its highlights (sheet_highlights' keys).
+  add(soup("sheet", "sheet", "sheet", "sheet_shaded"), picked, shrunk);
+  add(with(soup("sheet", "unmatched", "", "role", "unmatched"), "dots", "sheet_unmatched_vertices"), picked, optional);
+  add(with(soup("sheet", "shared", "", "role", "shared"), "dots", "sheet_shared_vertices"), picked, optional);
+  add(with(soup("sheet", "self_parallel", "", "role", "self_parallel"), "lines", "curves"), picked, optional,
+      [](PartRequest& r) { r.select = "sheet_self_parallel_curves"; });
+  add(soup("sheet", "self_intersecting", "components", "role", "self_intersecting"), picked, optional,
+      [](PartRequest& r) { r.select = "sheet_self_intersecting_components"; });
+  // The picked sheet's subsheets, each with its unmatched vertices and its wireframe.
+  add(soup("subsheets", "subsheets", "subsheets", "subsheet"), picked, shrunk, per_owner);
+  add(with(soup("subsheets", "unmatched", "", "role", "unmatched"), "dots", "subsheet_unmatched_vertices"), picked,
+      per_owner, optional);
+  add(with(soup("subsheets", "wireframe", "", "wire"), "lines", "wireframe"), picked, per_owner);
+  // The wireframe of the mesh or (the front end's scope setting) of the picked sheet.
+  add(with(soup("wireframe", "wireframe", "", "wire"), "lines", "wireframe"));
+  return out;
+}
+
 LayerPalette layer_palette() {
   LayerPalette p;
   p.cycle = hsv_cycle(kPaletteSize);
