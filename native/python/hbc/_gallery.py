@@ -152,7 +152,7 @@ def _tags_for(mesh: dict, given: dict) -> dict:
     tags = folder_tags(mesh["rel"])
     for key in (mesh["file"], mesh["rel"], pathlib.Path(mesh["file"]).name):
         if key in given:
-            tags.update(given[key])
+            tags.update({k: v for k, v in given[key].items() if v or k not in tags})
             break
     return tags
 

@@ -160,7 +160,8 @@ def write(out: pathlib.Path, meshes) -> pathlib.Path:
     tag_keys = sorted({k for r in rows for k in r["tags"]})
     cols = cols[:2] + [{"key": k, "label": k, "title": f"tag {k} (--tags)", "kind": "tag"} for k in tag_keys] + cols[2:]
     for r in rows:
-        r["values"].update(r.pop("tags"))
+        r["values"].update({k: r["tags"].get(k, "") for k in tag_keys})
+        del r["tags"]
     data = {"hbc_version": __version__, "columns": cols, "rows": rows,
             "viewer": has_viewer, "note": "" if has_viewer else "no viewer page: build it (scripts/build_web.sh) or set HBC_VIEWER"}
     (out / "gallery.json").write_text(json.dumps(data, indent=1), encoding="utf-8")

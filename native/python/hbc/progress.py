@@ -14,13 +14,15 @@ import time
 
 
 class Progress:
-    """One stage of a batch ("measure", "thumbnails"): ``step(name, error)`` per finished unit."""
+    """One stage of a batch ("measure", "thumbnails"): ``step(name, error)`` per finished unit.
+    bar=False and json_lines=False: silent."""
 
     def __init__(self, stage: str, total: int, *, json_lines: bool = False, bar: bool = True, stream=None):
         self.stage, self.total, self.done = stage, total, 0
         self.json_lines = json_lines
         self.stream = stream or (sys.stdout if json_lines else sys.stderr)
         self.t0 = time.monotonic()
+        self.quiet = not bar and not json_lines
         self._bar = _make_bar(stage, total) if bar and not json_lines and total else None
         self._emit({"event": "start", "stage": stage, "total": total})
 
@@ -33,7 +35,7 @@ class Progress:
                     "ok": not error, "error": error, "rate": rate, "eta": eta})
         if self._bar:
             self._bar.advance(name)
-        elif not self.json_lines:
+        elif not self.json_lines and not self.quiet:
             what = f"FAILED: {error}" if error else "ok"
             print(f"hbc gallery: {self.stage} [{self.done}/{self.total}] {name}: {what}", file=self.stream)
 
