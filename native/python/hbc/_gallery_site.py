@@ -56,6 +56,9 @@ def write_viewer(out: pathlib.Path) -> bool:
         page = locate.viewer_page().read_text(encoding="utf-8")
     except (locate.LocateError, OSError):
         return False
+    # The page's policy lets no script file in; the site's copy lets in its meshes/*.js beside it
+    # ('self' on a host; file: from disk, where a page has no origin of its own).
+    page = page.replace("script-src 'unsafe-inline'", "script-src 'self' file: 'unsafe-inline'", 1)
     at = page.rfind("</body>")
     page = page[:at] + _VIEWER_BOOT + page[at:] if at >= 0 else page + _VIEWER_BOOT
     target = out / "viewer.html"
