@@ -31,6 +31,8 @@ void add_quality(CLI::App& app);
 void add_check(CLI::App& app);
 void add_metrics(CLI::App& app);
 void add_compare(CLI::App& app);
+// hbc gallery: runs `python -m hbc.gallery` (docs/gallery.md).
+void add_gallery(CLI::App& app);
 
 // The mesh file every reading command takes: FILE, --format NAME (default: by extension) and
 // --threads N (default: HBC_THREADS, else every core; the results are the same for any number).

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   hbc::cli::add_quality(app);
   hbc::cli::add_metrics(app);
   hbc::cli::add_compare(app);
+  hbc::cli::add_gallery(app);
   hbc::cli::add_check(app);
   hbc::cli::add_generate(app);
   hbc::cli::add_export_surface(app);

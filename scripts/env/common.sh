@@ -60,7 +60,7 @@ HBC_DEBIAN_PACKAGES=(cmake g++ make pkg-config python3-dev python3-numpy python3
   python3-venv ccache openfoam openfoam-examples
   xvfb xauth  # Blender with its window: the add-on's window test (tests/addon/window), panel_screenshot.py
   nodejs  # the web viewer's build and its browser tests (tests/web/; npm comes with it or as Debian's npm)
-  python3-matplotlib chromium  # hbc compare's report.html: its plots; the browser test
+  python3-matplotlib python3-rich chromium  # hbc gallery's progress bar; hbc compare's report.html: its plots; the browser test
   emscripten libfast-float-dev  # the WebAssembly build (scripts/build_wasm.sh, docs/wasm.md)
   ffmpeg  # ffprobe checks the animations' videos (tests/figures); ffmpeg makes their GIFs
   gmsh  # writes the .su2 and .msh test files (tests/data/formats/make_real_files.py)

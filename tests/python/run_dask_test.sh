@@ -10,4 +10,5 @@ if ! py=$(bash "$HERE/../../scripts/env/dask_env.sh"); then
        "message is above" >&2
   exit 77
 fi
-exec "$py" -m pytest -q -p no:cacheprovider "$HERE/test_compare_dask.py"
+# The test file: the first argument (default test_compare_dask.py; ctest python_gallery_dask gives its own).
+exec "$py" -m pytest -q -p no:cacheprovider "$HERE/${1:-test_compare_dask.py}"

@@ -17,7 +17,7 @@ import pytest
 import hbc
 from hbc import locate
 
-PIECES = ("HBC_CLI", "HBC_BLENDER", "HBC_ADDON_DIR", "HBC_RENDER_FIGURES")
+PIECES = ("HBC_CLI", "HBC_BLENDER", "HBC_ADDON_DIR", "HBC_RENDER_FIGURES", "HBC_VIEWER", "HBC_CHROMIUM")
 #: The command ctest built (read before any test clears the variable).
 BUILT_CLI = os.environ.get("HBC_CLI")
 
@@ -87,6 +87,27 @@ def test_blender(clean_env, monkeypatch):
     assert locate.blender() == "/opt/blender-4.5/blender"
 
 
+def test_chromium(clean_env, monkeypatch):
+    with pytest.raises(locate.LocateError, match="HBC_CHROMIUM"):
+        locate.chromium()
+    on_path = executable(clean_env, "chromium-browser")
+    assert locate.chromium() == str(on_path)
+    monkeypatch.setenv("HBC_CHROMIUM", "/opt/chrome/chrome")
+    assert locate.chromium() == "/opt/chrome/chrome"
+
+
+def test_viewer_page(clean_env, installed, monkeypatch, tmp_path):
+    """The build tree's web/viewer.html when scripts/build_web.sh has made it; $HBC_VIEWER first;
+    an installed package without the variable names it."""
+    built = build_root() / "web" / "viewer.html"
+    if built.is_file():
+        assert locate.viewer_page() == built
+    with pytest.raises(installed.LocateError, match="HBC_VIEWER"):
+        installed.viewer_page()
+    monkeypatch.setenv("HBC_VIEWER", str(tmp_path / "v.html"))
+    assert locate.viewer_page() == tmp_path / "v.html"
+
+
 def test_addon_and_its_figures_script(clean_env, installed, monkeypatch, tmp_path):
     built = build_root() / "addon" / "hybrid_base_complex"
     assert locate.addon_dir() == built
@@ -124,7 +145,7 @@ def test_report_uses_no_other_rule():
     """hbc.report and hbc.comparison read no piece's variable themselves: locate.py is the one place
     the Python side looks (the deprecated alias included)."""
     package = pathlib.Path(hbc.__file__).parent
-    for name in ("report.py", "comparison.py", "__init__.py"):
+    for name in ("report.py", "comparison.py", "__init__.py", "_gallery.py", "_gallery_site.py", "_thumbnails.py"):
         text = (package / name).read_text()
         for var in PIECES + ("HBC_PYTHON",):
             assert f'environ.get("{var}"' not in text and f'environ["{var}"' not in text, (name, var)

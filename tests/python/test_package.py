@@ -40,11 +40,12 @@ def test_package_reexports_core():
                                 "kept_surface_soup", "Field", "STAT_FIELDS", "TIMING_FIELDS",
                                 "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS", "SHEET_TYPES", "CELL_TYPES",
                                 "COMPONENT_KINDS", "FORMATS", "MetricField", "METRIC_FIELDS", "SUMMARY_FIELDS",
-                                "compare"}
-    # compare is pure Python (hbc/comparison.py); everything else is _core's.
-    for name in set(hbc.__all__) - {"compare"}:
+                                "compare", "gallery"}
+    # compare and gallery are pure Python (hbc/comparison.py, hbc/_gallery.py); everything else is _core's.
+    for name in set(hbc.__all__) - {"compare", "gallery"}:
         assert getattr(hbc, name) is getattr(_core, name)
     assert hbc.compare.__module__ == "hbc.comparison"
+    assert callable(hbc.gallery)
     assert issubclass(hbc.MeshFormatError, ValueError)
 
 

@@ -70,11 +70,21 @@ from ._core import (  # noqa: F401
 )
 from .comparison import compare  # hbc compare from Python (docs/compare.md)
 
+
+def gallery(paths, out, *, executor=None, **options) -> dict:
+    """hbc gallery from Python (docs/gallery.md): the static site of the meshes at ``paths`` in the
+    folder ``out``, each mesh one work unit on ``executor`` (any concurrent.futures.Executor; None:
+    a thread pool of ``jobs``); the options and the summary returned: hbc._gallery.gallery. Imported
+    when called, so that ``python -m hbc._gallery`` (what the command runs) imports it once."""
+    from ._gallery import gallery as run
+
+    return run(paths, out, executor=executor, **options)
+
 __all__ = [
     "Mesh", "MeshFormatError", "load", "check", "__version__",
     "Analysis", "SingularityGraph", "BaseComplex", "Subsheets", "Wireframe", "block_soup", "polylines",
     "cell_quality", "cell_depth", "cell_centroids", "kept_surface_soup",
     "Field", "STAT_FIELDS", "TIMING_FIELDS", "WIREFRAME_COUNT_FIELDS", "TABLE1_COLUMNS",
     "SHEET_TYPES", "CELL_TYPES", "COMPONENT_KINDS", "FORMATS",
-    "MetricField", "METRIC_FIELDS", "SUMMARY_FIELDS", "compare",
+    "MetricField", "METRIC_FIELDS", "SUMMARY_FIELDS", "compare", "gallery",
 ]

@@ -12,6 +12,10 @@ Blender            ``$HBC_BLENDER``; ``blender`` on ``PATH``
 the add-on         ``$HBC_ADDON_DIR``; ``BUILD/addon/hybrid_base_complex``
 figures script     the add-on's own ``figures/render_figures.py`` (no variable of its own;
                    ``$HBC_RENDER_FIGURES`` is read as a deprecated alias)
+viewer page        ``$HBC_VIEWER``; ``BUILD/web/viewer.html`` (scripts/build_web.sh) of this
+                   package's build tree (the gallery's viewer.html)
+Chromium           ``$HBC_CHROMIUM``; ``chromium``, ``chromium-browser``, ``google-chrome`` on
+                   ``PATH`` (the gallery's thumbnails)
 metrics.md         the source tree's ``docs/metrics.md`` (above this package, or the build
                    tree's source folder) as a file URL; else the relative link
 =================  =====================================================================
@@ -104,6 +108,33 @@ def figures_script(addon: os.PathLike | str | None = None) -> pathlib.Path:
     if not script.is_file():
         raise LocateError(f"{folder} is not an add-on with figures ({FIGURES_SCRIPT} is missing)")
     return script
+
+
+def viewer_page() -> pathlib.Path:
+    """The web viewer page (scripts/build_web.sh) the gallery's viewer.html is made of: $HBC_VIEWER,
+    else BUILD/web/viewer.html of this package's build tree."""
+    env = _from_env("HBC_VIEWER")
+    if env:
+        return pathlib.Path(env)
+    build = build_dir()
+    if build and (build / "web" / "viewer.html").is_file():
+        return build / "web" / "viewer.html"
+    raise LocateError("the web viewer page is not found (set HBC_VIEWER to viewer.html; "
+                      "a build tree makes one with scripts/build_web.sh)")
+
+
+def chromium() -> str:
+    """Chromium (or Chrome) for headless pages: $HBC_CHROMIUM, else chromium, chromium-browser or
+    google-chrome on PATH."""
+    env = _from_env("HBC_CHROMIUM")
+    if env:
+        return env
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        found = shutil.which(name)
+        if found:
+            return found
+    raise LocateError("Chromium is not found (set HBC_CHROMIUM to its executable, or put chromium on PATH; "
+                      "Debian: apt-get install chromium)")
 
 
 def metrics_doc() -> str:
