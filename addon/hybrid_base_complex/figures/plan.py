@@ -78,7 +78,7 @@ def script_args(argv):
     return []
 
 
-def parser():
+def parser(extensions=()):
     ap = argparse.ArgumentParser(
         prog="render_figures.py",
         description="Renders the paper's pipeline panels (a-g) of a hex-dominant mesh, or with --compare "
@@ -122,15 +122,16 @@ def parser():
     ap.add_argument("--look", choices=tuple(LOOKS), default="paper",
                     help="paper (white background), slide (dark background), clay (one neutral material, "
                          "blocks told apart by ambient occlusion and edges); stills and animations alike")
-    from . import animation_plan
-
-    animation_plan.add_arguments(ap)
+    for ext in extensions:
+        ext.add_arguments(ap)
     return ap
 
 
-def parse(argv):
-    """Parses the script's own arguments (after '--'); raises SystemExit(2) on misuse."""
-    ap = parser()
+def parse(argv, extensions=()):
+    """Parses the script's own arguments (after '--'); raises SystemExit(2) on misuse. `extensions`:
+    modules adding options (add_arguments) and their checks (check), e.g. animation_plan, which
+    imports this module."""
+    ap = parser(extensions)
     args = ap.parse_args(argv)
     if (args.mesh is None) == (args.compare is None):
         ap.error("give one MESH, or --compare A B")
@@ -150,9 +151,8 @@ def parse(argv):
         ap.error("--max-subsheets must be at least 1")
     if args.samples is None:
         args.samples = 16
-    from . import animation_plan
-
-    animation_plan.check(ap, args)
+    for ext in extensions:
+        ext.check(ap, args)
     return args
 
 

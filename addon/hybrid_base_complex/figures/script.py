@@ -32,6 +32,8 @@ import traceback
 
 import bpy
 
+from . import animation
+from . import animation_plan
 from . import compose as C
 from . import plan
 from . import render as R
@@ -299,11 +301,9 @@ def compare(args):
 
 
 def main(argv):
-    args = plan.parse(plan.script_args(argv))
+    args = plan.parse(plan.script_args(argv), (animation_plan,))
     t = time.perf_counter()
     if args.animate:
-        from . import animation
-
         written = animation.animate(args, start, wrote)
     else:
         written = compare(args) if args.compare else single(args)

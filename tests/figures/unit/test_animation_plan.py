@@ -9,7 +9,7 @@ from hybrid_base_complex.figures import plan
 
 
 def parse(*extra):
-    return plan.parse(["m.mesh", "--out", "o", *map(str, extra)])
+    return plan.parse(["m.mesh", "--out", "o", *map(str, extra)], (AP,))
 
 
 def test_animate_options():
